@@ -1,0 +1,91 @@
+// Small POD math types for the hot path: rays with precomputed reciprocals, boxes, colours.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+namespace rs {
+
+using Vec3 = glm::vec3;  ///< float x, y, z: POD, direct member access (thesis 4.1).
+using Color = glm::vec3;  ///< Linear HDR radiance, r = x, g = y, b = z.
+using Mat4 = glm::mat4;
+using Mat3 = glm::mat3;
+
+inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
+inline constexpr float kPi = 3.14159265358979323846f;
+
+/// A ray with the reciprocal direction and its signs precomputed for the Williams et al. slab test.
+struct Ray {
+    Vec3 origin;
+    Vec3 dir;
+    Vec3 invDir;
+    int sign[3];
+
+    /// Builds a ray; `d` need not be normalised (t is then measured in units of |d|).
+    static Ray make(const Vec3& o, const Vec3& d) {
+        Ray r;
+        r.origin = o;
+        r.dir = d;
+        r.invDir = Vec3(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
+        r.sign[0] = r.invDir.x < 0.0f;
+        r.sign[1] = r.invDir.y < 0.0f;
+        r.sign[2] = r.invDir.z < 0.0f;
+        return r;
+    }
+    Vec3 at(float t) const { return origin + dir * t; }
+};
+
+/// Axis-aligned bounding box; an empty box has min > max.
+struct Aabb {
+    Vec3 min{kInfinity, kInfinity, kInfinity};
+    Vec3 max{-kInfinity, -kInfinity, -kInfinity};
+
+    bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
+    void expand(const Vec3& p) {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void expand(const Aabb& b) {
+        min = glm::min(min, b.min);
+        max = glm::max(max, b.max);
+    }
+    Vec3 center() const { return (min + max) * 0.5f; }
+    Vec3 extent() const { return max - min; }
+    float surfaceArea() const {
+        if (empty()) return 0.0f;
+        Vec3 e = extent();
+        return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
+    }
+    bool overlaps(const Aabb& b) const {
+        return min.x <= b.max.x && max.x >= b.min.x && min.y <= b.max.y && max.y >= b.min.y &&
+               min.z <= b.max.z && max.z >= b.min.z;
+    }
+    const Vec3& operator[](int i) const { return i ? max : min; }
+    /// The box around this box's 8 corners after an affine transform.
+    Aabb transformed(const Mat4& m) const;
+};
+
+/// Williams et al. ray/box slab test; true when [tmin, tmax] overlaps the box's span on the ray.
+inline bool intersectSlabs(const Aabb& b, const Ray& r, float tmin, float tmax) {
+    float txmin = (b[r.sign[0]].x - r.origin.x) * r.invDir.x;
+    float txmax = (b[1 - r.sign[0]].x - r.origin.x) * r.invDir.x;
+    float tymin = (b[r.sign[1]].y - r.origin.y) * r.invDir.y;
+    float tymax = (b[1 - r.sign[1]].y - r.origin.y) * r.invDir.y;
+    if (txmin > tymax || tymin > txmax) return false;
+    txmin = std::max(txmin, tymin);
+    txmax = std::min(txmax, tymax);
+    float tzmin = (b[r.sign[2]].z - r.origin.z) * r.invDir.z;
+    float tzmax = (b[1 - r.sign[2]].z - r.origin.z) * r.invDir.z;
+    if (txmin > tzmax || tzmin > txmax) return false;
+    txmin = std::max(txmin, tzmin);
+    txmax = std::min(txmax, tzmax);
+    return txmin <= tmax && txmax >= tmin;
+}
+
+/// Luminance of a linear Rec.709 colour.
+inline float luminance(const Color& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+}  // namespace rs

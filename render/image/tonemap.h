@@ -1,0 +1,20 @@
+// HDR to display mapping: exposure, tone operator, sRGB encoding.
+#pragma once
+
+#include "core/math.h"
+#include "scene/document.h"
+
+#include <cstdint>
+
+namespace rs {
+
+/// Applies exposure (stops) and the operator; the result is display-linear in [0, 1].
+Color toneMap(const Color& hdr, ToneMap op, float exposure);
+/// sRGB transfer function for one display-linear channel in [0, 1].
+float srgbEncode(float linear);
+/// Inverse of srgbEncode.
+float srgbDecode(float encoded);
+/// Tone maps and encodes one pixel to 8-bit sRGB.
+void toDisplay8(const Color& hdr, ToneMap op, float exposure, uint8_t rgb[3]);
+
+}  // namespace rs

@@ -1,0 +1,44 @@
+// Reading and writing scene files, format version 1 (shared/design/scene-format.md).
+#pragma once
+
+#include "scene/document.h"
+
+#include <string>
+#include <vector>
+
+namespace rs {
+
+/// One problem found in a scene file, with where it is.
+struct SceneError {
+    std::string file;     ///< Scene file path (may be empty for in-memory text).
+    std::string pointer;  ///< JSON pointer, e.g. "/objects/3/radius"; "" for the document.
+    int line = 0;         ///< 1-based line, 0 when unknown.
+    int column = 0;       ///< 1-based column, 0 when unknown.
+    std::string message;  ///< What is wrong, e.g. "radius must be > 0, got 0".
+    /// "file:line:column: /pointer: message", leaving out what is unknown.
+    std::string toString() const;
+};
+
+/// Outcome of a load: either a document, or every error found (never both).
+struct SceneLoadResult {
+    SceneDocument document;
+    std::vector<SceneError> errors;
+    bool ok() const { return errors.empty(); }
+    /// All errors, one per line.
+    std::string errorText() const;
+};
+
+/// Parses scene text. `baseDir` resolves relative mesh paths; `fileName` is used in messages.
+/// Meshes are loaded (through loadMesh) so a missing or broken mesh fails the load.
+SceneLoadResult parseScene(const std::string& text, const std::string& baseDir,
+                           const std::string& fileName = "");
+/// Reads and parses a scene file.
+SceneLoadResult loadScene(const std::string& path);
+
+/// Serialises a document. `baseDir` is the folder the file will live in: mesh paths are
+/// written relative to it when the mesh lies below it, absolute otherwise.
+std::string serializeScene(const SceneDocument& doc, const std::string& baseDir);
+/// Writes atomically (temporary file, then rename): a failed save never truncates `path`.
+bool saveScene(const std::string& path, const SceneDocument& doc, std::string& error);
+
+}  // namespace rs

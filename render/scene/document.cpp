@@ -1,0 +1,78 @@
+// Document bookkeeping: id assignment, look-ups and content comparison.
+#include "scene/document.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace rs {
+
+Mat4 Transform::matrix() const {
+    Mat4 m = glm::translate(Mat4(1.0f), translate);
+    m = glm::rotate(m, glm::radians(rotate.z), Vec3(0, 0, 1));
+    m = glm::rotate(m, glm::radians(rotate.y), Vec3(0, 1, 0));
+    m = glm::rotate(m, glm::radians(rotate.x), Vec3(1, 0, 0));
+    return glm::scale(m, scale);
+}
+
+ObjectId SceneDocument::addObject(Object o) {
+    o.id = nextId++;
+    objects.push_back(std::move(o));
+    return objects.back().id;
+}
+
+ObjectId SceneDocument::addLight(Light l) {
+    l.id = nextId++;
+    lights.push_back(std::move(l));
+    return lights.back().id;
+}
+
+Object* SceneDocument::findObject(ObjectId id) {
+    for (Object& o : objects)
+        if (o.id == id) return &o;
+    return nullptr;
+}
+
+const Object* SceneDocument::findObject(ObjectId id) const {
+    return const_cast<SceneDocument*>(this)->findObject(id);
+}
+
+Light* SceneDocument::findLight(ObjectId id) {
+    for (Light& l : lights)
+        if (l.id == id) return &l;
+    return nullptr;
+}
+
+const Light* SceneDocument::findLight(ObjectId id) const {
+    return const_cast<SceneDocument*>(this)->findLight(id);
+}
+
+const Material* SceneDocument::findMaterial(const std::string& name) const {
+    for (const Material& m : materials)
+        if (m.name == name) return &m;
+    return nullptr;
+}
+
+namespace {
+template <class T>
+bool sameIgnoringIds(const std::vector<T>& a, const std::vector<T>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        T x = a[i];
+        x.id = b[i].id;
+        if (!(x == b[i])) return false;
+    }
+    return true;
+}
+}  // namespace
+
+bool SceneDocument::sameContent(const SceneDocument& o) const {
+    return camera == o.camera && render == o.render && materials == o.materials &&
+           extras == o.extras && sameIgnoringIds(lights, o.lights) &&
+           sameIgnoringIds(objects, o.objects);
+}
+
+const char* geometryTypeName(const Geometry& g) {
+    static const char* const names[] = {"sphere", "plane", "rectangle", "box", "mesh"};
+    return names[g.index()];
+}
+
+}  // namespace rs

@@ -1,0 +1,174 @@
+// The editable scene document: what the designer edits and what scene files hold.
+#pragma once
+
+#include "core/math.h"
+#include "scene/mesh_data.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace rs {
+
+/// Stable identity of a light or an object for the lifetime of a document (never reused).
+using ObjectId = uint32_t;
+inline constexpr ObjectId kNoObject = 0;
+
+/// `x-` keys of one JSON object, kept in file order as (key, serialized JSON value).
+using Extras = std::vector<std::pair<std::string, std::string>>;
+
+enum class Projection { Perspective, Orthographic };
+enum class ToneMap { Clamp, Linear, Reinhard, Aces };
+
+/// The scene camera (scene-format.md, "camera").
+struct Camera {
+    Projection projection = Projection::Perspective;
+    Vec3 position{0.0f, 0.0f, 0.0f};
+    Vec3 target{0.0f, 0.0f, -1.0f};
+    Vec3 up{0.0f, 1.0f, 0.0f};
+    float fovY = 55.0f;        ///< Degrees, vertical, in (0, 180).
+    float orthoHeight = 2.0f;  ///< Visible height in scene units for orthographic projection.
+    Extras extras;
+    bool operator==(const Camera&) const = default;
+};
+
+/// Render settings (scene-format.md, "render").
+struct RenderSettings {
+    int width = 1280;
+    int height = 720;
+    int maxDepth = 3;
+    int shadowSamples = 1;
+    int supersampling = 1;
+    bool adaptiveSupersampling = false;
+    ToneMap tonemap = ToneMap::Clamp;
+    float exposure = 0.0f;
+    Color background{0.0f, 0.0f, 0.0f};
+    Color ambient{0.05f, 0.05f, 0.05f};
+    Extras extras;
+    bool operator==(const RenderSettings&) const = default;
+};
+
+/// A Whitted material: Phong/Lambert local term plus mirror and glass weights.
+struct Material {
+    std::string name;
+    Color color{0.8f, 0.8f, 0.8f};
+    float diffuse = 1.0f;
+    float specular = 0.0f;
+    float shininess = 32.0f;
+    float reflectivity = 0.0f;
+    float transparency = 0.0f;
+    float ior = 1.5f;
+    Extras extras;
+    bool operator==(const Material&) const = default;
+};
+
+enum class LightType { Point, Sphere };
+
+/// A point light, or a sphere area light sampled for soft shadows. No distance fall-off.
+struct Light {
+    ObjectId id = kNoObject;
+    std::string name;
+    LightType type = LightType::Point;
+    Vec3 position{0.0f, 0.0f, 0.0f};
+    float radius = 0.5f;  ///< Sphere lights only.
+    Color color{1.0f, 1.0f, 1.0f};
+    float intensity = 1.0f;
+    Extras extras;
+    bool operator==(const Light&) const = default;
+};
+
+struct SphereGeometry {
+    Vec3 center{0.0f, 0.0f, 0.0f};
+    float radius = 1.0f;
+    bool operator==(const SphereGeometry&) const = default;
+};
+struct PlaneGeometry {
+    Vec3 point{0.0f, 0.0f, 0.0f};
+    Vec3 normal{0.0f, 1.0f, 0.0f};  ///< Unit length.
+    bool operator==(const PlaneGeometry&) const = default;
+};
+struct RectangleGeometry {
+    Vec3 center{0.0f, 0.0f, 0.0f};
+    Vec3 u{1.0f, 0.0f, 0.0f};  ///< Half-extent edge vector.
+    Vec3 v{0.0f, 0.0f, -1.0f};  ///< Half-extent edge vector, orthogonal to u.
+    bool operator==(const RectangleGeometry&) const = default;
+};
+struct BoxGeometry {
+    Vec3 min{-0.5f, -0.5f, -0.5f};
+    Vec3 max{0.5f, 0.5f, 0.5f};
+    bool operator==(const BoxGeometry&) const = default;
+};
+struct MeshGeometry {
+    std::string file;          ///< As written in the scene file (relative or absolute).
+    std::string resolvedPath;  ///< Absolute path the mesh was loaded from.
+    bool smoothNormals = true;
+    std::shared_ptr<const MeshData> data;  ///< Loaded triangles; not part of equality.
+    bool operator==(const MeshGeometry& o) const {
+        return file == o.file && smoothNormals == o.smoothNormals;
+    }
+};
+
+/// The closed set of object shapes.
+using Geometry =
+    std::variant<SphereGeometry, PlaneGeometry, RectangleGeometry, BoxGeometry, MeshGeometry>;
+
+/// Translate, rotate (degrees, X then Y then Z), scale; applied after the shape's own keys.
+struct Transform {
+    Vec3 translate{0.0f, 0.0f, 0.0f};
+    Vec3 rotate{0.0f, 0.0f, 0.0f};
+    Vec3 scale{1.0f, 1.0f, 1.0f};
+    bool scaleWrittenAsNumber = false;  ///< Round-trips `"scale": 2` as a number.
+    bool isIdentity() const {
+        return translate == Vec3(0.0f) && rotate == Vec3(0.0f) && scale == Vec3(1.0f);
+    }
+    /// World-from-object matrix: T * Rz * Ry * Rx * S.
+    Mat4 matrix() const;
+    bool operator==(const Transform& o) const {
+        return translate == o.translate && rotate == o.rotate && scale == o.scale;
+    }
+};
+
+/// One object of the scene.
+struct Object {
+    ObjectId id = kNoObject;
+    std::string name;
+    std::string material;  ///< Material name; empty means the built-in grey diffuse.
+    bool visible = true;
+    Geometry geometry;
+    Transform transform;
+    Extras extras;
+    bool operator==(const Object&) const = default;
+};
+
+/// The whole editable scene. Ids are assigned by the document and never reused.
+struct SceneDocument {
+    Camera camera;
+    RenderSettings render;
+    std::vector<Material> materials;
+    std::vector<Light> lights;
+    std::vector<Object> objects;
+    Extras extras;
+    ObjectId nextId = 1;
+
+    /// Appends an object, giving it a fresh id; returns that id.
+    ObjectId addObject(Object o);
+    /// Appends a light, giving it a fresh id; returns that id.
+    ObjectId addLight(Light l);
+    Object* findObject(ObjectId id);
+    const Object* findObject(ObjectId id) const;
+    Light* findLight(ObjectId id);
+    const Light* findLight(ObjectId id) const;
+    const Material* findMaterial(const std::string& name) const;
+
+    /// Content equality: ids are identity, not content, so they are not compared.
+    bool sameContent(const SceneDocument& o) const;
+};
+
+/// Name of a geometry kind as the scene format spells it ("sphere", "plane", ...).
+const char* geometryTypeName(const Geometry& g);
+
+}  // namespace rs
