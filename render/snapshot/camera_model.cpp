@@ -1,0 +1,39 @@
+// Camera frame set-up and projection of world points to the image (for dirty regions, picking).
+#include "snapshot/camera_model.h"
+
+#include <cmath>
+
+namespace rs {
+
+CameraModel::CameraModel(const Camera& camera, int width, int height)
+    : width_(width), height_(height), orthographic_(camera.projection == Projection::Orthographic) {
+    origin_ = camera.position;
+    forward_ = glm::normalize(camera.target - camera.position);
+    right_ = glm::normalize(glm::cross(forward_, camera.up));
+    up_ = glm::cross(right_, forward_);
+    float aspect = float(width) / float(height);
+    halfHeight_ = orthographic_ ? 0.5f * camera.orthoHeight
+                                : std::tan(glm::radians(camera.fovY) * 0.5f);
+    halfWidth_ = halfHeight_ * aspect;
+    invWidth_ = 1.0f / float(width);
+    invHeight_ = 1.0f / float(height);
+}
+
+bool CameraModel::project(const Vec3& p, float& px, float& py) const {
+    Vec3 d = p - origin_;
+    float z = glm::dot(d, forward_);
+    float u, v;
+    if (orthographic_) {
+        u = glm::dot(d, right_);
+        v = glm::dot(d, up_);
+    } else {
+        if (z <= 0.0f) return false;
+        u = glm::dot(d, right_) / z;
+        v = glm::dot(d, up_) / z;
+    }
+    px = (u / halfWidth_ + 1.0f) * 0.5f * float(width_);
+    py = (1.0f - v / halfHeight_) * 0.5f * float(height_);
+    return true;
+}
+
+}  // namespace rs

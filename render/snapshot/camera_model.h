@@ -1,0 +1,40 @@
+// The camera as the renderer uses it: an orthonormal frame that turns image points into rays.
+#pragma once
+
+#include "core/math.h"
+#include "scene/document.h"
+
+namespace rs {
+
+/// Generates primary rays. Image x grows right, y grows down; (px, py) are continuous pixel
+/// coordinates, so a pixel's centre is (i + 0.5, j + 0.5).
+class CameraModel {
+public:
+    CameraModel() = default;
+    CameraModel(const Camera& camera, int width, int height);
+
+    /// The primary ray through image point (px, py), unit direction.
+    Ray generateRay(float px, float py) const {
+        float u = (2.0f * px * invWidth_ - 1.0f) * halfWidth_;
+        float v = (1.0f - 2.0f * py * invHeight_) * halfHeight_;
+        if (orthographic_) return Ray::make(origin_ + right_ * u + up_ * v, forward_);
+        return Ray::make(origin_, glm::normalize(forward_ + right_ * u + up_ * v));
+    }
+    /// The image point where world point `p` projects; false when it is behind the camera.
+    bool project(const Vec3& p, float& px, float& py) const;
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    const Vec3& origin() const { return origin_; }
+    const Vec3& forward() const { return forward_; }
+    bool orthographic() const { return orthographic_; }
+
+private:
+    Vec3 origin_{0.0f}, forward_{0.0f, 0.0f, -1.0f}, right_{1.0f, 0.0f, 0.0f}, up_{0.0f, 1.0f, 0.0f};
+    float halfWidth_ = 1.0f, halfHeight_ = 1.0f;
+    float invWidth_ = 1.0f, invHeight_ = 1.0f;
+    int width_ = 1, height_ = 1;
+    bool orthographic_ = false;
+};
+
+}  // namespace rs

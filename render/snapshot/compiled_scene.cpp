@@ -1,0 +1,174 @@
+// Building a snapshot from a document, and the scene-level ray queries (planes + BVH).
+#include "snapshot/compiled_scene.h"
+
+#include <cmath>
+
+namespace rs {
+
+namespace {
+
+CompiledMaterial compileMaterial(const Material& m) {
+    return {m.color,        m.diffuse,      m.specular, m.shininess, m.reflectivity,
+            m.transparency, m.ior,          1.0f - m.reflectivity - m.transparency};
+}
+
+/// True when the linear part is a rotation times a uniform scale (spheres stay spheres).
+bool isSimilarity(const Transform& t) {
+    Vec3 s = glm::abs(t.scale);
+    return s.x == s.y && s.y == s.z;
+}
+
+Frame makeFrame(const Mat4& worldFromObject) {
+    Frame f;
+    f.objectFromWorld = glm::inverse(worldFromObject);
+    f.dirToObject = Mat3(f.objectFromWorld);
+    f.normalToWorld = glm::transpose(Mat3(f.objectFromWorld));
+    return f;
+}
+
+}  // namespace
+
+CompiledScene::CompiledScene(const SceneDocument& doc)
+    : camera_(doc.camera, doc.render.width, doc.render.height), settings_(doc.render) {
+    // Material 0 is the built-in grey diffuse used by objects that name none.
+    materials_.push_back(compileMaterial(Material{}));
+    for (const Material& m : doc.materials) materials_.push_back(compileMaterial(m));
+    auto materialIndex = [&](const std::string& name) -> uint32_t {
+        for (std::size_t i = 0; i < doc.materials.size(); ++i)
+            if (doc.materials[i].name == name) return uint32_t(i + 1);
+        return 0;
+    };
+
+    for (const Light& l : doc.lights) {
+        float radius = l.type == LightType::Sphere ? l.radius : 0.0f;
+        lights_.push_back({l.position, radius, l.color * l.intensity, l.id});
+        sceneBounds_.expand(l.position - Vec3(radius));
+        sceneBounds_.expand(l.position + Vec3(radius));
+    }
+
+    for (const Object& o : doc.objects) {
+        if (!o.visible) continue;
+        const uint32_t mat = materialIndex(o.material);
+        const Mat4 m = o.transform.matrix();
+        const Mat3 m3(m);
+        Primitive prim;
+        prim.material = mat;
+        prim.id = o.id;
+        if (const auto* plane = std::get_if<PlaneGeometry>(&o.geometry)) {
+            planes_.push_back({{plane->point, glm::normalize(plane->normal)}, mat, o.id});
+            continue;
+        } else if (const auto* s = std::get_if<SphereGeometry>(&o.geometry)) {
+            if (isSimilarity(o.transform)) {
+                SphereShape world{Vec3(m * glm::vec4(s->center, 1.0f)),
+                                  s->radius * std::abs(o.transform.scale.x)};
+                prim.shape = world;
+                prim.worldBounds = bounds(world);
+            } else {
+                SphereShape local{s->center, s->radius};
+                prim.shape = local;
+                prim.frame = int32_t(frames_.size());
+                frames_.push_back(makeFrame(m));
+                prim.worldBounds = bounds(local).transformed(m);
+            }
+        } else if (const auto* r = std::get_if<RectangleGeometry>(&o.geometry)) {
+            // An affine map keeps a parallelogram a parallelogram: store it in world space.
+            RectangleShape world = RectangleShape::make(Vec3(m * glm::vec4(r->center, 1.0f)),
+                                                        m3 * r->u, m3 * r->v);
+            prim.shape = world;
+            prim.worldBounds = bounds(world);
+        } else if (const auto* b = std::get_if<BoxGeometry>(&o.geometry)) {
+            BoxShape local{Aabb{b->min, b->max}};
+            if (o.transform.rotate == Vec3(0.0f)) {
+                // Scale and translation keep the box axis-aligned: store it in world space.
+                BoxShape world{local.box.transformed(m)};
+                prim.shape = world;
+                prim.worldBounds = world.box;
+            } else {
+                prim.shape = local;
+                prim.frame = int32_t(frames_.size());
+                frames_.push_back(makeFrame(m));
+                prim.worldBounds = local.box.transformed(m);
+            }
+        } else if (const auto* mesh = std::get_if<MeshGeometry>(&o.geometry)) {
+            if (!mesh->data || mesh->data->triangleCount() == 0) continue;
+            auto accel = std::make_shared<const MeshAccel>(mesh->data, mesh->smoothNormals);
+            prim.worldBounds = accel->bounds().transformed(m);
+            prim.shape = MeshShape{std::move(accel)};
+            prim.frame = int32_t(frames_.size());
+            frames_.push_back(makeFrame(m));
+        }
+        sceneBounds_.expand(prim.worldBounds);
+        primitives_.push_back(std::move(prim));
+    }
+
+    std::vector<Aabb> boxes;
+    boxes.reserve(primitives_.size());
+    for (const Primitive& p : primitives_) boxes.push_back(p.worldBounds);
+    bvh_.build(boxes, 2);
+
+    sceneBounds_.expand(camera_.origin());
+    for (const PlanePrimitive& p : planes_) sceneBounds_.expand(p.shape.point);
+    // Offsets grow with the scene so large scenes do not self-intersect in float precision.
+    float extent = sceneBounds_.empty() ? 1.0f : glm::length(sceneBounds_.extent());
+    epsilon_ = 1e-4f * std::max(1.0f, extent);
+}
+
+namespace {
+/// Tests one bounded shape against a ray given in the shape's own frame.
+bool intersectShape(const BoundedShape& shape, const Ray& ray, float tmin, float tmax,
+                    ShapeHit& hit) {
+    return std::visit(
+        [&](const auto& s) -> bool {
+            using T = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<T, MeshShape>) {
+                return s.accel->intersect(ray, tmin, tmax, hit);
+            } else {
+                return rs::intersect(s, ray, tmin, tmax, hit);
+            }
+        },
+        shape);
+}
+}  // namespace
+
+bool CompiledScene::intersectPrimitive(const Primitive& p, const Ray& ray, float tmin, float tmax,
+                                       ShapeHit& hit) const {
+    if (p.frame < 0) return intersectShape(p.shape, ray, tmin, tmax, hit);
+    // Test in the object's frame: t is unchanged because the direction is mapped linearly too.
+    const Frame& f = frames_[std::size_t(p.frame)];
+    const Ray local = Ray::make(Vec3(f.objectFromWorld * glm::vec4(ray.origin, 1.0f)),
+                                f.dirToObject * ray.dir);
+    if (!intersectShape(p.shape, local, tmin, tmax, hit)) return false;
+    hit.n = glm::normalize(f.normalToWorld * hit.n);
+    return true;
+}
+
+bool CompiledScene::intersect(const Ray& ray, float tmin, float tmax, SurfaceHit& hit) const {
+    bool found = false;
+    ShapeHit sh;
+    for (const PlanePrimitive& p : planes_) {
+        if (rs::intersect(p.shape, ray, tmin, tmax, sh)) {
+            tmax = sh.t;
+            hit = {sh.t, sh.n, p.material, p.id};
+            found = true;
+        }
+    }
+    found |= bvh_.closestHit(ray, tmin, tmax, [&](uint32_t index, float& tmaxRef) {
+        const Primitive& p = primitives_[index];
+        if (!intersectPrimitive(p, ray, tmin, tmaxRef, sh)) return false;
+        tmaxRef = sh.t;
+        hit = {sh.t, sh.n, p.material, p.id};
+        return true;
+    });
+    return found;
+}
+
+bool CompiledScene::occluded(const Ray& ray, float tmin, float tmax) const {
+    ShapeHit sh;
+    for (const PlanePrimitive& p : planes_)
+        if (rs::intersect(p.shape, ray, tmin, tmax, sh)) return true;
+    return bvh_.anyHit(ray, tmin, tmax, [&](uint32_t index) {
+        return intersectPrimitive(primitives_[index], ray, tmin, tmax, sh);
+    });
+}
+
+}  // namespace rs

@@ -1,0 +1,112 @@
+// The immutable, render-ready snapshot of a document: world-space shapes, BVH, lights, materials.
+#pragma once
+
+#include "accel/bvh.h"
+#include "accel/mesh_accel.h"
+#include "geometry/shapes.h"
+#include "scene/document.h"
+#include "snapshot/camera_model.h"
+
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace rs {
+
+/// Material with its weights resolved for the illumination equation.
+struct CompiledMaterial {
+    Color color;
+    float diffuse, specular, shininess, reflectivity, transparency, ior;
+    float localWeight;  ///< 1 - reflectivity - transparency.
+};
+
+/// A light as the integrator needs it: position, radius (0 for a point) and intensity * colour.
+struct CompiledLight {
+    Vec3 position;
+    float radius;
+    Color power;
+    ObjectId id;
+};
+
+/// Object-to-world transform of a shape that is tested in its own frame.
+struct Frame {
+    Mat4 objectFromWorld;
+    Mat3 dirToObject;    ///< Linear part of objectFromWorld.
+    Mat3 normalToWorld;  ///< Inverse transpose of the world-from-object linear part.
+};
+
+/// A mesh instance: the shared triangle BVH plus the instance's frame (always present).
+struct MeshShape {
+    std::shared_ptr<const MeshAccel> accel;
+};
+
+/// The closed set of bounded render shapes.
+using BoundedShape = std::variant<SphereShape, RectangleShape, BoxShape, MeshShape>;
+
+/// One bounded object of the snapshot. `frame` < 0: the shape is stored in world space.
+struct Primitive {
+    BoundedShape shape;
+    int32_t frame = -1;
+    uint32_t material = 0;
+    ObjectId id = kNoObject;
+    Aabb worldBounds;
+};
+
+/// An unbounded plane, tested outside the BVH (thesis 3.1).
+struct PlanePrimitive {
+    PlaneShape shape;
+    uint32_t material;
+    ObjectId id;
+};
+
+/// What a ray hit: where, the unit outward normal, material and the object's id.
+struct SurfaceHit {
+    float t;
+    Vec3 n;
+    uint32_t material;
+    ObjectId id;
+};
+
+/// Render-ready snapshot. Built by value from a document; holds no reference into it, so the
+/// document can be edited while workers trace an older snapshot.
+class CompiledScene {
+public:
+    /// Compiles `doc`. Meshes must already be loaded (MeshGeometry::data); a mesh object
+    /// without data is skipped.
+    explicit CompiledScene(const SceneDocument& doc);
+
+    /// Closest hit with t in (tmin, tmax).
+    bool intersect(const Ray& ray, float tmin, float tmax, SurfaceHit& hit) const;
+    /// True when anything lies on the ray with t in (tmin, tmax) (shadow rays).
+    bool occluded(const Ray& ray, float tmin, float tmax) const;
+
+    const CameraModel& camera() const { return camera_; }
+    const RenderSettings& settings() const { return settings_; }
+    const std::vector<CompiledMaterial>& materials() const { return materials_; }
+    const std::vector<CompiledLight>& lights() const { return lights_; }
+    const std::vector<Primitive>& primitives() const { return primitives_; }
+    const std::vector<PlanePrimitive>& planes() const { return planes_; }
+    const Bvh& bvh() const { return bvh_; }
+    /// Ray offset that avoids self-intersection, scaled to the scene's size.
+    float epsilon() const { return epsilon_; }
+    /// Bounds of everything bounded, lights included.
+    const Aabb& sceneBounds() const { return sceneBounds_; }
+
+private:
+    bool intersectPrimitive(const Primitive& p, const Ray& ray, float tmin, float tmax,
+                            ShapeHit& hit) const;
+
+    CameraModel camera_;
+    RenderSettings settings_;
+    std::vector<CompiledMaterial> materials_;
+    std::vector<CompiledLight> lights_;
+    std::vector<Primitive> primitives_;
+    std::vector<PlanePrimitive> planes_;
+    std::vector<Frame> frames_;
+    Bvh bvh_;
+    float epsilon_ = 1e-4f;
+    Aabb sceneBounds_;
+};
+
+}  // namespace rs
