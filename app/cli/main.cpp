@@ -1,7 +1,55 @@
-// raystudio-cli entry point: dispatches to the sub-commands.
-#include <cstdio>
+// raystudio-cli entry point: dispatches to the sub-commands and maps failures to exit codes.
+#include "arguments.h"
+#include "commands.h"
 
-int main() {
-    std::fprintf(stderr, "raystudio-cli: not yet implemented\n");
-    return 1;
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <new>
+#include <string>
+
+namespace {
+
+const char* const kUsage =
+    "usage: raystudio-cli <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  render SCENE -o OUT [--width W] [--height H] [--max-depth D] [--shadow-samples N]\n"
+    "                      [--supersampling N] [--threads N] [--stats]\n"
+    "      render a scene file to an image (PNG, JPEG, TIFF, EXR, HDR by extension)\n"
+    "  validate SCENE\n"
+    "      check a scene file; prints 'ok' or every error found\n"
+    "  bench SCENE [--repeat N] [--json] [--threads N] [--width W] [--height H]\n"
+    "      the thesis's chapter 4.2 experiments (shadow samples, depth, supersampling)\n"
+    "\n"
+    "exit codes: 0 success, 2 bad input or usage, 1 any other failure\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fputs(kUsage, stderr);
+        return 2;
+    }
+    const std::string command = argv[1];
+    try {
+        if (command == "render") return rs::cli::runRender(argc, argv);
+        if (command == "validate") return rs::cli::runValidate(argc, argv);
+        if (command == "bench") return rs::cli::runBench(argc, argv);
+        if (command == "--help" || command == "-h" || command == "help") {
+            std::fputs(kUsage, stdout);
+            return 0;
+        }
+        std::fprintf(stderr, "raystudio-cli: unknown command '%s'\n\n%s", command.c_str(), kUsage);
+        return 2;
+    } catch (const rs::cli::UsageError& e) {
+        std::fprintf(stderr, "raystudio-cli %s: %s\n", command.c_str(), e.message.c_str());
+        return 2;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "raystudio-cli %s: out of memory\n", command.c_str());
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "raystudio-cli %s: %s\n", command.c_str(), e.what());
+        return 1;
+    }
 }

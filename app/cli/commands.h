@@ -1,0 +1,24 @@
+// The raystudio-cli sub-commands; each returns the process exit code (0, 1 or 2).
+#pragma once
+
+#include "io/scene_io.h"
+
+namespace rs::cli {
+
+class Arguments;
+
+int runRender(int argc, char** argv);
+int runValidate(int argc, char** argv);
+int runBench(int argc, char** argv);
+
+/// Loads a scene for a command; prints every error to stderr and returns false on failure.
+bool loadSceneOrReport(const std::string& path, SceneDocument& doc);
+
+/// Applies the shared render-setting overrides (--width, --height, --max-depth,
+/// --shadow-samples, --supersampling); throws UsageError on bad values.
+void applyRenderOverrides(const Arguments& args, RenderSettings& settings);
+
+/// Largest accepted image side; larger images are refused before any allocation.
+inline constexpr int kMaxImageSide = 16384;
+
+}  // namespace rs::cli

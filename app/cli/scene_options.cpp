@@ -1,0 +1,27 @@
+// Loading scenes for commands and applying the shared render-setting overrides.
+#include "arguments.h"
+#include "commands.h"
+
+#include <cstdio>
+
+namespace rs::cli {
+
+bool loadSceneOrReport(const std::string& path, SceneDocument& doc) {
+    SceneLoadResult result = loadScene(path);
+    if (!result.ok()) {
+        for (const SceneError& e : result.errors) std::fprintf(stderr, "%s\n", e.toString().c_str());
+        return false;
+    }
+    doc = std::move(result.document);
+    return true;
+}
+
+void applyRenderOverrides(const Arguments& args, RenderSettings& settings) {
+    if (auto v = args.intValue("--width", 1, kMaxImageSide)) settings.width = *v;
+    if (auto v = args.intValue("--height", 1, kMaxImageSide)) settings.height = *v;
+    if (auto v = args.intValue("--max-depth", 0, 1000)) settings.maxDepth = *v;
+    if (auto v = args.intValue("--shadow-samples", 0, 4096)) settings.shadowSamples = *v;
+    if (auto v = args.intValue("--supersampling", 1, 1024)) settings.supersampling = *v;
+}
+
+}  // namespace rs::cli

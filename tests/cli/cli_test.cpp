@@ -1,0 +1,171 @@
+// raystudio-cli as a user runs it: exit codes 0/1/2, messages that name the problem, outputs.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Run {
+    int exitCode;  ///< -1 when the process died from a signal.
+    std::string out;
+};
+
+/// Runs the CLI with `args` (shell words), capturing stdout and stderr together.
+Run cli(const std::string& args, bool stdoutOnly = false) {
+    const std::string cmd =
+        std::string("'") + RAYSTUDIO_CLI + "' " + args + (stdoutOnly ? " 2>/dev/null" : " 2>&1");
+    FILE* pipe = popen(cmd.c_str(), "r");
+    Run run{-1, {}};
+    std::array<char, 4096> buf;
+    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) run.out.append(buf.data(), n);
+    const int status = pclose(pipe);
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return run;
+}
+
+class CliTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("raystudio-cli-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    std::string write(const std::string& name, const std::string& text) {
+        const fs::path p = dir_ / name;
+        std::ofstream(p) << text;
+        return p.string();
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    fs::path dir_;
+};
+
+const std::string kRoom = std::string(RAYSTUDIO_SCENES_DIR) + "/reference-room.scene.json";
+
+TEST_F(CliTest, NoArguments_PrintsUsageAndExits2) {
+    Run r = cli("");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("usage"), std::string::npos);
+}
+
+TEST_F(CliTest, UnknownCommandOrOption_Exits2NamingIt) {
+    Run r = cli("paint " + kRoom);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("paint"), std::string::npos);
+    r = cli("render " + kRoom + " -o " + path("x.png") + " --fast");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("--fast"), std::string::npos);
+}
+
+TEST_F(CliTest, Render_WritesTheImageAndStatsLine) {
+    Run r = cli("render " + kRoom + " -o " + path("room.png") +
+                " --width 64 --height 36 --threads 2 --stats", true);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_TRUE(fs::exists(path("room.png")));
+    auto stats = nlohmann::json::parse(r.out);
+    EXPECT_EQ(stats["width"], 64);
+    EXPECT_EQ(stats["height"], 36);
+    EXPECT_GT(stats["rays"].get<long>(), 64 * 36 - 1);
+    EXPECT_GE(stats["ms"].get<double>(), 0.0);
+    EXPECT_TRUE(stats.contains("mrays_per_s"));
+}
+
+TEST_F(CliTest, Render_EveryOutputFormat) {
+    for (const char* ext : {"png", "jpg", "tif", "exr", "hdr"}) {
+        const std::string out = path(std::string("room.") + ext);
+        Run r = cli("render " + kRoom + " -o " + out + " --width 16 --height 9");
+        EXPECT_EQ(r.exitCode, 0) << ext << ": " << r.out;
+        EXPECT_GT(fs::file_size(out), 0u) << ext;
+    }
+}
+
+TEST_F(CliTest, Render_BadNumbers_Exit2NamingTheOption) {
+    for (const char* bad : {"--width 0", "--width abc", "--height -5", "--threads 0",
+                            "--supersampling 0", "--max-depth -1", "--width 99999"}) {
+        Run r = cli("render " + kRoom + " -o " + path("x.png") + " " + bad);
+        EXPECT_EQ(r.exitCode, 2) << bad;
+        EXPECT_NE(r.out.find(std::string(bad).substr(0, std::string(bad).find(' '))),
+                  std::string::npos) << bad << ": " << r.out;
+    }
+}
+
+TEST_F(CliTest, Render_MissingSceneOrOutput_Exit2) {
+    Run r = cli("render " + path("nope.scene.json") + " -o " + path("x.png"));
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("nope.scene.json"), std::string::npos) << r.out;
+    r = cli("render " + kRoom);
+    EXPECT_EQ(r.exitCode, 2);
+    r = cli("render " + kRoom + " -o " + path("x.bmpx") + " --width 8 --height 8");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("x.bmpx"), std::string::npos) << r.out;
+}
+
+TEST_F(CliTest, Validate_GoodScenePrintsOk) {
+    Run r = cli("validate " + kRoom);
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.out, "ok\n");
+}
+
+TEST_F(CliTest, Validate_BadScenePrintsEveryErrorWithItsPointer) {
+    const std::string scene = write("bad.scene.json", R"({
+  "format": "raystudio-scene", "version": 1,
+  "objects": [
+    { "name": "a", "type": "sphere", "center": [0, 0, 0], "radius": 0 },
+    { "name": "b", "type": "sphere", "center": [0, 0, 0], "radius": 1, "colour": [1, 0, 0] }
+  ]
+})");
+    Run r = cli("validate " + scene);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("/objects/0/radius"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("/objects/1/colour"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(":4:"), std::string::npos) << "line of the first error: " << r.out;
+}
+
+TEST_F(CliTest, Bench_JsonHasOneEntryPerExperiment) {
+    Run r = cli("bench " + kRoom + " --repeat 1 --json --width 16 --height 9", true);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    auto entries = nlohmann::json::parse(r.out);
+    ASSERT_TRUE(entries.is_array());
+    EXPECT_EQ(entries.size(), 13u);  // Baseline + 3 experiments of 4 values.
+    for (const auto& e : entries) {
+        EXPECT_TRUE(e.contains("experiment") && e.contains("value") && e.contains("median_ms") &&
+                    e.contains("rays"));
+    }
+    EXPECT_EQ(entries[1]["experiment"], "shadow_samples");
+    EXPECT_EQ(entries[12]["value"], 8);
+}
+
+TEST_F(CliTest, GarbageSceneFiles_NeverCrash) {
+    std::mt19937 rng(1234);
+    const std::string good = R"({"format": "raystudio-scene", "version": 1, "render": {"width": 8,
+ "height": 8}, "objects": [{"name": "s", "type": "sphere", "center": [0,0,-3], "radius": 1}]})";
+    for (int i = 0; i < 40; ++i) {
+        std::string text = good;
+        // Mutate a few characters: truncations, swaps, junk bytes.
+        for (int m = 0; m < 3; ++m) {
+            std::size_t at = rng() % text.size();
+            switch (rng() % 3) {
+                case 0: text.erase(at, 1 + rng() % 5); break;
+                case 1: text[at] = char(rng() % 256); break;
+                default: text.insert(at, std::string(1, "{}[],:\"0-e."[rng() % 11])); break;
+            }
+        }
+        const std::string scene = write("fuzz.scene.json", text);
+        Run r = cli("render " + scene + " -o " + path("fuzz.png"));
+        EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 2) << "exit " << r.exitCode << " for:\n"
+                                                        << text << "\n" << r.out;
+    }
+}
+
+}  // namespace

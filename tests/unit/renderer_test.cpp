@@ -1,0 +1,183 @@
+// Full renders: thread-count determinism, sampling patterns, adaptive supersampling, cancel.
+#include "integrator/renderer.h"
+#include "test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+namespace rs {
+namespace {
+
+TEST(Renderer, SameImageForAnyThreadCount) {
+    SceneDocument doc = test::smallRoom(80, 60);
+    doc.render.supersampling = 2;
+    doc.render.shadowSamples = 4;
+    Light area;
+    area.name = "area";
+    area.type = LightType::Sphere;
+    area.position = Vec3(2, 3, -2);
+    area.radius = 0.5f;
+    doc.addLight(area);
+    const CompiledScene scene(doc);
+    RenderOptions one, two, four;
+    one.threads = 1;
+    two.threads = 2;
+    four.threads = 4;
+    four.tileSize = 7;  // Different tiling must not matter either.
+    const RenderResult a = renderImage(scene, one);
+    const RenderResult b = renderImage(scene, two);
+    const RenderResult c = renderImage(scene, four);
+    EXPECT_EQ(a.image.pixels, b.image.pixels);
+    EXPECT_EQ(a.image.pixels, c.image.pixels);
+    EXPECT_EQ(a.ids, c.ids);
+    EXPECT_EQ(a.rays, c.rays);
+}
+
+TEST(Renderer, IdsBufferNamesTheObjectSeenThroughEachPixelCentre) {
+    SceneDocument doc;
+    doc.render.width = 9;
+    doc.render.height = 9;
+    const ObjectId ball = test::addSphere(doc, "ball", Vec3(0, 0, -5), 1.0f, "");
+    const CompiledScene scene(doc);
+    const RenderResult r = renderImage(scene);
+    EXPECT_EQ(r.ids[4 * 9 + 4], ball);
+    EXPECT_EQ(r.ids[0], kNoObject);
+}
+
+TEST(Sampling, PerfectSquareCounts_UseTheRegularSubGrid) {
+    std::set<std::pair<float, float>> seen;
+    for (int k = 0; k < 4; ++k) {
+        Vec3 o = pixelSampleOffset(k, 4, 123u);
+        seen.insert({o.x, o.y});
+    }
+    EXPECT_EQ(seen, (std::set<std::pair<float, float>>{
+                        {0.25f, 0.25f}, {0.75f, 0.25f}, {0.25f, 0.75f}, {0.75f, 0.75f}}));
+    EXPECT_EQ(pixelSampleOffset(0, 1, 5u), Vec3(0.5f, 0.5f, 0.0f));
+}
+
+TEST(Sampling, OtherCounts_AreNRooksStratified) {
+    for (int n : {2, 3, 8, 12}) {
+        for (uint32_t seed : {1u, 99u, 12345u}) {
+            std::set<int> cols, rows;
+            for (int k = 0; k < n; ++k) {
+                Vec3 o = pixelSampleOffset(k, n, seed);
+                ASSERT_GE(o.x, 0.0f);
+                ASSERT_LT(o.x, 1.0f);
+                ASSERT_GE(o.y, 0.0f);
+                ASSERT_LT(o.y, 1.0f);
+                cols.insert(int(o.x * float(n)));
+                rows.insert(int(o.y * float(n)));
+            }
+            EXPECT_EQ(int(cols.size()), n) << "n=" << n;
+            EXPECT_EQ(int(rows.size()), n) << "n=" << n;
+        }
+    }
+}
+
+TEST(Sampling, DiskSamples_StayInsideTheUnitDiskAndCoverIt) {
+    float sumX = 0.0f, sumY = 0.0f;
+    for (int k = 0; k < 64; ++k) {
+        Vec3 d = stratifiedDiskSample(k, 64, 77u);
+        EXPECT_LE(glm::length(d), 1.0f + 1e-6f);
+        sumX += d.x;
+        sumY += d.y;
+    }
+    EXPECT_NEAR(sumX / 64.0f, 0.0f, 0.1f);
+    EXPECT_NEAR(sumY / 64.0f, 0.0f, 0.1f);
+}
+
+TEST(Renderer, AdaptiveSupersampling_MatchesFullSupersamplingOnEdgesOnly) {
+    SceneDocument doc = test::smallRoom(64, 48);
+    doc.render.supersampling = 4;
+    const RenderResult full = renderImage(CompiledScene(doc));
+    doc.render.adaptiveSupersampling = true;
+    const RenderResult adaptive = renderImage(CompiledScene(doc));
+    doc.render.supersampling = 1;
+    const RenderResult single = renderImage(CompiledScene(doc));
+    int supersampled = 0, kept = 0;
+    for (std::size_t i = 0; i < full.image.pixels.size(); ++i) {
+        const Color a = adaptive.image.pixels[i];
+        if (a == full.image.pixels[i] && a != single.image.pixels[i]) ++supersampled;
+        else if (a == single.image.pixels[i]) ++kept;
+        else ADD_FAILURE() << "pixel " << i << " is neither the 1-sample nor the 4-sample value";
+    }
+    EXPECT_GT(supersampled, 50);  // Silhouettes were refined...
+    EXPECT_GT(kept, int(full.image.pixels.size()) / 2);  // ...flat areas were not.
+    EXPECT_LT(adaptive.rays, full.rays);
+}
+
+TEST(Renderer, CancelFlag_StopsTheRenderAndSaysSo) {
+    SceneDocument doc = test::smallRoom(64, 48);
+    std::atomic<bool> cancel{true};
+    RenderOptions options;
+    options.cancel = &cancel;
+    const RenderResult r = renderImage(CompiledScene(doc), options);
+    EXPECT_TRUE(r.cancelled);
+    EXPECT_EQ(r.rays, 0u);
+}
+
+TEST(Renderer, ProgressReportsEveryTileOnce) {
+    SceneDocument doc = test::smallRoom(100, 40);
+    RenderOptions options;
+    options.tileSize = 32;  // 4 x 2 tiles.
+    int calls = 0, last = 0, total = 0;
+    options.progress = [&](int done, int t) {
+        ++calls;
+        last = std::max(last, done);
+        total = t;
+    };
+    renderImage(CompiledScene(doc), options);
+    EXPECT_EQ(total, 8);
+    EXPECT_EQ(calls, 8);
+    EXPECT_EQ(last, 8);
+}
+
+TEST(Camera, PixelCentreOfTheImageLooksAtTheTarget) {
+    Camera cam;
+    cam.position = Vec3(1, 2, 3);
+    cam.target = Vec3(4, 2, -1);
+    const CameraModel model(cam, 100, 50);
+    const Ray r = model.generateRay(50.0f, 25.0f);
+    const Vec3 expected = glm::normalize(cam.target - cam.position);
+    EXPECT_NEAR(glm::dot(r.dir, expected), 1.0f, 1e-6f);
+}
+
+TEST(Camera, ImageYGrowsDownwardsAndXToTheRight) {
+    Camera cam;  // At the origin looking down -z with +y up.
+    const CameraModel model(cam, 100, 100);
+    const Ray topLeft = model.generateRay(0.5f, 0.5f);
+    EXPECT_LT(topLeft.dir.x, 0.0f);
+    EXPECT_GT(topLeft.dir.y, 0.0f);
+    // fov_y 55: the top edge of the image is 27.5 degrees above the axis.
+    const Ray top = model.generateRay(50.0f, 0.0f);
+    EXPECT_NEAR(std::atan2(top.dir.y, -top.dir.z), glm::radians(27.5f), 1e-5f);
+}
+
+TEST(Camera, ProjectIsTheInverseOfGenerateRay) {
+    Camera cam;
+    cam.position = Vec3(0, 1, 5);
+    cam.target = Vec3(0.5f, 0, 0);
+    for (Projection p : {Projection::Perspective, Projection::Orthographic}) {
+        cam.projection = p;
+        const CameraModel model(cam, 320, 200);
+        const Ray r = model.generateRay(37.25f, 150.5f);
+        float px, py;
+        ASSERT_TRUE(model.project(r.at(3.0f), px, py));
+        EXPECT_NEAR(px, 37.25f, 1e-3f);
+        EXPECT_NEAR(py, 150.5f, 1e-3f);
+    }
+}
+
+TEST(Camera, OrthographicRaysAreParallelAndSpanOrthoHeight) {
+    Camera cam;
+    cam.projection = Projection::Orthographic;
+    cam.orthoHeight = 4.0f;
+    const CameraModel model(cam, 10, 10);
+    const Ray top = model.generateRay(5.0f, 0.0f), bottom = model.generateRay(5.0f, 10.0f);
+    EXPECT_EQ(top.dir, bottom.dir);
+    EXPECT_NEAR(top.origin.y - bottom.origin.y, 4.0f, 1e-5f);
+}
+
+}  // namespace
+}  // namespace rs

@@ -1,0 +1,71 @@
+// Small scenes built in code for the integrator and renderer tests.
+#pragma once
+
+#include "scene/document.h"
+
+namespace rs::test {
+
+/// A document with one material per call, returning the material's name.
+inline std::string addMaterial(SceneDocument& doc, const std::string& name, Color color,
+                               float diffuse, float specular = 0.0f, float reflectivity = 0.0f,
+                               float transparency = 0.0f, float ior = 1.5f) {
+    Material m;
+    m.name = name;
+    m.color = color;
+    m.diffuse = diffuse;
+    m.specular = specular;
+    m.reflectivity = reflectivity;
+    m.transparency = transparency;
+    m.ior = ior;
+    doc.materials.push_back(m);
+    return name;
+}
+
+inline ObjectId addSphere(SceneDocument& doc, const std::string& name, Vec3 center, float radius,
+                          const std::string& material) {
+    Object o;
+    o.name = name;
+    o.material = material;
+    o.geometry = SphereGeometry{center, radius};
+    return doc.addObject(o);
+}
+
+inline ObjectId addPlane(SceneDocument& doc, const std::string& name, Vec3 point, Vec3 normal,
+                         const std::string& material) {
+    Object o;
+    o.name = name;
+    o.material = material;
+    o.geometry = PlaneGeometry{point, normal};
+    return doc.addObject(o);
+}
+
+inline ObjectId addPointLight(SceneDocument& doc, const std::string& name, Vec3 position,
+                              float intensity = 1.0f) {
+    Light l;
+    l.name = name;
+    l.position = position;
+    l.intensity = intensity;
+    return doc.addLight(l);
+}
+
+/// A small room: floor, back wall, a diffuse, a mirror and a glass ball, one light.
+inline SceneDocument smallRoom(int width = 64, int height = 48) {
+    SceneDocument doc;
+    doc.render.width = width;
+    doc.render.height = height;
+    doc.camera.position = Vec3(0, 0, 0);
+    doc.camera.target = Vec3(0, -0.5f, -4);
+    addMaterial(doc, "white", Color(0.75f), 0.9f, 0.3f);
+    addMaterial(doc, "red", Color(0.8f, 0.2f, 0.2f), 1.0f);
+    addMaterial(doc, "mirror", Color(0.9f), 0.0f, 0.0f, 0.9f);
+    addMaterial(doc, "glass", Color(1.0f), 0.0f, 0.5f, 0.0f, 1.0f, 1.5f);
+    addPlane(doc, "floor", Vec3(0, -2, 0), Vec3(0, 1, 0), "white");
+    addPlane(doc, "back", Vec3(0, 0, -8), Vec3(0, 0, 1), "red");
+    addSphere(doc, "diffuse ball", Vec3(-1.5f, -1.2f, -5), 0.8f, "white");
+    addSphere(doc, "mirror ball", Vec3(0.3f, -1.0f, -6), 1.0f, "mirror");
+    addSphere(doc, "glass ball", Vec3(1.2f, -1.4f, -4), 0.6f, "glass");
+    addPointLight(doc, "key", Vec3(0, 3, -3));
+    return doc;
+}
+
+}  // namespace rs::test
