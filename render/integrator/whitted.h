@@ -20,26 +20,75 @@ struct PrimaryInfo {
     ObjectId id = kNoObject;
     float depth = kInfinity;
     Vec3 normal{0.0f};
+    bool touchedSpecular = false;  ///< The ray tree met a reflective or refractive surface.
+};
+
+/// How shadows are traced.
+enum class ShadowQuality {
+    Full,      ///< As the scene says: shadow_samples rays per light, sphere lights sampled.
+    HardOnly,  ///< One shadow ray to each light's centre.
+    Off,       ///< No shadow rays: every light is visible.
+    Deferred,  ///< No light terms at all; shading points are recorded to add them later.
+};
+
+/// Quality knobs the interactive session turns down while the user drags (thesis 4.2).
+struct TraceOptions {
+    int maxDepth = 3;
+    ShadowQuality shadows = ShadowQuality::Full;
+    bool reflectionAsDiffuse = false;  ///< Mirror share shaded as Lambert in the surface colour.
+    bool refractionAsDiffuse = false;  ///< Glass share shaded as Lambert in the surface colour.
+    ObjectId refractionExempt = kNoObject;  ///< Keeps real refraction on this object.
+    /// The full quality the scene's render settings ask for.
+    static TraceOptions fromSettings(const RenderSettings& s) {
+        TraceOptions o;
+        o.maxDepth = s.maxDepth;
+        return o;
+    }
+};
+
+/// A shading point whose light terms were deferred: enough to add them without re-tracing
+/// the camera or secondary rays (thesis 3.3).
+struct ShadingRecord {
+    Vec3 p, n, toViewer;
+    float weight;  ///< Path throughput times the material's local share.
+    uint32_t material;
+    uint32_t seed;  ///< Light-sampling seed, so the deferred samples equal a full trace's.
+};
+
+/// Fixed-capacity destination for shading records of one camera ray; no allocation.
+struct RecordSink {
+    ShadingRecord* data = nullptr;
+    int capacity = 0;
+    int count = 0;
+    bool overflow = false;  ///< More points than capacity: the pixel must be re-traced.
 };
 
 /// Traces rays through a compiled scene. Stateless apart from the scene it reads.
 class WhittedIntegrator {
 public:
+    /// Full quality, as the scene's render settings say.
     explicit WhittedIntegrator(const CompiledScene& scene);
+    WhittedIntegrator(const CompiledScene& scene, const TraceOptions& options);
 
     /// Radiance arriving along a camera ray. `seed` decorrelates light sampling per pixel
-    /// sample; `primary` (optional) receives the first hit.
+    /// sample; `primary` (optional) receives the first hit and whether the tree met a mirror
+    /// or glass; `sink` receives shading records when shadows are Deferred.
     Color traceCamera(const Ray& ray, uint32_t seed, TraceCounters& counters,
-                      PrimaryInfo* primary = nullptr) const;
+                      PrimaryInfo* primary = nullptr, RecordSink* sink = nullptr) const;
+
+    /// The light terms a Deferred trace left out at `record`, with full-quality shadows.
+    Color resolveDeferred(const ShadingRecord& record, TraceCounters& counters) const;
 
 private:
-    Color trace(const Ray& ray, int depth, uint32_t seed, TraceCounters& counters,
-                PrimaryInfo* primary) const;
-    Color shadeLocal(const Vec3& p, const Vec3& n, const Vec3& toViewer, const CompiledMaterial& m,
-                     uint32_t seed, TraceCounters& counters) const;
+    Color trace(const Ray& ray, int depth, float weight, uint32_t seed, TraceCounters& counters,
+                PrimaryInfo* primary, RecordSink* sink) const;
+    /// Sum over lights of the shadowed Lambert + Phong terms (the format's inner sum).
+    Color directLight(const Vec3& p, const Vec3& n, const Vec3& toViewer,
+                      const CompiledMaterial& m, uint32_t seed, ShadowQuality shadows,
+                      TraceCounters& counters) const;
 
     const CompiledScene& scene_;
-    int maxDepth_;
+    TraceOptions options_;
     int shadowSamples_;
     float eps_;
 };
