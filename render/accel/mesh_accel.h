@@ -23,6 +23,9 @@ public:
     bool occluded(const Ray& ray, float tmin, float tmax) const;
 
     const Aabb& bounds() const { return bvh_.bounds(); }
+    /// The mesh data this was built from (snapshots reuse an accel for the same data).
+    const std::shared_ptr<const MeshData>& data() const { return data_; }
+    bool smooth() const { return smooth_; }
     std::size_t triangleCount() const { return triangles_.size(); }
 
 private:

@@ -1,4 +1,4 @@
-// Building a snapshot from a document, and the scene-level ray queries (planes + BVH).
+// Building a snapshot from a document, refitting it after moves, and the scene ray queries.
 #include "snapshot/compiled_scene.h"
 
 #include <cmath>
@@ -8,13 +8,13 @@ namespace rs {
 namespace {
 
 CompiledMaterial compileMaterial(const Material& m) {
-    return {m.color,        m.diffuse,      m.specular, m.shininess, m.reflectivity,
-            m.transparency, m.ior,          1.0f - m.reflectivity - m.transparency};
+    return {m.color,        m.diffuse, m.specular, m.shininess, m.reflectivity,
+            m.transparency, m.ior,     1.0f - m.reflectivity - m.transparency};
 }
 
 /// True when the linear part is a rotation times a uniform scale (spheres stay spheres).
 bool isSimilarity(const Transform& t) {
-    Vec3 s = glm::abs(t.scale);
+    const Vec3 s = glm::abs(t.scale);
     return s.x == s.y && s.y == s.z;
 }
 
@@ -26,94 +26,76 @@ Frame makeFrame(const Mat4& worldFromObject) {
     return f;
 }
 
-}  // namespace
-
-CompiledScene::CompiledScene(const SceneDocument& doc)
-    : camera_(doc.camera, doc.render.width, doc.render.height), settings_(doc.render) {
-    // Material 0 is the built-in grey diffuse used by objects that name none.
-    materials_.push_back(compileMaterial(Material{}));
-    for (const Material& m : doc.materials) materials_.push_back(compileMaterial(m));
-    auto materialIndex = [&](const std::string& name) -> uint32_t {
-        for (std::size_t i = 0; i < doc.materials.size(); ++i)
-            if (doc.materials[i].name == name) return uint32_t(i + 1);
-        return 0;
-    };
-
-    for (const Light& l : doc.lights) {
-        float radius = l.type == LightType::Sphere ? l.radius : 0.0f;
-        lights_.push_back({l.position, radius, l.color * l.intensity, l.id});
-        sceneBounds_.expand(l.position - Vec3(radius));
-        sceneBounds_.expand(l.position + Vec3(radius));
-    }
-
-    for (const Object& o : doc.objects) {
-        if (!o.visible) continue;
-        const uint32_t mat = materialIndex(o.material);
-        const Mat4 m = o.transform.matrix();
-        const Mat3 m3(m);
-        Primitive prim;
-        prim.material = mat;
-        prim.id = o.id;
-        if (const auto* plane = std::get_if<PlaneGeometry>(&o.geometry)) {
-            planes_.push_back({{plane->point, glm::normalize(plane->normal)}, mat, o.id});
-            continue;
-        } else if (const auto* s = std::get_if<SphereGeometry>(&o.geometry)) {
-            if (isSimilarity(o.transform)) {
-                SphereShape world{Vec3(m * glm::vec4(s->center, 1.0f)),
-                                  s->radius * std::abs(o.transform.scale.x)};
-                prim.shape = world;
-                prim.worldBounds = bounds(world);
-            } else {
-                SphereShape local{s->center, s->radius};
-                prim.shape = local;
-                prim.frame = int32_t(frames_.size());
-                frames_.push_back(makeFrame(m));
-                prim.worldBounds = bounds(local).transformed(m);
-            }
-        } else if (const auto* r = std::get_if<RectangleGeometry>(&o.geometry)) {
-            // An affine map keeps a parallelogram a parallelogram: store it in world space.
-            RectangleShape world = RectangleShape::make(Vec3(m * glm::vec4(r->center, 1.0f)),
-                                                        m3 * r->u, m3 * r->v);
-            prim.shape = world;
-            prim.worldBounds = bounds(world);
-        } else if (const auto* b = std::get_if<BoxGeometry>(&o.geometry)) {
-            BoxShape local{Aabb{b->min, b->max}};
-            if (o.transform.rotate == Vec3(0.0f)) {
-                // Scale and translation keep the box axis-aligned: store it in world space.
-                BoxShape world{local.box.transformed(m)};
-                prim.shape = world;
-                prim.worldBounds = world.box;
-            } else {
-                prim.shape = local;
-                prim.frame = int32_t(frames_.size());
-                frames_.push_back(makeFrame(m));
-                prim.worldBounds = local.box.transformed(m);
-            }
-        } else if (const auto* mesh = std::get_if<MeshGeometry>(&o.geometry)) {
-            if (!mesh->data || mesh->data->triangleCount() == 0) continue;
-            auto accel = std::make_shared<const MeshAccel>(mesh->data, mesh->smoothNormals);
-            prim.worldBounds = accel->bounds().transformed(m);
-            prim.shape = MeshShape{std::move(accel)};
-            prim.frame = int32_t(frames_.size());
-            frames_.push_back(makeFrame(m));
-        }
-        sceneBounds_.expand(prim.worldBounds);
-        primitives_.push_back(std::move(prim));
-    }
-
-    std::vector<Aabb> boxes;
-    boxes.reserve(primitives_.size());
-    for (const Primitive& p : primitives_) boxes.push_back(p.worldBounds);
-    bvh_.build(boxes, 2);
-
-    sceneBounds_.expand(camera_.origin());
-    for (const PlanePrimitive& p : planes_) sceneBounds_.expand(p.shape.point);
-    // Offsets grow with the scene so large scenes do not self-intersect in float precision.
-    float extent = sceneBounds_.empty() ? 1.0f : glm::length(sceneBounds_.extent());
-    epsilon_ = 1e-4f * std::max(1.0f, extent);
+uint32_t materialIndex(const SceneDocument& doc, const std::string& name) {
+    for (std::size_t i = 0; i < doc.materials.size(); ++i)
+        if (doc.materials[i].name == name) return uint32_t(i + 1);
+    return 0;  // The built-in grey diffuse.
 }
 
-namespace {
+/// Mesh BVH of `previous` for the same mesh data, so edits never rebuild a mesh's BVH.
+std::shared_ptr<const MeshAccel> findMeshAccel(const CompiledScene* previous,
+                                               const MeshGeometry& mesh) {
+    if (!previous) return nullptr;
+    for (const Primitive& p : previous->primitives())
+        if (const auto* m = std::get_if<MeshShape>(&p.shape))
+            if (m->accel->data() == mesh.data && m->accel->smooth() == mesh.smoothNormals)
+                return m->accel;
+    return nullptr;
+}
+
+/// Render form of one bounded object; false for planes and meshes without triangles.
+bool compileBounded(const Object& o, uint32_t material, std::shared_ptr<const MeshAccel> accel,
+                    Primitive& prim) {
+    const Mat4 m = o.transform.matrix();
+    const Mat3 m3(m);
+    prim = Primitive{};
+    prim.material = material;
+    prim.id = o.id;
+    if (const auto* s = std::get_if<SphereGeometry>(&o.geometry)) {
+        if (isSimilarity(o.transform)) {
+            const SphereShape world{Vec3(m * glm::vec4(s->center, 1.0f)),
+                                    s->radius * std::abs(o.transform.scale.x)};
+            prim.shape = world;
+            prim.worldBounds = bounds(world);
+        } else {
+            const SphereShape local{s->center, s->radius};
+            prim.shape = local;
+            prim.hasFrame = true;
+            prim.frame = makeFrame(m);
+            prim.worldBounds = bounds(local).transformed(m);
+        }
+    } else if (const auto* r = std::get_if<RectangleGeometry>(&o.geometry)) {
+        // An affine map keeps a parallelogram a parallelogram: store it in world space.
+        const RectangleShape world = RectangleShape::make(Vec3(m * glm::vec4(r->center, 1.0f)),
+                                                          m3 * r->u, m3 * r->v);
+        prim.shape = world;
+        prim.worldBounds = bounds(world);
+    } else if (const auto* b = std::get_if<BoxGeometry>(&o.geometry)) {
+        const BoxShape local{Aabb{b->min, b->max}};
+        if (o.transform.rotate == Vec3(0.0f)) {
+            // Scale and translation keep the box axis-aligned: store it in world space.
+            const BoxShape world{local.box.transformed(m)};
+            prim.shape = world;
+            prim.worldBounds = world.box;
+        } else {
+            prim.shape = local;
+            prim.hasFrame = true;
+            prim.frame = makeFrame(m);
+            prim.worldBounds = local.box.transformed(m);
+        }
+    } else if (const auto* mesh = std::get_if<MeshGeometry>(&o.geometry)) {
+        if (!mesh->data || mesh->data->triangleCount() == 0) return false;
+        if (!accel) accel = std::make_shared<const MeshAccel>(mesh->data, mesh->smoothNormals);
+        prim.worldBounds = accel->bounds().transformed(m);
+        prim.shape = MeshShape{std::move(accel)};
+        prim.hasFrame = true;
+        prim.frame = makeFrame(m);
+    } else {
+        return false;
+    }
+    return true;
+}
+
 /// Tests one bounded shape against a ray given in the shape's own frame.
 bool intersectShape(const BoundedShape& shape, const Ray& ray, float tmin, float tmax,
                     ShapeHit& hit) {
@@ -128,13 +110,95 @@ bool intersectShape(const BoundedShape& shape, const Ray& ray, float tmin, float
         },
         shape);
 }
+
 }  // namespace
+
+CompiledScene::CompiledScene(const SceneDocument& doc, const CompiledScene* previous)
+    : camera_(doc.camera, doc.render.width, doc.render.height), settings_(doc.render) {
+    materials_.push_back(compileMaterial(Material{}));
+    for (const Material& m : doc.materials) materials_.push_back(compileMaterial(m));
+    for (const Light& l : doc.lights) {
+        const float radius = l.type == LightType::Sphere ? l.radius : 0.0f;
+        lights_.push_back({l.position, radius, l.color * l.intensity, l.id});
+    }
+    for (const Object& o : doc.objects) {
+        if (!o.visible) continue;
+        const uint32_t mat = materialIndex(doc, o.material);
+        if (const auto* plane = std::get_if<PlaneGeometry>(&o.geometry)) {
+            planes_.push_back({{plane->point, glm::normalize(plane->normal)}, mat, o.id});
+            continue;
+        }
+        std::shared_ptr<const MeshAccel> accel;
+        if (const auto* mesh = std::get_if<MeshGeometry>(&o.geometry))
+            accel = findMeshAccel(previous, *mesh);
+        Primitive prim;
+        if (compileBounded(o, mat, std::move(accel), prim)) primitives_.push_back(std::move(prim));
+    }
+    std::vector<Aabb> boxes;
+    boxes.reserve(primitives_.size());
+    for (const Primitive& p : primitives_) boxes.push_back(p.worldBounds);
+    bvh_.build(boxes, 2);
+    computeEpsilon();
+}
+
+void CompiledScene::computeEpsilon() {
+    sceneBounds_ = Aabb{};
+    for (const Primitive& p : primitives_) sceneBounds_.expand(p.worldBounds);
+    for (const CompiledLight& l : lights_) {
+        sceneBounds_.expand(l.position - Vec3(l.radius));
+        sceneBounds_.expand(l.position + Vec3(l.radius));
+    }
+    for (const PlanePrimitive& p : planes_) sceneBounds_.expand(p.shape.point);
+    sceneBounds_.expand(camera_.origin());
+    // Offsets grow with the scene so large scenes do not self-intersect in float precision.
+    const float extent = sceneBounds_.empty() ? 1.0f : glm::length(sceneBounds_.extent());
+    epsilon_ = std::exp2(std::ceil(std::log2(1e-4f * std::max(1.0f, extent))));
+}
+
+CompiledScene CompiledScene::refitted(const SceneDocument& doc,
+                                      const std::vector<ObjectId>& moved) const {
+    CompiledScene out = *this;
+    for (ObjectId id : moved) {
+        const int index = primitiveIndex(id);
+        const Object* o = doc.findObject(id);
+        if (index < 0 || !o) continue;
+        Primitive& prim = out.primitives_[std::size_t(index)];
+        std::shared_ptr<const MeshAccel> accel;
+        if (const auto* m = std::get_if<MeshShape>(&prim.shape)) accel = m->accel;
+        compileBounded(*o, materialIndex(doc, o->material), std::move(accel), prim);
+        out.bvh_.refitPrimitive(uint32_t(index), prim.worldBounds);
+    }
+    out.computeEpsilon();
+    return out;
+}
+
+CompiledScene CompiledScene::withBoxProxy(ObjectId id) const {
+    CompiledScene out = *this;
+    const int index = primitiveIndex(id);
+    if (index >= 0) {
+        Primitive& prim = out.primitives_[std::size_t(index)];
+        prim.shape = BoxShape{prim.worldBounds};
+        prim.hasFrame = false;
+    }
+    return out;
+}
+
+int CompiledScene::primitiveIndex(ObjectId id) const {
+    for (std::size_t i = 0; i < primitives_.size(); ++i)
+        if (primitives_[i].id == id) return int(i);
+    return -1;
+}
+
+Aabb CompiledScene::objectBounds(ObjectId id) const {
+    const int index = primitiveIndex(id);
+    return index < 0 ? Aabb{} : primitives_[std::size_t(index)].worldBounds;
+}
 
 bool CompiledScene::intersectPrimitive(const Primitive& p, const Ray& ray, float tmin, float tmax,
                                        ShapeHit& hit) const {
-    if (p.frame < 0) return intersectShape(p.shape, ray, tmin, tmax, hit);
+    if (!p.hasFrame) return intersectShape(p.shape, ray, tmin, tmax, hit);
     // Test in the object's frame: t is unchanged because the direction is mapped linearly too.
-    const Frame& f = frames_[std::size_t(p.frame)];
+    const Frame& f = p.frame;
     const Ray local = Ray::make(Vec3(f.objectFromWorld * glm::vec4(ray.origin, 1.0f)),
                                 f.dirToObject * ray.dir);
     if (!intersectShape(p.shape, local, tmin, tmax, hit)) return false;

@@ -44,10 +44,11 @@ struct MeshShape {
 /// The closed set of bounded render shapes.
 using BoundedShape = std::variant<SphereShape, RectangleShape, BoxShape, MeshShape>;
 
-/// One bounded object of the snapshot. `frame` < 0: the shape is stored in world space.
+/// One bounded object of the snapshot. Without a frame the shape is stored in world space.
 struct Primitive {
     BoundedShape shape;
-    int32_t frame = -1;
+    bool hasFrame = false;
+    Frame frame;
     uint32_t material = 0;
     ObjectId id = kNoObject;
     Aabb worldBounds;
@@ -73,8 +74,20 @@ struct SurfaceHit {
 class CompiledScene {
 public:
     /// Compiles `doc`. Meshes must already be loaded (MeshGeometry::data); a mesh object
-    /// without data is skipped.
-    explicit CompiledScene(const SceneDocument& doc);
+    /// without data is skipped. Mesh BVHs of `previous` are reused when the mesh is the same.
+    explicit CompiledScene(const SceneDocument& doc, const CompiledScene* previous = nullptr);
+
+    /// A copy with the listed objects recompiled from `doc` and the BVH refitted bottom-up
+    /// instead of rebuilt (thesis 3.2). Only valid when those objects kept their kind and
+    /// visibility and nothing else changed; callers fall back to the constructor otherwise.
+    CompiledScene refitted(const SceneDocument& doc, const std::vector<ObjectId>& moved) const;
+    /// A copy where object `id` is traced as its world bounding box (box proxy while moving).
+    CompiledScene withBoxProxy(ObjectId id) const;
+
+    /// Index into primitives() of a bounded object, or -1 (planes, hidden or unknown ids).
+    int primitiveIndex(ObjectId id) const;
+    /// World bounds of a bounded object; empty for planes, hidden or unknown ids.
+    Aabb objectBounds(ObjectId id) const;
 
     /// Closest hit with t in (tmin, tmax).
     bool intersect(const Ray& ray, float tmin, float tmax, SurfaceHit& hit) const;
@@ -88,7 +101,8 @@ public:
     const std::vector<Primitive>& primitives() const { return primitives_; }
     const std::vector<PlanePrimitive>& planes() const { return planes_; }
     const Bvh& bvh() const { return bvh_; }
-    /// Ray offset that avoids self-intersection, scaled to the scene's size.
+    /// Ray offset that avoids self-intersection, scaled to the scene's size and rounded to a
+    /// power of two, so small edits keep it (and so every unchanged pixel) bit-identical.
     float epsilon() const { return epsilon_; }
     /// Bounds of everything bounded, lights included.
     const Aabb& sceneBounds() const { return sceneBounds_; }
@@ -96,6 +110,7 @@ public:
 private:
     bool intersectPrimitive(const Primitive& p, const Ray& ray, float tmin, float tmax,
                             ShapeHit& hit) const;
+    void computeEpsilon();
 
     CameraModel camera_;
     RenderSettings settings_;
@@ -103,7 +118,6 @@ private:
     std::vector<CompiledLight> lights_;
     std::vector<Primitive> primitives_;
     std::vector<PlanePrimitive> planes_;
-    std::vector<Frame> frames_;
     Bvh bvh_;
     float epsilon_ = 1e-4f;
     Aabb sceneBounds_;
