@@ -1,0 +1,173 @@
+#!/usr/bin/env bash
+# RayStudio set-up for a fresh Debian 12 machine: install build dependencies, build, then run or test.
+set -euo pipefail
+
+readonly DEFAULT_SCENE="scenes/reference-room.scene.json"
+
+# Everything the build, the tests and the designer need, as Debian 12 names them.
+readonly REQUIRED_PACKAGES=(
+    build-essential cmake ninja-build pkg-config git
+    qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libgl-dev
+    libglm-dev libopenimageio-dev openimageio-tools libassimp-dev libtbb-dev
+    nlohmann-json3-dev libgtest-dev googletest
+    xvfb xauth mesa-utils libgl1-mesa-dri
+)
+
+usage() {
+    cat <<EOF
+Usage: bash packaging/setup.sh COMMAND [ARGS]
+
+Sets up RayStudio on Debian 12: installs the missing build dependencies with apt-get
+(only when some are missing), configures the release build once, builds it (incrementally
+on later runs), then:
+
+  run [SCENE]   open SCENE in the designer; until the designer is built, render SCENE with
+                raystudio-cli into build/release/<scene name>.png instead.
+                SCENE defaults to ${DEFAULT_SCENE}.
+  test          run the whole test suite (ctest) and exit with its status.
+  -h, --help    show this help.
+
+Works from any folder. Run as root, or as a user who may use sudo for apt-get.
+CMAKE_BUILD_PARALLEL_LEVEL limits the number of build jobs (default: all cores).
+EOF
+}
+
+say() { printf '==> %s\n' "$*"; }
+die() {
+    printf 'setup.sh: error: %s\n' "$*" >&2
+    exit 1
+}
+
+# Installs only what is missing, so a second run neither needs the network nor root.
+install_missing_packages() {
+    if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then
+        say "No dpkg/apt-get here (not Debian?): skipping the package check."
+        say "Make sure these (or their equivalents) are installed: ${REQUIRED_PACKAGES[*]}"
+        return 0
+    fi
+    local missing=() pkg status
+    for pkg in "${REQUIRED_PACKAGES[@]}"; do
+        status="$(dpkg-query -W -f='${db:Status-Status}' "${pkg}" 2>/dev/null || true)"
+        if [[ "${status}" != "installed" ]]; then
+            missing+=("${pkg}")
+        fi
+    done
+    if ((${#missing[@]} == 0)); then
+        say "All ${#REQUIRED_PACKAGES[@]} required Debian packages are installed."
+        return 0
+    fi
+
+    local sudo_cmd=()
+    if ((EUID != 0)); then
+        command -v sudo >/dev/null 2>&1 ||
+            die "missing packages (${missing[*]}) and not root; run as root or install sudo"
+        sudo_cmd=(sudo)
+    fi
+    say "Installing ${#missing[@]} missing package(s): ${missing[*]}"
+    "${sudo_cmd[@]}" apt-get update
+    "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive \
+        apt-get install -y --no-install-recommends "${missing[@]}"
+}
+
+# Configures once (a reconfigure would throw away the user's cache choices), builds always.
+build_release() {
+    if [[ -f build/release/CMakeCache.txt && -f build/release/build.ninja ]]; then
+        say "build/release is already configured; building incrementally."
+    else
+        say "Configuring the release build in build/release."
+        cmake --preset release
+    fi
+    say "Building."
+    cmake --build --preset release
+}
+
+run_tests() {
+    say "Running the test suite."
+    local status=0
+    ctest --preset release --output-on-failure || status=$?
+    if ((status == 0)); then
+        say "All tests passed."
+    else
+        printf 'setup.sh: tests failed (ctest exit status %d)\n' "${status}" >&2
+    fi
+    return "${status}"
+}
+
+run_scene() {
+    local scene="$1"
+    [[ -f "${scene}" ]] || die "scene file not found: ${scene}"
+
+    # ---- Designer hand-off ---------------------------------------------------------------
+    # Once app/raystudio (the Qt designer) is built, `run` opens the scene in it. Without a
+    # display the designer cannot start, so a headless machine keeps the CLI render below.
+    local designer="build/release/app/raystudio"
+    if [[ -x "${designer}" ]]; then
+        if [[ -n "${DISPLAY:-}" || -n "${WAYLAND_DISPLAY:-}" ]]; then
+            say "Opening ${scene} in the designer."
+            exec "${designer}" "${scene}"
+        fi
+        say "The designer is built but there is no display (DISPLAY/WAYLAND_DISPLAY unset);"
+        say "rendering with raystudio-cli instead."
+    fi
+    # ---- End of designer hand-off --------------------------------------------------------
+
+    local cli="build/release/app/raystudio-cli"
+    [[ -x "${cli}" ]] || die "${cli} was not built"
+    local name
+    name="$(basename "${scene}")"
+    name="${name%.json}"
+    name="${name%.scene}"
+    local image="build/release/${name}.png"
+    say "Rendering ${scene} with raystudio-cli."
+    "${cli}" render "${scene}" -o "${image}"
+    say "Image written to ${PWD}/${image}"
+}
+
+main() {
+    if (($# == 0)); then
+        usage >&2
+        exit 2
+    fi
+    local command="$1"
+    shift
+    case "${command}" in
+        -h | --help | help)
+            usage
+            return 0
+            ;;
+        run)
+            (($# <= 1)) || die "run takes at most one scene file (see --help)"
+            ;;
+        test)
+            (($# == 0)) || die "test takes no arguments (see --help)"
+            ;;
+        *)
+            usage >&2
+            die "unknown command '${command}'"
+            ;;
+    esac
+
+    # Resolve the scene against the caller's folder before moving to the repository root.
+    local scene=""
+    if [[ "${command}" == run ]]; then
+        scene="${1:-}"
+        if [[ -n "${scene}" ]]; then
+            [[ -f "${scene}" ]] || die "scene file not found: ${scene}"
+            scene="$(cd "$(dirname "${scene}")" && pwd)/$(basename "${scene}")"
+        fi
+    fi
+
+    local repo_root
+    repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+    cd "${repo_root}"
+    [[ -n "${scene}" ]] || scene="${DEFAULT_SCENE}"
+
+    install_missing_packages
+    build_release
+    case "${command}" in
+        run) run_scene "${scene}" ;;
+        test) run_tests ;;
+    esac
+}
+
+main "$@"
