@@ -1,11 +1,11 @@
 // Scene reader errors: every rule of scene-format.md fails the load with pointer, line, column.
-#include "io/scene_io.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <ostream>
 #include <string>
+
+#include "io/scene_io.h"
 
 namespace rs {
 namespace {
@@ -50,7 +50,9 @@ struct ErrorCase {
 };
 
 // Test names, not bytes, in gtest's output.
-void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const ErrorCase& c, std::ostream* os) {
+    *os << c.name;
+}
 
 class SceneReaderError : public testing::TestWithParam<ErrorCase> {};
 
@@ -117,8 +119,8 @@ const ErrorCase kCases[] = {
      ">= 0"},
     {"NegativeShadowSamples", scene(R"(  "render": { "shadow_samples": @@-2 })"),
      "/render/shadow_samples", ">= 0"},
-    {"ZeroSupersampling", scene(R"(  "render": { "supersampling": @@0 })"),
-     "/render/supersampling", ">= 1"},
+    {"ZeroSupersampling", scene(R"(  "render": { "supersampling": @@0 })"), "/render/supersampling",
+     ">= 1"},
     {"NegativeBackground", scene(R"(  "render": { "background": [0, @@-0.5, 0] })"),
      "/render/background/1", ">= 0"},
     {"NegativeAmbient", scene(R"(  "render": { "ambient": [@@-1, 0, 0] })"), "/render/ambient/0",
@@ -127,14 +129,16 @@ const ErrorCase kCases[] = {
     {"FovOfZero", scene(R"(  "camera": { "fov_y": @@0 })"), "/camera/fov_y", "in (0, 180)"},
     {"ZeroOrthoHeight", scene(R"(  "camera": { "ortho_height": @@0 })"), "/camera/ortho_height",
      "> 0"},
-    {"CameraTargetIsPosition", scene(R"(  "camera": { "position": [1, 2, 3], "target": @@[1, 2, 3] })"),
-     "/camera/target", "differ"},
+    {"CameraTargetIsPosition",
+     scene(R"(  "camera": { "position": [1, 2, 3], "target": @@[1, 2, 3] })"), "/camera/target",
+     "differ"},
     {"CameraUpAlongView", scene(R"(  "camera": { "target": [0, 5, 0], "up": @@[0, 2, 0] })"),
      "/camera/up", "parallel"},
     {"CameraDefaultUpAlongView", scene(R"(  "camera": @@{ "target": [0, -5, 0] })"), "/camera/up",
      "parallel"},
     {"ZeroUp", scene(R"(  "camera": { "up": @@[0, 0, 0] })"), "/camera/up", "non-zero"},
-    {"NegativeMaterialColor", scene(R"(  "materials": [ { "name": "m", "color": [1, 1, @@-0.1] } ])"),
+    {"NegativeMaterialColor",
+     scene(R"(  "materials": [ { "name": "m", "color": [1, 1, @@-0.1] } ])"),
      "/materials/0/color/2", ">= 0"},
     {"DiffuseAboveOne", scene(R"(  "materials": [ { "name": "m", "diffuse": @@1.5 } ])"),
      "/materials/0/diffuse", "in [0, 1]"},
@@ -162,8 +166,10 @@ const ErrorCase kCases[] = {
      scene(R"(  "lights": [ { "name": "l", "type": "point", "position": [0, 0, 0] },
     { "name": @@"l", "type": "point", "position": [1, 0, 0] } ])"),
      "/lights/1/name", "duplicate light name"},
-    {"DuplicateObjectName", scene(R"(  "objects": [ { "name": "o", )" + kSphere + R"(, "radius": 1 },
-    { "name": @@"o", )" + kSphere + R"(, "radius": 2 } ])"),
+    {"DuplicateObjectName",
+     scene(R"(  "objects": [ { "name": "o", )" + kSphere + R"(, "radius": 1 },
+    { "name": @@"o", )" +
+           kSphere + R"(, "radius": 2 } ])"),
      "/objects/1/name", "duplicate object name"},
     {"UnknownLightType",
      scene(R"(  "lights": [ { "name": "l", "type": @@"spot", "position": [0, 0, 0] } ])"),
@@ -171,26 +177,32 @@ const ErrorCase kCases[] = {
     {"MissingLightPosition", scene(R"(  "lights": [ @@{ "name": "l", "type": "point" } ])"),
      "/lights/0/position", "missing required key"},
     {"ZeroIntensity",
-     scene(R"(  "lights": [ { "name": "l", "type": "point", "position": [0, 0, 0], "intensity": @@0 } ])"),
+     scene(
+         R"(  "lights": [ { "name": "l", "type": "point", "position": [0, 0, 0], "intensity": @@0 } ])"),
      "/lights/0/intensity", "> 0"},
     {"PointLightWithRadius",
-     scene(R"(  "lights": [ { "name": "l", "type": "point", "position": [0, 0, 0], @@"radius": 1 } ])"),
+     scene(
+         R"(  "lights": [ { "name": "l", "type": "point", "position": [0, 0, 0], @@"radius": 1 } ])"),
      "/lights/0/radius", "point light has no radius"},
     {"SphereLightWithoutRadius",
      scene(R"(  "lights": [ @@{ "name": "l", "type": "sphere", "position": [0, 0, 0] } ])"),
      "/lights/0/radius", "missing required key"},
     {"SphereLightZeroRadius",
-     scene(R"(  "lights": [ { "name": "l", "type": "sphere", "position": [0, 0, 0], "radius": @@0 } ])"),
+     scene(
+         R"(  "lights": [ { "name": "l", "type": "sphere", "position": [0, 0, 0], "radius": @@0 } ])"),
      "/lights/0/radius", "> 0"},
     {"NegativeLightColor",
-     scene(R"(  "lights": [ { "name": "l", "type": "point", "position": [0, 0, 0], "color": [@@-1, 0, 0] } ])"),
+     scene(
+         R"(  "lights": [ { "name": "l", "type": "point", "position": [0, 0, 0], "color": [@@-1, 0, 0] } ])"),
      "/lights/0/color/0", ">= 0"},
-    {"ZeroRadiusSphere", scene(R"(  "objects": [ { "name": "s", )" + kSphere + R"(, "radius": @@0 } ])"),
+    {"ZeroRadiusSphere",
+     scene(R"(  "objects": [ { "name": "s", )" + kSphere + R"(, "radius": @@0 } ])"),
      "/objects/0/radius", "radius must be > 0, got 0"},
     {"SphereWithoutRadius", scene(R"(  "objects": [ @@{ "name": "s", )" + kSphere + R"( } ])"),
      "/objects/0/radius", "missing required key \"radius\""},
     {"SphereWithPlaneKey",
-     scene(R"(  "objects": [ { "name": "s", )" + kSphere + R"(, "radius": 1, @@"normal": [0, 1, 0] } ])"),
+     scene(R"(  "objects": [ { "name": "s", )" + kSphere +
+           R"(, "radius": 1, @@"normal": [0, 1, 0] } ])"),
      "/objects/0/normal", "unknown key"},
     {"MissingObjectType", scene(R"(  "objects": [ @@{ "name": "s" } ])"), "/objects/0/type",
      "missing required key \"type\""},
@@ -199,46 +211,56 @@ const ErrorCase kCases[] = {
     {"MissingObjectName", scene(R"(  "objects": [ @@{ )" + kSphere + R"(, "radius": 1 } ])"),
      "/objects/0/name", "missing required key \"name\""},
     {"UndefinedMaterial",
-     scene(R"(  "objects": [ { "name": "s", )" + kSphere + R"(, "radius": 1, "material": @@"gold" } ])"),
+     scene(R"(  "objects": [ { "name": "s", )" + kSphere +
+           R"(, "radius": 1, "material": @@"gold" } ])"),
      "/objects/0/material", "\"gold\" is not defined"},
     {"EmptyMaterialReference",
-     scene(R"(  "objects": [ { "name": "s", )" + kSphere + R"(, "radius": 1, "material": @@"" } ])"),
+     scene(R"(  "objects": [ { "name": "s", )" + kSphere +
+           R"(, "radius": 1, "material": @@"" } ])"),
      "/objects/0/material", "must not be empty"},
     {"VisibleNotBool",
-     scene(R"(  "objects": [ { "name": "s", )" + kSphere + R"(, "radius": 1, "visible": @@"yes" } ])"),
+     scene(R"(  "objects": [ { "name": "s", )" + kSphere +
+           R"(, "radius": 1, "visible": @@"yes" } ])"),
      "/objects/0/visible", "true or false"},
     {"PlaneWithTranslate",
-     scene(R"(  "objects": [ { "name": "p", "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
+     scene(
+         R"(  "objects": [ { "name": "p", "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
       @@"translate": [0, 1, 0] } ])"),
      "/objects/0/translate", "plane takes no transform"},
     {"PlaneZeroNormal",
-     scene(R"(  "objects": [ { "name": "p", "type": "plane", "point": [0, 0, 0], "normal": @@[0, 0, 0] } ])"),
+     scene(
+         R"(  "objects": [ { "name": "p", "type": "plane", "point": [0, 0, 0], "normal": @@[0, 0, 0] } ])"),
      "/objects/0/normal", "non-zero"},
     {"RectangleZeroU",
-     scene(R"(  "objects": [ { "name": "r", "type": "rectangle", "center": [0, 0, 0], "u": @@[0, 0, 0], "v": [0, 1, 0] } ])"),
+     scene(
+         R"(  "objects": [ { "name": "r", "type": "rectangle", "center": [0, 0, 0], "u": @@[0, 0, 0], "v": [0, 1, 0] } ])"),
      "/objects/0/u", "non-zero"},
     {"RectangleEdgesNotOrthogonal",
-     scene(R"(  "objects": [ { "name": "r", "type": "rectangle", "center": [0, 0, 0], "u": [1, 0, 0], "v": @@[1, 1, 0] } ])"),
+     scene(
+         R"(  "objects": [ { "name": "r", "type": "rectangle", "center": [0, 0, 0], "u": [1, 0, 0], "v": @@[1, 1, 0] } ])"),
      "/objects/0/v", "orthogonal"},
     {"BoxWithoutExtent",
-     scene(R"(  "objects": [ { "name": "b", "type": "box", "min": [0, 0, 0], "max": [1, @@0, 1] } ])"),
+     scene(
+         R"(  "objects": [ { "name": "b", "type": "box", "min": [0, 0, 0], "max": [1, @@0, 1] } ])"),
      "/objects/0/max/1", "greater than min"},
     {"ZeroScaleNumber",
      scene(R"(  "objects": [ { "name": "s", )" + kSphere + R"(, "radius": 1, "scale": @@0 } ])"),
      "/objects/0/scale", "non-zero"},
     {"ZeroScaleComponent",
-     scene(R"(  "objects": [ { "name": "s", )" + kSphere + R"(, "radius": 1, "scale": [1, 1, @@0] } ])"),
+     scene(R"(  "objects": [ { "name": "s", )" + kSphere +
+           R"(, "radius": 1, "scale": [1, 1, @@0] } ])"),
      "/objects/0/scale/2", "non-zero"},
     {"MissingMeshFile",
      scene(R"(  "objects": [ { "name": "m", "type": "mesh", "file": @@"meshes/nope.obj" } ])"),
      "/objects/0/file", "meshes/nope.obj\": file not found"},
     {"BrokenMesh",
-     scene(R"(  "objects": [ { "name": "m", "type": "mesh", "file": @@"meshes/nan_vertex.obj" } ])"),
+     scene(
+         R"(  "objects": [ { "name": "m", "type": "mesh", "file": @@"meshes/nan_vertex.obj" } ])"),
      "/objects/0/file", "nan_vertex.obj\": vertex 0"},
     {"MaterialsNotArray", scene(R"(  "materials": @@{})"), "/materials", "must be an array"},
     {"ObjectEntryNotObject", scene(R"(  "objects": [ @@3 ])"), "/objects/0", "must be an object"},
-    {"NestingTooDeep", "@@" + scene("  \"x-deep\": " + std::string(300, '[') + std::string(300, ']')),
-     "", "nesting"},
+    {"NestingTooDeep",
+     "@@" + scene("  \"x-deep\": " + std::string(300, '[') + std::string(300, ']')), "", "nesting"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Rules, SceneReaderError, testing::ValuesIn(kCases),
