@@ -68,21 +68,36 @@ struct Aabb {
     Aabb transformed(const Mat4& m) const;
 };
 
+/// Williams et al. ray/box slab test that also gives the entry distance max(tmin, box entry),
+/// so traversal can visit the nearer child first and skip nodes beyond the closest hit.
+/// NaN-robust: a ray lying exactly on a slab plane with a zero direction component gives
+/// 0 * inf = NaN there; the comparisons below are ordered so a NaN never narrows the interval
+/// (the ray counts as inside that slab, which is conservative). Far distances are scaled by
+/// 1 + 2*gamma(3) (pbrt) so rounding can never reject a box that the ray truly touches.
+inline bool intersectSlabs(const Aabb& b, const Ray& r, float tmin, float tmax, float& tEntry) {
+    constexpr float kUnitRoundoff = 0.5f * std::numeric_limits<float>::epsilon();
+    constexpr float kFarScale =
+        1.0f + 2.0f * (3.0f * kUnitRoundoff) / (1.0f - 3.0f * kUnitRoundoff);
+    float t0 = (b[r.sign[0]].x - r.origin.x) * r.invDir.x;
+    float t1 = (b[1 - r.sign[0]].x - r.origin.x) * r.invDir.x * kFarScale;
+    float lo = t0 > tmin ? t0 : tmin;
+    float hi = t1 < tmax ? t1 : tmax;
+    t0 = (b[r.sign[1]].y - r.origin.y) * r.invDir.y;
+    t1 = (b[1 - r.sign[1]].y - r.origin.y) * r.invDir.y * kFarScale;
+    lo = t0 > lo ? t0 : lo;
+    hi = t1 < hi ? t1 : hi;
+    t0 = (b[r.sign[2]].z - r.origin.z) * r.invDir.z;
+    t1 = (b[1 - r.sign[2]].z - r.origin.z) * r.invDir.z * kFarScale;
+    lo = t0 > lo ? t0 : lo;
+    hi = t1 < hi ? t1 : hi;
+    tEntry = lo;
+    return lo <= hi;
+}
+
 /// Williams et al. ray/box slab test; true when [tmin, tmax] overlaps the box's span on the ray.
 inline bool intersectSlabs(const Aabb& b, const Ray& r, float tmin, float tmax) {
-    float txmin = (b[r.sign[0]].x - r.origin.x) * r.invDir.x;
-    float txmax = (b[1 - r.sign[0]].x - r.origin.x) * r.invDir.x;
-    float tymin = (b[r.sign[1]].y - r.origin.y) * r.invDir.y;
-    float tymax = (b[1 - r.sign[1]].y - r.origin.y) * r.invDir.y;
-    if (txmin > tymax || tymin > txmax) return false;
-    txmin = std::max(txmin, tymin);
-    txmax = std::min(txmax, tymax);
-    float tzmin = (b[r.sign[2]].z - r.origin.z) * r.invDir.z;
-    float tzmax = (b[1 - r.sign[2]].z - r.origin.z) * r.invDir.z;
-    if (txmin > tzmax || tzmin > txmax) return false;
-    txmin = std::max(txmin, tzmin);
-    txmax = std::min(txmax, tzmax);
-    return txmin <= tmax && txmax >= tmin;
+    float tEntry;
+    return intersectSlabs(b, r, tmin, tmax, tEntry);
 }
 
 /// Luminance of a linear Rec.709 colour.
