@@ -29,23 +29,21 @@ Color renderPixel(const WhittedIntegrator& integrator, const CameraModel& camera
     return sum / float(spp);
 }
 
-bool needsSupersampling(const ImageRgb& colors, const std::vector<ObjectId>& ids,
-                        const std::vector<Vec3>& normals, int x, int y) {
+bool needsSupersampling(const Color* colors, const ObjectId* ids, const Vec3* normals, int width,
+                        int height, int x, int y) {
     constexpr float kNormalCos = 0.95f;
     constexpr float kColorDelta = 0.1f;
-    const std::size_t w = std::size_t(colors.width);
+    const std::size_t w = std::size_t(width);
     const std::size_t i = std::size_t(y) * w + std::size_t(x);
-    const Color c = glm::min(colors.pixels[i], Color(1.0f));
+    const Color c = glm::min(colors[i], Color(1.0f));
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
             const int nx = x + dx, ny = y + dy;
-            if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= colors.width ||
-                ny >= colors.height)
-                continue;
+            if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
             const std::size_t j = std::size_t(ny) * w + std::size_t(nx);
             if (ids[j] != ids[i]) return true;
             if (glm::dot(normals[j], normals[i]) < kNormalCos) return true;
-            const Color d = glm::abs(glm::min(colors.pixels[j], Color(1.0f)) - c);
+            const Color d = glm::abs(glm::min(colors[j], Color(1.0f)) - c);
             if (std::max(d.x, std::max(d.y, d.z)) > kColorDelta) return true;
         }
     }
@@ -136,7 +134,8 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
                 for (int y = y0; y < y1 && !cancelled(); ++y)
                     for (int x = x0; x < x1; ++x)
-                        if (needsSupersampling(result.image, result.ids, normals, x, y))
+                        if (needsSupersampling(result.image.pixels.data(), result.ids.data(),
+                                               normals.data(), w, h, x, y))
                             refined.at(x, y) = renderPixel(integrator, camera, x, y, spp, counters);
             });
         result.image = std::move(refined);

@@ -42,8 +42,8 @@ Color renderPixel(const WhittedIntegrator& integrator, const CameraModel& camera
 
 /// True when the 1-sample pixel at (x, y) differs from a neighbour in object id, normal or
 /// colour enough to deserve adaptive supersampling.
-bool needsSupersampling(const ImageRgb& colors, const std::vector<ObjectId>& ids,
-                        const std::vector<Vec3>& normals, int x, int y);
+bool needsSupersampling(const Color* colors, const ObjectId* ids, const Vec3* normals, int width,
+                        int height, int x, int y);
 
 /// Renders the whole image at the scene's render settings.
 RenderResult renderImage(const CompiledScene& scene, const RenderOptions& options = {});

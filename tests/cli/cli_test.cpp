@@ -15,17 +15,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CliRun {
     int exitCode;  ///< -1 when the process died from a signal.
     std::string out;
 };
 
 /// Runs the CLI with `args` (shell words), capturing stdout and stderr together.
-Run cli(const std::string& args, bool stdoutOnly = false) {
+CliRun cli(const std::string& args, bool stdoutOnly = false) {
     const std::string cmd =
         std::string("'") + RAYSTUDIO_CLI + "' " + args + (stdoutOnly ? " 2>/dev/null" : " 2>&1");
     FILE* pipe = popen(cmd.c_str(), "r");
-    Run run{-1, {}};
+    CliRun run{-1, {}};
     std::array<char, 4096> buf;
     while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) run.out.append(buf.data(), n);
     const int status = pclose(pipe);
@@ -54,13 +54,13 @@ protected:
 const std::string kRoom = std::string(RAYSTUDIO_SCENES_DIR) + "/reference-room.scene.json";
 
 TEST_F(CliTest, NoArguments_PrintsUsageAndExits2) {
-    Run r = cli("");
+    CliRun r = cli("");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.out.find("usage"), std::string::npos);
 }
 
 TEST_F(CliTest, UnknownCommandOrOption_Exits2NamingIt) {
-    Run r = cli("paint " + kRoom);
+    CliRun r = cli("paint " + kRoom);
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.out.find("paint"), std::string::npos);
     r = cli("render " + kRoom + " -o " + path("x.png") + " --fast");
@@ -69,7 +69,7 @@ TEST_F(CliTest, UnknownCommandOrOption_Exits2NamingIt) {
 }
 
 TEST_F(CliTest, Render_WritesTheImageAndStatsLine) {
-    Run r = cli("render " + kRoom + " -o " + path("room.png") +
+    CliRun r = cli("render " + kRoom + " -o " + path("room.png") +
                 " --width 64 --height 36 --threads 2 --stats", true);
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_TRUE(fs::exists(path("room.png")));
@@ -84,7 +84,7 @@ TEST_F(CliTest, Render_WritesTheImageAndStatsLine) {
 TEST_F(CliTest, Render_EveryOutputFormat) {
     for (const char* ext : {"png", "jpg", "tif", "exr", "hdr"}) {
         const std::string out = path(std::string("room.") + ext);
-        Run r = cli("render " + kRoom + " -o " + out + " --width 16 --height 9");
+        CliRun r = cli("render " + kRoom + " -o " + out + " --width 16 --height 9");
         EXPECT_EQ(r.exitCode, 0) << ext << ": " << r.out;
         EXPECT_GT(fs::file_size(out), 0u) << ext;
     }
@@ -93,7 +93,7 @@ TEST_F(CliTest, Render_EveryOutputFormat) {
 TEST_F(CliTest, Render_BadNumbers_Exit2NamingTheOption) {
     for (const char* bad : {"--width 0", "--width abc", "--height -5", "--threads 0",
                             "--supersampling 0", "--max-depth -1", "--width 99999"}) {
-        Run r = cli("render " + kRoom + " -o " + path("x.png") + " " + bad);
+        CliRun r = cli("render " + kRoom + " -o " + path("x.png") + " " + bad);
         EXPECT_EQ(r.exitCode, 2) << bad;
         EXPECT_NE(r.out.find(std::string(bad).substr(0, std::string(bad).find(' '))),
                   std::string::npos) << bad << ": " << r.out;
@@ -101,7 +101,7 @@ TEST_F(CliTest, Render_BadNumbers_Exit2NamingTheOption) {
 }
 
 TEST_F(CliTest, Render_MissingSceneOrOutput_Exit2) {
-    Run r = cli("render " + path("nope.scene.json") + " -o " + path("x.png"));
+    CliRun r = cli("render " + path("nope.scene.json") + " -o " + path("x.png"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.out.find("nope.scene.json"), std::string::npos) << r.out;
     r = cli("render " + kRoom);
@@ -112,7 +112,7 @@ TEST_F(CliTest, Render_MissingSceneOrOutput_Exit2) {
 }
 
 TEST_F(CliTest, Validate_GoodScenePrintsOk) {
-    Run r = cli("validate " + kRoom);
+    CliRun r = cli("validate " + kRoom);
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_EQ(r.out, "ok\n");
 }
@@ -125,7 +125,7 @@ TEST_F(CliTest, Validate_BadScenePrintsEveryErrorWithItsPointer) {
     { "name": "b", "type": "sphere", "center": [0, 0, 0], "radius": 1, "colour": [1, 0, 0] }
   ]
 })");
-    Run r = cli("validate " + scene);
+    CliRun r = cli("validate " + scene);
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.out.find("/objects/0/radius"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("/objects/1/colour"), std::string::npos) << r.out;
@@ -133,7 +133,7 @@ TEST_F(CliTest, Validate_BadScenePrintsEveryErrorWithItsPointer) {
 }
 
 TEST_F(CliTest, Bench_JsonHasOneEntryPerExperiment) {
-    Run r = cli("bench " + kRoom + " --repeat 1 --json --width 16 --height 9", true);
+    CliRun r = cli("bench " + kRoom + " --repeat 1 --json --width 16 --height 9", true);
     ASSERT_EQ(r.exitCode, 0) << r.out;
     auto entries = nlohmann::json::parse(r.out);
     ASSERT_TRUE(entries.is_array());
@@ -158,11 +158,11 @@ TEST_F(CliTest, GarbageSceneFiles_NeverCrash) {
             switch (rng() % 3) {
                 case 0: text.erase(at, 1 + rng() % 5); break;
                 case 1: text[at] = char(rng() % 256); break;
-                default: text.insert(at, std::string(1, "{}[],:\"0-e."[rng() % 11])); break;
+                default: text.insert(text.begin() + long(at), "{}[],:\"0-e."[rng() % 11]); break;
             }
         }
         const std::string scene = write("fuzz.scene.json", text);
-        Run r = cli("render " + scene + " -o " + path("fuzz.png"));
+        CliRun r = cli("render " + scene + " -o " + path("fuzz.png"));
         EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 2) << "exit " << r.exitCode << " for:\n"
                                                         << text << "\n" << r.out;
     }
