@@ -1,0 +1,59 @@
+// The session's frame: HDR colour plus per-pixel id, depth, normal, cost, state and records.
+#pragma once
+
+#include "integrator/whitted.h"
+#include "scene/document.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace rs {
+
+/// How far a pixel has got toward the final image.
+enum PixelState : uint8_t {
+    kStale = 0,        ///< An edit may have changed it: must be traced again.
+    kInteractive = 1,  ///< Traced (or filled in) at interaction quality.
+    kBase = 2,         ///< Full quality, one sample at the pixel centre.
+    kFinal = 3,        ///< As a full render gives it (supersampled where the settings say).
+};
+
+/// Per-pixel flags.
+enum PixelFlag : uint8_t {
+    kTouchedSpecular = 1,  ///< Its ray tree met a reflective or refractive surface.
+    kDeferredValid = 2,    ///< Traced with only shadows deferred: records complete the pixel.
+    kTracedLastUpdate = 4,  ///< Re-traced by the latest edit (debug overlay).
+};
+
+/// Structure-of-arrays deep buffer (thesis 3.3), row-major, (0, 0) top left.
+struct DeepFrame {
+    int width = 0;
+    int height = 0;
+    int tileSize = 32;
+    std::vector<Color> color;       ///< What is shown (linear HDR).
+    std::vector<Color> base;        ///< Full-quality centre sample; adaptive decisions read it.
+    std::vector<Color> sampleSum;   ///< Running sum of supersamples (progressive refinement).
+    std::vector<uint16_t> sampleCount;
+    std::vector<ObjectId> id;       ///< Object seen through the pixel centre.
+    std::vector<float> depth;       ///< Distance to that hit (infinity: background).
+    std::vector<Vec3> normal;       ///< Its unit normal.
+    std::vector<uint32_t> cost;     ///< Rays traced for the pixel's latest value.
+    std::vector<uint8_t> state;     ///< PixelState.
+    std::vector<uint8_t> flags;     ///< PixelFlag bits.
+    /// Bounding sphere (centre, radius) of the pixel's camera-ray hit points; radius < 0 when
+    /// nothing was hit. Shadow-aware dirty regions test segments from it to each light.
+    std::vector<glm::vec4> hitBound;
+    /// Deferred shading records, pooled per tile; a pixel's are [recordStart, +recordCount).
+    std::vector<std::vector<ShadingRecord>> tileRecords;
+    std::vector<uint32_t> recordStart;
+    std::vector<uint8_t> recordCount;
+
+    /// Allocates for w x h; every pixel starts stale and black.
+    void resize(int w, int h);
+    std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
+    std::size_t pixelCount() const { return color.size(); }
+    int tilesX() const { return (width + tileSize - 1) / tileSize; }
+    int tilesY() const { return (height + tileSize - 1) / tileSize; }
+    int tileOf(int x, int y) const { return (y / tileSize) * tilesX() + x / tileSize; }
+};
+
+}  // namespace rs

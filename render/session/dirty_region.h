@@ -1,0 +1,31 @@
+// Which pixels an edit can change (thesis 3.2), conservatively, so skipping the rest is exact.
+#pragma once
+
+#include "session/deep_frame.h"
+#include "session/scene_update.h"
+#include "snapshot/compiled_scene.h"
+
+#include <vector>
+
+namespace rs {
+
+/// Screen rectangle [x0, x1) x [y0, y1) in pixels.
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool empty() const { return x0 >= x1 || y0 >= y1; }
+    int area() const { return empty() ? 0 : (x1 - x0) * (y1 - y0); }
+};
+
+/// Pixels whose samples can see into `box`: the projected corners' bounding rectangle grown
+/// by a pixel; the whole image when the box reaches behind the camera.
+PixelRect screenFootprint(const CameraModel& camera, const Aabb& box);
+
+/// Sets mask[i] = 1 for every pixel `edit` can change, given the frame as it was traced under
+/// `before`: the old and new footprints, pixels whose ray tree met a mirror or glass, pixels
+/// showing a retinted object, and, when shadows are traced, pixels whose shadow rays can cross
+/// the old or new bounds. Grown by one pixel so adaptive supersampling decisions stay exact.
+/// Runs in parallel; returns the number of pixels marked.
+std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
+                            const DeepFrame& frame, std::vector<uint8_t>& mask);
+
+}  // namespace rs

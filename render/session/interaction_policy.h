@@ -1,0 +1,51 @@
+// What the session may turn down while the user drags, one setting per technique of the thesis.
+#pragma once
+
+#include "integrator/whitted.h"
+#include "scene/document.h"
+
+#include <string>
+
+namespace rs {
+
+/// Resolution of interactive frames (undersampling, thesis 3.2).
+enum class MovingResolution { Full, Half, Quarter };
+/// Refraction while moving (thesis 4.2).
+enum class RefractionMode { Full, Diffuse, DiffuseExceptSelected };
+/// Reflection while moving (thesis 4.2).
+enum class ReflectionMode { Full, Diffuse };
+/// Shadows while moving (thesis 3.3, 4.2). Deferred keeps shading records and adds the
+/// shadows after release without re-tracing camera or secondary rays.
+enum class MovingShadows { Full, HardOnly, Off, Deferred };
+
+/// The interaction policy set. Defaults keep the viewport exact except where the thesis shows
+/// a cheap, reversible trade; everything is refined to full quality after release.
+struct InteractionPolicy {
+    MovingResolution resolution = MovingResolution::Full;
+    bool interleaved = false;  ///< 2-pass interleaved: alternate pixels each frame.
+    bool boxProxy = false;     ///< Trace the moving object as its bounding box.
+    RefractionMode refraction = RefractionMode::Full;
+    ReflectionMode reflection = ReflectionMode::Full;
+    int maxDepthWhileMoving = -1;  ///< -1: the scene's max_depth.
+    MovingShadows shadows = MovingShadows::Deferred;
+    bool supersampleWhileMoving = false;
+    bool dirtyRegions = true;        ///< Re-trace only what an edit can change.
+    double governorTargetMs = 0.0;   ///< > 0: pick the cheapest set meeting this frame time.
+
+    bool operator==(const InteractionPolicy&) const = default;
+
+    /// The policy with every technique off: interactive frames at full quality, full frame.
+    static InteractionPolicy none();
+    /// Pixel step of interactive frames (1, 2 or 4).
+    int pixelStep() const;
+    /// Trace options for interactive frames, given the scene's settings and the moving object.
+    TraceOptions movingTraceOptions(const RenderSettings& settings, ObjectId moving) const;
+};
+
+/// JSON text of a policy (Preferences and `raystudio-cli drag --policy FILE` use it).
+std::string policyToJson(const InteractionPolicy& policy);
+/// Parses policy JSON; unknown keys and bad values are errors naming the key. Absent keys
+/// keep their defaults.
+bool policyFromJson(const std::string& text, InteractionPolicy& policy, std::string& error);
+
+}  // namespace rs

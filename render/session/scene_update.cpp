@@ -1,0 +1,141 @@
+// Document diffing for incremental rendering: everything, regions, or material changes.
+#include "session/scene_update.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace rs {
+
+namespace {
+
+/// Settings that change traced radiance (tone mapping and exposure only change display).
+bool sameTracedSettings(RenderSettings a, RenderSettings b) {
+    a.tonemap = b.tonemap;
+    a.exposure = b.exposure;
+    a.extras = b.extras;
+    return a == b;
+}
+
+bool sameLights(const std::vector<Light>& a, const std::vector<Light>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (a[i].id != b[i].id || a[i].type != b[i].type || a[i].position != b[i].position ||
+            a[i].color != b[i].color || a[i].intensity != b[i].intensity ||
+            (a[i].type == LightType::Sphere && a[i].radius != b[i].radius))
+            return false;
+    }
+    return true;
+}
+
+bool sameMaterialData(Material a, const Material& b) {
+    a.extras = b.extras;
+    return a == b;
+}
+
+bool isPlane(const Object& o) { return std::holds_alternative<PlaneGeometry>(o.geometry); }
+
+}  // namespace
+
+SceneUpdate updateScene(const SceneDocument& before,
+                        const std::shared_ptr<const CompiledScene>& beforeSnapshot,
+                        const SceneDocument& after) {
+    SceneUpdate update;
+    SceneEdit& edit = update.edit;
+    if (!beforeSnapshot) {
+        update.snapshot = std::make_shared<const CompiledScene>(after);
+        edit.everything = edit.resized = true;
+        return update;
+    }
+    edit.resized = before.render.width != after.render.width ||
+                   before.render.height != after.render.height;
+    if (!(before.camera == after.camera) || !sameTracedSettings(before.render, after.render) ||
+        !sameLights(before.lights, after.lights))
+        edit.everything = true;
+    edit.displayOnly = !edit.everything && (before.render.tonemap != after.render.tonemap ||
+                                            before.render.exposure != after.render.exposure);
+
+    // Materials: by name; a changed, added or removed definition retints its users.
+    std::set<std::string> changedMaterials;
+    bool materialListChanged = before.materials.size() != after.materials.size();
+    for (std::size_t i = 0; i < after.materials.size(); ++i) {
+        const Material* old = before.findMaterial(after.materials[i].name);
+        if (!old || !sameMaterialData(*old, after.materials[i]))
+            changedMaterials.insert(after.materials[i].name);
+        if (i >= before.materials.size() || before.materials[i].name != after.materials[i].name)
+            materialListChanged = true;
+    }
+    for (const Material& m : before.materials)
+        if (!after.findMaterial(m.name)) changedMaterials.insert(m.name);
+
+    std::map<ObjectId, const Object*> old;
+    for (const Object& o : before.objects) old[o.id] = &o;
+    std::vector<ObjectId> moved, added, removed;
+    bool structural = false;
+    for (const Object& o : after.objects) {
+        auto it = old.find(o.id);
+        if (it == old.end()) {
+            added.push_back(o.id);
+            structural = true;
+            if (isPlane(o) && o.visible) edit.everything = true;
+            continue;
+        }
+        const Object& prev = *it->second;
+        old.erase(it);
+        const bool shapeChanged = !(prev.geometry == o.geometry) || !(prev.transform == o.transform);
+        const bool kindChanged = prev.geometry.index() != o.geometry.index();
+        const bool materialChanged = prev.material != o.material || changedMaterials.count(o.material);
+        if (isPlane(o) || isPlane(prev)) {
+            if (shapeChanged || kindChanged || prev.visible != o.visible) edit.everything = true;
+            else if (materialChanged && o.visible) edit.retinted.push_back(o.id);
+            structural |= kindChanged || prev.visible != o.visible;
+            continue;
+        }
+        if (kindChanged || prev.visible != o.visible) {
+            structural = true;
+            added.push_back(o.id);
+            removed.push_back(o.id);
+            edit.focus = o.id;
+        } else if (shapeChanged && o.visible) {
+            moved.push_back(o.id);
+            edit.focus = o.id;
+        } else if (materialChanged && o.visible) {
+            moved.push_back(o.id);  // Recompiled for its material index; bounds unchanged.
+            edit.retinted.push_back(o.id);
+        }
+    }
+    for (const auto& [id, o] : old) {
+        structural = true;
+        removed.push_back(id);
+        if (isPlane(*o) && o->visible) edit.everything = true;
+    }
+
+    if (edit.everything || structural || materialListChanged) {
+        update.snapshot = std::make_shared<const CompiledScene>(after, beforeSnapshot.get());
+    } else if (!moved.empty()) {
+        update.snapshot = std::make_shared<const CompiledScene>(beforeSnapshot->refitted(after, moved));
+        edit.refitted = true;
+    } else {
+        update.snapshot = beforeSnapshot;
+    }
+    const CompiledScene& b = *beforeSnapshot;
+    const CompiledScene& a = *update.snapshot;
+    if (a.epsilon() != b.epsilon()) edit.everything = true;
+
+    auto addRegion = [&](const Aabb& box) {
+        if (!box.empty()) edit.regions.push_back(box);
+    };
+    for (ObjectId id : removed) addRegion(b.objectBounds(id));
+    for (ObjectId id : added) addRegion(a.objectBounds(id));
+    for (ObjectId id : moved) {
+        const Aabb ob = b.objectBounds(id), nb = a.objectBounds(id);
+        if (ob.min == nb.min && ob.max == nb.max &&
+            std::find(edit.retinted.begin(), edit.retinted.end(), id) != edit.retinted.end())
+            continue;  // A material change only: its pixels are retinted, not re-shaped.
+        addRegion(ob);
+        addRegion(nb);
+    }
+    return update;
+}
+
+}  // namespace rs

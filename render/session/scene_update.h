@@ -1,0 +1,37 @@
+// From one document to the next: what changed, and the snapshot for the new document.
+#pragma once
+
+#include "scene/document.h"
+#include "snapshot/compiled_scene.h"
+
+#include <memory>
+#include <vector>
+
+namespace rs {
+
+/// What an edit changed, in the terms dirty regions need.
+struct SceneEdit {
+    bool everything = false;   ///< Camera, settings, lights, planes...: re-trace every pixel.
+    bool displayOnly = false;  ///< Only tone mapping or exposure: nothing to re-trace.
+    bool resized = false;      ///< Image size changed.
+    std::vector<Aabb> regions;       ///< Old and new world bounds of changed bounded objects.
+    std::vector<ObjectId> retinted;  ///< Objects whose material (or its definition) changed.
+    ObjectId focus = kNoObject;      ///< An object the edit is about, for tile priority.
+    bool refitted = false;           ///< The snapshot was refitted, not rebuilt.
+    bool any() const { return everything || displayOnly || !regions.empty() || !retinted.empty(); }
+};
+
+/// A new snapshot and the edit that leads to it.
+struct SceneUpdate {
+    std::shared_ptr<const CompiledScene> snapshot;
+    SceneEdit edit;
+};
+
+/// Compares `before` and `after` (objects and lights matched by id) and builds the snapshot of
+/// `after`: a refit of `beforeSnapshot` when only transforms, shapes or object materials
+/// changed, a rebuild (reusing mesh BVHs) otherwise.
+SceneUpdate updateScene(const SceneDocument& before,
+                        const std::shared_ptr<const CompiledScene>& beforeSnapshot,
+                        const SceneDocument& after);
+
+}  // namespace rs
