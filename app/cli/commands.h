@@ -10,6 +10,7 @@ class Arguments;
 int runRender(int argc, char** argv);
 int runValidate(int argc, char** argv);
 int runBench(int argc, char** argv);
+int runDrag(int argc, char** argv);
 
 /// Loads a scene for a command; prints every error to stderr and returns false on failure.
 bool loadSceneOrReport(const std::string& path, SceneDocument& doc);

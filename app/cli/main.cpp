@@ -21,6 +21,9 @@ const char* const kUsage =
     "      check a scene file; prints 'ok' or every error found\n"
     "  bench SCENE [--repeat N] [--json] [--threads N] [--width W] [--height H]\n"
     "      the thesis's chapter 4.2 experiments (shadow samples, depth, supersampling)\n"
+    "  drag SCENE --object NAME --to X,Y,Z [--steps N] [--policy default|none|FILE]\n"
+    "             [--threads N] [--verify] [--json]\n"
+    "      drag an object through the interactive session, refine, compare with a full render\n"
     "\n"
     "exit codes: 0 success, 2 bad input or usage, 1 any other failure\n";
 
@@ -36,6 +39,7 @@ int main(int argc, char** argv) {
         if (command == "render") return rs::cli::runRender(argc, argv);
         if (command == "validate") return rs::cli::runValidate(argc, argv);
         if (command == "bench") return rs::cli::runBench(argc, argv);
+        if (command == "drag") return rs::cli::runDrag(argc, argv);
         if (command == "--help" || command == "-h" || command == "help") {
             std::fputs(kUsage, stdout);
             return 0;

@@ -17,8 +17,9 @@ WhittedIntegrator::WhittedIntegrator(const CompiledScene& scene, const TraceOpti
       eps_(scene.epsilon()) {}
 
 Color WhittedIntegrator::traceCamera(const Ray& ray, uint32_t seed, TraceCounters& counters,
-                                     PrimaryInfo* primary, RecordSink* sink) const {
-    return trace(ray, 0, 1.0f, seed, counters, primary, sink);
+                                     PrimaryInfo* primary, RecordSink* sink,
+                                     SegmentSink* segments) const {
+    return trace(ray, 0, 1.0f, seed, counters, Outputs{primary, sink, segments});
 }
 
 Color WhittedIntegrator::resolveDeferred(const ShadingRecord& record,
@@ -29,12 +30,22 @@ Color WhittedIntegrator::resolveDeferred(const ShadingRecord& record,
 }
 
 Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, uint32_t seed,
-                               TraceCounters& counters, PrimaryInfo* primary,
-                               RecordSink* sink) const {
+                               TraceCounters& counters, const Outputs& out) const {
     ++counters.rays;
     SurfaceHit hit;
-    if (!scene_.intersect(ray, 0.0f, kInfinity, hit)) return scene_.settings().background;
+    const bool found = scene_.intersect(ray, 0.0f, kInfinity, hit);
+    if (out.segments && depth > 0) {
+        SegmentSink& s = *out.segments;
+        if (s.count < s.capacity)
+            s.data[s.count++] = found ? TreeSegment{ray.origin, ray.at(hit.t), 0u}
+                                      : TreeSegment{ray.origin, ray.dir, 1u};
+        else
+            s.overflow = true;
+    }
+    if (!found) return scene_.settings().background;
 
+    PrimaryInfo* primary = out.primary;
+    RecordSink* sink = out.records;
     const CompiledMaterial& m = scene_.materials()[hit.material];
     if (primary) {
         if (depth == 0) {
@@ -105,7 +116,7 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, uint32_t
             reflectWeight += transparency * f;
             const float w = transparency * (1.0f - f);
             refracted = w * trace(Ray::make(p - n * eps_, t), depth + 1, weight * w,
-                                  hashCombine(seed, 2u), counters, primary, sink);
+                                  hashCombine(seed, 2u), counters, out);
         } else {
             reflectWeight += transparency;
         }
@@ -114,7 +125,7 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, uint32_t
         const Vec3 r = ray.dir - 2.0f * glm::dot(ray.dir, n) * n;
         result += reflectWeight * trace(Ray::make(p + n * eps_, r), depth + 1,
                                         weight * reflectWeight, hashCombine(seed, 1u), counters,
-                                        primary, sink);
+                                        out);
     }
     return result + refracted;
 }

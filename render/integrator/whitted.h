@@ -63,6 +63,23 @@ struct RecordSink {
     bool overflow = false;  ///< More points than capacity: the pixel must be re-traced.
 };
 
+/// One secondary ray of a pixel's ray tree: from `a` to the hit point `b`, or, when it hit
+/// nothing, from `a` along direction `b` to infinity. Dirty regions test these against an
+/// edit's bounds (thesis 3.2: only pixels whose secondary rays can reach the edit).
+struct TreeSegment {
+    Vec3 a;
+    Vec3 b;
+    uint32_t escapes;  ///< 1: `b` is a direction and the ray is unbounded.
+};
+
+/// Fixed-capacity destination for the secondary segments of one pixel; no allocation.
+struct SegmentSink {
+    TreeSegment* data = nullptr;
+    int capacity = 0;
+    int count = 0;
+    bool overflow = false;  ///< The tree did not fit: treat the pixel as always affected.
+};
+
 /// Traces rays through a compiled scene. Stateless apart from the scene it reads.
 class WhittedIntegrator {
 public:
@@ -74,14 +91,21 @@ public:
     /// sample; `primary` (optional) receives the first hit and whether the tree met a mirror
     /// or glass; `sink` receives shading records when shadows are Deferred.
     Color traceCamera(const Ray& ray, uint32_t seed, TraceCounters& counters,
-                      PrimaryInfo* primary = nullptr, RecordSink* sink = nullptr) const;
+                      PrimaryInfo* primary = nullptr, RecordSink* sink = nullptr,
+                      SegmentSink* segments = nullptr) const;
 
     /// The light terms a Deferred trace left out at `record`, with full-quality shadows.
     Color resolveDeferred(const ShadingRecord& record, TraceCounters& counters) const;
 
 private:
+    /// Optional outputs of one camera ray, passed down the recursion.
+    struct Outputs {
+        PrimaryInfo* primary;
+        RecordSink* records;
+        SegmentSink* segments;
+    };
     Color trace(const Ray& ray, int depth, float weight, uint32_t seed, TraceCounters& counters,
-                PrimaryInfo* primary, RecordSink* sink) const;
+                const Outputs& out) const;
     /// Sum over lights of the shadowed Lambert + Phong terms (the format's inner sum).
     Color directLight(const Vec3& p, const Vec3& n, const Vec3& toViewer,
                       const CompiledMaterial& m, uint32_t seed, ShadowQuality shadows,

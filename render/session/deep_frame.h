@@ -22,6 +22,17 @@ enum PixelFlag : uint8_t {
     kTouchedSpecular = 1,  ///< Its ray tree met a reflective or refractive surface.
     kDeferredValid = 2,    ///< Traced with only shadows deferred: records complete the pixel.
     kTracedLastUpdate = 4,  ///< Re-traced by the latest edit (debug overlay).
+    kTreeUnknown = 8,       ///< Its secondary segments were not all kept: always re-trace.
+};
+
+/// What dirty marking needs to know about a block of pixels without looking at them.
+struct TileSummary {
+    Aabb hitBox;                ///< Camera-ray hit points of its pixels (with their radii).
+    Aabb segmentStarts;         ///< Start points of its pixels' secondary segments.
+    Aabb segmentEnds;           ///< End points of the bounded ones (secondary hit points).
+    bool anySpecular = false;   ///< Some pixel's ray tree met a mirror or glass.
+    bool anyEscape = false;     ///< Some secondary ray left the scene (unbounded).
+    bool anyUnknown = false;    ///< Some pixel's tree was not kept.
 };
 
 /// Structure-of-arrays deep buffer (thesis 3.3), row-major, (0, 0) top left.
@@ -46,6 +57,13 @@ struct DeepFrame {
     std::vector<std::vector<ShadingRecord>> tileRecords;
     std::vector<uint32_t> recordStart;
     std::vector<uint8_t> recordCount;
+    /// Secondary ray segments of each pixel's ray tree, pooled per tile like the records.
+    std::vector<std::vector<TreeSegment>> tileSegments;
+    std::vector<uint32_t> segmentStart;
+    std::vector<uint8_t> segmentCount;
+    /// Summaries of 8 x 8 blocks (finer than tiles: tighter boxes reject more in marking).
+    std::vector<TileSummary> blockSummary;
+    static constexpr int kBlock = 8;
 
     /// Allocates for w x h; every pixel starts stale and black.
     void resize(int w, int h);
@@ -54,6 +72,10 @@ struct DeepFrame {
     int tilesX() const { return (width + tileSize - 1) / tileSize; }
     int tilesY() const { return (height + tileSize - 1) / tileSize; }
     int tileOf(int x, int y) const { return (y / tileSize) * tilesX() + x / tileSize; }
+    int blocksX() const { return (width + kBlock - 1) / kBlock; }
+    int blocksY() const { return (height + kBlock - 1) / kBlock; }
+    /// Recomputes the block summaries inside tile `t` from its pixels.
+    void summarizeTile(int t);
 };
 
 }  // namespace rs

@@ -33,26 +33,193 @@ PixelRect screenFootprint(const CameraModel& camera, const Aabb& box) {
 
 namespace {
 
-/// Segment [a, b] against a box: a slab test on the parametric range [0, 1].
-bool segmentHitsBox(const Vec3& a, const Vec3& b, const Aabb& box) {
-    const Vec3 d = b - a;
-    float t0 = 0.0f, t1 = 1.0f;
-    for (int k = 0; k < 3; ++k) {
-        if (std::abs(d[k]) < 1e-12f) {
-            if (a[k] < box.min[k] || a[k] > box.max[k]) return false;
-            continue;
-        }
-        const float inv = 1.0f / d[k];
-        float tn = (box.min[k] - a[k]) * inv, tf = (box.max[k] - a[k]) * inv;
-        if (tn > tf) std::swap(tn, tf);
-        t0 = std::max(t0, tn);
-        t1 = std::min(t1, tf);
-        if (t0 > t1) return false;
+/// A segment or ray with its reciprocal direction, so testing it against several boxes costs
+/// no further divisions.
+struct Probe {
+    Vec3 a, d, inv;
+    float tmax;
+    Probe(const Vec3& from, const Vec3& dir, float t) : a(from), d(dir), tmax(t) {
+        for (int k = 0; k < 3; ++k) inv[k] = std::abs(d[k]) < 1e-12f ? 0.0f : 1.0f / d[k];
     }
-    return true;
+    bool hits(const Aabb& box) const {
+        float t0 = 0.0f, t1 = tmax;
+        for (int k = 0; k < 3; ++k) {
+            if (inv[k] == 0.0f) {
+                if (a[k] < box.min[k] || a[k] > box.max[k]) return false;
+                continue;
+            }
+            float tn = (box.min[k] - a[k]) * inv[k], tf = (box.max[k] - a[k]) * inv[k];
+            if (tn > tf) std::swap(tn, tf);
+            t0 = std::max(t0, tn);
+            t1 = std::min(t1, tf);
+            if (t0 > t1) return false;
+        }
+        return true;
+    }
+};
+
+/// Segment [a, b] against a box.
+bool segmentHitsBox(const Vec3& a, const Vec3& b, const Aabb& box) {
+    return Probe(a, b - a, 1.0f).hits(box);
 }
 
 Aabb grown(const Aabb& b, float r) { return Aabb{b.min - Vec3(r), b.max + Vec3(r)}; }
+
+/// Can a shadow ray from anywhere in `points` to light `l` cross `region`? Segments from a
+/// box to a sphere stay within (box half-diagonal + light radius) of the centre-to-centre
+/// segment, so test that segment against the region grown by as much.
+bool shadowsMayCross(const Aabb& points, const CompiledLight& l, const Aabb& region) {
+    if (points.empty()) return false;
+    const float r = 0.5f * glm::length(points.extent()) + l.radius;
+    return segmentHitsBox(points.center(), l.position, grown(region, r));
+}
+
+/// The cone a region's bounding sphere (grown by the light's radius) subtends from a light:
+/// a point outside it cannot have a shadow ray to that light crossing the region. No
+/// divisions or roots per test, so it pre-filters the exact segment test cheaply.
+struct ShadowCone {
+    Vec3 apex;        ///< Light centre.
+    Vec3 axis;        ///< Unit, toward the sphere.
+    float radius;     ///< Grown sphere radius (without the pixel's own hit radius).
+    float dist;       ///< Light to sphere centre.
+    /// True when a segment from `p` (within `slack` of it) to the light may cross the region.
+    bool mayContain(const Vec3& p, float slack) const {
+        const float r = radius + slack;
+        if (r >= dist) return true;  // The light sits in (or touches) the sphere.
+        const Vec3 v = p - apex;
+        const float len2 = glm::dot(v, v);
+        const float near = dist - r;
+        if (len2 < near * near) return false;  // Closer to the light than the region.
+        const float d = glm::dot(v, axis);
+        if (d <= 0.0f) return false;
+        const float sin2 = (r * r) / (dist * dist);
+        return d * d >= (1.0f - sin2) * len2;
+    }
+};
+
+ShadowCone makeCone(const CompiledLight& l, const Aabb& region) {
+    ShadowCone c;
+    c.apex = l.position;
+    const Vec3 toCenter = region.center() - l.position;
+    c.dist = glm::length(toCenter);
+    c.axis = c.dist > 0.0f ? toCenter / c.dist : Vec3(0, 0, 1);
+    c.radius = 0.5f * glm::length(region.extent()) + l.radius;
+    return c;
+}
+
+/// Can a segment from a point of `starts` to a point of `ends` cross `region`? Such segments
+/// stay within max(start radius, end radius) of the segment joining the two box centres.
+bool segmentsMayCross(const Aabb& starts, const Aabb& ends, const Aabb& region) {
+    if (starts.empty() || ends.empty()) return false;
+    const float r = 0.5f * std::max(glm::length(starts.extent()), glm::length(ends.extent()));
+    return segmentHitsBox(starts.center(), ends.center(), grown(region, r));
+}
+
+/// Everything marking needs, computed once per edit.
+struct MarkContext {
+    const SceneEdit& edit;
+    const DeepFrame& frame;
+    const std::vector<CompiledLight>& lights;
+    std::vector<PixelRect> footprints;
+    bool shadows;
+    std::vector<Aabb> regions;       ///< The edit's regions, overlapping ones merged.
+    std::vector<ShadowCone> cones;   ///< Per (region, light), region-major.
+    std::vector<Aabb> grownRegions;  ///< Per (region, light): grown by the light's radius.
+};
+
+/// Merges overlapping boxes (a drag step's old and new bounds nearly coincide): fewer tests,
+/// and the union still contains both.
+std::vector<Aabb> mergeOverlapping(std::vector<Aabb> boxes) {
+    for (bool merged = true; merged;) {
+        merged = false;
+        for (std::size_t i = 0; i < boxes.size() && !merged; ++i)
+            for (std::size_t j = i + 1; j < boxes.size() && !merged; ++j)
+                if (boxes[i].overlaps(boxes[j])) {
+                    boxes[i].expand(boxes[j]);
+                    boxes.erase(boxes.begin() + long(j));
+                    merged = true;
+                }
+    }
+    return boxes;
+}
+
+/// Whether any of the pixel's secondary segments (or shadow rays from their end points) can
+/// reach an edited region.
+bool treeMayCross(const MarkContext& c, std::size_t i, int tile) {
+    if (c.frame.flags[i] & kTreeUnknown) return true;
+    const auto& pool = c.frame.tileSegments[std::size_t(tile)];
+    const uint32_t start = c.frame.segmentStart[i];
+    for (uint32_t k = 0; k < c.frame.segmentCount[i]; ++k) {
+        const TreeSegment& s = pool[start + k];
+        const Probe ray = s.escapes ? Probe(s.a, s.b, kInfinity) : Probe(s.a, s.b - s.a, 1.0f);
+        for (const Aabb& region : c.regions)
+            if (ray.hits(region)) return true;
+        if (!c.shadows || s.escapes) continue;
+        for (std::size_t li = 0; li < c.lights.size(); ++li) {
+            const Probe shadow(s.b, c.lights[li].position - s.b, 1.0f);
+            for (std::size_t r = 0; r < c.regions.size(); ++r)
+                if (c.cones[r * c.lights.size() + li].mayContain(s.b, 0.0f) &&
+                    shadow.hits(c.grownRegions[r * c.lights.size() + li]))
+                    return true;
+        }
+    }
+    return false;
+}
+
+/// Which per-pixel tests a tile needs; all false: no pixel of the tile can be affected.
+struct TileTests {
+    bool footprint = false, retint = false, primaryShadow = false, tree = false;
+    bool any() const { return footprint || retint || primaryShadow || tree; }
+};
+
+TileTests tileTests(const MarkContext& c, const PixelRect& r, const TileSummary& t) {
+    TileTests tests;
+    tests.retint = !c.edit.retinted.empty();
+    for (const PixelRect& f : c.footprints)
+        if (f.x0 < r.x1 && r.x0 < f.x1 && f.y0 < r.y1 && r.y0 < f.y1) tests.footprint = true;
+    for (const Aabb& region : c.regions) {
+        if (c.shadows)
+            for (const CompiledLight& l : c.lights)
+                if (shadowsMayCross(t.hitBox, l, region)) tests.primaryShadow = true;
+        if (!t.anySpecular || tests.tree) continue;
+        if (t.anyUnknown || t.anyEscape || segmentsMayCross(t.segmentStarts, t.segmentEnds, region))
+            tests.tree = true;
+        if (c.shadows)
+            for (const CompiledLight& l : c.lights)
+                if (shadowsMayCross(t.segmentEnds, l, region)) tests.tree = true;
+    }
+    if (tests.retint && t.anySpecular) tests.tree = true;
+    return tests;
+}
+
+bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, int tile) {
+    const std::size_t i = c.frame.index(x, y);
+    if (tests.footprint)
+        for (const PixelRect& f : c.footprints)
+            if (x >= f.x0 && x < f.x1 && y >= f.y0 && y < f.y1) return true;
+    if (tests.retint)
+        for (ObjectId id : c.edit.retinted)
+            if (c.frame.id[i] == id) return true;
+    if (tests.tree && (c.frame.flags[i] & kTouchedSpecular)) {
+        // A retinted object may be seen in a mirror: then any specular pixel.
+        if (!c.edit.retinted.empty() || treeMayCross(c, i, tile)) return true;
+    }
+    const glm::vec4 hb = c.frame.hitBound[i];
+    if (tests.primaryShadow && hb.w >= 0.0f) {
+        // Any segment from the hit points to any point of a light stays within
+        // (hit radius + light radius) of the centre-to-centre segment.
+        const Vec3 p(hb);
+        for (std::size_t li = 0; li < c.lights.size(); ++li) {
+            const Probe shadow(p, c.lights[li].position - p, 1.0f);
+            for (std::size_t r = 0; r < c.regions.size(); ++r) {
+                if (!c.cones[r * c.lights.size() + li].mayContain(p, hb.w)) continue;
+                const Aabb& g = c.grownRegions[r * c.lights.size() + li];
+                if (shadow.hits(hb.w > 0.0f ? grown(g, hb.w) : g)) return true;
+            }
+        }
+    }
+    return false;
+}
 
 }  // namespace
 
@@ -66,48 +233,59 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     }
     if (edit.regions.empty() && edit.retinted.empty()) return 0;
 
-    std::vector<PixelRect> footprints;
-    for (const Aabb& box : edit.regions) footprints.push_back(screenFootprint(after.camera(), box));
-    const bool shadows = after.settings().shadowSamples > 0 && !edit.regions.empty();
-    const auto& lights = after.lights();
-
-    std::vector<uint8_t> core(mask.size(), 0);
-    tbb::parallel_for(0, h, [&](int y) {
-        for (int x = 0; x < w; ++x) {
-            const std::size_t i = frame.index(x, y);
-            bool dirty = (frame.flags[i] & kTouchedSpecular) != 0;
-            for (std::size_t k = 0; !dirty && k < footprints.size(); ++k) {
-                const PixelRect& r = footprints[k];
-                dirty = x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1;
-            }
-            for (std::size_t k = 0; !dirty && k < edit.retinted.size(); ++k)
-                dirty = frame.id[i] == edit.retinted[k];
-            const glm::vec4 hb = frame.hitBound[i];
-            if (!dirty && shadows && hb.w >= 0.0f) {
-                // Any segment from the hit points to any point of a light stays within
-                // (hit radius + light radius) of the centre-to-centre segment.
-                const Vec3 c(hb);
-                for (std::size_t l = 0; !dirty && l < lights.size(); ++l)
-                    for (std::size_t k = 0; !dirty && k < edit.regions.size(); ++k)
-                        dirty = segmentHitsBox(c, lights[l].position,
-                                               grown(edit.regions[k], hb.w + lights[l].radius));
-            }
-            core[i] = dirty;
+    MarkContext c{edit, frame, after.lights(), {}, after.settings().shadowSamples > 0, {}, {}, {}};
+    c.regions = mergeOverlapping(edit.regions);
+    for (const Aabb& box : edit.regions) c.footprints.push_back(screenFootprint(after.camera(), box));
+    for (const Aabb& box : c.regions) {
+        for (const CompiledLight& l : c.lights) {
+            c.cones.push_back(makeCone(l, box));
+            c.grownRegions.push_back(grown(box, l.radius));
         }
+    }
+
+    // Mark, then grow each mark to its 8 neighbours (a neighbour's change can flip an
+    // adaptive supersampling decision). Growing writes only around marked pixels.
+    const int blocksX = frame.blocksX(), blocks = blocksX * frame.blocksY();
+    const int B = DeepFrame::kBlock;
+    std::vector<uint8_t> blockMarked(std::size_t(blocks), 0);
+    // Reused between edits; bound to a reference here because a thread_local named inside the
+    // worker lambdas would be each worker's own.
+    thread_local std::vector<uint8_t> coreBuffer;
+    std::vector<uint8_t>& core = coreBuffer;
+    core.assign(mask.size(), 0);
+    tbb::parallel_for(0, blocks, [&](int b) {
+        const int bx = b % blocksX, by = b / blocksX;
+        const PixelRect r{bx * B, by * B, std::min(w, (bx + 1) * B), std::min(h, (by + 1) * B)};
+        const TileTests tests = tileTests(c, r, frame.blockSummary[std::size_t(b)]);
+        if (!tests.any()) return;
+        bool any = false;
+        for (int y = r.y0; y < r.y1; ++y)
+            for (int x = r.x0; x < r.x1; ++x)
+                if (pixelMayChange(c, tests, x, y, frame.tileOf(x, y))) core[frame.index(x, y)] = any = true;
+        blockMarked[std::size_t(b)] = any;
     });
-    // Grow by one pixel: a neighbour's change can flip an adaptive supersampling decision.
     std::atomic<std::size_t> count{0};
-    tbb::parallel_for(0, h, [&](int y) {
+    tbb::parallel_for(0, blocks, [&](int b) {
+        const int bx = b % blocksX, by = b / blocksX;
+        bool near = false;
+        for (int dy = -1; dy <= 1 && !near; ++dy)
+            for (int dx = -1; dx <= 1 && !near; ++dx) {
+                const int nx = bx + dx, ny = by + dy;
+                near = nx >= 0 && ny >= 0 && nx < blocksX && ny < frame.blocksY() &&
+                       blockMarked[std::size_t(ny * blocksX + nx)];
+            }
+        if (!near) return;
         std::size_t local = 0;
-        for (int x = 0; x < w; ++x) {
-            uint8_t d = 0;
-            for (int dy = -1; dy <= 1 && !d; ++dy)
-                for (int dx = -1; dx <= 1 && !d; ++dx) {
-                    const int nx = x + dx, ny = y + dy;
-                    if (nx >= 0 && ny >= 0 && nx < w && ny < h) d = core[frame.index(nx, ny)];
-                }
-            mask[frame.index(x, y)] = d;
-            local += d;
+        const int y1 = std::min(h, (by + 1) * B), x1 = std::min(w, (bx + 1) * B);
+        for (int y = by * B; y < y1; ++y) {
+            for (int x = bx * B; x < x1; ++x) {
+                uint8_t d = 0;
+                for (int yy = std::max(0, y - 1); yy <= std::min(h - 1, y + 1) && !d; ++yy)
+                    for (int xx = std::max(0, x - 1); xx <= std::min(w - 1, x + 1) && !d; ++xx)
+                        d = core[frame.index(xx, yy)];
+                mask[frame.index(x, y)] = d;
+                local += d;
+            }
         }
         count += local;
     });

@@ -81,6 +81,7 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
     SceneUpdate u = updateScene(doc_, hasDocument_ ? snapshot_ : nullptr, doc);
 
     std::unique_lock lock(mutex_);
+    std::unique_lock frameLock(frameMutex_);  // No tile commits while the generation moves.
     doc_ = doc;
     hasDocument_ = true;
     if (!u.edit.everything && u.edit.regions.empty() && u.edit.retinted.empty()) {
@@ -101,11 +102,12 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
         if (!policy_.dirtyRegions) edit.everything = true;
         marked = markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_);
         for (std::size_t i = 0; i < frame_.pixelCount(); ++i) {
-            frame_.flags[i] &= uint8_t(~kTracedLastUpdate);
+            uint8_t f = uint8_t(frame_.flags[i] & ~kTracedLastUpdate);
             if (dirtyMask_[i]) {
                 frame_.state[i] = kStale;
-                frame_.flags[i] = uint8_t((frame_.flags[i] & ~kDeferredValid) | kTracedLastUpdate);
+                f = uint8_t((f & ~kDeferredValid) | kTracedLastUpdate);
             }
+            frame_.flags[i] = f;
         }
     }
     if (u.edit.focus != kNoObject) {
@@ -120,6 +122,7 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
     stats_.lastUpdateMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (marked == 0) completedPassGeneration_ = gen;  // Nothing to trace: the frame is current.
+    frameLock.unlock();
     lock.unlock();
     wake_.notify_all();
     done_.notify_all();

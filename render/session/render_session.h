@@ -16,6 +16,7 @@
 #include <condition_variable>
 #include <memory>
 #include <mutex>
+#include <shared_mutex>
 #include <thread>
 #include <vector>
 
@@ -66,10 +67,10 @@ public:
     /// Waits until every pixel is final for the current generation.
     bool waitUntilComplete(std::chrono::milliseconds timeout);
 
-    /// Runs `f(frame, snapshot)` under the frame lock; keep it short (copy what you need).
+    /// Runs `f(frame, snapshot)` with tile commits held off; keep it short (copy what you need).
     template <class F>
     void withFrame(F&& f) const {
-        std::lock_guard lock(mutex_);
+        std::unique_lock lock(frameMutex_);
         f(frame_, snapshot_);
     }
     SessionStats stats() const;
@@ -90,7 +91,11 @@ private:
     uint8_t targetStateLocked() const;
 
     std::mutex updateMutex_;  ///< Serialises update(); held without the frame lock.
-    mutable std::mutex mutex_;
+    mutable std::mutex mutex_;  ///< Scheduler state; taken before frameMutex_.
+    /// Frame pixels. Tiles commit disjoint pixels under a shared lock; edits (generation bump
+    /// and dirty marking) and readers take it exclusively. Between passes no tile writes, so
+    /// the scheduler reads the frame under mutex_ alone.
+    mutable std::shared_mutex frameMutex_;
     std::condition_variable wake_;
     std::condition_variable done_;
     std::atomic<uint64_t> generation_{0};

@@ -25,9 +25,16 @@ struct PixelOut {
     glm::vec4 hitBound;
     uint32_t recordOffset;  ///< Into the tile's local record list.
     uint8_t recordCount;
+    uint32_t segmentOffset;  ///< Into the tile's local segment list.
+    uint8_t segmentCount;
+    uint8_t segmentMode;     ///< SegmentMode.
 };
 
+/// How a written pixel's secondary segments relate to the ones it had.
+enum SegmentMode : uint8_t { kReplace = 0, kAppend = 1, kKeep = 2 };
+
 constexpr int kRecordsPerPixel = 16;
+constexpr int kSegmentsPerPixel = 24;
 
 glm::vec4 pointBound(const Ray& ray, const PrimaryInfo& info) {
     if (info.id == kNoObject) return glm::vec4(0.0f, 0.0f, 0.0f, -1.0f);
@@ -41,13 +48,58 @@ glm::vec4 growBound(glm::vec4 b, const Vec3& p) {
     return b;
 }
 
+/// Rebuilds tile `tile`'s segment pool: written pixels get their new segments (or keep or
+/// extend their old ones), untouched pixels keep theirs; then refreshes the tile summary.
+void commitSegments(DeepFrame& frame, const PixelRect& r, int tile, const std::vector<PixelOut>& out,
+                    const std::vector<TreeSegment>& segments) {
+    thread_local std::vector<int> written;
+    const int rw = r.x1 - r.x0;
+    written.assign(std::size_t(rw) * std::size_t(r.y1 - r.y0), -1);
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        const int px = int(out[k].index % uint32_t(frame.width));
+        const int py = int(out[k].index / uint32_t(frame.width));
+        written[std::size_t(py - r.y0) * std::size_t(rw) + std::size_t(px - r.x0)] = int(k);
+    }
+    auto& pool = frame.tileSegments[std::size_t(tile)];
+    std::vector<TreeSegment> fresh;
+    fresh.reserve(pool.size() + segments.size());
+    for (int y = r.y0; y < r.y1; ++y) {
+        for (int x = r.x0; x < r.x1; ++x) {
+            const std::size_t i = frame.index(x, y);
+            const int k = written[std::size_t(y - r.y0) * std::size_t(rw) + std::size_t(x - r.x0)];
+            const uint32_t start = uint32_t(fresh.size());
+            const bool keepOld = k < 0 || out[std::size_t(k)].segmentMode != kReplace;
+            if (keepOld)
+                fresh.insert(fresh.end(), pool.begin() + frame.segmentStart[i],
+                             pool.begin() + frame.segmentStart[i] + frame.segmentCount[i]);
+            if (k >= 0 && out[std::size_t(k)].segmentMode != kKeep) {
+                const PixelOut& o = out[std::size_t(k)];
+                fresh.insert(fresh.end(), segments.begin() + o.segmentOffset,
+                             segments.begin() + o.segmentOffset + o.segmentCount);
+            }
+            std::size_t count = fresh.size() - start;
+            if (count > 255) {  // Too many to index: forget them and always re-trace.
+                fresh.resize(start);
+                count = 0;
+                frame.flags[i] |= kTreeUnknown;
+            }
+            frame.segmentStart[i] = start;
+            frame.segmentCount[i] = uint8_t(count);
+        }
+    }
+    pool.swap(fresh);
+    frame.summarizeTile(tile);
+}
+
 }  // namespace
 
 void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounters& counters) {
     thread_local std::vector<PixelOut> out;
     thread_local std::vector<ShadingRecord> records;
+    thread_local std::vector<TreeSegment> segments;
     out.clear();
     records.clear();
+    segments.clear();
     const CompiledScene& scene = *plan.scene;
     const CameraModel& camera = scene.camera();
     const WhittedIntegrator integrator(scene, plan.options);
@@ -56,13 +108,22 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
     std::size_t traced = 0;
     uint64_t rays = 0;
     ShadingRecord sinkBuffer[kRecordsPerPixel];
+    TreeSegment segmentBuffer[kSegmentsPerPixel];
+    // Keeps a pixel's secondary segments for dirty marking; an overflow flags the tree unknown.
+    auto keepSegments = [&](PixelOut& o, const SegmentSink& sink) {
+        o.segmentOffset = uint32_t(segments.size());
+        o.segmentCount = uint8_t(sink.count);
+        segments.insert(segments.end(), sink.data, sink.data + sink.count);
+        if (sink.overflow) o.flags |= kTreeUnknown;
+    };
 
     // A full-quality centre sample: the Base pass, or an interactive pass at full quality.
     auto traceBase = [&](int x, int y, std::size_t i, uint8_t extraFlags) {
         TraceCounters tc;
         PrimaryInfo info;
+        SegmentSink segSink{segmentBuffer, kSegmentsPerPixel, 0, false};
         const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
-        const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info);
+        const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info, nullptr, &segSink);
         PixelOut o{};
         o.index = uint32_t(i);
         o.color = o.base = c;
@@ -73,6 +134,7 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
         o.state = plan.spp == 1 ? kFinal : kBase;
         o.flags = uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | extraFlags);
         o.hitBound = pointBound(ray, info);
+        keepSegments(o, segSink);
         out.push_back(o);
         rays += tc.total();
         ++traced;
@@ -95,9 +157,11 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                     TraceCounters tc;
                     PrimaryInfo info;
                     RecordSink sink{sinkBuffer, kRecordsPerPixel, 0, false};
+                    SegmentSink segSink{segmentBuffer, kSegmentsPerPixel, 0, false};
                     const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
                     const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info,
-                                                           plan.deferredRecords ? &sink : nullptr);
+                                                           plan.deferredRecords ? &sink : nullptr,
+                                                           &segSink);
                     PixelOut o{};
                     o.index = uint32_t(i);
                     o.color = c;
@@ -113,6 +177,7 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                     o.recordOffset = uint32_t(records.size());
                     o.recordCount = complete ? uint8_t(sink.count) : 0;
                     if (complete) records.insert(records.end(), sinkBuffer, sinkBuffer + sink.count);
+                    keepSegments(o, segSink);
                     out.push_back(o);
                     rays += tc.total();
                     ++traced;
@@ -142,7 +207,8 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                         o.normal = info.normal;
                         o.cost = uint32_t(tc.total());
                         o.state = kInteractive;
-                        o.flags = uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | kTracedLastUpdate);
+                        o.flags = uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) |
+                                          kTracedLastUpdate);
                         o.hitBound = pointBound(ray, info);
                         out.push_back(o);
                     }
@@ -168,8 +234,9 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                     o.normal = frame_.normal[i];
                     o.cost = frame_.cost[i] + uint32_t(tc.total());
                     o.state = plan.spp == 1 ? kFinal : kBase;
-                    o.flags = uint8_t(plan.flags[i] & (kTouchedSpecular | kTracedLastUpdate));
+                    o.flags = uint8_t(plan.flags[i] & (kTouchedSpecular | kTracedLastUpdate | kTreeUnknown));
                     o.hitBound = frame_.hitBound[i];
+                    o.segmentMode = kKeep;
                     out.push_back(o);
                     rays += tc.total();
                     ++traced;
@@ -187,12 +254,14 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                 o.flags = plan.flags[i];
                 o.hitBound = frame_.hitBound[i];
                 o.cost = frame_.cost[i];
+                o.segmentMode = kKeep;
                 if (!plan.needSupersampling[i]) {
                     o.color = o.base;
                     o.state = kFinal;
                     out.push_back(o);
                     continue;
                 }
+                SegmentSink segSink{segmentBuffer, kSegmentsPerPixel, 0, false};
                 // Progressive: add up to sppChunk samples in the order renderPixel sums them,
                 // so the final average is bit-identical to a full render's.
                 Color sum = frame_.sampleSum[i];
@@ -204,11 +273,14 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                     const Vec3 off = pixelSampleOffset(k, plan.spp, patternSeed);
                     const Ray ray = camera.generateRay(float(x) + off.x, float(y) + off.y);
                     PrimaryInfo info;
-                    sum += integrator.traceCamera(ray, pixelSeed(x, y, k), tc, &info);
+                    sum += integrator.traceCamera(ray, pixelSeed(x, y, k), tc, &info, nullptr,
+                                                  &segSink);
                     if (info.id != kNoObject) o.hitBound = growBound(o.hitBound, ray.at(info.depth));
                     if (info.touchedSpecular) o.flags |= kTouchedSpecular;
                 }
                 count = end;
+                keepSegments(o, segSink);
+                o.segmentMode = kAppend;
                 o.sampleSum = sum;
                 o.sampleCount = uint16_t(count);
                 o.color = count == plan.spp ? sum / float(plan.spp) : sum / float(count);
@@ -222,7 +294,9 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
     }
 
     {
-        std::lock_guard lock(mutex_);
+        // Shared: other tiles commit their own pixels concurrently; an edit holds it exclusively
+        // while it bumps the generation, so a stale tile can never get in after it.
+        std::shared_lock lock(frameMutex_);
         if (generation_.load() != plan.generation) return;  // Never write a stale tile.
         for (const PixelOut& o : out) {
             const std::size_t i = o.index;
@@ -265,6 +339,7 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
             }
             pool.swap(fresh);
         }
+        commitSegments(frame_, job.rect, job.tile, out, segments);
     }
     counters.pixels += traced;
     counters.rays += rays;

@@ -1,0 +1,169 @@
+// `raystudio-cli drag`: drags an object through the interactive session, then refines, and
+// compares the refined frame with a from-scratch full render measured in the same run.
+#include "arguments.h"
+#include "commands.h"
+
+#include "integrator/renderer.h"
+#include "session/render_session.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+namespace rs::cli {
+
+namespace {
+
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+double medianOf(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+Vec3 parseVec3(const std::string& text) {
+    Vec3 v;
+    char c1 = 0, c2 = 0;
+    std::istringstream in(text);
+    if (!(in >> v.x >> c1 >> v.y >> c2 >> v.z) || c1 != ',' || c2 != ',' || !in.eof() ||
+        !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+        throw UsageError{"--to expects X,Y,Z (three finite numbers), got '" + text + "'"};
+    return v;
+}
+
+InteractionPolicy parsePolicy(const std::string& name) {
+    if (name == "default") return InteractionPolicy{};
+    if (name == "none") return InteractionPolicy::none();
+    std::ifstream in(name);
+    if (!in) throw UsageError{"--policy: cannot read '" + name + "' (default, none or a JSON file)"};
+    std::stringstream text;
+    text << in.rdbuf();
+    InteractionPolicy p;
+    std::string error;
+    if (!policyFromJson(text.str(), p, error)) throw UsageError{"--policy " + name + ": " + error};
+    return p;
+}
+
+struct Step {
+    double ms;
+    std::size_t traced;
+};
+
+}  // namespace
+
+int runDrag(int argc, char** argv) {
+    OptionSpec spec;
+    spec.valued = {"--object", "--to", "--steps", "--policy", "--threads", "--width", "--height",
+                   "--max-depth", "--shadow-samples", "--supersampling"};
+    spec.flags = {"--verify", "--json"};
+    Arguments args(argc, argv, 2, spec);
+    if (args.positional().size() != 1) throw UsageError{"expects exactly one scene file"};
+    const auto objectName = args.value("--object");
+    const auto to = args.value("--to");
+    if (!objectName) throw UsageError{"missing --object NAME"};
+    if (!to) throw UsageError{"missing --to X,Y,Z"};
+    const Vec3 target = parseVec3(*to);
+    const int steps = args.intValue("--steps", 1, 100000).value_or(30);
+    const int threads = args.intValue("--threads", 1, 1024).value_or(0);
+    const InteractionPolicy policy = parsePolicy(args.value("--policy").value_or("default"));
+
+    SceneDocument doc;
+    if (!loadSceneOrReport(args.positional()[0], doc)) return 2;
+    applyRenderOverrides(args, doc.render);
+    Object* object = nullptr;
+    for (Object& o : doc.objects)
+        if (o.name == *objectName) object = &o;
+    if (!object) throw UsageError{"--object: the scene has no object named '" + *objectName + "'"};
+    if (std::holds_alternative<PlaneGeometry>(object->geometry))
+        throw UsageError{"--object: '" + *objectName + "' is a plane; planes have no transform to drag"};
+    const ObjectId id = object->id;
+    const Aabb startBounds = CompiledScene(doc).objectBounds(id);
+    if (startBounds.empty()) throw UsageError{"--object: '" + *objectName + "' is hidden or empty"};
+    const Vec3 delta = (target - startBounds.center()) / float(steps);
+
+    RenderSession session(threads);
+    session.setPolicy(policy);
+    session.update(doc);
+    if (!session.waitUntilComplete(600s)) throw std::runtime_error("initial render timed out");
+
+    std::vector<Step> log;
+    session.beginInteraction(id);
+    for (int s = 0; s < steps; ++s) {
+        doc.findObject(id)->transform.translate += delta;
+        const auto start = Clock::now();
+        const uint64_t gen = session.update(doc);
+        PassInfo info;
+        if (!session.waitForPass(gen, 600s, &info)) throw std::runtime_error("drag step timed out");
+        log.push_back({msSince(start), info.generation == gen ? info.tracedPixels : 0});
+    }
+    session.endInteraction();
+    const auto refineStart = Clock::now();
+    if (!session.waitUntilComplete(600s)) throw std::runtime_error("refinement timed out");
+    const double refineMs = msSince(refineStart);
+
+    RenderOptions options;
+    options.threads = threads;
+    const RenderResult full = renderImage(CompiledScene(doc), options);
+    float maxDiff = 0.0f;
+    session.withFrame([&](const DeepFrame& frame, const auto&) {
+        for (std::size_t i = 0; i < frame.pixelCount(); ++i) {
+            const Color d = glm::abs(frame.color[i] - full.image.pixels[i]);
+            maxDiff = std::max({maxDiff, d.x, d.y, d.z});
+        }
+    });
+
+    // Cancellation latency: start a full re-render, interrupt it, time until workers stop.
+    SceneDocument nudged = doc;
+    nudged.camera.target.x += 1e-3f;
+    session.update(nudged);
+    std::this_thread::sleep_for(5ms);
+    session.update(doc);
+    session.waitUntilComplete(600s);
+    const double cancelMs = session.stats().lastCancelLatencyMs;
+
+    const std::size_t total = std::size_t(doc.render.width) * std::size_t(doc.render.height);
+    std::vector<double> times, fractions;
+    for (const Step& s : log) {
+        times.push_back(s.ms);
+        fractions.push_back(double(s.traced) / double(total));
+    }
+    const double stepMedian = medianOf(times), fractionMedian = medianOf(fractions);
+    if (args.has("--json")) {
+        std::printf("{\"steps\": [");
+        for (std::size_t i = 0; i < log.size(); ++i)
+            std::printf("%s{\"ms\": %.3f, \"traced_pixels\": %zu, \"total_pixels\": %zu}",
+                        i ? ", " : "", log[i].ms, log[i].traced, total);
+        std::printf("], \"step_ms_median\": %.3f, \"traced_fraction_median\": %.5f, "
+                    "\"refine_ms\": %.3f, \"full_frame_ms\": %.3f, \"final_max_abs_diff\": %.3g, "
+                    "\"cancel_latency_ms\": %.3f}\n",
+                    stepMedian, fractionMedian, refineMs, full.ms, double(maxDiff), cancelMs);
+    } else {
+        std::printf("dragged '%s' in %d steps (%dx%d)\n", objectName->c_str(), steps,
+                    doc.render.width, doc.render.height);
+        std::printf("  step time median      %10.2f ms\n", stepMedian);
+        std::printf("  traced fraction median %9.2f %%\n", 100.0 * fractionMedian);
+        std::printf("  refinement            %10.2f ms\n", refineMs);
+        std::printf("  full frame            %10.2f ms  (ratio step/full %.3f)\n", full.ms,
+                    full.ms > 0 ? stepMedian / full.ms : 0.0);
+        std::printf("  cancel latency        %10.2f ms\n", cancelMs);
+        std::printf("  final max abs diff    %10.3g\n", double(maxDiff));
+    }
+    if (args.has("--verify") && maxDiff > 1e-5f) {
+        std::fprintf(stderr, "raystudio-cli drag: refined frame differs from a full render by %g\n",
+                     double(maxDiff));
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace rs::cli
