@@ -11,21 +11,17 @@
 
 #include <atomic>
 #include <chrono>
+#include <tbb/task_arena.h>
+
 #include <condition_variable>
 #include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
 
-namespace tbb {
-inline namespace detail {
-namespace d1 {
-class task_arena;
-}
-}  // namespace detail
-}  // namespace tbb
-
 namespace rs {
+
+struct PassCounters;
 
 /// Counters for the status bar and benchmarks.
 struct SessionStats {
@@ -80,16 +76,20 @@ public:
     uint64_t generation() const { return generation_.load(); }
     std::shared_ptr<const CompiledScene> snapshot() const;
 
-private:
+    /// Internal: a planned pass and one of its tiles (session_plan.h).
     struct Plan;
     struct TileJob;
+
+private:
     void run();
     bool hasWorkLocked() const;
     bool planLocked(Plan& plan);
     void execute(Plan& plan, PassInfo& info);
-    void processTile(const Plan& plan, const TileJob& job, PassInfo& info);
+    void processTile(const Plan& plan, const TileJob& job, PassCounters& counters);
     bool fullQualityWhileMoving() const;
+    uint8_t targetStateLocked() const;
 
+    std::mutex updateMutex_;  ///< Serialises update(); held without the frame lock.
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::condition_variable done_;

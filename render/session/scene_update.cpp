@@ -112,7 +112,7 @@ SceneUpdate updateScene(const SceneDocument& before,
 
     if (edit.everything || structural || materialListChanged) {
         update.snapshot = std::make_shared<const CompiledScene>(after, beforeSnapshot.get());
-    } else if (!moved.empty()) {
+    } else if (!moved.empty() || !edit.retinted.empty()) {
         update.snapshot = std::make_shared<const CompiledScene>(beforeSnapshot->refitted(after, moved));
         edit.refitted = true;
     } else {

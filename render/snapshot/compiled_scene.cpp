@@ -158,6 +158,15 @@ void CompiledScene::computeEpsilon() {
 CompiledScene CompiledScene::refitted(const SceneDocument& doc,
                                       const std::vector<ObjectId>& moved) const {
     CompiledScene out = *this;
+    // Material definitions may have changed (same names, same order): recompile the table.
+    out.materials_.resize(1);
+    for (const Material& m : doc.materials) out.materials_.push_back(compileMaterial(m));
+    // Planes are few and cheap: recompile them for material changes.
+    out.planes_.clear();
+    for (const Object& o : doc.objects)
+        if (const auto* plane = std::get_if<PlaneGeometry>(&o.geometry); plane && o.visible)
+            out.planes_.push_back({{plane->point, glm::normalize(plane->normal)},
+                                   materialIndex(doc, o.material), o.id});
     for (ObjectId id : moved) {
         const int index = primitiveIndex(id);
         const Object* o = doc.findObject(id);

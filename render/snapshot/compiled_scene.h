@@ -78,8 +78,9 @@ public:
     explicit CompiledScene(const SceneDocument& doc, const CompiledScene* previous = nullptr);
 
     /// A copy with the listed objects recompiled from `doc` and the BVH refitted bottom-up
-    /// instead of rebuilt (thesis 3.2). Only valid when those objects kept their kind and
-    /// visibility and nothing else changed; callers fall back to the constructor otherwise.
+    /// instead of rebuilt (thesis 3.2). Material definitions are recompiled too. Only valid
+    /// when those objects kept their kind and visibility, and the material list its names and
+    /// order; callers fall back to the constructor otherwise.
     CompiledScene refitted(const SceneDocument& doc, const std::vector<ObjectId>& moved) const;
     /// A copy where object `id` is traced as its world bounding box (box proxy while moving).
     CompiledScene withBoxProxy(ObjectId id) const;

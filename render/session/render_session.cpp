@@ -1,0 +1,256 @@
+// RenderSession API and scheduler: edits, generations, pass planning, waiting.
+#include "session/render_session.h"
+
+#include "session/dirty_region.h"
+#include "session/session_plan.h"
+
+#include <tbb/info.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rs {
+
+namespace {
+int arenaSize(int threads) { return threads > 0 ? threads : tbb::info::default_concurrency(); }
+
+bool anyBelow(const std::vector<uint8_t>& state, uint8_t target) {
+    return std::any_of(state.begin(), state.end(), [target](uint8_t s) { return s < target; });
+}
+}  // namespace
+
+RenderSession::RenderSession(int threads)
+    : threads_(threads), arena_(std::make_unique<tbb::task_arena>(arenaSize(threads))) {
+    scheduler_ = std::thread(&RenderSession::run, this);
+}
+
+RenderSession::~RenderSession() {
+    {
+        std::lock_guard lock(mutex_);
+        stop_ = true;
+        ++generation_;  // Makes running tiles stop within a row.
+    }
+    wake_.notify_all();
+    scheduler_.join();
+}
+
+void RenderSession::setObserver(SessionObserver* observer) {
+    std::lock_guard lock(mutex_);
+    observer_ = observer;
+}
+
+void RenderSession::setThreads(int threads) {
+    std::lock_guard lock(mutex_);
+    if (threads == threads_) return;
+    threads_ = threads;
+    threadsChanged_ = true;
+}
+
+void RenderSession::setPolicy(const InteractionPolicy& policy) {
+    {
+        std::lock_guard lock(mutex_);
+        policy_ = policy;
+    }
+    wake_.notify_all();
+}
+
+InteractionPolicy RenderSession::policy() const {
+    std::lock_guard lock(mutex_);
+    return policy_;
+}
+
+std::shared_ptr<const CompiledScene> RenderSession::snapshot() const {
+    std::lock_guard lock(mutex_);
+    return snapshot_;
+}
+
+SessionStats RenderSession::stats() const {
+    std::lock_guard lock(mutex_);
+    return stats_;
+}
+
+uint64_t RenderSession::update(const SceneDocument& doc) {
+    std::lock_guard updating(updateMutex_);
+    const auto start = std::chrono::steady_clock::now();
+    // Only update() writes doc_ and snapshot_, and updates are serialised, so the diff and the
+    // (possibly slow) snapshot build run without holding the frame lock.
+    SceneUpdate u = updateScene(doc_, hasDocument_ ? snapshot_ : nullptr, doc);
+
+    std::unique_lock lock(mutex_);
+    doc_ = doc;
+    hasDocument_ = true;
+    if (!u.edit.everything && u.edit.regions.empty() && u.edit.retinted.empty()) {
+        snapshot_ = u.snapshot;  // Nothing traced changed (names, tone mapping, ...).
+        return generation_.load();
+    }
+    const uint64_t gen = ++generation_;
+    editTime_ = start;
+    snapshot_ = u.snapshot;
+    if (u.edit.resized || frame_.width != doc.render.width || frame_.height != doc.render.height)
+        pendingResize_ = true;
+
+    std::size_t marked = 0;
+    if (pendingResize_) {
+        marked = std::size_t(doc.render.width) * std::size_t(doc.render.height);
+    } else {
+        SceneEdit edit = u.edit;
+        if (!policy_.dirtyRegions) edit.everything = true;
+        marked = markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_);
+        for (std::size_t i = 0; i < frame_.pixelCount(); ++i) {
+            frame_.flags[i] &= uint8_t(~kTracedLastUpdate);
+            if (dirtyMask_[i]) {
+                frame_.state[i] = kStale;
+                frame_.flags[i] = uint8_t((frame_.flags[i] & ~kDeferredValid) | kTracedLastUpdate);
+            }
+        }
+    }
+    if (u.edit.focus != kNoObject) {
+        const PixelRect r = screenFootprint(snapshot_->camera(), snapshot_->objectBounds(u.edit.focus));
+        if (!r.empty()) {
+            focusX_ = 0.5f * float(r.x0 + r.x1);
+            focusY_ = 0.5f * float(r.y0 + r.y1);
+        }
+    }
+    stats_.lastDirtyPixels = marked;
+    stats_.lastEditRefitted = u.edit.refitted;
+    stats_.lastUpdateMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (marked == 0) completedPassGeneration_ = gen;  // Nothing to trace: the frame is current.
+    lock.unlock();
+    wake_.notify_all();
+    done_.notify_all();
+    return gen;
+}
+
+void RenderSession::beginInteraction(ObjectId moving) {
+    {
+        std::lock_guard lock(mutex_);
+        interacting_ = true;
+        moving_ = moving;
+    }
+    wake_.notify_all();
+}
+
+void RenderSession::endInteraction() {
+    {
+        std::lock_guard lock(mutex_);
+        interacting_ = false;
+        moving_ = kNoObject;
+    }
+    wake_.notify_all();
+}
+
+void RenderSession::setFocus(float px, float py) {
+    std::lock_guard lock(mutex_);
+    focusX_ = px;
+    focusY_ = py;
+}
+
+bool RenderSession::waitForPass(uint64_t generation, std::chrono::milliseconds timeout,
+                                PassInfo* info) {
+    std::unique_lock lock(mutex_);
+    const bool ok = done_.wait_for(lock, timeout, [&] {
+        return completedPassGeneration_ >= generation || generation_.load() > generation;
+    });
+    if (info) *info = stats_.lastPass;
+    return ok && completedPassGeneration_ >= generation;
+}
+
+bool RenderSession::waitUntilComplete(std::chrono::milliseconds timeout) {
+    std::unique_lock lock(mutex_);
+    return done_.wait_for(lock, timeout, [&] {
+        return hasDocument_ && !running_ && !pendingResize_ && !anyBelow(frame_.state, kFinal);
+    });
+}
+
+bool RenderSession::fullQualityWhileMoving() const {
+    const InteractionPolicy& p = policy_;
+    return p.resolution == MovingResolution::Full && !p.interleaved && !p.boxProxy &&
+           p.refraction == RefractionMode::Full && p.reflection == ReflectionMode::Full &&
+           (p.maxDepthWhileMoving < 0 || (snapshot_ && p.maxDepthWhileMoving >= snapshot_->settings().maxDepth)) &&
+           p.shadows == MovingShadows::Full && p.governorTargetMs <= 0.0;
+}
+
+uint8_t RenderSession::targetStateLocked() const {
+    if (!interacting_) return kFinal;
+    if (!fullQualityWhileMoving()) return kInteractive;
+    return policy_.supersampleWhileMoving ? kFinal : kBase;
+}
+
+bool RenderSession::hasWorkLocked() const {
+    if (!hasDocument_) return false;
+    return pendingResize_ || anyBelow(frame_.state, targetStateLocked());
+}
+
+void RenderSession::run() {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+        wake_.wait(lock, [&] { return stop_ || hasWorkLocked(); });
+        if (stop_) return;
+        Plan plan;
+        if (!planLocked(plan)) continue;
+        running_ = true;
+        lock.unlock();
+        PassInfo info;
+        execute(plan, info);
+        lock.lock();
+        running_ = false;
+        const auto now = std::chrono::steady_clock::now();
+        if (info.cancelled) {
+            stats_.lastCancelLatencyMs =
+                std::chrono::duration<double, std::milli>(now - editTime_).count();
+        } else {
+            completedPassGeneration_ = std::max(completedPassGeneration_, plan.generation);
+            if (plan.kind == PassKind::Interactive) {
+                if (plan.interleaved) interleaveParity_ ^= 1;
+                governor_.record(plan.governorLevel, info.ms, info.tracedPixels);
+            } else if (plan.kind == PassKind::Base && info.tracedPixels > 4096) {
+                governor_.calibrate(info.ms / double(info.tracedPixels));
+            }
+        }
+        stats_.lastPass = info;
+        if (plan.kind == PassKind::Interactive) stats_.lastInteractivePass = info;
+        ++stats_.passes;
+        const bool complete = !info.cancelled && !pendingResize_ && !anyBelow(frame_.state, kFinal);
+        SessionObserver* observer = observer_;
+        const uint64_t gen = generation_.load();
+        lock.unlock();
+        done_.notify_all();
+        if (observer) {
+            observer->passDone(info);
+            if (complete && gen == plan.generation) observer->frameComplete(gen);
+        }
+        lock.lock();
+    }
+}
+
+void RenderSession::execute(Plan& plan, PassInfo& info) {
+    const auto start = std::chrono::steady_clock::now();
+    PassCounters counters;
+    arena_->execute([&] {
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, plan.tiles.size(), 1),
+            [&](const tbb::blocked_range<std::size_t>& r) {
+                for (std::size_t t = r.begin(); t != r.end(); ++t) {
+                    if (generation_.load(std::memory_order_relaxed) != plan.generation) return;
+                    processTile(plan, plan.tiles[t], counters);
+                }
+            },
+            tbb::simple_partitioner());
+    });
+    info.kind = plan.kind;
+    info.generation = plan.generation;
+    info.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                  .count();
+    info.tracedPixels = counters.pixels.load();
+    info.rays = counters.rays.load();
+    info.totalPixels = std::size_t(plan.width) * std::size_t(plan.height);
+    info.cancelled = generation_.load() != plan.generation;
+    info.governorLevel = plan.governorLevel;
+}
+
+}  // namespace rs

@@ -1,0 +1,45 @@
+// Internal to the session: what one pass will do, decided under the lock, run without it.
+#pragma once
+
+#include "session/dirty_region.h"
+#include "session/render_session.h"
+
+#include <atomic>
+#include <memory>
+#include <vector>
+
+namespace rs {
+
+/// Totals of a pass, added to by every tile.
+struct PassCounters {
+    std::atomic<std::size_t> pixels{0};
+    std::atomic<uint64_t> rays{0};
+};
+
+/// One tile of a pass.
+struct RenderSession::TileJob {
+    PixelRect rect;
+    int tile = 0;
+};
+
+/// A pass: its kind, the snapshot and options it traces with, and copies of the per-pixel
+/// state it was planned from (workers never read the live state arrays).
+struct RenderSession::Plan {
+    PassKind kind = PassKind::Base;
+    uint64_t generation = 0;
+    int width = 0, height = 0;
+    std::shared_ptr<const CompiledScene> scene;  ///< Traced (a box proxy while moving).
+    TraceOptions options;
+    bool deferredRecords = false;  ///< Interactive pass whose records complete each pixel.
+    bool resultIsBase = false;     ///< Interactive pass that is in fact full quality.
+    int step = 1;                  ///< Undersampling block size.
+    bool interleaved = false;
+    int parity = 0;
+    int spp = 1;                   ///< The scene's supersampling.
+    int sppChunk = 4;              ///< Samples added per supersampling pass.
+    std::vector<uint8_t> state, flags, needSupersampling;
+    std::vector<TileJob> tiles;
+    int governorLevel = -1;
+};
+
+}  // namespace rs

@@ -1,0 +1,132 @@
+// Pass planning: which kind of pass comes next, at which quality, over which tiles, in what order.
+#include "integrator/renderer.h"
+#include "session/session_plan.h"
+
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+
+namespace rs {
+
+namespace {
+
+bool tileHasCandidate(const RenderSession::Plan& plan, const PixelRect& r) {
+    for (int y = r.y0; y < r.y1; ++y) {
+        for (int x = r.x0; x < r.x1; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(plan.width) + std::size_t(x);
+            const uint8_t s = plan.state[i];
+            switch (plan.kind) {
+                case PassKind::Interactive:
+                    if (s == kStale) {
+                        if (!plan.interleaved) return true;
+                        const int bx = x / plan.step, by = y / plan.step;
+                        if (((bx + by + plan.parity) & 1) == 0) return true;
+                    }
+                    break;
+                case PassKind::Base:
+                    if (s < kBase) return true;
+                    break;
+                case PassKind::Supersample:
+                    if (s == kBase) return true;
+                    break;
+            }
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+bool RenderSession::planLocked(Plan& plan) {
+    if (threadsChanged_) {
+        arena_ = std::make_unique<tbb::task_arena>(threads_ > 0 ? threads_ : tbb::info::default_concurrency());
+        threadsChanged_ = false;
+    }
+    const RenderSettings& settings = snapshot_->settings();
+    if (pendingResize_) {
+        frame_.resize(settings.width, settings.height);
+        pendingResize_ = false;
+    }
+    plan.generation = generation_.load();
+    plan.width = frame_.width;
+    plan.height = frame_.height;
+    plan.spp = std::max(1, settings.supersampling);
+
+    std::size_t stale = 0, belowBase = 0, belowFinal = 0;
+    for (uint8_t s : frame_.state) {
+        stale += s == kStale;
+        belowBase += s < kBase;
+        belowFinal += s < kFinal;
+    }
+    const uint8_t target = targetStateLocked();
+    const TraceOptions full = TraceOptions::fromSettings(settings);
+    if (interacting_ && target == kInteractive && stale > 0) {
+        plan.kind = PassKind::Interactive;
+        InteractionPolicy effective = policy_;
+        if (policy_.governorTargetMs > 0.0) {
+            plan.governorLevel = governor_.choose(policy_, stale, policy_.governorTargetMs);
+            effective = Governor::policyForLevel(policy_, plan.governorLevel);
+        }
+        plan.options = effective.movingTraceOptions(settings, moving_);
+        plan.step = effective.pixelStep();
+        plan.interleaved = effective.interleaved;
+        plan.parity = interleaveParity_;
+        plan.scene = snapshot_;
+        if (effective.boxProxy && moving_ != kNoObject && snapshot_->primitiveIndex(moving_) >= 0)
+            plan.scene = std::make_shared<const CompiledScene>(snapshot_->withBoxProxy(moving_));
+        const bool fullTree = plan.options.maxDepth == full.maxDepth &&
+                              !plan.options.reflectionAsDiffuse &&
+                              !plan.options.refractionAsDiffuse && plan.scene == snapshot_ &&
+                              plan.step == 1;
+        plan.deferredRecords = fullTree && plan.options.shadows == ShadowQuality::Deferred;
+        plan.resultIsBase = fullTree && plan.options.shadows == ShadowQuality::Full;
+    } else if (belowBase > 0) {
+        plan.kind = PassKind::Base;
+        plan.scene = snapshot_;
+        plan.options = full;
+    } else if (belowFinal > 0 && target == kFinal) {
+        plan.kind = PassKind::Supersample;
+        plan.scene = snapshot_;
+        plan.options = full;
+        plan.needSupersampling.assign(frame_.pixelCount(), 0);
+        for (int y = 0; y < frame_.height; ++y) {
+            for (int x = 0; x < frame_.width; ++x) {
+                const std::size_t i = frame_.index(x, y);
+                if (frame_.state[i] != kBase) continue;
+                plan.needSupersampling[i] =
+                    !settings.adaptiveSupersampling ||
+                    needsSupersampling(frame_.base.data(), frame_.id.data(), frame_.normal.data(),
+                                       frame_.width, frame_.height, x, y);
+            }
+        }
+    } else {
+        return false;
+    }
+    plan.state = frame_.state;
+    plan.flags = frame_.flags;
+
+    for (int ty = 0; ty < frame_.tilesY(); ++ty) {
+        for (int tx = 0; tx < frame_.tilesX(); ++tx) {
+            TileJob job;
+            job.tile = ty * frame_.tilesX() + tx;
+            job.rect = {tx * frame_.tileSize, ty * frame_.tileSize,
+                        std::min(frame_.width, (tx + 1) * frame_.tileSize),
+                        std::min(frame_.height, (ty + 1) * frame_.tileSize)};
+            if (tileHasCandidate(plan, job.rect)) plan.tiles.push_back(job);
+        }
+    }
+    // Tiles near the edit (or the cursor) first: the user looks there.
+    if (focusX_ >= 0.0f) {
+        const float fx = focusX_, fy = focusY_;
+        auto distance = [fx, fy](const TileJob& j) {
+            const float cx = 0.5f * float(j.rect.x0 + j.rect.x1) - fx;
+            const float cy = 0.5f * float(j.rect.y0 + j.rect.y1) - fy;
+            return cx * cx + cy * cy;
+        };
+        std::stable_sort(plan.tiles.begin(), plan.tiles.end(),
+                         [&](const TileJob& a, const TileJob& b) { return distance(a) < distance(b); });
+    }
+    return true;
+}
+
+}  // namespace rs

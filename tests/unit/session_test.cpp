@@ -1,0 +1,272 @@
+// The interactive session's invariant: after any edits and refinement, frame == full render.
+#include "integrator/renderer.h"
+#include "session/render_session.h"
+#include "test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace rs {
+namespace {
+
+using namespace std::chrono_literals;
+
+/// Largest per-channel difference between the session's frame and a fresh full render.
+float maxDiffToFullRender(RenderSession& session, const SceneDocument& doc) {
+    const RenderResult full = renderImage(CompiledScene(doc));
+    float worst = 0.0f;
+    session.withFrame([&](const DeepFrame& frame, const auto&) {
+        EXPECT_EQ(frame.pixelCount(), full.image.pixels.size());
+        if (frame.pixelCount() != full.image.pixels.size()) {
+            worst = kInfinity;
+            return;
+        }
+        for (std::size_t i = 0; i < frame.pixelCount(); ++i) {
+            const Color d = glm::abs(frame.color[i] - full.image.pixels[i]);
+            worst = std::max(worst, std::max(d.x, std::max(d.y, d.z)));
+        }
+    });
+    return worst;
+}
+
+SceneDocument testRoom() {
+    SceneDocument doc = test::smallRoom(64, 48);
+    Light area;
+    area.name = "area";
+    area.type = LightType::Sphere;
+    area.position = Vec3(-2, 2.5f, -3);
+    area.radius = 0.4f;
+    area.intensity = 0.5f;
+    doc.addLight(area);
+    doc.render.shadowSamples = 4;
+    return doc;
+}
+
+Object* randomObject(SceneDocument& doc, std::mt19937& rng) {
+    std::vector<Object*> bounded;
+    for (Object& o : doc.objects)
+        if (!std::holds_alternative<PlaneGeometry>(o.geometry)) bounded.push_back(&o);
+    return bounded.empty() ? nullptr : bounded[rng() % bounded.size()];
+}
+
+/// One random edit of the kinds the designer makes.
+void randomEdit(SceneDocument& doc, std::mt19937& rng) {
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    switch (rng() % 10) {
+        case 0: case 1: case 2: case 3:  // Move (the common case: refit + dirty regions).
+            if (Object* o = randomObject(doc, rng))
+                o->transform.translate += Vec3(0.4f * u(rng), 0.3f * u(rng), 0.4f * u(rng));
+            break;
+        case 4:  // Material edit.
+            doc.materials[rng() % doc.materials.size()].color = Color(0.5f + 0.4f * u(rng), 0.5f, 0.6f);
+            break;
+        case 5:  // Object switches material (diffuse <-> mirror <-> glass).
+            if (Object* o = randomObject(doc, rng)) o->material = doc.materials[rng() % doc.materials.size()].name;
+            break;
+        case 6:  // Light moves.
+            doc.lights[rng() % doc.lights.size()].position += Vec3(0.3f * u(rng), 0.0f, 0.3f * u(rng));
+            break;
+        case 7:  // Add or remove an object.
+            if (rng() % 2 && doc.objects.size() > 3) {
+                doc.objects.erase(doc.objects.begin() + long(2 + rng() % (doc.objects.size() - 2)));
+            } else {
+                test::addSphere(doc, "added " + std::to_string(doc.nextId), Vec3(u(rng), -1.5f, -4.5f + u(rng)),
+                                0.3f, doc.materials[rng() % doc.materials.size()].name);
+            }
+            break;
+        case 8:  // Visibility toggle.
+            if (Object* o = randomObject(doc, rng)) o->visible = !o->visible;
+            break;
+        default:  // Camera nudge (re-renders everything).
+            doc.camera.target.x += 0.05f * u(rng);
+            break;
+    }
+}
+
+void runRandomEdits(const InteractionPolicy& policy, uint32_t seed, bool adaptive) {
+    SceneDocument doc = testRoom();
+    doc.render.supersampling = 4;
+    doc.render.adaptiveSupersampling = adaptive;
+    RenderSession session(2);
+    session.setPolicy(policy);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    ASSERT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+    std::mt19937 rng(seed);
+    for (int round = 0; round < 6; ++round) {
+        const bool drag = rng() % 2;
+        if (drag) session.beginInteraction(doc.objects[2].id);
+        const int edits = 1 + int(rng() % 5);
+        for (int e = 0; e < edits; ++e) {
+            randomEdit(doc, rng);
+            const uint64_t gen = session.update(doc);
+            // Sometimes let a frame finish, sometimes pile edits on a running pass.
+            if (rng() % 2) session.waitForPass(gen, 30s);
+        }
+        if (drag) session.endInteraction();
+        ASSERT_TRUE(session.waitUntilComplete(60s));
+        EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f) << "seed " << seed << " round " << round;
+    }
+}
+
+TEST(RenderSession, FirstUpdate_RefinesToExactlyTheFullRender) {
+    SceneDocument doc = testRoom();
+    doc.render.supersampling = 4;
+    doc.render.adaptiveSupersampling = true;
+    RenderSession session(2);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+}
+
+TEST(RenderSession, RandomEdits_DefaultPolicy_FrameEqualsFullRender) {
+    for (uint32_t seed : {1u, 2u, 3u, 8u, 9u, 10u}) runRandomEdits(InteractionPolicy{}, seed, true);
+}
+
+TEST(RenderSession, RandomEdits_EveryShortcutOn_FrameEqualsFullRender) {
+    InteractionPolicy p;
+    p.resolution = MovingResolution::Half;
+    p.interleaved = true;
+    p.boxProxy = true;
+    p.refraction = RefractionMode::DiffuseExceptSelected;
+    p.reflection = ReflectionMode::Diffuse;
+    p.maxDepthWhileMoving = 1;
+    p.shadows = MovingShadows::Off;
+    for (uint32_t seed : {4u, 5u}) runRandomEdits(p, seed, false);
+}
+
+TEST(RenderSession, RandomEdits_HardShadowsAndGovernor_FrameEqualsFullRender) {
+    InteractionPolicy p;
+    p.shadows = MovingShadows::HardOnly;
+    p.governorTargetMs = 0.5;
+    runRandomEdits(p, 6u, true);
+}
+
+TEST(RenderSession, RandomEdits_NoPolicy_FrameEqualsFullRender) {
+    runRandomEdits(InteractionPolicy::none(), 7u, true);
+}
+
+TEST(RenderSession, MovingADiffuseBall_RefitsAndTracesOnlyItsRegion) {
+    SceneDocument doc = testRoom();
+    doc.render.width = 128;
+    doc.render.height = 96;
+    RenderSession session(2);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    Object* ball = doc.findObject(doc.objects[2].id);  // The diffuse ball.
+    ASSERT_EQ(ball->name, "diffuse ball");
+    ball->transform.translate.x += 0.2f;
+    session.update(doc);
+    const SessionStats stats = session.stats();
+    EXPECT_TRUE(stats.lastEditRefitted);
+    EXPECT_GT(stats.lastDirtyPixels, 0u);
+    EXPECT_LT(stats.lastDirtyPixels, std::size_t(128 * 96) / 2);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+}
+
+TEST(RenderSession, DeferredShadows_RecordsWhileMovingAndResolvesExactlyAfterRelease) {
+    SceneDocument doc = testRoom();
+    RenderSession session(2);
+    InteractionPolicy p;
+    p.shadows = MovingShadows::Deferred;
+    p.dirtyRegions = false;  // Every pixel goes through the deferred path.
+    session.setPolicy(p);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    session.beginInteraction(doc.objects[2].id);
+    doc.objects[2].transform.translate.x += 0.3f;
+    const uint64_t gen = session.update(doc);
+    PassInfo info;
+    ASSERT_TRUE(session.waitForPass(gen, 30s, &info));
+    EXPECT_EQ(info.kind, PassKind::Interactive);
+    std::size_t deferred = 0, interactive = 0;
+    session.withFrame([&](const DeepFrame& f, const auto&) {
+        for (std::size_t i = 0; i < f.pixelCount(); ++i) {
+            deferred += (f.flags[i] & kDeferredValid) != 0;
+            interactive += f.state[i] == kInteractive;
+        }
+    });
+    EXPECT_EQ(interactive, doc.render.width * std::size_t(doc.render.height));
+    EXPECT_GT(deferred, interactive * 9 / 10);
+    session.endInteraction();
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+}
+
+TEST(RenderSession, HalfResolutionWhileMoving_TracesAQuarterOfTheDirtyPixels) {
+    SceneDocument doc = testRoom();
+    RenderSession session(2);
+    InteractionPolicy p;
+    p.resolution = MovingResolution::Half;
+    p.dirtyRegions = false;
+    session.setPolicy(p);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    session.beginInteraction(doc.objects[2].id);
+    doc.objects[2].transform.translate.x += 0.3f;
+    PassInfo info;
+    ASSERT_TRUE(session.waitForPass(session.update(doc), 30s, &info));
+    EXPECT_EQ(info.tracedPixels, std::size_t(64 / 2) * std::size_t(48 / 2));
+    session.endInteraction();
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+}
+
+TEST(RenderSession, EditsFromAnotherThreadWhileRendering_EndExact) {
+    // Stress: edits arrive from a second thread as fast as it can make them; the TSan preset
+    // runs this too.
+    SceneDocument doc = testRoom();
+    doc.render.width = 96;
+    doc.render.height = 72;
+    RenderSession session(2);
+    session.update(doc);
+    std::thread editor([&] {
+        std::mt19937 rng(42);
+        session.beginInteraction(doc.objects[3].id);
+        for (int i = 0; i < 60; ++i) {
+            randomEdit(doc, rng);
+            session.update(doc);
+        }
+        session.endInteraction();
+    });
+    editor.join();
+    ASSERT_TRUE(session.waitUntilComplete(120s));
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+    EXPECT_GT(session.stats().passes, 0u);
+}
+
+TEST(InteractionPolicy, JsonRoundTripAndErrorsNameTheKey) {
+    InteractionPolicy p;
+    p.resolution = MovingResolution::Quarter;
+    p.refraction = RefractionMode::DiffuseExceptSelected;
+    p.shadows = MovingShadows::HardOnly;
+    p.maxDepthWhileMoving = 2;
+    p.governorTargetMs = 12.5;
+    InteractionPolicy back = InteractionPolicy::none();
+    std::string error;
+    ASSERT_TRUE(policyFromJson(policyToJson(p), back, error)) << error;
+    EXPECT_EQ(back, p);
+    EXPECT_FALSE(policyFromJson(R"({"shadow": "off"})", back, error));
+    EXPECT_NE(error.find("shadow"), std::string::npos);
+    EXPECT_FALSE(policyFromJson(R"({"shadows": "sometimes"})", back, error));
+    EXPECT_NE(error.find("sometimes"), std::string::npos);
+}
+
+TEST(Governor, LowerTargetsPickCheaperLevels) {
+    Governor g;
+    g.calibrate(0.001);  // 1 microsecond per full-quality pixel.
+    const InteractionPolicy base = InteractionPolicy::none();
+    const int generous = g.choose(base, 100000, 1000.0);
+    const int tight = g.choose(base, 100000, 10.0);
+    const int impossible = g.choose(base, 100000, 0.001);
+    EXPECT_EQ(generous, 0);
+    EXPECT_GT(tight, generous);
+    EXPECT_EQ(impossible, Governor::kLevels - 1);
+    // Feedback moves predictions: a level measured slow is skipped.
+    g.record(1, 1000.0, 100000);
+    EXPECT_GT(g.choose(base, 100000, 60.0), 1);
+}
+
+}  // namespace
+}  // namespace rs
