@@ -237,11 +237,12 @@ void MainWindow::updateTitle() {
                        .arg(path.isEmpty() ? tr("untitled") : QFileInfo(path).fileName()));
 }
 
-void MainWindow::showPreferences() {
+PreferencesDialog* MainWindow::showPreferences() {
     auto* dialog = new PreferencesDialog(prefs_, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &PreferencesDialog::changed, this, &MainWindow::applyPreferences);
     dialog->show();
+    return dialog;
 }
 
 void MainWindow::applyPreferences(const Preferences& prefs) {

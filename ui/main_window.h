@@ -42,6 +42,8 @@ public:
     bool exportFrame(const QString& path);
     /// Overrides the render size of the open document without an undo step (tests).
     void setRenderSize(int width, int height);
+    /// Opens the (non-modal) preferences dialog and returns it.
+    PreferencesDialog* showPreferences();
     /// Applies preferences to the session and stores them.
     void applyPreferences(const Preferences& prefs);
 
@@ -71,7 +73,6 @@ private:
     void importMeshDialog();
     void exportImageDialog();
     void renderImageDialog();
-    void showPreferences();
     void about();
     void addRecentFile(const QString& path);
     void updateRecentFileActions();

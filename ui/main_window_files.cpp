@@ -205,14 +205,16 @@ void MainWindow::dropEvent(QDropEvent* event) {
 void MainWindow::addShapeAction(ShapeKind kind) {
     SceneDocument doc = editor_->document();
     const ObjectId id = addShape(doc, kind);
-    editor_->edit(tr("Add %1").arg(QString::fromStdString(doc.findObject(id)->name)), std::move(doc));
+    const QString text = tr("Add %1").arg(QString::fromStdString(doc.findObject(id)->name));
+    editor_->edit(text, std::move(doc));
     editor_->setSelection(id);
 }
 
 void MainWindow::addLightAction(LightType type) {
     SceneDocument doc = editor_->document();
     const ObjectId id = addLight(doc, type);
-    editor_->edit(tr("Add %1").arg(QString::fromStdString(doc.findLight(id)->name)), std::move(doc));
+    const QString text = tr("Add %1").arg(QString::fromStdString(doc.findLight(id)->name));
+    editor_->edit(text, std::move(doc));
     editor_->setSelection(id);
 }
 
