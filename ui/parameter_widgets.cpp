@@ -33,6 +33,9 @@ QDoubleSpinBox* makeSpin(const ParamDescriptor& d, QWidget* parent) {
     spin->setDecimals(decimalsFor(d.step));
     spin->setKeyboardTracking(false);
     spin->setAccelerated(true);
+    // The ±1e6 ranges would make the size hint huge; let the form share the width instead.
+    spin->setMinimumWidth(56);
+    spin->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     return spin;
 }
 

@@ -30,7 +30,8 @@ void reloadMeshIfNeeded(Geometry& g, const std::string& key) {
 PropertyPanel::PropertyPanel(SceneEditor* editor, QWidget* parent)
     : QScrollArea(parent), editor_(editor) {
     setWidgetResizable(true);
-    setMinimumWidth(300);
+    setMinimumWidth(340);
+    setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     connect(editor_, &SceneEditor::documentChanged, this, &PropertyPanel::onDocumentChanged);
     connect(editor_, &SceneEditor::selectionChanged, this, &PropertyPanel::rebuild);
     rebuild();
