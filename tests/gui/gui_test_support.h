@@ -1,0 +1,55 @@
+// Helpers shared by the GUI tests: isolated settings, waiting for a final frame, finding ids.
+#pragma once
+
+#include "display_frame.h"
+#include "main_window.h"
+#include "scene_editor.h"
+#include "session_controller.h"
+#include "viewport.h"
+
+#include <QCoreApplication>
+#include <QStandardPaths>
+#include <QString>
+
+#include <chrono>
+
+namespace rs::ui::test {
+
+/// Keeps tests away from the user's settings.
+inline void isolateSettings() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("RayStudioTests"));
+    QCoreApplication::setApplicationName(QStringLiteral("RayStudioGuiTests"));
+}
+
+inline QString scenePath(const char* name) {
+    return QStringLiteral(RAYSTUDIO_SCENES_DIR "/") + QString::fromLatin1(name);
+}
+
+/// Sends pending document updates and waits (test-only) until the frame is final, then
+/// lets the viewport copy it.
+inline bool settle(MainWindow& w) {
+    w.session()->flushUpdate();
+    const bool ok = w.session()->session().waitUntilComplete(std::chrono::seconds(60));
+    w.viewport()->refresh();
+    return ok;
+}
+
+/// The id of the object named `name` (kNoObject when absent).
+inline ObjectId idOf(const MainWindow& w, const std::string& name) {
+    for (const Object& o : w.editor()->document().objects)
+        if (o.name == name) return o.id;
+    return kNoObject;
+}
+
+/// Centre of the pixels showing `id` in the viewport's frame (x, y), or (-1, -1).
+inline std::pair<int, int> pixelOf(const DisplayFrame& f, ObjectId id) {
+    long sx = 0, sy = 0, n = 0;
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x)
+            if (f.idAt(x, y) == id) sx += x, sy += y, ++n;
+    if (n == 0) return {-1, -1};
+    return {int(sx / n), int(sy / n)};
+}
+
+}  // namespace rs::ui::test

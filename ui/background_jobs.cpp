@@ -1,0 +1,84 @@
+// Worker threads with atomic cancellation and queued progress (no GUI-thread waiting).
+#include "background_jobs.h"
+
+#include "image/image_io.h"
+#include "integrator/renderer.h"
+#include "snapshot/compiled_scene.h"
+
+#include <QPointer>
+#include <QProgressDialog>
+#include <QThread>
+
+#include <atomic>
+#include <memory>
+
+namespace rs::ui {
+
+namespace {
+
+QProgressDialog* makeProgress(QWidget* parent, const QString& text, int maximum) {
+    auto* dialog = new QProgressDialog(text, QObject::tr("Cancel"), 0, maximum, parent);
+    dialog->setWindowModality(Qt::WindowModal);
+    dialog->setMinimumDuration(300);
+    dialog->setAutoClose(false);
+    dialog->setAutoReset(false);
+    dialog->setValue(0);
+    return dialog;
+}
+
+/// Runs `work` on a new QThread that deletes itself when done.
+void startWorker(QObject* owner, std::function<void()> work) {
+    QThread* thread = QThread::create(std::move(work));
+    QObject::connect(thread, &QThread::finished, thread, &QObject::deleteLater);
+    QObject::connect(owner, &QObject::destroyed, thread, [thread] { thread->wait(); });
+    thread->start();
+}
+
+}  // namespace
+
+void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
+                     std::function<void(const MeshLoadResult&)> done) {
+    QPointer<QProgressDialog> dialog =
+        makeProgress(parent, QObject::tr("Loading %1 ...").arg(path), 0);
+    auto cancelled = std::make_shared<std::atomic<bool>>(false);
+    QObject::connect(dialog, &QProgressDialog::canceled, dialog, [cancelled] { *cancelled = true; });
+    QObject* receiver = parent ? static_cast<QObject*>(parent) : dialog.data();
+    startWorker(dialog, [=, file = path.toStdString()] {
+        MeshLoadResult result = loadMesh(file, smoothNormals);
+        QMetaObject::invokeMethod(receiver, [=] {
+            if (dialog) dialog->deleteLater();
+            if (!*cancelled) done(result);
+        }, Qt::QueuedConnection);
+    });
+}
+
+void renderToFileAsync(QWidget* parent, const SceneDocument& doc, const QString& path,
+                       int threads, std::function<void(bool ok, const QString& error)> done) {
+    QPointer<QProgressDialog> dialog = makeProgress(parent, QObject::tr("Rendering %1 ...").arg(path), 1);
+    auto cancel = std::make_shared<std::atomic<bool>>(false);
+    QObject::connect(dialog, &QProgressDialog::canceled, dialog, [cancel] { *cancel = true; });
+    QObject* receiver = parent ? static_cast<QObject*>(parent) : dialog.data();
+    startWorker(dialog, [=, file = path.toStdString()] {
+        const CompiledScene scene(doc);
+        RenderOptions options;
+        options.threads = threads;
+        options.cancel = cancel.get();
+        options.progress = [receiver, dialog](int doneTiles, int total) {
+            QMetaObject::invokeMethod(receiver, [=] {
+                if (!dialog) return;
+                dialog->setMaximum(total);
+                dialog->setValue(doneTiles);
+            }, Qt::QueuedConnection);
+        };
+        const RenderResult result = renderImage(scene, options);
+        std::string error;
+        const bool ok = !result.cancelled &&
+                        writeImage(file, result.image, doc.render.tonemap, doc.render.exposure, error);
+        QMetaObject::invokeMethod(receiver, [=] {
+            if (dialog) dialog->deleteLater();
+            done(ok, QString::fromStdString(error));
+        }, Qt::QueuedConnection);
+    });
+}
+
+}  // namespace rs::ui

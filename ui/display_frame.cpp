@@ -1,0 +1,143 @@
+// Copying the deep frame and shading its views on the CPU (the raster viewport and tests).
+#include "display_frame.h"
+
+#include "image/tonemap.h"
+#include "session/render_session.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rs::ui {
+
+DisplayFrame DisplayFrame::fromSession(const RenderSession& session) {
+    DisplayFrame d;
+    session.withFrame([&d](const DeepFrame& f, const std::shared_ptr<const CompiledScene>& s) {
+        d.width = f.width;
+        d.height = f.height;
+        d.color = f.color;
+        d.id = f.id;
+        d.normal = f.normal;
+        d.depth = f.depth;
+        d.cost = f.cost;
+        d.flags = f.flags;
+        if (s) {
+            d.tonemap = s->settings().tonemap;
+            d.exposure = s->settings().exposure;
+        }
+    });
+    return d;
+}
+
+void idColor(ObjectId id, uint8_t rgb[3]) {
+    if (id == kNoObject) {
+        rgb[0] = rgb[1] = rgb[2] = 0;
+        return;
+    }
+    uint32_t h = id * 2654435761u;
+    h ^= h >> 15;
+    h *= 2246822519u;
+    h ^= h >> 13;
+    rgb[0] = uint8_t(64 + (h & 0xBF));
+    rgb[1] = uint8_t(64 + ((h >> 8) & 0xBF));
+    rgb[2] = uint8_t(64 + ((h >> 16) & 0xBF));
+}
+
+namespace {
+
+/// Blue-to-red heat ramp for t in [0, 1].
+void heat(float t, uint8_t rgb[3]) {
+    t = std::clamp(t, 0.0f, 1.0f);
+    const float r = std::clamp(1.5f - std::abs(4.0f * t - 3.0f), 0.0f, 1.0f);
+    const float g = std::clamp(1.5f - std::abs(4.0f * t - 2.0f), 0.0f, 1.0f);
+    const float b = std::clamp(1.5f - std::abs(4.0f * t - 1.0f), 0.0f, 1.0f);
+    rgb[0] = uint8_t(r * 255.0f + 0.5f);
+    rgb[1] = uint8_t(g * 255.0f + 0.5f);
+    rgb[2] = uint8_t(b * 255.0f + 0.5f);
+}
+
+}  // namespace
+
+QImage toneMappedImage(const DisplayFrame& f) {
+    QImage img(f.width, f.height, QImage::Format_RGB888);
+    for (int y = 0; y < f.height; ++y) {
+        uchar* line = img.scanLine(y);
+        for (int x = 0; x < f.width; ++x)
+            toDisplay8(f.color[std::size_t(y) * f.width + x], f.tonemap, f.exposure, line + 3 * x);
+    }
+    return img;
+}
+
+QImage debugImage(const DisplayFrame& f, ViewMode mode) {
+    if (mode == ViewMode::Color) return toneMappedImage(f);
+    QImage img(f.width, f.height, QImage::Format_RGB888);
+    float maxDepth = 0.0f;
+    uint32_t maxCost = 1;
+    for (std::size_t i = 0; i < f.depth.size(); ++i) {
+        if (std::isfinite(f.depth[i])) maxDepth = std::max(maxDepth, f.depth[i]);
+        maxCost = std::max(maxCost, f.cost[i]);
+    }
+    for (int y = 0; y < f.height; ++y) {
+        uchar* line = img.scanLine(y);
+        for (int x = 0; x < f.width; ++x) {
+            const std::size_t i = std::size_t(y) * f.width + x;
+            uchar* p = line + 3 * x;
+            switch (mode) {
+                case ViewMode::ObjectIds: idColor(f.id[i], p); break;
+                case ViewMode::Normals:
+                    for (int c = 0; c < 3; ++c)
+                        p[c] = f.id[i] == kNoObject
+                                   ? 0
+                                   : uint8_t(std::clamp(0.5f + 0.5f * f.normal[i][c], 0.0f, 1.0f) * 255.0f);
+                    break;
+                case ViewMode::Depth: {
+                    const float d = std::isfinite(f.depth[i]) && maxDepth > 0.0f
+                                        ? 1.0f - f.depth[i] / maxDepth
+                                        : 0.0f;
+                    p[0] = p[1] = p[2] = uint8_t(d * 255.0f);
+                    break;
+                }
+                case ViewMode::Cost:
+                    heat(std::log1p(float(f.cost[i])) / std::log1p(float(maxCost)), p);
+                    break;
+                case ViewMode::Retraced: {
+                    uint8_t c[3];
+                    toDisplay8(f.color[i], f.tonemap, f.exposure, c);
+                    const bool traced = f.flags[i] & 4;  // kTracedLastUpdate
+                    p[0] = traced ? uint8_t(c[0] / 2 + 127) : uint8_t(c[0] / 3);
+                    p[1] = traced ? uint8_t(c[1] / 2) : uint8_t(c[1] / 3);
+                    p[2] = traced ? uint8_t(c[2] / 2) : uint8_t(c[2] / 3);
+                    break;
+                }
+                case ViewMode::Color: break;
+            }
+        }
+    }
+    return img;
+}
+
+bool onOutline(const DisplayFrame& f, int x, int y, ObjectId selected) {
+    if (selected == kNoObject) return false;
+    const ObjectId c = f.idAt(x, y);
+    const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+    for (int k = 0; k < 4; ++k) {
+        const int nx = x + dx[k], ny = y + dy[k];
+        if (nx < 0 || ny < 0 || nx >= f.width || ny >= f.height) continue;
+        const ObjectId n = f.idAt(nx, ny);
+        if (n != c && (n == selected || c == selected)) return true;
+    }
+    return false;
+}
+
+QImage viewportImage(const DisplayFrame& f, ViewMode mode, ObjectId selected) {
+    if (f.empty()) return {};
+    QImage img = debugImage(f, mode);
+    if (selected == kNoObject) return img;
+    for (int y = 0; y < f.height; ++y) {
+        uchar* line = img.scanLine(y);
+        for (int x = 0; x < f.width; ++x)
+            if (onOutline(f, x, y, selected)) std::copy(kOutlineRgb, kOutlineRgb + 3, line + 3 * x);
+    }
+    return img;
+}
+
+}  // namespace rs::ui

@@ -1,0 +1,56 @@
+// A GUI-side copy of the session's deep frame and the CPU shading of its debug views.
+#pragma once
+
+#include "scene/document.h"
+
+#include <QImage>
+
+#include <cstdint>
+#include <vector>
+
+namespace rs {
+class RenderSession;
+}
+
+namespace rs::ui {
+
+/// What the viewport shows of the deep frame.
+enum class ViewMode { Color, ObjectIds, Normals, Depth, Cost, Retraced };
+
+/// The buffers the viewport needs, copied out under the frame lock.
+struct DisplayFrame {
+    int width = 0;
+    int height = 0;
+    std::vector<Color> color;
+    std::vector<ObjectId> id;
+    std::vector<Vec3> normal;
+    std::vector<float> depth;
+    std::vector<uint32_t> cost;
+    std::vector<uint8_t> flags;
+    ToneMap tonemap = ToneMap::Clamp;
+    float exposure = 0.0f;
+
+    bool empty() const { return width <= 0 || height <= 0; }
+    ObjectId idAt(int x, int y) const {
+        return x >= 0 && y >= 0 && x < width && y < height ? id[std::size_t(y) * width + x]
+                                                            : kNoObject;
+    }
+    /// Copies the session's current frame (short critical section).
+    static DisplayFrame fromSession(const RenderSession& session);
+};
+
+/// Debug views other than Color as 8-bit sRGB-ready RGB (row-major, 3 bytes a pixel).
+QImage debugImage(const DisplayFrame& frame, ViewMode mode);
+/// The tone-mapped colour view (CPU path of the viewport's shader).
+QImage toneMappedImage(const DisplayFrame& frame);
+/// True when pixel (x, y) lies on the selection outline: its id differs from a 4-neighbour
+/// and one of the two is `selected`.
+bool onOutline(const DisplayFrame& frame, int x, int y, ObjectId selected);
+/// The colour of the selection outline.
+inline constexpr uint8_t kOutlineRgb[3] = {255, 160, 32};
+/// The image the viewport shows: view mode plus the selection outline.
+QImage viewportImage(const DisplayFrame& frame, ViewMode mode, ObjectId selected);
+/// A well-spread colour for an object id (hashed), as the id debug view and shader use.
+void idColor(ObjectId id, uint8_t rgb[3]);
+
+}  // namespace rs::ui

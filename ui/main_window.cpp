@@ -1,0 +1,261 @@
+// MainWindow construction: actions, menus, toolbar, docks, status bar and settings.
+#include "main_window.h"
+
+#include "outliner_view.h"
+#include "property_panel.h"
+#include "scene_editor.h"
+#include "session_controller.h"
+#include "viewport.h"
+
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace rs::ui {
+
+namespace {
+constexpr int kMaxRecentFiles = 8;
+}
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), editor_(new SceneEditor(this)), prefs_(loadPreferences()) {
+    session_ = std::make_unique<SessionController>(prefs_.threads);
+    session_->session().setPolicy(prefs_.policy);
+    viewport_ = new Viewport(editor_, session_.get(), this);
+    setCentralWidget(viewport_);
+    setAcceptDrops(true);
+
+    connect(editor_, &SceneEditor::documentChanged, this,
+            [this] { session_->requestUpdate(editor_->document()); });
+    connect(editor_->undoStack(), &QUndoStack::cleanChanged, this,
+            [this](bool clean) { setWindowModified(!clean); });
+    connect(editor_, &SceneEditor::filePathChanged, this, &MainWindow::updateTitle);
+    connect(session_.get(), &SessionController::passFinished, this, &MainWindow::onPassFinished);
+
+    createActions();
+    createDocks();
+    createMenus();
+    createStatusBar();
+    readSettings();
+    updateTitle();
+    editor_->resetDocument(SceneDocument{}, {});
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createActions() {
+    deleteAct_ = new QAction(tr("&Delete"), this);
+    deleteAct_->setShortcuts({QKeySequence::Delete, QKeySequence(Qt::Key_Backspace)});
+    deleteAct_->setShortcutContext(Qt::WindowShortcut);
+    connect(deleteAct_, &QAction::triggered, this, &MainWindow::deleteSelection);
+    duplicateAct_ = new QAction(tr("D&uplicate"), this);
+    duplicateAct_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
+    connect(duplicateAct_, &QAction::triggered, this, &MainWindow::duplicateSelection);
+
+    auto shape = [this](const QString& text, ShapeKind kind) {
+        auto* a = new QAction(text, this);
+        a->setStatusTip(tr("Add a %1 in front of the camera").arg(text.toLower()));
+        connect(a, &QAction::triggered, this, [this, kind] { addShapeAction(kind); });
+        addActions_.append(a);
+    };
+    shape(tr("Sphere"), ShapeKind::Sphere);
+    shape(tr("Plane"), ShapeKind::Plane);
+    shape(tr("Rectangle"), ShapeKind::Rectangle);
+    shape(tr("Box"), ShapeKind::Box);
+    auto* mesh = new QAction(tr("Mesh..."), this);
+    connect(mesh, &QAction::triggered, this, &MainWindow::importMeshDialog);
+    addActions_.append(mesh);
+    auto light = [this](const QString& text, LightType type) {
+        auto* a = new QAction(text, this);
+        connect(a, &QAction::triggered, this, [this, type] { addLightAction(type); });
+        addActions_.append(a);
+    };
+    light(tr("Point light"), LightType::Point);
+    light(tr("Sphere light"), LightType::Sphere);
+    for (QAction* a : addActions_) a->setObjectName(QStringLiteral("add ") + a->text());
+}
+
+void MainWindow::createDocks() {
+    outliner_ = new OutlinerView(editor_, {deleteAct_, duplicateAct_}, this);
+    auto* left = new QDockWidget(tr("Outliner"), this);
+    left->setObjectName(QStringLiteral("outlinerDock"));
+    left->setWidget(outliner_);
+    addDockWidget(Qt::LeftDockWidgetArea, left);
+    properties_ = new PropertyPanel(editor_, this);
+    auto* right = new QDockWidget(tr("Properties"), this);
+    right->setObjectName(QStringLiteral("propertiesDock"));
+    right->setWidget(properties_);
+    addDockWidget(Qt::RightDockWidgetArea, right);
+}
+
+void MainWindow::createMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newFile);
+    file->addAction(tr("&Open..."), QKeySequence::Open, this, &MainWindow::open);
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+    file->addAction(tr("Save &As..."), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+    file->addSeparator();
+    file->addAction(tr("&Import Mesh..."), QKeySequence(Qt::CTRL | Qt::Key_I), this, &MainWindow::importMeshDialog);
+    file->addAction(tr("&Export Image..."), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportImageDialog);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    updateRecentFileActions();
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = editor_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcuts(QKeySequence::Undo);
+    QAction* redo = editor_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcuts(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    edit->addAction(deleteAct_);
+    edit->addAction(duplicateAct_);
+    edit->addSeparator();
+    edit->addAction(tr("&Preferences..."), QKeySequence::Preferences, this, &MainWindow::showPreferences);
+
+    QMenu* add = menuBar()->addMenu(tr("&Add"));
+    add->addActions(addActions_.mid(0, 5));
+    add->addSeparator();
+    add->addActions(addActions_.mid(5));
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(tr("&Frame Selection"), QKeySequence(Qt::Key_F), viewport_, &Viewport::frameSelection);
+    view->addSeparator();
+    auto* modes = new QActionGroup(this);
+    const std::pair<QString, ViewMode> entries[] = {
+        {tr("&Colour"), ViewMode::Color},       {tr("Object &ids"), ViewMode::ObjectIds},
+        {tr("&Normals"), ViewMode::Normals},    {tr("&Depth"), ViewMode::Depth},
+        {tr("Ray &cost heatmap"), ViewMode::Cost}, {tr("&Re-traced pixels"), ViewMode::Retraced}};
+    int n = 1;
+    for (const auto& [text, mode] : entries) {
+        QAction* a = view->addAction(text, QKeySequence(Qt::ALT | Qt::Key(Qt::Key_0 + n++)), viewport_,
+                                     [this, m = mode] { viewport_->setViewMode(m); });
+        a->setCheckable(true);
+        a->setChecked(mode == ViewMode::Color);
+        modes->addAction(a);
+    }
+    view->addSeparator();
+
+    QMenu* render = menuBar()->addMenu(tr("&Render"));
+    render->addAction(tr("&Render Image..."), QKeySequence(Qt::Key_F12), this, &MainWindow::renderImageDialog);
+    render->addAction(tr("&Export Current Frame..."), this, &MainWindow::exportImageDialog);
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About RayStudio"), this, &MainWindow::about);
+    help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+
+    QToolBar* tools = addToolBar(tr("Add"));
+    tools->setObjectName(QStringLiteral("addToolBar"));
+    tools->addActions(addActions_);
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
+    view->addAction(tools->toggleViewAction());
+}
+
+void MainWindow::createStatusBar() {
+    auto label = [this](const QString& tip) {
+        auto* l = new QLabel(this);
+        l->setToolTip(tip);
+        l->setMinimumWidth(90);
+        statusBar()->addPermanentWidget(l);
+        return l;
+    };
+    statusFrame_ = label(tr("Wall time of the last pass"));
+    statusUps_ = label(tr("Document updates sent to the renderer per second"));
+    statusRetraced_ = label(tr("Share of the frame's pixels the last pass re-traced"));
+    statusPass_ = label(tr("Kind of the last pass (interactive, base, supersampling)"));
+    statusRays_ = label(tr("Rays per second in the last pass"));
+    statusBar()->showMessage(tr("Ready"), 2000);
+}
+
+void MainWindow::onPassFinished(const PassInfo& info) {
+    static const char* const kinds[] = {"interactive", "base", "supersample"};
+    statusFrame_->setText(tr("%1 ms").arg(info.ms, 0, 'f', 1));
+    statusUps_->setText(tr("%1 upd/s").arg(session_->updatesPerSecond(), 0, 'f', 0));
+    const double share = info.totalPixels ? 100.0 * double(info.tracedPixels) / double(info.totalPixels) : 0.0;
+    statusRetraced_->setText(tr("%1% re-traced").arg(share, 0, 'f', 1));
+    statusPass_->setText(tr("pass: %1%2").arg(QString::fromLatin1(kinds[int(info.kind)]),
+                                               info.cancelled ? tr(" (cut short)") : QString()));
+    const double mrays = info.ms > 0.0 ? double(info.rays) / info.ms / 1000.0 : 0.0;
+    statusRays_->setText(tr("%1 Mrays/s").arg(mrays, 0, 'f', 2));
+}
+
+void MainWindow::readSettings() {
+    QSettings s;
+    if (!restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray())) resize(1400, 850);
+    restoreState(s.value(QStringLiteral("window/state")).toByteArray());
+}
+
+void MainWindow::writeSettings() {
+    QSettings s;
+    s.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    s.setValue(QStringLiteral("window/state"), saveState());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (maybeSave()) {
+        writeSettings();
+        event->accept();
+    } else {
+        event->ignore();
+    }
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+    QSettings s;
+    QStringList files = s.value(QStringLiteral("recentFiles")).toStringList();
+    files.removeAll(path);
+    files.prepend(path);
+    while (files.size() > kMaxRecentFiles) files.removeLast();
+    s.setValue(QStringLiteral("recentFiles"), files);
+    updateRecentFileActions();
+}
+
+void MainWindow::updateRecentFileActions() {
+    recentMenu_->clear();
+    const QStringList files = QSettings().value(QStringLiteral("recentFiles")).toStringList();
+    for (const QString& f : files)
+        recentMenu_->addAction(f, this, [this, f] {
+            if (maybeSave()) openFile(f);
+        });
+    recentMenu_->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::updateTitle() {
+    const QString path = editor_->filePath();
+    setWindowFilePath(path.isEmpty() ? tr("untitled.scene.json") : path);
+    setWindowTitle(QStringLiteral("%1[*] - RayStudio")
+                       .arg(path.isEmpty() ? tr("untitled") : QFileInfo(path).fileName()));
+}
+
+PreferencesDialog* MainWindow::showPreferences() {
+    auto* dialog = new PreferencesDialog(prefs_, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &PreferencesDialog::changed, this, &MainWindow::applyPreferences);
+    dialog->show();
+    return dialog;
+}
+
+void MainWindow::applyPreferences(const Preferences& prefs) {
+    if (prefs.threads != prefs_.threads) session_->session().setThreads(prefs.threads);
+    prefs_ = prefs;
+    session_->session().setPolicy(prefs.policy);
+    savePreferences(prefs);
+}
+
+void MainWindow::about() {
+    QMessageBox::about(this, tr("About RayStudio"),
+                       tr("<b>RayStudio</b> %1<br>An interactive Whitted ray-traced scene designer.")
+                           .arg(QApplication::applicationVersion()));
+}
+
+}  // namespace rs::ui

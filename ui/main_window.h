@@ -1,0 +1,104 @@
+// The designer's main window: viewport in the centre, outliner and properties docked,
+// actions, menus, toolbar, status bar, file handling and settings.
+#pragma once
+
+#include "preferences.h"
+#include "scene_edits.h"
+
+#include <QMainWindow>
+
+#include <memory>
+
+class QAction;
+class QLabel;
+class QMenu;
+
+namespace rs {
+struct PassInfo;
+}
+
+namespace rs::ui {
+
+class OutlinerView;
+class PropertyPanel;
+class SceneEditor;
+class SessionController;
+class Viewport;
+
+/// Top-level window of RayStudio.
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    /// Opens a scene file; on error reports it and keeps the current document.
+    bool openFile(const QString& path);
+    /// Saves to `path` (atomically); false and an error report on failure.
+    bool saveFile(const QString& path);
+    /// Imports a mesh file (worker thread + progress dialog).
+    void importMesh(const QString& path);
+    /// Exports the current viewport frame to an image file.
+    bool exportFrame(const QString& path);
+    /// Overrides the render size of the open document without an undo step (tests).
+    void setRenderSize(int width, int height);
+    /// Opens the (non-modal) preferences dialog and returns it.
+    PreferencesDialog* showPreferences();
+    /// Applies preferences to the session and stores them.
+    void applyPreferences(const Preferences& prefs);
+
+    SceneEditor* editor() const { return editor_; }
+    SessionController* session() const { return session_.get(); }
+    Viewport* viewport() const { return viewport_; }
+    OutlinerView* outliner() const { return outliner_; }
+    PropertyPanel* propertyPanel() const { return properties_; }
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void createActions();
+    void createMenus();
+    void createDocks();
+    void createStatusBar();
+    void readSettings();
+    void writeSettings();
+    bool maybeSave();
+    void newFile();
+    void open();
+    bool save();
+    bool saveAs();
+    void importMeshDialog();
+    void exportImageDialog();
+    void renderImageDialog();
+    void about();
+    void addRecentFile(const QString& path);
+    void updateRecentFileActions();
+    void updateTitle();
+    void onPassFinished(const rs::PassInfo& info);
+    void addShapeAction(ShapeKind kind);
+    void addLightAction(LightType type);
+    void deleteSelection();
+    void duplicateSelection();
+
+    SceneEditor* editor_;
+    std::unique_ptr<SessionController> session_;
+    Viewport* viewport_;
+    OutlinerView* outliner_ = nullptr;
+    PropertyPanel* properties_ = nullptr;
+    Preferences prefs_;
+
+    QAction* deleteAct_ = nullptr;
+    QAction* duplicateAct_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
+    QLabel* statusFrame_ = nullptr;
+    QLabel* statusUps_ = nullptr;
+    QLabel* statusRetraced_ = nullptr;
+    QLabel* statusPass_ = nullptr;
+    QLabel* statusRays_ = nullptr;
+    QList<QAction*> addActions_;
+};
+
+}  // namespace rs::ui

@@ -1,0 +1,236 @@
+// MainWindow file handling (new, open, save, recent, drop, import, export) and scene edits.
+#include "main_window.h"
+
+#include "background_jobs.h"
+#include "display_frame.h"
+#include "error_reporter.h"
+#include "image/image_io.h"
+#include "io/scene_io.h"
+#include "outliner_view.h"
+#include "scene_editor.h"
+#include "session_controller.h"
+#include "viewport.h"
+
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDragEnterEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSaveFile>
+#include <QSpinBox>
+#include <QStatusBar>
+
+namespace rs::ui {
+
+namespace {
+const QString kSceneFilter = QObject::tr("RayStudio scenes (*.scene.json *.json)");
+const QString kMeshFilter =
+    QObject::tr("Meshes (*.obj *.ply *.stl *.gltf *.glb *.fbx *.dae *.3ds *.off);;All files (*)");
+const QString kImageFilter =
+    QObject::tr("PNG (*.png);;JPEG (*.jpg *.jpeg);;TIFF (*.tif *.tiff);;OpenEXR (*.exr);;Radiance HDR (*.hdr)");
+
+bool isSceneFile(const QString& path) {
+    return path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive);
+}
+}  // namespace
+
+bool MainWindow::maybeSave() {
+    if (editor_->undoStack()->isClean()) return true;
+    const auto answer = QMessageBox::warning(
+        this, tr("RayStudio"), tr("The scene has been modified.\nDo you want to save your changes?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::newFile() {
+    if (!maybeSave()) return;
+    SceneDocument doc;
+    doc.camera.position = Vec3(0.0f, 1.5f, 5.0f);
+    doc.camera.target = Vec3(0.0f, 0.5f, 0.0f);
+    Object floor;
+    floor.name = "floor";
+    floor.geometry = PlaneGeometry{};
+    doc.addObject(std::move(floor));
+    Light key;
+    key.name = "key light";
+    key.position = Vec3(2.0f, 5.0f, 3.0f);
+    doc.addLight(std::move(key));
+    editor_->resetDocument(std::move(doc), {});
+}
+
+void MainWindow::open() {
+    if (!maybeSave()) return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Scene"), QString(), kSceneFilter);
+    if (!path.isEmpty()) openFile(path);
+}
+
+bool MainWindow::openFile(const QString& path) {
+    SceneLoadResult result = loadScene(path.toStdString());
+    if (!result.ok()) {
+        reportError(this, tr("Cannot open scene"),
+                    tr("%1 could not be opened:\n\n%2").arg(path, QString::fromStdString(result.errorText())));
+        return false;
+    }
+    editor_->resetDocument(std::move(result.document), QFileInfo(path).absoluteFilePath());
+    addRecentFile(QFileInfo(path).absoluteFilePath());
+    statusBar()->showMessage(tr("Opened %1").arg(path), 3000);
+    return true;
+}
+
+bool MainWindow::save() {
+    return editor_->filePath().isEmpty() ? saveAs() : saveFile(editor_->filePath());
+}
+
+bool MainWindow::saveAs() {
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Scene"), editor_->filePath(), kSceneFilter);
+    if (path.isEmpty()) return false;
+    if (!isSceneFile(path)) path += QStringLiteral(".scene.json");
+    return saveFile(path);
+}
+
+bool MainWindow::saveFile(const QString& path) {
+    const QFileInfo info(path);
+    const std::string text = serializeScene(editor_->document(), info.absolutePath().toStdString());
+    // QSaveFile writes a temporary file and renames it on commit: never a truncated scene.
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), qint64(text.size())) != qint64(text.size()) ||
+        !file.commit()) {
+        reportError(this, tr("Cannot save scene"), tr("%1 could not be written:\n%2").arg(path, file.errorString()));
+        return false;
+    }
+    editor_->undoStack()->setClean();
+    editor_->setFilePath(info.absoluteFilePath());
+    addRecentFile(info.absoluteFilePath());
+    statusBar()->showMessage(tr("Saved %1").arg(path), 3000);
+    return true;
+}
+
+void MainWindow::setRenderSize(int width, int height) {
+    SceneDocument doc = editor_->document();
+    doc.render.width = width;
+    doc.render.height = height;
+    editor_->replaceDocument(std::move(doc));
+}
+
+void MainWindow::importMeshDialog() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import Mesh"), QString(), kMeshFilter);
+    if (!path.isEmpty()) importMesh(path);
+}
+
+void MainWindow::importMesh(const QString& path) {
+    importMeshAsync(this, path, true, [this, path](const MeshLoadResult& r) {
+        if (!r.ok()) {
+            reportError(this, tr("Cannot import mesh"), QString::fromStdString(r.error));
+            return;
+        }
+        SceneDocument doc = editor_->document();
+        const ObjectId id = addMesh(doc, QFileInfo(path).absoluteFilePath().toStdString(), r.mesh);
+        editor_->edit(tr("Import mesh"), std::move(doc));
+        editor_->setSelection(id);
+    });
+}
+
+bool MainWindow::exportFrame(const QString& path) {
+    const auto frame = viewport_->frame();
+    if (!frame || frame->empty()) return false;
+    ImageRgb image(frame->width, frame->height);
+    image.pixels = frame->color;
+    std::string error;
+    if (!writeImage(path.toStdString(), image, frame->tonemap, frame->exposure, error)) {
+        reportError(this, tr("Cannot export image"), QString::fromStdString(error));
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported %1").arg(path), 3000);
+    return true;
+}
+
+void MainWindow::exportImageDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Current Frame"), QString(), kImageFilter);
+    if (!path.isEmpty()) exportFrame(path);
+}
+
+void MainWindow::renderImageDialog() {
+    QDialog dialog(this);
+    dialog.setWindowTitle(tr("Render Image"));
+    auto* form = new QFormLayout(&dialog);
+    auto* width = new QSpinBox(&dialog);
+    auto* height = new QSpinBox(&dialog);
+    width->setRange(1, 16384);
+    height->setRange(1, 16384);
+    width->setValue(editor_->document().render.width);
+    height->setValue(editor_->document().render.height);
+    form->addRow(tr("Width"), width);
+    form->addRow(tr("Height"), height);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    form->addRow(buttons);
+    if (dialog.exec() != QDialog::Accepted) return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Render Image To"), QString(), kImageFilter);
+    if (path.isEmpty()) return;
+    SceneDocument doc = editor_->document();
+    doc.render.width = width->value();
+    doc.render.height = height->value();
+    renderToFileAsync(this, doc, path, prefs_.threads, [this, path](bool ok, const QString& error) {
+        if (ok)
+            statusBar()->showMessage(tr("Rendered %1").arg(path), 5000);
+        else if (!error.isEmpty())
+            reportError(this, tr("Cannot render image"), error);
+        else
+            statusBar()->showMessage(tr("Render cancelled"), 3000);
+    });
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    for (const QUrl& url : event->mimeData()->urls()) {
+        const QString path = url.toLocalFile();
+        if (path.isEmpty()) continue;
+        if (isSceneFile(path)) {
+            if (maybeSave()) openFile(path);
+            break;
+        }
+        importMesh(path);
+    }
+    event->acceptProposedAction();
+}
+
+void MainWindow::addShapeAction(ShapeKind kind) {
+    SceneDocument doc = editor_->document();
+    const ObjectId id = addShape(doc, kind);
+    const QString text = tr("Add %1").arg(QString::fromStdString(doc.findObject(id)->name));
+    editor_->edit(text, std::move(doc));
+    editor_->setSelection(id);
+}
+
+void MainWindow::addLightAction(LightType type) {
+    SceneDocument doc = editor_->document();
+    const ObjectId id = addLight(doc, type);
+    const QString text = tr("Add %1").arg(QString::fromStdString(doc.findLight(id)->name));
+    editor_->edit(text, std::move(doc));
+    editor_->setSelection(id);
+}
+
+void MainWindow::deleteSelection() {
+    SceneDocument doc = editor_->document();
+    if (!remove(doc, editor_->selection())) return;
+    editor_->edit(tr("Delete"), std::move(doc));
+    editor_->setSelection(kNoObject);
+}
+
+void MainWindow::duplicateSelection() {
+    SceneDocument doc = editor_->document();
+    const ObjectId id = duplicate(doc, editor_->selection());
+    if (id == kNoObject) return;
+    editor_->edit(tr("Duplicate"), std::move(doc));
+    editor_->setSelection(id);
+}
+
+}  // namespace rs::ui

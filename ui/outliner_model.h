@@ -1,0 +1,39 @@
+// Item model of the outliner: the camera, the lights and the objects of the document.
+#pragma once
+
+#include "scene/document.h"
+
+#include <QAbstractItemModel>
+
+namespace rs::ui {
+
+class SceneEditor;
+
+/// Two-level tree: "Camera", "Lights" (children), "Objects" (children). Objects have a
+/// visibility checkbox; lights and objects can be renamed in place.
+class OutlinerModel : public QAbstractItemModel {
+    Q_OBJECT
+public:
+    explicit OutlinerModel(SceneEditor* editor, QObject* parent = nullptr);
+
+    QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
+    QModelIndex parent(const QModelIndex& child) const override;
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role) const override;
+    bool setData(const QModelIndex& index, const QVariant& value, int role) override;
+    Qt::ItemFlags flags(const QModelIndex& index) const override;
+
+    /// The id an index stands for (SceneEditor::kCameraSelection for the camera row,
+    /// kNoObject for group rows).
+    ObjectId idOf(const QModelIndex& index) const;
+    /// The index of a light, object or the camera; invalid when absent.
+    QModelIndex indexOf(ObjectId id) const;
+
+private:
+    void onDocumentChanged();
+    std::vector<ObjectId> lightIds_, objectIds_;
+    SceneEditor* editor_;
+};
+
+}  // namespace rs::ui

@@ -1,0 +1,135 @@
+// Preferences storage and the dialog, one control per InteractionPolicy member.
+#include "preferences.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QSettings>
+#include <QSpinBox>
+#include <QThread>
+
+namespace rs::ui {
+
+Preferences loadPreferences() {
+    QSettings s;
+    Preferences p;
+    const QString json = s.value(QStringLiteral("session/policy")).toString();
+    std::string error;
+    if (!json.isEmpty() && !policyFromJson(json.toStdString(), p.policy, error)) p.policy = {};
+    p.threads = s.value(QStringLiteral("session/threads"), 0).toInt();
+    return p;
+}
+
+void savePreferences(const Preferences& p) {
+    QSettings s;
+    s.setValue(QStringLiteral("session/policy"), QString::fromStdString(policyToJson(p.policy)));
+    s.setValue(QStringLiteral("session/threads"), p.threads);
+}
+
+namespace {
+
+template <class E>
+QComboBox* enumCombo(QWidget* parent, const char* name, QStringList items, E value) {
+    auto* c = new QComboBox(parent);
+    c->setObjectName(QString::fromLatin1(name));
+    c->addItems(items);
+    c->setCurrentIndex(int(value));
+    return c;
+}
+
+QCheckBox* check(QWidget* parent, const char* name, const QString& text, bool value) {
+    auto* c = new QCheckBox(text, parent);
+    c->setObjectName(QString::fromLatin1(name));
+    c->setChecked(value);
+    return c;
+}
+
+}  // namespace
+
+PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
+    : QDialog(parent), prefs_(prefs) {
+    setWindowTitle(tr("Preferences"));
+    auto* form = new QFormLayout(this);
+    const InteractionPolicy& p = prefs_.policy;
+    auto notify = [this] { Q_EMIT changed(prefs_); };
+
+    auto* resolution = enumCombo(this, "resolution", {tr("Full"), tr("Half"), tr("Quarter")}, p.resolution);
+    connect(resolution, &QComboBox::currentIndexChanged, this, [=, this](int i) {
+        prefs_.policy.resolution = MovingResolution(i);
+        notify();
+    });
+    form->addRow(tr("Resolution while moving"), resolution);
+
+    auto* interleaved = check(this, "interleaved", tr("2-pass interleaved frames"), p.interleaved);
+    connect(interleaved, &QCheckBox::toggled, this, [=, this](bool on) { prefs_.policy.interleaved = on; notify(); });
+    form->addRow(tr("Interleaving"), interleaved);
+
+    auto* proxy = check(this, "boxProxy", tr("Trace the moving object as its box"), p.boxProxy);
+    connect(proxy, &QCheckBox::toggled, this, [=, this](bool on) { prefs_.policy.boxProxy = on; notify(); });
+    form->addRow(tr("Box proxy"), proxy);
+
+    auto* refraction = enumCombo(this, "refraction",
+                                 {tr("Full"), tr("Diffuse"), tr("Diffuse except selected")}, p.refraction);
+    connect(refraction, &QComboBox::currentIndexChanged, this, [=, this](int i) {
+        prefs_.policy.refraction = RefractionMode(i);
+        notify();
+    });
+    form->addRow(tr("Refraction while moving"), refraction);
+
+    auto* reflection = enumCombo(this, "reflection", {tr("Full"), tr("Diffuse")}, p.reflection);
+    connect(reflection, &QComboBox::currentIndexChanged, this, [=, this](int i) {
+        prefs_.policy.reflection = ReflectionMode(i);
+        notify();
+    });
+    form->addRow(tr("Reflection while moving"), reflection);
+
+    auto* depth = new QSpinBox(this);
+    depth->setObjectName(QStringLiteral("maxDepth"));
+    depth->setRange(-1, 64);
+    depth->setSpecialValueText(tr("Scene's max depth"));
+    depth->setValue(p.maxDepthWhileMoving);
+    connect(depth, &QSpinBox::valueChanged, this, [=, this](int v) { prefs_.policy.maxDepthWhileMoving = v; notify(); });
+    form->addRow(tr("Depth while moving"), depth);
+
+    auto* shadows = enumCombo(this, "shadows",
+                              {tr("Full"), tr("Hard only"), tr("Off"), tr("Deferred (added after release)")},
+                              p.shadows);
+    connect(shadows, &QComboBox::currentIndexChanged, this, [=, this](int i) {
+        prefs_.policy.shadows = MovingShadows(i);
+        notify();
+    });
+    form->addRow(tr("Shadows while moving"), shadows);
+
+    auto* supersample = check(this, "supersample", tr("Supersample while moving"), p.supersampleWhileMoving);
+    connect(supersample, &QCheckBox::toggled, this, [=, this](bool on) { prefs_.policy.supersampleWhileMoving = on; notify(); });
+    form->addRow(tr("Supersampling"), supersample);
+
+    auto* dirty = check(this, "dirtyRegions", tr("Re-trace only what an edit can change"), p.dirtyRegions);
+    connect(dirty, &QCheckBox::toggled, this, [=, this](bool on) { prefs_.policy.dirtyRegions = on; notify(); });
+    form->addRow(tr("Dirty regions"), dirty);
+
+    auto* governor = new QDoubleSpinBox(this);
+    governor->setObjectName(QStringLiteral("governor"));
+    governor->setRange(0.0, 1000.0);
+    governor->setSuffix(tr(" ms"));
+    governor->setSpecialValueText(tr("Off"));
+    governor->setValue(p.governorTargetMs);
+    connect(governor, &QDoubleSpinBox::valueChanged, this, [=, this](double v) { prefs_.policy.governorTargetMs = v; notify(); });
+    form->addRow(tr("Governor target frame time"), governor);
+
+    auto* threads = new QSpinBox(this);
+    threads->setObjectName(QStringLiteral("threads"));
+    threads->setRange(0, std::max(64, QThread::idealThreadCount()));
+    threads->setSpecialValueText(tr("All cores"));
+    threads->setValue(prefs_.threads);
+    connect(threads, &QSpinBox::valueChanged, this, [=, this](int v) { prefs_.threads = v; notify(); });
+    form->addRow(tr("Render threads"), threads);
+
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::accept);
+    form->addRow(buttons);
+}
+
+}  // namespace rs::ui

@@ -1,0 +1,38 @@
+// Preferences: the session's interaction policy and thread count, stored in QSettings, and
+// the dialog that edits them live.
+#pragma once
+
+#include "session/interaction_policy.h"
+
+#include <QDialog>
+
+namespace rs::ui {
+
+/// What Preferences holds.
+struct Preferences {
+    InteractionPolicy policy;
+    int threads = 0;  ///< 0: all cores.
+};
+
+/// Reads preferences from QSettings (defaults where absent or unreadable).
+Preferences loadPreferences();
+/// Writes preferences to QSettings (the policy as policyToJson text).
+void savePreferences(const Preferences& prefs);
+
+/// One control per interaction policy setting plus the thread count; every change is
+/// announced at once through changed() so the session follows live.
+class PreferencesDialog : public QDialog {
+    Q_OBJECT
+public:
+    PreferencesDialog(const Preferences& prefs, QWidget* parent = nullptr);
+    /// The preferences as the controls show them.
+    Preferences preferences() const { return prefs_; }
+
+Q_SIGNALS:
+    void changed(const rs::ui::Preferences& prefs);
+
+private:
+    Preferences prefs_;
+};
+
+}  // namespace rs::ui

@@ -1,0 +1,206 @@
+// PropertyPanel: generic sections over descriptors plus the material chooser.
+#include "property_panel.h"
+
+#include "io/mesh_io.h"
+#include "parameter_widgets.h"
+#include "scene_edits.h"
+#include "scene_editor.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace rs::ui {
+
+namespace {
+const QString kDefaultMaterial = QStringLiteral("(default grey)");
+
+/// Changing smooth_normals changes the loaded triangles' normals: reload the mesh.
+void reloadMeshIfNeeded(Geometry& g, const std::string& key) {
+    auto* mesh = std::get_if<MeshGeometry>(&g);
+    if (!mesh || key != "smooth_normals" || mesh->resolvedPath.empty()) return;
+    MeshLoadResult r = loadMesh(mesh->resolvedPath, mesh->smoothNormals);
+    if (r.ok()) mesh->data = r.mesh;
+}
+}  // namespace
+
+PropertyPanel::PropertyPanel(SceneEditor* editor, QWidget* parent)
+    : QScrollArea(parent), editor_(editor) {
+    setWidgetResizable(true);
+    setMinimumWidth(340);
+    setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    connect(editor_, &SceneEditor::documentChanged, this, &PropertyPanel::onDocumentChanged);
+    connect(editor_, &SceneEditor::selectionChanged, this, &PropertyPanel::rebuild);
+    rebuild();
+}
+
+QString PropertyPanel::signature() const {
+    const SceneDocument& doc = editor_->document();
+    const ObjectId id = editor_->selection();
+    QString s = QString::number(id) + QLatin1Char('/') + QString::number(doc.materials.size());
+    if (const Object* o = doc.findObject(id))
+        s += QStringLiteral("/o%1/%2").arg(o->geometry.index()).arg(QString::fromStdString(o->material));
+    if (const Light* l = doc.findLight(id)) s += QStringLiteral("/l%1").arg(int(l->type));
+    for (const Material& m : doc.materials) s += QLatin1Char('|') + QString::fromStdString(m.name);
+    return s;
+}
+
+void PropertyPanel::onDocumentChanged() {
+    if (signature() != signature_)
+        rebuild();
+    else
+        refresh();
+}
+
+void PropertyPanel::refresh() {
+    for (const auto& r : refreshers_) r();
+}
+
+void PropertyPanel::showError(const QString& text) {
+    lastError_ = text;
+    errorLabel_->setText(text);
+    errorLabel_->setVisible(!text.isEmpty());
+}
+
+bool PropertyPanel::applyEdit(const QString& section, const std::string& key, const ParamValue& value) {
+    for (const auto& [name, apply] : appliers_)
+        if (name == section) return apply(key, value);
+    return false;
+}
+
+template <class Locate>
+void PropertyPanel::addSection(const QString& title, const QString& section, ParamKind kind,
+                               Locate locate) {
+    auto* box = new QGroupBox(title, content_);
+    auto* form = new QFormLayout(box);
+    const QString mergePrefix = QString::number(editor_->selection()) + QLatin1Char(':') + title;
+    auto apply = [this, locate, mergePrefix, kind](const std::string& key, const ParamValue& v) {
+        SceneDocument doc = editor_->document();
+        auto* target = locate(doc);
+        if (!target) return false;
+        const std::string error = setParameter(*target, key, v);
+        if (!error.empty()) {
+            showError(QString::fromStdString(error));
+            refresh();  // Put the widget back to the document's value.
+            return false;
+        }
+        if constexpr (std::is_same_v<std::remove_cvref_t<decltype(*target)>, Geometry>)
+            reloadMeshIfNeeded(*target, key);
+        showError({});
+        const ParamDescriptor* d = findParameter(kind, key);
+        editor_->edit(tr("Change %1").arg(QString::fromStdString(d ? d->label : key)),
+                      std::move(doc), MergeKind::Property,
+                      mergePrefix + QLatin1Char(':') + QString::fromStdString(key));
+        return true;
+    };
+    appliers_.emplace_back(section, apply);
+    for (const ParamDescriptor& d : parameters(kind)) {
+        const std::string key = d.key;
+        ParamEditor pe = makeParamEditor(d, box, [apply, key](const ParamValue& v) { apply(key, v); });
+        form->addRow(QString::fromStdString(d.label), pe.widget);
+        refreshers_.push_back([this, locate, key, set = pe.setValue] {
+            const auto* target = locate(editor_->document());
+            if (!target) return;
+            if (auto v = getParameter(*target, key)) set(*v);
+        });
+    }
+    layout_->addWidget(box);
+}
+
+void PropertyPanel::addMaterialChooser(ObjectId id) {
+    const SceneDocument& doc = editor_->document();
+    const Object* o = doc.findObject(id);
+    auto* box = new QGroupBox(tr("Material"), content_);
+    auto* form = new QFormLayout(box);
+    auto* combo = new QComboBox(box);
+    combo->addItem(kDefaultMaterial);
+    for (const Material& m : doc.materials) combo->addItem(QString::fromStdString(m.name));
+    combo->setCurrentIndex(o->material.empty() ? 0 : combo->findText(QString::fromStdString(o->material)));
+    connect(combo, &QComboBox::activated, this, [this, id, combo](int index) {
+        SceneDocument doc = editor_->document();
+        Object* obj = doc.findObject(id);
+        if (!obj) return;
+        obj->material = index == 0 ? std::string() : combo->itemText(index).toStdString();
+        editor_->edit(tr("Assign material"), std::move(doc));
+    });
+    form->addRow(tr("Material"), combo);
+    const int users = o->material.empty() ? 0 : materialUsers(doc, o->material);
+    auto* usage = new QLabel(users > 1 ? tr("Shared: used by %1 objects; edits change all of them").arg(users)
+                                       : o->material.empty() ? tr("Built-in, not editable")
+                                                             : tr("Used by this object only"),
+                             box);
+    usage->setObjectName(QStringLiteral("materialUsage"));
+    usage->setWordWrap(true);
+    form->addRow(usage);
+    if (users != 1) {
+        auto* unique = new QPushButton(o->material.empty() ? tr("New material") : tr("Make unique"), box);
+        unique->setObjectName(QStringLiteral("makeUnique"));
+        connect(unique, &QPushButton::clicked, this, [this, id] {
+            SceneDocument doc = editor_->document();
+            makeMaterialUnique(doc, id);
+            editor_->edit(tr("Make material unique"), std::move(doc));
+        });
+        form->addRow(unique);
+    }
+    layout_->addWidget(box);
+    if (o->material.empty() || !doc.findMaterial(o->material)) return;
+    const std::string name = o->material;
+    addSection(tr("Material \"%1\"").arg(QString::fromStdString(name)), QStringLiteral("material"),
+               ParamKind::Material, [name](auto& d) {
+                   decltype(&d.materials[0]) found = nullptr;
+                   for (auto& mat : d.materials)
+                       if (mat.name == name) found = &mat;
+                   return found;
+               });
+}
+
+void PropertyPanel::rebuild() {
+    refreshers_.clear();
+    appliers_.clear();
+    if (QWidget* old = takeWidget()) {
+        old->hide();
+        old->deleteLater();  // A widget of it may be running the handler that got us here.
+    }
+    content_ = new QWidget;
+    layout_ = new QVBoxLayout(content_);
+    errorLabel_ = new QLabel(content_);
+    errorLabel_->setStyleSheet(QStringLiteral("color: #d03030;"));
+    errorLabel_->setWordWrap(true);
+    errorLabel_->setVisible(!lastError_.isEmpty());
+    errorLabel_->setText(lastError_);
+    layout_->addWidget(errorLabel_);
+
+    const SceneDocument& doc = editor_->document();
+    const ObjectId id = editor_->selection();
+    if (const Object* o = doc.findObject(id)) {
+        addSection(QString::fromLatin1(kindLabel(geometryKind(o->geometry))), QStringLiteral("geometry"),
+                   geometryKind(o->geometry), [id](auto& d) {
+                       auto* obj = d.findObject(id);
+                       return obj ? &obj->geometry : decltype(&obj->geometry){};
+                   });
+        if (!std::holds_alternative<PlaneGeometry>(o->geometry))
+            addSection(tr("Transform"), QStringLiteral("transform"), ParamKind::Transform, [id](auto& d) {
+                auto* obj = d.findObject(id);
+                return obj ? &obj->transform : decltype(&obj->transform){};
+            });
+        addMaterialChooser(id);
+    } else if (const Light* l = doc.findLight(id)) {
+        addSection(QString::fromLatin1(kindLabel(lightKind(*l))), QStringLiteral("light"), lightKind(*l),
+                   [id](auto& d) { return d.findLight(id); });
+    } else {
+        if (id == SceneEditor::kCameraSelection)
+            addSection(tr("Camera"), QStringLiteral("camera"), ParamKind::Camera,
+                       [](auto& d) { return &d.camera; });
+        addSection(tr("Render settings"), QStringLiteral("render"), ParamKind::Render,
+                   [](auto& d) { return &d.render; });
+    }
+    layout_->addStretch(1);
+    setWidget(content_);
+    signature_ = signature();
+    refresh();
+}
+
+}  // namespace rs::ui

@@ -1,0 +1,54 @@
+// The property panel: sections generated from the parameter descriptors of the selection
+// (geometry, transform, material, light, camera, render settings).
+#pragma once
+
+#include "scene/document.h"
+#include "scene/parameters.h"
+
+#include <QScrollArea>
+
+#include <functional>
+#include <vector>
+
+class QLabel;
+class QVBoxLayout;
+
+namespace rs::ui {
+
+class SceneEditor;
+
+/// Rebuilds its sections when the selection (or its kind) changes and refreshes values on
+/// every other document change, so a widget the user is dragging is never destroyed.
+class PropertyPanel : public QScrollArea {
+    Q_OBJECT
+public:
+    explicit PropertyPanel(SceneEditor* editor, QWidget* parent = nullptr);
+
+    /// Applies a parameter edit as the widgets do (tests use it): `section` is one of
+    /// "geometry", "transform", "material", "light", "camera", "render".
+    bool applyEdit(const QString& section, const std::string& key, const ParamValue& value);
+    /// The last validation error shown (empty when none).
+    QString lastError() const { return lastError_; }
+
+private:
+    void onDocumentChanged();
+    void rebuild();
+    void refresh();
+    QString signature() const;
+    template <class Locate>
+    void addSection(const QString& title, const QString& section, ParamKind kind, Locate locate);
+    void addMaterialChooser(ObjectId id);
+    void showError(const QString& text);
+
+    SceneEditor* editor_;
+    QWidget* content_ = nullptr;
+    QVBoxLayout* layout_ = nullptr;
+    QLabel* errorLabel_ = nullptr;
+    QString signature_;
+    QString lastError_;
+    std::vector<std::function<void()>> refreshers_;
+    std::vector<std::pair<QString, std::function<bool(const std::string&, const ParamValue&)>>>
+        appliers_;
+};
+
+}  // namespace rs::ui

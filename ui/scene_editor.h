@@ -1,0 +1,67 @@
+// The open document, its undo stack, its file and the selection: the single source of truth
+// the viewport, outliner and property panel observe.
+#pragma once
+
+#include "scene/document.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+namespace rs::ui {
+
+/// Merge keys group consecutive edits into one undo step (a drag, a slider sweep).
+enum class MergeKind { None = -1, Drag = 1, Property = 2, Camera = 3 };
+
+/// Owns the SceneDocument; every change goes through edit() as an undoable command.
+class SceneEditor : public QObject {
+    Q_OBJECT
+public:
+    explicit SceneEditor(QObject* parent = nullptr);
+
+    /// The current document.
+    const SceneDocument& document() const { return doc_; }
+    /// The undo stack (its clean state is the saved state).
+    QUndoStack* undoStack() { return &undo_; }
+
+    /// Pushes an undoable change from the current document to `after`. Consecutive edits with
+    /// the same merge kind and key become one step.
+    void edit(const QString& text, SceneDocument after, MergeKind merge = MergeKind::None,
+              const QString& mergeKey = {});
+    /// Ends the current merge run: the next edit starts a new undo step.
+    void closeMerge() { ++mergeSerial_; }
+    /// Replaces the document without undo (used by undo commands themselves).
+    void replaceDocument(SceneDocument doc);
+    /// Loads a new document (Open/New): clears undo history, sets the file, clears selection.
+    void resetDocument(SceneDocument doc, const QString& filePath);
+
+    /// The scene file path; empty for an unsaved new scene.
+    QString filePath() const { return filePath_; }
+    void setFilePath(const QString& path);
+
+    /// Selected light or object id, kNoObject for none; kCameraSelection for the camera.
+    ObjectId selection() const { return selection_; }
+    void setSelection(ObjectId id);
+    /// Pseudo id of the camera in selections (never a real document id in practice).
+    static constexpr ObjectId kCameraSelection = 0xFFFFFFFFu;
+
+    /// Serial used by commands to decide whether they may merge.
+    int mergeSerial() const { return mergeSerial_; }
+
+Q_SIGNALS:
+    /// The document content changed (edit, undo, redo, open).
+    void documentChanged();
+    /// A new document was loaded (structure may be entirely different).
+    void documentReset();
+    void selectionChanged(rs::ObjectId id);
+    void filePathChanged(const QString& path);
+
+private:
+    SceneDocument doc_;
+    QUndoStack undo_;
+    QString filePath_;
+    ObjectId selection_ = kNoObject;
+    int mergeSerial_ = 0;
+};
+
+}  // namespace rs::ui

@@ -1,0 +1,155 @@
+// Scene edits: naming, defaults for new objects, and structural changes of the document.
+#include "scene_edits.h"
+
+#include <algorithm>
+
+namespace rs::ui {
+
+namespace {
+
+bool nameTaken(const SceneDocument& doc, const std::string& name) {
+    auto same = [&](const auto& e) { return e.name == name; };
+    return std::any_of(doc.objects.begin(), doc.objects.end(), same) ||
+           std::any_of(doc.lights.begin(), doc.lights.end(), same) ||
+           std::any_of(doc.materials.begin(), doc.materials.end(), same);
+}
+
+/// A point a few units in front of the camera, where new things appear.
+Vec3 spawnPoint(const SceneDocument& doc) {
+    const Vec3 dir = doc.camera.target - doc.camera.position;
+    const float len = glm::length(dir);
+    if (len < 1e-6f) return doc.camera.target;
+    return doc.camera.position + dir / len * std::min(len, 5.0f);
+}
+
+}  // namespace
+
+std::string uniqueName(const SceneDocument& doc, const std::string& base) {
+    if (!nameTaken(doc, base)) return base;
+    for (int i = 2;; ++i) {
+        std::string n = base + " " + std::to_string(i);
+        if (!nameTaken(doc, n)) return n;
+    }
+}
+
+ObjectId addShape(SceneDocument& doc, ShapeKind kind) {
+    Object o;
+    const Vec3 p = spawnPoint(doc);
+    switch (kind) {
+        case ShapeKind::Sphere:
+            o.name = uniqueName(doc, "sphere");
+            o.geometry = SphereGeometry{Vec3(0.0f), 0.5f};
+            o.transform.translate = p;
+            break;
+        case ShapeKind::Plane:
+            o.name = uniqueName(doc, "plane");
+            o.geometry = PlaneGeometry{Vec3(p.x, p.y - 1.0f, p.z), Vec3(0, 1, 0)};
+            break;
+        case ShapeKind::Rectangle:
+            o.name = uniqueName(doc, "rectangle");
+            o.geometry = RectangleGeometry{Vec3(0.0f), Vec3(0.5f, 0, 0), Vec3(0, 0.5f, 0)};
+            o.transform.translate = p;
+            break;
+        case ShapeKind::Box:
+            o.name = uniqueName(doc, "box");
+            o.geometry = BoxGeometry{};
+            o.transform.translate = p;
+            break;
+    }
+    return doc.addObject(std::move(o));
+}
+
+ObjectId addMesh(SceneDocument& doc, const std::string& file, std::shared_ptr<const MeshData> data) {
+    Object o;
+    std::string base = file.substr(file.find_last_of("/\\") + 1);
+    base = base.substr(0, base.find('.'));
+    o.name = uniqueName(doc, base.empty() ? "mesh" : base);
+    MeshGeometry g;
+    g.file = file;
+    g.resolvedPath = file;
+    g.data = std::move(data);
+    o.geometry = std::move(g);
+    o.transform.translate = spawnPoint(doc);
+    return doc.addObject(std::move(o));
+}
+
+ObjectId addLight(SceneDocument& doc, LightType type) {
+    Light l;
+    l.type = type;
+    l.name = uniqueName(doc, type == LightType::Sphere ? "sphere light" : "point light");
+    l.position = spawnPoint(doc) + Vec3(0.0f, 2.0f, 0.0f);
+    l.radius = 0.3f;
+    return doc.addLight(std::move(l));
+}
+
+ObjectId duplicate(SceneDocument& doc, ObjectId id) {
+    const Vec3 offset(0.3f, 0.0f, 0.3f);
+    if (const Object* o = doc.findObject(id)) {
+        Object copy = *o;
+        copy.name = uniqueName(doc, o->name);
+        const ObjectId nid = doc.addObject(std::move(copy));
+        moveBy(doc, nid, offset);
+        return nid;
+    }
+    if (const Light* l = doc.findLight(id)) {
+        Light copy = *l;
+        copy.name = uniqueName(doc, l->name);
+        copy.position += offset;
+        return doc.addLight(std::move(copy));
+    }
+    return kNoObject;
+}
+
+bool remove(SceneDocument& doc, ObjectId id) {
+    auto byId = [id](const auto& e) { return e.id == id; };
+    const auto objs = std::erase_if(doc.objects, byId);
+    const auto lights = std::erase_if(doc.lights, byId);
+    return objs + lights > 0;
+}
+
+void moveBy(SceneDocument& doc, ObjectId id, const Vec3& delta) {
+    if (Object* o = doc.findObject(id)) {
+        if (auto* plane = std::get_if<PlaneGeometry>(&o->geometry))
+            plane->point += delta;
+        else
+            o->transform.translate += delta;
+    } else if (Light* l = doc.findLight(id)) {
+        l->position += delta;
+    }
+}
+
+bool rename(SceneDocument& doc, ObjectId id, const std::string& name) {
+    if (name.empty()) return false;
+    std::string* target = nullptr;
+    if (Object* o = doc.findObject(id)) target = &o->name;
+    if (Light* l = doc.findLight(id)) target = &l->name;
+    if (!target) return false;
+    if (*target == name) return true;
+    if (nameTaken(doc, name)) return false;
+    *target = name;
+    return true;
+}
+
+int materialUsers(const SceneDocument& doc, const std::string& name) {
+    return int(std::count_if(doc.objects.begin(), doc.objects.end(),
+                             [&](const Object& o) { return o.material == name; }));
+}
+
+Material* findMaterial(SceneDocument& doc, const std::string& name) {
+    for (Material& m : doc.materials)
+        if (m.name == name) return &m;
+    return nullptr;
+}
+
+std::string makeMaterialUnique(SceneDocument& doc, ObjectId id) {
+    Object* o = doc.findObject(id);
+    if (!o) return {};
+    Material copy;
+    if (const Material* m = doc.findMaterial(o->material)) copy = *m;
+    copy.name = uniqueName(doc, o->name + " material");
+    o->material = copy.name;
+    doc.materials.push_back(std::move(copy));
+    return o->material;
+}
+
+}  // namespace rs::ui

@@ -1,0 +1,67 @@
+// Qt adapter around RenderSession: observer callbacks become queued, coalesced signals, and
+// document updates are throttled to the display rate.
+#pragma once
+
+#include "session/render_session.h"
+
+#include <QObject>
+#include <QTimer>
+
+#include <atomic>
+#include <memory>
+#include <optional>
+
+Q_DECLARE_METATYPE(rs::PassInfo)
+
+namespace rs::ui {
+
+/// Owns the session; lives on the GUI thread; never blocks it on rendering.
+class SessionController : public QObject, public SessionObserver {
+    Q_OBJECT
+public:
+    explicit SessionController(int threads, QObject* parent = nullptr);
+    ~SessionController() override;
+
+    /// The wrapped session (for withFrame, stats, policy).
+    RenderSession& session() { return *session_; }
+
+    /// Queues `doc` to be shown; consecutive requests within one display interval collapse
+    /// into one session update.
+    void requestUpdate(const SceneDocument& doc);
+    /// Sends a pending update now (tests and drag release use it).
+    void flushUpdate();
+    /// beginInteraction / endInteraction on the session, flushing pending updates first.
+    void beginInteraction(ObjectId moving);
+    void endInteraction();
+
+    /// Updates per second over the last second.
+    double updatesPerSecond() const { return updatesPerSecond_; }
+
+    // SessionObserver (worker threads).
+    void tileDone(int x0, int y0, int x1, int y1, uint64_t generation) override;
+    void passDone(const PassInfo& info) override;
+    void frameComplete(uint64_t generation) override;
+
+Q_SIGNALS:
+    /// New pixels are in the frame (at most about 60 per second).
+    void frameUpdated();
+    /// A pass finished (GUI thread).
+    void passFinished(const rs::PassInfo& info);
+    /// Every pixel is final for `generation` (GUI thread).
+    void frameCompleted(quint64 generation);
+
+private:
+    void onRepaintTimer();
+    void onUpdateTimer();
+
+    std::unique_ptr<RenderSession> session_;
+    std::atomic<bool> framePending_{false};
+    QTimer repaintTimer_;
+    QTimer updateTimer_;
+    std::optional<SceneDocument> pendingDoc_;
+    int updatesThisSecond_ = 0;
+    double updatesPerSecond_ = 0.0;
+    QTimer rateTimer_;
+};
+
+}  // namespace rs::ui
