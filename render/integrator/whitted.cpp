@@ -24,9 +24,14 @@ Color WhittedIntegrator::traceCamera(const Ray& ray, uint32_t seed, TraceCounter
 
 Color WhittedIntegrator::resolveDeferred(const ShadingRecord& record,
                                          TraceCounters& counters) const {
+    // The interactive trace showed the lights unshadowed; swap that for the shadowed terms.
     const CompiledMaterial& m = scene_.materials()[record.material];
-    return record.weight * directLight(record.p, record.n, record.toViewer, m, record.seed,
+    TraceCounters unshadowedCounters;
+    const Color shadowed = directLight(record.p, record.n, record.toViewer, m, record.seed,
                                        ShadowQuality::Full, counters);
+    const Color unshadowed = directLight(record.p, record.n, record.toViewer, m, record.seed,
+                                         ShadowQuality::Off, unshadowedCounters);
+    return record.weight * (shadowed - unshadowed);
 }
 
 Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, uint32_t seed,
@@ -77,7 +82,9 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, uint32_t
     if (m.localWeight > 0.0f) {
         const Color ambient = scene_.settings().ambient * m.color * m.diffuse;
         if (options_.shadows == ShadowQuality::Deferred) {
-            result = m.localWeight * ambient;
+            // Shown unshadowed while moving; the record lets the shadows be added later.
+            result = m.localWeight * (ambient + directLight(p, n, toViewer, m, seed,
+                                                            ShadowQuality::Off, counters));
             if (sink) {
                 if (sink->count < sink->capacity)
                     sink->data[sink->count++] = {p,    n, toViewer, weight * m.localWeight,

@@ -28,7 +28,7 @@ enum class ShadowQuality {
     Full,      ///< As the scene says: shadow_samples rays per light, sphere lights sampled.
     HardOnly,  ///< One shadow ray to each light's centre.
     Off,       ///< No shadow rays: every light is visible.
-    Deferred,  ///< No light terms at all; shading points are recorded to add them later.
+    Deferred,  ///< Unshadowed now; shading points are recorded to add the shadows later.
 };
 
 /// Quality knobs the interactive session turns down while the user drags (thesis 4.2).
@@ -94,7 +94,8 @@ public:
                       PrimaryInfo* primary = nullptr, RecordSink* sink = nullptr,
                       SegmentSink* segments = nullptr) const;
 
-    /// The light terms a Deferred trace left out at `record`, with full-quality shadows.
+    /// What a Deferred trace's unshadowed light terms at `record` are off by: shadowed minus
+    /// unshadowed, added to the pixel to finish it.
     Color resolveDeferred(const ShadingRecord& record, TraceCounters& counters) const;
 
 private:
