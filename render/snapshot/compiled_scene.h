@@ -137,12 +137,11 @@ private:
     std::vector<Primitive> primitives_;
     std::vector<PlanePrimitive> planes_;
     Bvh bvh_;
-    // Query-only copies (prepareQueries). With few primitives a flat test beats the BVH walk:
-    // then world spheres are tested four at a time and the rest one by one.
+    // Query-only copies (prepareQueries). When the bounded primitives are a few world spheres,
+    // testing them all four at a time beats the BVH walk (flat_).
     std::vector<PlaneBlock4> planeBlocks_;
     bool flat_ = false;
     std::vector<SphereBlock4> sphereBlocks_;  ///< Only when flat_.
-    std::vector<uint32_t> flatOthers_;        ///< Primitives that are not world spheres; flat_.
     float epsilon_ = 1e-4f;
     Aabb sceneBounds_;
 };
