@@ -14,6 +14,10 @@ using Color = glm::vec3;  ///< Linear HDR radiance, r = x, g = y, b = z.
 using Mat4 = glm::mat4;
 using Mat3 = glm::mat3;
 
+/// Four floats in one SSE/NEON register (GCC/Clang vector extension): lane-wise IEEE arithmetic,
+/// so a four-wide test gives the same bits as four scalar ones.
+using Float4 = float __attribute__((vector_size(16)));
+
 inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 inline constexpr float kPi = 3.14159265358979323846f;
 

@@ -1,5 +1,5 @@
-// Ray intersection and bounds for the render-ready shapes (sphere, plane, rectangle, box,
-// triangle).
+// Ray intersection and bounds for the render-ready shapes (rectangle, box, triangle; the sphere
+// and plane tests are inline in the header).
 #include "geometry/shapes.h"
 
 #include <cmath>
@@ -14,52 +14,6 @@ inline bool inOpenRange(float t, float tmin, float tmax) {
 }
 
 }  // namespace
-
-bool intersect(const SphereShape& s, const Ray& ray, float tmin, float tmax, ShapeHit& hit) {
-    // Mitsuba's trick: move the origin to the point of the ray closest to the centre, then solve
-    // for the offset from there. The quadratic then has tiny, well-conditioned coefficients
-    // (f is ~perpendicular to d and |f| <= radius for a hit), so distant origins and near-grazing
-    // rays keep their precision instead of cancelling |o - c|^2 - r^2.
-    const float a = glm::dot(ray.dir, ray.dir);
-    const float tProj = glm::dot(s.center - ray.origin, ray.dir) / a;
-    const Vec3 f = (ray.origin - s.center) + tProj * ray.dir;
-    const float bHalf = glm::dot(f, ray.dir);  // ~0 by construction; kept for exactness
-    const float c = glm::dot(f, f) - s.radius * s.radius;
-    const float disc = bHalf * bHalf - a * c;
-    if (!(disc >= 0.0f)) return false;  // also rejects NaN (zero direction)
-    const float root = std::sqrt(disc);
-    // Stable pair of roots (Numerical Recipes); q == 0 only for an exact tangent at f = 0.
-    const float q = bHalf >= 0.0f ? -(bHalf + root) : -(bHalf - root);
-    float s0 = 0.0f, s1 = 0.0f;
-    if (q != 0.0f) {
-        s0 = q / a;
-        s1 = c / q;
-        if (s0 > s1) std::swap(s0, s1);
-    }
-    float t = tProj + s0;
-    float offset = s0;
-    if (!inOpenRange(t, tmin, tmax)) {
-        // Origin inside (or the near hit clipped by tmin): the far side is the answer.
-        t = tProj + s1;
-        offset = s1;
-        if (!inOpenRange(t, tmin, tmax)) return false;
-    }
-    hit.t = t;
-    // From the re-centred origin the hit point is computed with small numbers, hence accurately.
-    hit.n = (f + offset * ray.dir) / s.radius;
-    return true;
-}
-
-bool intersect(const PlaneShape& s, const Ray& ray, float tmin, float tmax, ShapeHit& hit) {
-    // Two-sided; a ray parallel to the plane (denom == 0) misses, even one lying in it.
-    const float denom = glm::dot(ray.dir, s.normal);
-    if (denom == 0.0f) return false;
-    const float t = glm::dot(s.point - ray.origin, s.normal) / denom;
-    if (!inOpenRange(t, tmin, tmax)) return false;
-    hit.t = t;
-    hit.n = s.normal;
-    return true;
-}
 
 RectangleShape RectangleShape::make(const Vec3& center, const Vec3& u, const Vec3& v) {
     RectangleShape r;
