@@ -81,9 +81,27 @@ build_release() {
     cmake --build --preset release
 }
 
+# The interactive session's threading under ThreadSanitizer: its own preset and build
+# folder, only the render unit tests (the designer is not built there).
+run_thread_sanitizer_tests() {
+    if [[ ! -f build/tsan/CMakeCache.txt || ! -f build/tsan/build.ninja ]]; then
+        say "Configuring the ThreadSanitizer build in build/tsan."
+        cmake --preset tsan
+    fi
+    say "Building the unit tests with ThreadSanitizer."
+    cmake --build --preset tsan --target raystudio_unit_tests
+    say "Running the session and renderer tests under ThreadSanitizer."
+    ctest --preset tsan -R 'RenderSession|Renderer|Sampling' --output-on-failure
+}
+
 run_tests() {
-    say "Running the test suite."
     local status=0
+    run_thread_sanitizer_tests || status=$?
+    if ((status != 0)); then
+        printf 'setup.sh: ThreadSanitizer tests failed (exit status %d)\n' "${status}" >&2
+        return "${status}"
+    fi
+    say "Running the test suite."
     ctest --preset release --output-on-failure || status=$?
     if ((status == 0)); then
         say "All tests passed."

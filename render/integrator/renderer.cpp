@@ -1,6 +1,7 @@
 // Tile scheduling for full renders and the per-pixel sampling they share with the session.
 #include "integrator/renderer.h"
 
+#include "core/parallel.h"
 #include "integrator/sampling.h"
 
 #include <tbb/blocked_range2d.h>
@@ -63,7 +64,7 @@ bool forEachTile(int width, int height, const RenderOptions& options, uint64_t& 
     std::atomic<int> done{0};
     std::atomic<uint64_t> rayCount{0};
     std::mutex progressMutex;
-    tbb::parallel_for(
+    parallelFor(
         tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1), [&](const auto& r) {
             for (int ty = r.rows().begin(); ty != r.rows().end(); ++ty) {
                 for (int tx = r.cols().begin(); tx != r.cols().end(); ++tx) {
@@ -101,7 +102,7 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
     std::vector<Vec3> normals(adaptive ? result.ids.size() : 0);
 
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::info::default_concurrency());
-    arena.execute([&] {
+    arenaExecute(arena, [&] {
         // Pass 1: one centre sample per pixel (all the image needs without supersampling), or
         // the full pattern when supersampling everywhere. Ids come from the centre ray.
         result.cancelled = !forEachTile(w, h, options, result.rays,

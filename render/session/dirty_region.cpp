@@ -1,7 +1,7 @@
 // Dirty-region marking: footprints, specular pixels, retinted objects, shadow-ray crossings.
 #include "session/dirty_region.h"
 
-#include <tbb/parallel_for.h>
+#include "core/parallel.h"
 
 #include <algorithm>
 #include <atomic>
@@ -253,7 +253,7 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     thread_local std::vector<uint8_t> coreBuffer;
     std::vector<uint8_t>& core = coreBuffer;
     core.assign(mask.size(), 0);
-    tbb::parallel_for(0, blocks, [&](int b) {
+    parallelForIndex(0, blocks, [&](int b) {
         const int bx = b % blocksX, by = b / blocksX;
         const PixelRect r{bx * B, by * B, std::min(w, (bx + 1) * B), std::min(h, (by + 1) * B)};
         const TileTests tests = tileTests(c, r, frame.blockSummary[std::size_t(b)]);
@@ -265,7 +265,7 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
         blockMarked[std::size_t(b)] = any;
     });
     std::atomic<std::size_t> count{0};
-    tbb::parallel_for(0, blocks, [&](int b) {
+    parallelForIndex(0, blocks, [&](int b) {
         const int bx = b % blocksX, by = b / blocksX;
         bool near = false;
         for (int dy = -1; dy <= 1 && !near; ++dy)

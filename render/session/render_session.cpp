@@ -1,6 +1,8 @@
 // RenderSession API and scheduler: edits, generations, pass planning, waiting.
 #include "session/render_session.h"
 
+#include "core/parallel.h"
+
 #include "session/dirty_region.h"
 #include "session/session_plan.h"
 
@@ -234,8 +236,8 @@ void RenderSession::run() {
 void RenderSession::execute(Plan& plan, PassInfo& info) {
     const auto start = std::chrono::steady_clock::now();
     PassCounters counters;
-    arena_->execute([&] {
-        tbb::parallel_for(
+    arenaExecute(*arena_, [&] {
+        parallelFor(
             tbb::blocked_range<std::size_t>(0, plan.tiles.size(), 1),
             [&](const tbb::blocked_range<std::size_t>& r) {
                 for (std::size_t t = r.begin(); t != r.end(); ++t) {
