@@ -178,7 +178,7 @@ Color WhittedIntegrator::directLight(const Vec3& p, const Vec3& n, const Vec3& t
             float spec = 0.0f;
             if (m.specular > 0.0f) {
                 const float rv = glm::dot(2.0f * nl * n - toLight, toViewer);
-                if (rv > 0.0f) spec = m.specular * std::pow(rv, m.shininess);
+                if (rv > m.specularCutoff && rv > 0.0f) spec = m.specular * std::pow(rv, m.shininess);
             }
             if (traceShadows) {
                 ++counters.shadowRays;

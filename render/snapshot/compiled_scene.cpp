@@ -8,8 +8,11 @@ namespace rs {
 namespace {
 
 CompiledMaterial compileMaterial(const Material& m) {
+    float cutoff = 0.0f;
+    if (m.specular > 0.0f && m.shininess > 0.0f)
+        cutoff = std::min(1.0f, std::pow(1e-7f / m.specular, 1.0f / m.shininess));
     return {m.color,        m.diffuse, m.specular, m.shininess, m.reflectivity,
-            m.transparency, m.ior,     1.0f - m.reflectivity - m.transparency};
+            m.transparency, m.ior,     1.0f - m.reflectivity - m.transparency, cutoff};
 }
 
 /// True when the linear part is a rotation times a uniform scale (spheres stay spheres).

@@ -19,6 +19,9 @@ struct CompiledMaterial {
     Color color;
     float diffuse, specular, shininess, reflectivity, transparency, ior;
     float localWeight;  ///< 1 - reflectivity - transparency.
+    /// R.V below which specular * (R.V)^shininess < 1e-7: far below a float colour's
+    /// resolution, so the costly pow is skipped there (the same on every render path).
+    float specularCutoff;
 };
 
 /// A light as the integrator needs it: position, radius (0 for a point) and intensity * colour.
