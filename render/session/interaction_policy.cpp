@@ -61,6 +61,7 @@ InteractionPolicy InteractionPolicy::none() {
     p.shadows = MovingShadows::Full;
     p.dirtyRegions = false;
     p.supersampleWhileMoving = true;
+    p.governorTargetMs = 0.0;
     return p;
 }
 

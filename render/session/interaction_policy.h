@@ -30,7 +30,10 @@ struct InteractionPolicy {
     MovingShadows shadows = MovingShadows::Deferred;
     bool supersampleWhileMoving = false;
     bool dirtyRegions = true;        ///< Re-trace only what an edit can change.
-    double governorTargetMs = 0.0;   ///< > 0: pick the cheapest set meeting this frame time.
+    /// > 0: per frame, the least-reduced policy level predicted to meet this frame time
+    /// (0: always exactly the settings above). The default keeps frames near 120 Hz and only
+    /// turns quality down when the dirty region is too large for that.
+    double governorTargetMs = 8.0;
 
     bool operator==(const InteractionPolicy&) const = default;
 

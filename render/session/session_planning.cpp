@@ -65,7 +65,10 @@ bool RenderSession::planLocked(Plan& plan) {
         plan.kind = PassKind::Interactive;
         InteractionPolicy effective = policy_;
         if (policy_.governorTargetMs > 0.0) {
-            plan.governorLevel = governor_.choose(policy_, stale, policy_.governorTargetMs);
+            // The frame also pays for the edit itself (diff, refit, dirty marking): budget
+            // the pass with what is left of the target.
+            const double budget = std::max(0.0, policy_.governorTargetMs - stats_.lastUpdateMs);
+            plan.governorLevel = governor_.choose(policy_, stale, budget);
             effective = Governor::policyForLevel(policy_, plan.governorLevel);
         }
         plan.options = effective.movingTraceOptions(settings, moving_);

@@ -124,8 +124,15 @@ TEST(RenderSession, RandomEdits_DefaultPolicy_FrameEqualsFullRender) {
     for (uint32_t seed : {1u, 2u, 3u, 8u, 9u, 10u}) runRandomEdits(InteractionPolicy{}, seed, true);
 }
 
+TEST(RenderSession, RandomEdits_DeferredShadowsWithoutGovernor_FrameEqualsFullRender) {
+    InteractionPolicy p;
+    p.governorTargetMs = 0.0;
+    for (uint32_t seed : {11u, 12u}) runRandomEdits(p, seed, true);
+}
+
 TEST(RenderSession, RandomEdits_EveryShortcutOn_FrameEqualsFullRender) {
     InteractionPolicy p;
+    p.governorTargetMs = 0.0;
     p.resolution = MovingResolution::Half;
     p.interleaved = true;
     p.boxProxy = true;
@@ -172,6 +179,7 @@ TEST(RenderSession, DeferredShadows_RecordsWhileMovingAndResolvesExactlyAfterRel
     InteractionPolicy p;
     p.shadows = MovingShadows::Deferred;
     p.dirtyRegions = false;  // Every pixel goes through the deferred path.
+    p.governorTargetMs = 0.0;  // Exactly this policy, whatever the machine's speed.
     session.setPolicy(p);
     session.update(doc);
     ASSERT_TRUE(session.waitUntilComplete(60s));
@@ -201,6 +209,7 @@ TEST(RenderSession, HalfResolutionWhileMoving_TracesAQuarterOfTheDirtyPixels) {
     InteractionPolicy p;
     p.resolution = MovingResolution::Half;
     p.dirtyRegions = false;
+    p.governorTargetMs = 0.0;
     session.setPolicy(p);
     session.update(doc);
     ASSERT_TRUE(session.waitUntilComplete(60s));
