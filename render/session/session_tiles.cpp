@@ -2,36 +2,13 @@
 // to the frame only if its generation is still current.
 #include "integrator/renderer.h"
 #include "session/session_plan.h"
+#include "session/tile_output.h"
 
 #include <algorithm>
 
 namespace rs {
 
 namespace {
-
-/// Everything a traced pixel writes back.
-struct PixelOut {
-    uint32_t index;
-    Color color;
-    Color base;
-    Color sampleSum;
-    uint16_t sampleCount;
-    ObjectId id;
-    float depth;
-    Vec3 normal;
-    uint32_t cost;
-    uint8_t state;
-    uint8_t flags;
-    glm::vec4 hitBound;
-    uint32_t recordOffset;  ///< Into the tile's local record list.
-    uint8_t recordCount;
-    uint32_t segmentOffset;  ///< Into the tile's local segment list.
-    uint8_t segmentCount;
-    uint8_t segmentMode;     ///< SegmentMode.
-};
-
-/// How a written pixel's secondary segments relate to the ones it had.
-enum SegmentMode : uint8_t { kReplace = 0, kAppend = 1, kKeep = 2 };
 
 constexpr int kRecordsPerPixel = 16;
 constexpr int kSegmentsPerPixel = 24;
@@ -41,54 +18,27 @@ glm::vec4 pointBound(const Ray& ray, const PrimaryInfo& info) {
     return glm::vec4(ray.at(info.depth), 0.0f);
 }
 
+/// A pixel written from one camera ray's result.
+PixelOut primaryPixel(std::size_t index, const Color& color, const Ray& ray, const PrimaryInfo& info,
+                      const TraceCounters& tc, uint8_t state, uint8_t flags) {
+    PixelOut o{};
+    o.index = uint32_t(index);
+    o.color = color;
+    o.id = info.id;
+    o.depth = info.depth;
+    o.normal = info.normal;
+    o.cost = uint32_t(tc.total());
+    o.state = state;
+    o.flags = flags;
+    o.hitBound = pointBound(ray, info);
+    return o;
+}
+
 /// Grows a bounding sphere to contain `p` (conservative, centre kept).
 glm::vec4 growBound(glm::vec4 b, const Vec3& p) {
     if (b.w < 0.0f) return glm::vec4(p, 0.0f);
     b.w = std::max(b.w, glm::length(p - Vec3(b)));
     return b;
-}
-
-/// Rebuilds tile `tile`'s segment pool: written pixels get their new segments (or keep or
-/// extend their old ones), untouched pixels keep theirs; then refreshes the tile summary.
-void commitSegments(DeepFrame& frame, const PixelRect& r, int tile, const std::vector<PixelOut>& out,
-                    const std::vector<TreeSegment>& segments) {
-    thread_local std::vector<int> written;
-    const int rw = r.x1 - r.x0;
-    written.assign(std::size_t(rw) * std::size_t(r.y1 - r.y0), -1);
-    for (std::size_t k = 0; k < out.size(); ++k) {
-        const int px = int(out[k].index % uint32_t(frame.width));
-        const int py = int(out[k].index / uint32_t(frame.width));
-        written[std::size_t(py - r.y0) * std::size_t(rw) + std::size_t(px - r.x0)] = int(k);
-    }
-    auto& pool = frame.tileSegments[std::size_t(tile)];
-    std::vector<TreeSegment> fresh;
-    fresh.reserve(pool.size() + segments.size());
-    for (int y = r.y0; y < r.y1; ++y) {
-        for (int x = r.x0; x < r.x1; ++x) {
-            const std::size_t i = frame.index(x, y);
-            const int k = written[std::size_t(y - r.y0) * std::size_t(rw) + std::size_t(x - r.x0)];
-            const uint32_t start = uint32_t(fresh.size());
-            const bool keepOld = k < 0 || out[std::size_t(k)].segmentMode != kReplace;
-            if (keepOld)
-                fresh.insert(fresh.end(), pool.begin() + frame.segmentStart[i],
-                             pool.begin() + frame.segmentStart[i] + frame.segmentCount[i]);
-            if (k >= 0 && out[std::size_t(k)].segmentMode != kKeep) {
-                const PixelOut& o = out[std::size_t(k)];
-                fresh.insert(fresh.end(), segments.begin() + o.segmentOffset,
-                             segments.begin() + o.segmentOffset + o.segmentCount);
-            }
-            std::size_t count = fresh.size() - start;
-            if (count > 255) {  // Too many to index: forget them and always re-trace.
-                fresh.resize(start);
-                count = 0;
-                frame.flags[i] |= kTreeUnknown;
-            }
-            frame.segmentStart[i] = start;
-            frame.segmentCount[i] = uint8_t(count);
-        }
-    }
-    pool.swap(fresh);
-    frame.summarizeTile(tile);
 }
 
 }  // namespace
@@ -124,16 +74,9 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
         SegmentSink segSink{segmentBuffer, kSegmentsPerPixel, 0, false};
         const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
         const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info, nullptr, &segSink);
-        PixelOut o{};
-        o.index = uint32_t(i);
-        o.color = o.base = c;
-        o.id = info.id;
-        o.depth = info.depth;
-        o.normal = info.normal;
-        o.cost = uint32_t(tc.total());
-        o.state = plan.spp == 1 ? kFinal : kBase;
-        o.flags = uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | extraFlags);
-        o.hitBound = pointBound(ray, info);
+        PixelOut o = primaryPixel(i, c, ray, info, tc, plan.spp == 1 ? kFinal : kBase,
+                                  uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | extraFlags));
+        o.base = c;
         keepSegments(o, segSink);
         out.push_back(o);
         rays += tc.total();
@@ -162,18 +105,11 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                     const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info,
                                                            plan.deferredRecords ? &sink : nullptr,
                                                            &segSink);
-                    PixelOut o{};
-                    o.index = uint32_t(i);
-                    o.color = c;
-                    o.id = info.id;
-                    o.depth = info.depth;
-                    o.normal = info.normal;
-                    o.cost = uint32_t(tc.total());
-                    o.state = kInteractive;
                     const bool complete = plan.deferredRecords && !sink.overflow;
-                    o.flags = uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) |
-                                      kTracedLastUpdate | (complete ? kDeferredValid : 0));
-                    o.hitBound = pointBound(ray, info);
+                    PixelOut o = primaryPixel(
+                        i, c, ray, info, tc, kInteractive,
+                        uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | kTracedLastUpdate |
+                                (complete ? kDeferredValid : 0)));
                     o.recordOffset = uint32_t(records.size());
                     o.recordCount = complete ? uint8_t(sink.count) : 0;
                     if (complete) records.insert(records.end(), sinkBuffer, sinkBuffer + sink.count);
@@ -199,18 +135,11 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                 const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info);
                 for (int yy = y; yy < by1; ++yy) {
                     for (int xx = x; xx < bx1; ++xx) {
-                        PixelOut o{};
-                        o.index = uint32_t(std::size_t(yy) * std::size_t(w) + std::size_t(xx));
-                        o.color = c;
-                        o.id = info.id;
-                        o.depth = info.depth;
-                        o.normal = info.normal;
-                        o.cost = uint32_t(tc.total());
-                        o.state = kInteractive;
-                        o.flags = uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) |
-                                          kTracedLastUpdate);
-                        o.hitBound = pointBound(ray, info);
-                        out.push_back(o);
+                        out.push_back(primaryPixel(
+                            std::size_t(yy) * std::size_t(w) + std::size_t(xx), c, ray, info, tc,
+                            kInteractive,
+                            uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) |
+                                    kTracedLastUpdate)));
                     }
                 }
                 rays += tc.total();
