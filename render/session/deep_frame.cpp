@@ -26,38 +26,41 @@ void DeepFrame::resize(int w, int h) {
     tileSegments.assign(tileRecords.size(), {});
     segmentStart.assign(n, 0);
     segmentCount.assign(n, 0);
+    tileLiveSegments.assign(tileRecords.size(), 0);
     blockSummary.assign(std::size_t(blocksX()) * std::size_t(blocksY()), {});
 }
 
 void DeepFrame::summarizeTile(int t) {
     const int tx = t % tilesX(), ty = t / tilesX();
     const int x1 = std::min(width, (tx + 1) * tileSize), y1 = std::min(height, (ty + 1) * tileSize);
-    const auto& pool = tileSegments[std::size_t(t)];
-    for (int by = ty * tileSize; by < y1; by += kBlock) {
-        for (int bx = tx * tileSize; bx < x1; bx += kBlock) {
-            TileSummary sum;
-            for (int y = by; y < std::min(y1, by + kBlock); ++y) {
-                for (int x = bx; x < std::min(x1, bx + kBlock); ++x) {
-                    const std::size_t i = index(x, y);
-                    const glm::vec4 b = hitBound[i];
-                    if (b.w >= 0.0f) {
-                        sum.hitBox.expand(Vec3(b) - Vec3(b.w));
-                        sum.hitBox.expand(Vec3(b) + Vec3(b.w));
-                    }
-                    if (!(flags[i] & kTouchedSpecular)) continue;
-                    sum.anySpecular = true;
-                    if (flags[i] & kTreeUnknown) sum.anyUnknown = true;
-                    for (uint32_t k = 0; k < segmentCount[i]; ++k) {
-                        const TreeSegment& s = pool[segmentStart[i] + k];
-                        sum.segmentStarts.expand(s.a);
-                        if (s.escapes) sum.anyEscape = true;
-                        else sum.segmentEnds.expand(s.b);
-                    }
-                }
+    for (int by = ty * tileSize; by < y1; by += kBlock)
+        for (int bx = tx * tileSize; bx < x1; bx += kBlock) summarizeBlock(bx, by);
+}
+
+void DeepFrame::summarizeBlock(int px, int py) {
+    const int bx = px / kBlock * kBlock, by = py / kBlock * kBlock;
+    const auto& pool = tileSegments[std::size_t(tileOf(bx, by))];
+    TileSummary sum;
+    for (int y = by; y < std::min(height, by + kBlock); ++y) {
+        for (int x = bx; x < std::min(width, bx + kBlock); ++x) {
+            const std::size_t i = index(x, y);
+            const glm::vec4 b = hitBound[i];
+            if (b.w >= 0.0f) {
+                sum.hitBox.expand(Vec3(b) - Vec3(b.w));
+                sum.hitBox.expand(Vec3(b) + Vec3(b.w));
             }
-            blockSummary[std::size_t(by / kBlock) * std::size_t(blocksX()) + std::size_t(bx / kBlock)] = sum;
+            if (!(flags[i] & kTouchedSpecular)) continue;
+            sum.anySpecular = true;
+            if (flags[i] & kTreeUnknown) sum.anyUnknown = true;
+            for (uint32_t k = 0; k < segmentCount[i]; ++k) {
+                const TreeSegment& s = pool[segmentStart[i] + k];
+                sum.segmentStarts.expand(s.a);
+                if (s.escapes) sum.anyEscape = true;
+                else sum.segmentEnds.expand(s.b);
+            }
         }
     }
+    blockSummary[std::size_t(by / kBlock) * std::size_t(blocksX()) + std::size_t(bx / kBlock)] = sum;
 }
 
 }  // namespace rs

@@ -61,6 +61,7 @@ struct DeepFrame {
     std::vector<std::vector<TreeSegment>> tileSegments;
     std::vector<uint32_t> segmentStart;
     std::vector<uint8_t> segmentCount;
+    std::vector<uint32_t> tileLiveSegments;  ///< Segments still referenced in each pool.
     /// Summaries of 8 x 8 blocks (finer than tiles: tighter boxes reject more in marking).
     std::vector<TileSummary> blockSummary;
     static constexpr int kBlock = 8;
@@ -76,6 +77,8 @@ struct DeepFrame {
     int blocksY() const { return (height + kBlock - 1) / kBlock; }
     /// Recomputes the block summaries inside tile `t` from its pixels.
     void summarizeTile(int t);
+    /// Recomputes the summary of the block holding pixel (x, y).
+    void summarizeBlock(int x, int y);
 };
 
 }  // namespace rs

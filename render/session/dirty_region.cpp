@@ -111,6 +111,9 @@ ShadowCone makeCone(const CompiledLight& l, const Aabb& region) {
 /// stay within max(start radius, end radius) of the segment joining the two box centres.
 bool segmentsMayCross(const Aabb& starts, const Aabb& ends, const Aabb& region) {
     if (starts.empty() || ends.empty()) return false;
+    Aabb hull = starts;  // Every such segment lies in the box around both boxes.
+    hull.expand(ends);
+    if (!hull.overlaps(region)) return false;
     const float r = 0.5f * std::max(glm::length(starts.extent()), glm::length(ends.extent()));
     return segmentHitsBox(starts.center(), ends.center(), grown(region, r));
 }
@@ -151,17 +154,22 @@ bool treeMayCross(const MarkContext& c, std::size_t i, int tile) {
     const uint32_t start = c.frame.segmentStart[i];
     for (uint32_t k = 0; k < c.frame.segmentCount[i]; ++k) {
         const TreeSegment& s = pool[start + k];
-        const Probe ray = s.escapes ? Probe(s.a, s.b, kInfinity) : Probe(s.a, s.b - s.a, 1.0f);
-        for (const Aabb& region : c.regions)
+        // Cheap rejections first (no divisions): the segment's own box, the light cones.
+        Aabb span;
+        span.expand(s.a);
+        if (!s.escapes) span.expand(s.b);
+        for (const Aabb& region : c.regions) {
+            if (!s.escapes && !span.overlaps(region)) continue;
+            const Probe ray = s.escapes ? Probe(s.a, s.b, kInfinity) : Probe(s.a, s.b - s.a, 1.0f);
             if (ray.hits(region)) return true;
+        }
         if (!c.shadows || s.escapes) continue;
-        for (std::size_t li = 0; li < c.lights.size(); ++li) {
-            const Probe shadow(s.b, c.lights[li].position - s.b, 1.0f);
+        for (std::size_t li = 0; li < c.lights.size(); ++li)
             for (std::size_t r = 0; r < c.regions.size(); ++r)
                 if (c.cones[r * c.lights.size() + li].mayContain(s.b, 0.0f) &&
-                    shadow.hits(c.grownRegions[r * c.lights.size() + li]))
+                    Probe(s.b, c.lights[li].position - s.b, 1.0f)
+                        .hits(c.grownRegions[r * c.lights.size() + li]))
                     return true;
-        }
     }
     return false;
 }
@@ -177,16 +185,25 @@ TileTests tileTests(const MarkContext& c, const PixelRect& r, const TileSummary&
     tests.retint = !c.edit.retinted.empty();
     for (const PixelRect& f : c.footprints)
         if (f.x0 < r.x1 && r.x0 < f.x1 && f.y0 < r.y1 && r.y0 < f.y1) tests.footprint = true;
-    for (const Aabb& region : c.regions) {
-        if (c.shadows)
-            for (const CompiledLight& l : c.lights)
-                if (shadowsMayCross(t.hitBox, l, region)) tests.primaryShadow = true;
+    // Each slab test is preceded by the division-free light-cone test of its points.
+    auto coneMayContain = [&](std::size_t r, std::size_t li, const Aabb& points) {
+        return !points.empty() && c.cones[r * c.lights.size() + li].mayContain(
+                                      points.center(), 0.5f * glm::length(points.extent()));
+    };
+    for (std::size_t r = 0; r < c.regions.size(); ++r) {
+        const Aabb& region = c.regions[r];
+        if (c.shadows && !tests.primaryShadow)
+            for (std::size_t li = 0; li < c.lights.size(); ++li)
+                if (coneMayContain(r, li, t.hitBox) && shadowsMayCross(t.hitBox, c.lights[li], region))
+                    tests.primaryShadow = true;
         if (!t.anySpecular || tests.tree) continue;
         if (t.anyUnknown || t.anyEscape || segmentsMayCross(t.segmentStarts, t.segmentEnds, region))
             tests.tree = true;
-        if (c.shadows)
-            for (const CompiledLight& l : c.lights)
-                if (shadowsMayCross(t.segmentEnds, l, region)) tests.tree = true;
+        if (c.shadows && !tests.tree)
+            for (std::size_t li = 0; li < c.lights.size(); ++li)
+                if (coneMayContain(r, li, t.segmentEnds) &&
+                    shadowsMayCross(t.segmentEnds, c.lights[li], region))
+                    tests.tree = true;
     }
     if (tests.retint && t.anySpecular) tests.tree = true;
     return tests;
@@ -210,11 +227,11 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
         // (hit radius + light radius) of the centre-to-centre segment.
         const Vec3 p(hb);
         for (std::size_t li = 0; li < c.lights.size(); ++li) {
-            const Probe shadow(p, c.lights[li].position - p, 1.0f);
             for (std::size_t r = 0; r < c.regions.size(); ++r) {
                 if (!c.cones[r * c.lights.size() + li].mayContain(p, hb.w)) continue;
                 const Aabb& g = c.grownRegions[r * c.lights.size() + li];
-                if (shadow.hits(hb.w > 0.0f ? grown(g, hb.w) : g)) return true;
+                if (Probe(p, c.lights[li].position - p, 1.0f).hits(hb.w > 0.0f ? grown(g, hb.w) : g))
+                    return true;
             }
         }
     }

@@ -197,11 +197,15 @@ void RenderSession::run() {
         wake_.wait(lock, [&] { return stop_ || hasWorkLocked(); });
         if (stop_) return;
         Plan plan;
+        const auto planStart = std::chrono::steady_clock::now();
         if (!planLocked(plan)) continue;
+        const double planMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planStart).count();
         running_ = true;
         lock.unlock();
         PassInfo info;
         execute(plan, info);
+        info.planMs = planMs;
         lock.lock();
         running_ = false;
         const auto now = std::chrono::steady_clock::now();

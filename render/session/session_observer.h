@@ -19,7 +19,8 @@ enum class PassKind {
 struct PassInfo {
     PassKind kind = PassKind::Base;
     uint64_t generation = 0;
-    double ms = 0.0;               ///< Wall time from plan to last tile.
+    double ms = 0.0;               ///< Wall time of the tiles, first to last.
+    double planMs = 0.0;           ///< Time spent deciding the pass (under the lock).
     std::size_t tracedPixels = 0;  ///< Pixels whose camera rays were traced (or resolved).
     std::size_t totalPixels = 0;
     uint64_t rays = 0;
