@@ -241,11 +241,15 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
 }  // namespace
 
 std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
-                            const DeepFrame& frame, std::vector<uint8_t>& mask) {
+                            const DeepFrame& frame, std::vector<uint8_t>& mask,
+                            std::vector<uint8_t>* touchedBlocks) {
     const int w = frame.width, h = frame.height;
+    const std::size_t blockCount = std::size_t(frame.blocksX()) * std::size_t(frame.blocksY());
     mask.assign(frame.pixelCount(), 0);
+    if (touchedBlocks) touchedBlocks->assign(blockCount, 0);
     if (edit.everything) {
         std::fill(mask.begin(), mask.end(), 1);
+        if (touchedBlocks) touchedBlocks->assign(blockCount, 1);
         return mask.size();
     }
     if (edit.regions.empty() && edit.retinted.empty()) return 0;
@@ -292,6 +296,7 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                        blockMarked[std::size_t(ny * blocksX + nx)];
             }
         if (!near) return;
+        if (touchedBlocks) (*touchedBlocks)[std::size_t(b)] = 1;
         std::size_t local = 0;
         const int y1 = std::min(h, (by + 1) * B), x1 = std::min(w, (bx + 1) * B);
         for (int y = by * B; y < y1; ++y) {

@@ -24,8 +24,10 @@ PixelRect screenFootprint(const CameraModel& camera, const Aabb& box);
 /// `before`: the old and new footprints, pixels whose ray tree met a mirror or glass, pixels
 /// showing a retinted object, and, when shadows are traced, pixels whose shadow rays can cross
 /// the old or new bounds. Grown by one pixel so adaptive supersampling decisions stay exact.
-/// Runs in parallel; returns the number of pixels marked.
+/// Runs in parallel; returns the number of pixels marked. `touchedBlocks` (optional) gets 1
+/// for every 8x8 block in which the mask may be non-zero, so callers can skip the others.
 std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
-                            const DeepFrame& frame, std::vector<uint8_t>& mask);
+                            const DeepFrame& frame, std::vector<uint8_t>& mask,
+                            std::vector<uint8_t>* touchedBlocks = nullptr);
 
 }  // namespace rs

@@ -102,15 +102,29 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
     } else {
         SceneEdit edit = u.edit;
         if (!policy_.dirtyRegions) edit.everything = true;
-        marked = markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_);
-        for (std::size_t i = 0; i < frame_.pixelCount(); ++i) {
-            uint8_t f = uint8_t(frame_.flags[i] & ~kTracedLastUpdate);
-            if (dirtyMask_[i]) {
-                frame_.state[i] = kStale;
-                f = uint8_t((f & ~kDeferredValid) | kTracedLastUpdate);
+        marked = markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, &touchedBlocks_);
+        // Only blocks this edit or the previous one touched can change flags: the previous
+        // edit's re-traced overlay is cleared, this edit's pixels go stale.
+        if (lastTouchedBlocks_.size() != touchedBlocks_.size())
+            lastTouchedBlocks_.assign(touchedBlocks_.size(), 1);
+        const int B = DeepFrame::kBlock;
+        for (std::size_t b = 0; b < touchedBlocks_.size(); ++b) {
+            if (!touchedBlocks_[b] && !lastTouchedBlocks_[b]) continue;
+            const int bx = int(b % std::size_t(frame_.blocksX())) * B;
+            const int by = int(b / std::size_t(frame_.blocksX())) * B;
+            for (int y = by; y < std::min(frame_.height, by + B); ++y) {
+                for (int x = bx; x < std::min(frame_.width, bx + B); ++x) {
+                    const std::size_t i = frame_.index(x, y);
+                    uint8_t f = uint8_t(frame_.flags[i] & ~kTracedLastUpdate);
+                    if (dirtyMask_[i]) {
+                        frame_.state[i] = kStale;
+                        f = uint8_t((f & ~kDeferredValid) | kTracedLastUpdate);
+                    }
+                    frame_.flags[i] = f;
+                }
             }
-            frame_.flags[i] = f;
         }
+        lastTouchedBlocks_.swap(touchedBlocks_);
     }
     if (u.edit.focus != kNoObject) {
         const PixelRect r = screenFootprint(snapshot_->camera(), snapshot_->objectBounds(u.edit.focus));

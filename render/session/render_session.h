@@ -104,6 +104,8 @@ private:
     std::shared_ptr<const CompiledScene> snapshot_;
     DeepFrame frame_;
     std::vector<uint8_t> dirtyMask_;
+    std::vector<uint8_t> touchedBlocks_;      ///< Blocks the latest edit marked (scratch).
+    std::vector<uint8_t> lastTouchedBlocks_;  ///< Blocks whose overlay flags may be set.
     bool pendingResize_ = false;
     bool hasDocument_ = false;
 
