@@ -19,9 +19,9 @@ bool loadSceneOrReport(const std::string& path, SceneDocument& doc) {
 void applyRenderOverrides(const Arguments& args, RenderSettings& settings) {
     if (auto v = args.intValue("--width", 1, kMaxImageSide)) settings.width = *v;
     if (auto v = args.intValue("--height", 1, kMaxImageSide)) settings.height = *v;
-    if (auto v = args.intValue("--max-depth", 0, 1000)) settings.maxDepth = *v;
-    if (auto v = args.intValue("--shadow-samples", 0, 4096)) settings.shadowSamples = *v;
-    if (auto v = args.intValue("--supersampling", 1, 1024)) settings.supersampling = *v;
+    if (auto v = args.intValue("--max-depth", 0, kMaxDepthLimit)) settings.maxDepth = *v;
+    if (auto v = args.intValue("--shadow-samples", 0, kMaxSampleCount)) settings.shadowSamples = *v;
+    if (auto v = args.intValue("--supersampling", 1, kMaxSampleCount)) settings.supersampling = *v;
 }
 
 }  // namespace rs::cli

@@ -4,6 +4,7 @@
 #include "core/math.h"
 #include "snapshot/compiled_scene.h"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace rs {
@@ -41,7 +42,8 @@ struct TraceOptions {
     /// The full quality the scene's render settings ask for.
     static TraceOptions fromSettings(const RenderSettings& s) {
         TraceOptions o;
-        o.maxDepth = s.maxDepth;
+        // Documents built in code skip the reader's limit; never recurse past it.
+        o.maxDepth = std::min(s.maxDepth, kMaxDepthLimit);
         return o;
     }
 };

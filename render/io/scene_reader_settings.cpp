@@ -73,9 +73,10 @@ void readRenderSettings(SceneErrorSink& sink, const Json& json, RenderSettings& 
     EntryReader r(sink, json, "/render");
     readImageSide(r, "width", settings.width);
     readImageSide(r, "height", settings.height);
-    r.integer("max_depth", settings.maxDepth, 0, INT_MAX);
-    r.integer("shadow_samples", settings.shadowSamples, 0, INT_MAX);
-    r.integer("supersampling", settings.supersampling, 1, INT_MAX);
+    // Upper limits the format leaves open: beyond them a render overflows the stack or never ends.
+    r.integer("max_depth", settings.maxDepth, 0, kMaxDepthLimit);
+    r.integer("shadow_samples", settings.shadowSamples, 0, kMaxSampleCount);
+    r.integer("supersampling", settings.supersampling, 1, kMaxSampleCount);
     r.boolean("adaptive_supersampling", settings.adaptiveSupersampling);
     r.enumeration("tonemap", settings.tonemap,
                   {{"clamp", ToneMap::Clamp},

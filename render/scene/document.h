@@ -36,6 +36,11 @@ struct Camera {
     bool operator==(const Camera&) const = default;
 };
 
+/// Largest accepted max_depth: recursion deeper than this could overflow a worker's stack.
+inline constexpr int kMaxDepthLimit = 1000;
+/// Largest accepted shadow_samples and supersampling (per-pixel sample counts are 16-bit).
+inline constexpr int kMaxSampleCount = 4096;
+
 /// Render settings (scene-format.md, "render").
 struct RenderSettings {
     int width = 1280;

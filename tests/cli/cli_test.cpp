@@ -169,3 +169,29 @@ TEST_F(CliTest, GarbageSceneFiles_NeverCrash) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(CliTest, DeepRecursionBetweenMirrors_IsRefusedNotACrash) {
+    const std::string scene = write("mirrors.scene.json", R"({
+  "format": "raystudio-scene", "version": 1,
+  "camera": { "position": [0, 0, 0], "target": [0.3, 0, -1] },
+  "render": { "width": 8, "height": 8, "max_depth": 200000 },
+  "materials": [ { "name": "m", "diffuse": 0.0, "reflectivity": 1.0 } ],
+  "objects": [
+    { "name": "a", "type": "plane", "point": [0, 0, -2], "normal": [0, 0, 1], "material": "m" },
+    { "name": "b", "type": "plane", "point": [0, 0, 2], "normal": [0, 0, -1], "material": "m" } ]
+})");
+    CliRun r = cli("render " + scene + " -o " + path("x.png"));
+    EXPECT_EQ(r.exitCode, 2) << r.out;
+    EXPECT_NE(r.out.find("/render/max_depth"), std::string::npos) << r.out;
+    // The deepest accepted recursion renders (a mirror corridor bounces every ray 1000 times).
+    std::ifstream in(scene);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.find("200000"), 6, "1000");
+    const std::string deepest = write("deepest.scene.json", text);
+    r = cli("render " + deepest + " -o " + path("x.png"));
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+}
+
+}  // namespace
