@@ -21,10 +21,11 @@ Sets up RayStudio on Debian 12: installs the missing build dependencies with apt
 (only when some are missing), configures the release build once, builds it (incrementally
 on later runs), then:
 
-  run [SCENE]   open SCENE in the designer; until the designer is built, render SCENE with
-                raystudio-cli into build/release/<scene name>.png instead.
+  run [SCENE]   open SCENE in the designer; without a display (or a built designer),
+                render SCENE with raystudio-cli into build/release/<scene name>.png.
                 SCENE defaults to ${DEFAULT_SCENE}.
-  test          run the whole test suite (ctest) and exit with its status.
+  test          run the session tests under ThreadSanitizer (build/tsan), then the whole
+                test suite (ctest), and exit with the status.
   -h, --help    show this help.
 
 Works from any folder. Run as root, or as a user who may use sudo for apt-get.
