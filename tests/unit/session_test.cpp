@@ -30,6 +30,49 @@ float maxDiffToFullRender(RenderSession& session, const SceneDocument& doc) {
     return worst;
 }
 
+/// A small tetrahedron mesh built in code (no file), shared by the documents that use it.
+std::shared_ptr<const MeshData> tetrahedron() {
+    auto mesh = std::make_shared<MeshData>();
+    mesh->positions = {Vec3(0, 0.5f, 0), Vec3(-0.4f, -0.3f, 0.3f), Vec3(0.4f, -0.3f, 0.3f),
+                       Vec3(0, -0.3f, -0.4f)};
+    mesh->indices = {0, 1, 2, 0, 2, 3, 0, 3, 1, 1, 3, 2};
+    return mesh;
+}
+
+/// testRoom plus one object of every other kind: a rotated box, a rectangle, a mesh.
+SceneDocument mixedRoom(bool orthographic) {
+    SceneDocument doc = test::smallRoom(64, 48);
+    doc.render.shadowSamples = 2;
+    Object box;
+    box.name = "box";
+    box.material = "red";
+    box.geometry = BoxGeometry{Vec3(-0.3f), Vec3(0.3f)};
+    box.transform.translate = Vec3(-0.4f, -1.6f, -3.5f);
+    box.transform.rotate = Vec3(10, 35, 0);
+    doc.addObject(box);
+    Object panel;
+    panel.name = "panel";
+    panel.material = "mirror";
+    panel.geometry = RectangleGeometry{Vec3(2.0f, -1.0f, -6.0f), Vec3(0.6f, 0, 0.3f), Vec3(0, 0.6f, 0)};
+    doc.addObject(panel);
+    Object mesh;
+    mesh.name = "mesh";
+    mesh.material = "white";
+    MeshGeometry g;
+    g.file = "tetrahedron.obj";
+    g.data = tetrahedron();
+    g.smoothNormals = false;
+    mesh.geometry = g;
+    mesh.transform.translate = Vec3(0.8f, -1.5f, -3.2f);
+    mesh.transform.scale = Vec3(1.0f, 1.5f, 1.0f);
+    doc.addObject(mesh);
+    if (orthographic) {
+        doc.camera.projection = Projection::Orthographic;
+        doc.camera.orthoHeight = 5.0f;
+    }
+    return doc;
+}
+
 SceneDocument testRoom() {
     SceneDocument doc = test::smallRoom(64, 48);
     Light area;
@@ -84,8 +127,8 @@ void randomEdit(SceneDocument& doc, std::mt19937& rng) {
     }
 }
 
-void runRandomEdits(const InteractionPolicy& policy, uint32_t seed, bool adaptive) {
-    SceneDocument doc = testRoom();
+void runRandomEdits(const InteractionPolicy& policy, uint32_t seed, bool adaptive,
+                    SceneDocument doc = testRoom()) {
     doc.render.supersampling = 4;
     doc.render.adaptiveSupersampling = adaptive;
     RenderSession session(2);
@@ -148,6 +191,20 @@ TEST(RenderSession, RandomEdits_HardShadowsAndGovernor_FrameEqualsFullRender) {
     p.shadows = MovingShadows::HardOnly;
     p.governorTargetMs = 0.5;
     runRandomEdits(p, 6u, true);
+}
+
+TEST(RenderSession, RandomEdits_BoxesRectanglesMeshes_FrameEqualsFullRender) {
+    // Rotated boxes and meshes are traced in their own frame and refit as instances.
+    for (uint32_t seed : {21u, 22u}) runRandomEdits(InteractionPolicy{}, seed, true, mixedRoom(false));
+    InteractionPolicy shortcuts;
+    shortcuts.governorTargetMs = 0.0;
+    shortcuts.boxProxy = true;
+    shortcuts.resolution = MovingResolution::Half;
+    runRandomEdits(shortcuts, 23u, false, mixedRoom(false));
+}
+
+TEST(RenderSession, RandomEdits_OrthographicCamera_FrameEqualsFullRender) {
+    runRandomEdits(InteractionPolicy{}, 31u, true, mixedRoom(true));
 }
 
 TEST(RenderSession, RandomEdits_NoPolicy_FrameEqualsFullRender) {
