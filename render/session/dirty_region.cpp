@@ -214,9 +214,13 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
     if (tests.footprint)
         for (const PixelRect& f : c.footprints)
             if (x >= f.x0 && x < f.x1 && y >= f.y0 && y < f.y1) return true;
-    if (tests.retint)
+    if (tests.retint) {
         for (ObjectId id : c.edit.retinted)
             if (c.frame.id[i] == id) return true;
+        // The id is the centre sample's; a supersampled pixel also averages samples that
+        // may have hit a retinted object.
+        if (c.frame.sampleCount[i] > 0) return true;
+    }
     if (tests.tree && (c.frame.flags[i] & kTouchedSpecular)) {
         // A retinted object may be seen in a mirror: then any specular pixel.
         if (!c.edit.retinted.empty() || treeMayCross(c, i, tile)) return true;

@@ -22,7 +22,8 @@ PixelRect screenFootprint(const CameraModel& camera, const Aabb& box);
 
 /// Sets mask[i] = 1 for every pixel `edit` can change, given the frame as it was traced under
 /// `before`: the old and new footprints, pixels whose ray tree met a mirror or glass, pixels
-/// showing a retinted object, and, when shadows are traced, pixels whose shadow rays can cross
+/// showing a retinted object (any supersampled pixel, whose samples may have seen it), and,
+/// when shadows are traced, pixels whose shadow rays can cross
 /// the old or new bounds. Grown by one pixel so adaptive supersampling decisions stay exact.
 /// Runs in parallel; returns the number of pixels marked. `touchedBlocks` (optional) gets 1
 /// for every 8x8 block in which the mask may be non-zero, so callers can skip the others.
