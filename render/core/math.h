@@ -18,6 +18,19 @@ using Mat3 = glm::mat3;
 /// so a four-wide test gives the same bits as four scalar ones.
 using Float4 = float __attribute__((vector_size(16)));
 
+/// v / s, lane by lane in one packed division: the same bits as three scalar divisions, for
+/// about a third of the latency (divisions dominate the shading path).
+inline Vec3 divide(const Vec3& v, float s) {
+    const Float4 q = Float4{v.x, v.y, v.z, 1.0f} / Float4{s, s, s, 1.0f};
+    return Vec3(q[0], q[1], q[2]);
+}
+
+/// (1/v.x, 1/v.y, 1/v.z) in one packed division; the same bits as three scalar ones.
+inline Vec3 reciprocal(const Vec3& v) {
+    const Float4 q = Float4{1.0f, 1.0f, 1.0f, 1.0f} / Float4{v.x, v.y, v.z, 1.0f};
+    return Vec3(q[0], q[1], q[2]);
+}
+
 inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 inline constexpr float kPi = 3.14159265358979323846f;
 
@@ -33,7 +46,7 @@ struct Ray {
         Ray r;
         r.origin = o;
         r.dir = d;
-        r.invDir = Vec3(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
+        r.invDir = reciprocal(d);
         r.sign[0] = r.invDir.x < 0.0f;
         r.sign[1] = r.invDir.y < 0.0f;
         r.sign[2] = r.invDir.z < 0.0f;

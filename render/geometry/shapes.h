@@ -100,7 +100,7 @@ inline bool intersect(const SphereShape& s, const Ray& ray, float tmin, float tm
     if (!solveRecentredSphere(a, tProj, bHalf, c, tmin, tmax, t, offset)) return false;
     hit.t = t;
     // From the re-centred origin the hit point is computed with small numbers, hence accurately.
-    hit.n = (f + offset * ray.dir) / s.radius;
+    hit.n = divide(f + offset * ray.dir, s.radius);
     return true;
 }
 

@@ -15,17 +15,19 @@
 namespace rs {
 
 Color renderPixel(const WhittedIntegrator& integrator, const CameraModel& camera, int x, int y,
-                  int spp, TraceCounters& counters) {
+                  int spp, TraceCounters& counters, const RaySubset* subset) {
     if (spp <= 1) {
         Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
-        return integrator.traceCamera(ray, pixelSeed(x, y, 0), counters);
+        return integrator.traceCamera(ray, pixelSeed(x, y, 0), counters, nullptr, nullptr,
+                                      nullptr, subset);
     }
     Color sum(0.0f);
     const uint32_t patternSeed = pixelSeed(x, y, 0x5eed);
     for (int k = 0; k < spp; ++k) {
         Vec3 o = pixelSampleOffset(k, spp, patternSeed);
         Ray ray = camera.generateRay(float(x) + o.x, float(y) + o.y);
-        sum += integrator.traceCamera(ray, pixelSeed(x, y, k), counters);
+        sum += integrator.traceCamera(ray, pixelSeed(x, y, k), counters, nullptr, nullptr,
+                                      nullptr, subset);
     }
     return sum / float(spp);
 }
@@ -49,6 +51,15 @@ bool needsSupersampling(const Color* colors, const ObjectId* ids, const Vec3* no
         }
     }
     return false;
+}
+
+void cullTile(const CompiledScene& scene, int x0, int y0, int x1, int y1, RaySubset& subset) {
+    Vec3 axis;
+    float halfAngle;
+    if (scene.camera().tileCone(x0, y0, x1, y1, axis, halfAngle))
+        scene.cull(scene.camera().origin(), axis, halfAngle, subset);
+    else
+        subset = RaySubset{};
 }
 
 namespace {
@@ -107,20 +118,22 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
         // the full pattern when supersampling everywhere. Ids come from the centre ray.
         result.cancelled = !forEachTile(w, h, options, result.rays,
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
+                RaySubset subset;
+                cullTile(scene, x0, y0, x1, y1, subset);
                 for (int y = y0; y < y1 && !cancelled(); ++y) {
                     for (int x = x0; x < x1; ++x) {
                         const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
                         PrimaryInfo info;
                         Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
                         if (spp == 1 || adaptive) {
-                            result.image.pixels[i] =
-                                integrator.traceCamera(ray, pixelSeed(x, y, 0), counters, &info);
+                            result.image.pixels[i] = integrator.traceCamera(
+                                ray, pixelSeed(x, y, 0), counters, &info, nullptr, nullptr, &subset);
                         } else {
                             info = PrimaryInfo{};
                             SurfaceHit hit;
-                            if (scene.intersect(ray, 0.0f, kInfinity, hit)) info.id = hit.id;
+                            if (scene.intersect(ray, 0.0f, kInfinity, hit, &subset)) info.id = hit.id;
                             result.image.pixels[i] =
-                                renderPixel(integrator, camera, x, y, spp, counters);
+                                renderPixel(integrator, camera, x, y, spp, counters, &subset);
                         }
                         result.ids[i] = info.id;
                         if (adaptive) normals[i] = info.normal;
@@ -133,11 +146,14 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
         ImageRgb refined = result.image;
         result.cancelled = !forEachTile(w, h, options, result.rays,
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
+                RaySubset subset;
+                cullTile(scene, x0, y0, x1, y1, subset);
                 for (int y = y0; y < y1 && !cancelled(); ++y)
                     for (int x = x0; x < x1; ++x)
                         if (needsSupersampling(result.image.pixels.data(), result.ids.data(),
                                                normals.data(), w, h, x, y))
-                            refined.at(x, y) = renderPixel(integrator, camera, x, y, spp, counters);
+                            refined.at(x, y) =
+                                renderPixel(integrator, camera, x, y, spp, counters, &subset);
             });
         result.image = std::move(refined);
     });

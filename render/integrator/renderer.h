@@ -37,8 +37,13 @@ inline uint32_t pixelSeed(int x, int y, int k) {
 }
 
 /// The supersampled colour of one pixel: `spp` samples on the pattern of pixelSampleOffset.
+/// `subset` (cullTile of a tile holding the pixel) may narrow the camera rays' tests.
 Color renderPixel(const WhittedIntegrator& integrator, const CameraModel& camera, int x, int y,
-                  int spp, TraceCounters& counters);
+                  int spp, TraceCounters& counters, const RaySubset* subset = nullptr);
+
+/// What the camera rays through pixels [x0, x1) x [y0, y1) can hit (an invalid subset, which
+/// tests everything, for an orthographic camera or a scene too large to list).
+void cullTile(const CompiledScene& scene, int x0, int y0, int x1, int y1, RaySubset& subset);
 
 /// True when the 1-sample pixel at (x, y) differs from a neighbour in object id, normal or
 /// colour enough to deserve adaptive supersampling.

@@ -18,8 +18,8 @@ WhittedIntegrator::WhittedIntegrator(const CompiledScene& scene, const TraceOpti
 
 Color WhittedIntegrator::traceCamera(const Ray& ray, uint32_t seed, TraceCounters& counters,
                                      PrimaryInfo* primary, RecordSink* sink,
-                                     SegmentSink* segments) const {
-    return trace(ray, 0, 1.0f, seed, counters, Outputs{primary, sink, segments});
+                                     SegmentSink* segments, const RaySubset* subset) const {
+    return trace(ray, 0, 1.0f, seed, counters, Outputs{primary, sink, segments, subset});
 }
 
 Color WhittedIntegrator::resolveDeferred(const ShadingRecord& record,
@@ -38,7 +38,8 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, uint32_t
                                TraceCounters& counters, const Outputs& out) const {
     ++counters.rays;
     SurfaceHit hit;
-    const bool found = scene_.intersect(ray, 0.0f, kInfinity, hit);
+    const bool found = scene_.intersect(ray, 0.0f, kInfinity, hit,
+                                        depth == 0 ? out.cameraSubset : nullptr);
     if (out.segments && depth > 0) {
         SegmentSink& s = *out.segments;
         if (s.count < s.capacity)
@@ -170,7 +171,7 @@ Color WhittedIntegrator::directLight(const Vec3& p, const Vec3& n, const Vec3& t
             Vec3 toLight = q - p;
             const float dist = glm::length(toLight);
             if (dist <= 0.0f) continue;
-            toLight /= dist;
+            toLight = divide(toLight, dist);
             // A light below the surface's horizon adds neither term (so no highlight leaks
             // through from behind), and needs no shadow ray.
             const float nl = glm::dot(n, toLight);
@@ -182,7 +183,8 @@ Color WhittedIntegrator::directLight(const Vec3& p, const Vec3& n, const Vec3& t
             }
             if (traceShadows) {
                 ++counters.shadowRays;
-                if (scene_.occluded(Ray::make(origin, toLight), 0.0f, dist - eps_)) continue;
+                if (scene_.occludedToLight(li, Ray::make(origin, toLight), 0.0f, dist - eps_))
+                    continue;
             }
             lightSum += diffuseColor * nl + Color(spec);
         }

@@ -91,10 +91,11 @@ public:
 
     /// Radiance arriving along a camera ray. `seed` decorrelates light sampling per pixel
     /// sample; `primary` (optional) receives the first hit and whether the tree met a mirror
-    /// or glass; `sink` receives shading records when shadows are Deferred.
+    /// or glass; `sink` receives shading records when shadows are Deferred. `subset` (from
+    /// CompiledScene::cull for a cone holding this ray) narrows the camera ray's own test.
     Color traceCamera(const Ray& ray, uint32_t seed, TraceCounters& counters,
                       PrimaryInfo* primary = nullptr, RecordSink* sink = nullptr,
-                      SegmentSink* segments = nullptr) const;
+                      SegmentSink* segments = nullptr, const RaySubset* subset = nullptr) const;
 
     /// What a Deferred trace's unshadowed light terms at `record` are off by: shadowed minus
     /// unshadowed, added to the pixel to finish it.
@@ -106,6 +107,7 @@ private:
         PrimaryInfo* primary;
         RecordSink* records;
         SegmentSink* segments;
+        const RaySubset* cameraSubset;
     };
     Color trace(const Ray& ray, int depth, float weight, uint32_t seed, TraceCounters& counters,
                 const Outputs& out) const;

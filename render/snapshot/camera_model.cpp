@@ -1,6 +1,7 @@
 // Camera frame set-up and projection of world points to the image (for dirty regions, picking).
 #include "snapshot/camera_model.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rs {
@@ -17,6 +18,21 @@ CameraModel::CameraModel(const Camera& camera, int width, int height)
     halfWidth_ = halfHeight_ * aspect;
     invWidth_ = 1.0f / float(width);
     invHeight_ = 1.0f / float(height);
+}
+
+bool CameraModel::tileCone(int x0, int y0, int x1, int y1, Vec3& axis, float& halfAngle) const {
+    if (orthographic_) return false;
+    // The directions through the tile's image rectangle are the convex combinations of its
+    // corners' directions, so a cone around the corners holds them all.
+    Vec3 corners[4];
+    int k = 0;
+    for (int y : {y0, y1})
+        for (int x : {x0, x1}) corners[k++] = generateRay(float(x), float(y)).dir;
+    axis = glm::normalize(corners[0] + corners[1] + corners[2] + corners[3]);
+    float cosMin = 1.0f;
+    for (const Vec3& c : corners) cosMin = std::min(cosMin, glm::dot(axis, c));
+    halfAngle = std::acos(std::clamp(cosMin, -1.0f, 1.0f));
+    return true;
 }
 
 bool CameraModel::project(const Vec3& p, float& px, float& py) const {

@@ -20,6 +20,10 @@ public:
         if (orthographic_) return Ray::make(origin_ + right_ * u + up_ * v, forward_);
         return Ray::make(origin_, glm::normalize(forward_ + right_ * u + up_ * v));
     }
+    /// The cone (unit axis, half-angle in radians) holding every perspective ray through the
+    /// pixels [x0, x1) x [y0, y1), any point of them; false for an orthographic camera, whose
+    /// rays share a direction instead of an origin.
+    bool tileCone(int x0, int y0, int x1, int y1, Vec3& axis, float& halfAngle) const;
     /// The image point where world point `p` projects; false when it is behind the camera.
     bool project(const Vec3& p, float& px, float& py) const;
 

@@ -6,6 +6,7 @@
 #include "geometry/shapes.h"
 #include "scene/document.h"
 #include "snapshot/camera_model.h"
+#include "snapshot/light_buffer.h"
 
 #include <memory>
 #include <string>
@@ -86,6 +87,20 @@ struct SphereBlock4 {
     uint32_t prim[4];  ///< Index into primitives().
 };
 
+/// The planes and (when the scene is tested flat) spheres that rays from one origin inside a
+/// cone can hit, in scene order: a tile's camera rays test only these (CompiledScene::cull).
+/// Invalid when the scene has more than fits; then every ray tests everything.
+struct RaySubset {
+    static constexpr int kMaxPlaneBlocks = 8;
+    static constexpr int kMaxSphereBlocks = 4;
+    PlaneBlock4 planes[kMaxPlaneBlocks];
+    uint32_t planeIndex[4 * kMaxPlaneBlocks];  ///< Index into planes() of each lane.
+    SphereBlock4 spheres[kMaxSphereBlocks];
+    int planeBlocks = 0;
+    int sphereBlocks = 0;
+    bool valid = false;
+};
+
 /// Render-ready snapshot. Built by value from a document; holds no reference into it, so the
 /// document can be edited while workers trace an older snapshot.
 class CompiledScene {
@@ -109,8 +124,19 @@ public:
 
     /// Closest hit with t in (tmin, tmax).
     bool intersect(const Ray& ray, float tmin, float tmax, SurfaceHit& hit) const;
+    /// The same closest hit for a ray from `subset`'s origin and cone, testing fewer shapes.
+    bool intersect(const Ray& ray, float tmin, float tmax, SurfaceHit& hit,
+                   const RaySubset* subset) const;
+    /// Fills `out` with what rays from `origin` within `halfAngle` of unit `axis` can hit at
+    /// t > 0 (conservatively: a shape left out cannot give a hit in any such ray's exact test).
+    void cull(const Vec3& origin, const Vec3& axis, float halfAngle, RaySubset& out) const;
     /// True when anything lies on the ray with t in (tmin, tmax) (shadow rays).
     bool occluded(const Ray& ray, float tmin, float tmax) const;
+    /// occluded() for a shadow ray toward light `light` cast as WhittedIntegrator does: from
+    /// a shading point p offset by epsilon() along the unit normal, toward a point of the light,
+    /// stopping epsilon() short of it. Same answer, but only the objects in the light buffer
+    /// cell of the ray's origin are tested.
+    bool occludedToLight(std::size_t light, const Ray& ray, float tmin, float tmax) const;
 
     const CameraModel& camera() const { return camera_; }
     const RenderSettings& settings() const { return settings_; }
@@ -128,8 +154,10 @@ public:
 private:
     bool intersectPrimitive(const Primitive& p, const Ray& ray, float tmin, float tmax,
                             ShapeHit& hit) const;
-    bool intersectFlat(const Ray& ray, float tmin, float tmax, SurfaceHit& hit, bool found) const;
+    bool intersectFlat(const Ray& ray, float tmin, float tmax, SurfaceHit& hit, bool found,
+                       const SphereBlock4* blocks, std::size_t count) const;
     bool occludedFlat(const Ray& ray, float tmin, float tmax) const;
+    bool occludedByPlanes(const Ray& ray, float tmin, float tmax) const;
     /// Fills the query-only arrays below from planes_ and primitives_; call after changing them.
     void prepareQueries();
     void computeEpsilon();
@@ -146,6 +174,8 @@ private:
     std::vector<PlaneBlock4> planeBlocks_;
     bool flat_ = false;
     std::vector<SphereBlock4> sphereBlocks_;  ///< Only when flat_.
+    /// One per light when there are few enough bounded objects (kLightBufferLimit), else none.
+    std::vector<LightBuffer> lightBuffers_;
     float epsilon_ = 1e-4f;
     Aabb sceneBounds_;
 };
