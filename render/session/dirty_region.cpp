@@ -128,6 +128,7 @@ struct MarkContext {
     std::vector<Aabb> regions;       ///< The edit's regions, overlapping ones merged.
     std::vector<ShadowCone> cones;   ///< Per (region, light), region-major.
     std::vector<Aabb> grownRegions;  ///< Per (region, light): grown by the light's radius.
+    bool segments = true;  ///< Test secondary segments against the regions themselves.
 };
 
 /// Merges overlapping boxes (a drag step's old and new bounds nearly coincide): fewer tests,
@@ -159,6 +160,7 @@ bool treeMayCross(const MarkContext& c, std::size_t i, int tile) {
         span.expand(s.a);
         if (!s.escapes) span.expand(s.b);
         for (const Aabb& region : c.regions) {
+            if (!c.segments) break;
             if (!s.escapes && !span.overlaps(region)) continue;
             const Probe ray = s.escapes ? Probe(s.a, s.b, kInfinity) : Probe(s.a, s.b - s.a, 1.0f);
             if (ray.hits(region)) return true;
@@ -197,7 +199,8 @@ TileTests tileTests(const MarkContext& c, const PixelRect& r, const TileSummary&
                 if (coneMayContain(r, li, t.hitBox) && shadowsMayCross(t.hitBox, c.lights[li], region))
                     tests.primaryShadow = true;
         if (!t.anySpecular || tests.tree) continue;
-        if (t.anyUnknown || t.anyEscape || segmentsMayCross(t.segmentStarts, t.segmentEnds, region))
+        if (t.anyUnknown ||
+            (c.segments && (t.anyEscape || segmentsMayCross(t.segmentStarts, t.segmentEnds, region))))
             tests.tree = true;
         if (c.shadows && !tests.tree)
             for (std::size_t li = 0; li < c.lights.size(); ++li)
@@ -246,7 +249,7 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
 
 std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                             const DeepFrame& frame, std::vector<uint8_t>& mask,
-                            std::vector<uint8_t>* touchedBlocks) {
+                            std::vector<uint8_t>* touchedBlocks, MarkScope scope) {
     const int w = frame.width, h = frame.height;
     const std::size_t blockCount = std::size_t(frame.blocksX()) * std::size_t(frame.blocksY());
     mask.assign(frame.pixelCount(), 0);
@@ -259,8 +262,14 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     if (edit.regions.empty() && edit.retinted.empty()) return 0;
 
     MarkContext c{edit, frame, after.lights(), {}, after.settings().shadowSamples > 0, {}, {}, {}};
+    if (scope == MarkScope::WithoutShadows) c.shadows = false;
+    if (scope == MarkScope::ShadowsOnly) {
+        if (!c.shadows || !edit.retinted.empty()) return 0;  // (retints are never deferred)
+        c.segments = false;
+    }
     c.regions = mergeOverlapping(edit.regions);
-    for (const Aabb& box : edit.regions) c.footprints.push_back(screenFootprint(after.camera(), box));
+    if (scope != MarkScope::ShadowsOnly)
+        for (const Aabb& box : edit.regions) c.footprints.push_back(screenFootprint(after.camera(), box));
     for (const Aabb& box : c.regions) {
         for (const CompiledLight& l : c.lights) {
             c.cones.push_back(makeCone(l, box));

@@ -20,6 +20,17 @@ struct PixelRect {
 /// by a pixel; the whole image when the box reaches behind the camera.
 PixelRect screenFootprint(const CameraModel& camera, const Aabb& box);
 
+/// Which of an edit's effects markDirtyPixels looks for.
+enum class MarkScope {
+    All,
+    /// Everything but shadows: while dragging with shadows off or deferred, a shadow the
+    /// object casts is not shown anyway, so those pixels wait until release (thesis 3.3).
+    WithoutShadows,
+    /// Only pixels whose shadow rays (from first or later hits) can cross the edit's regions:
+    /// what WithoutShadows left for the release.
+    ShadowsOnly,
+};
+
 /// Sets mask[i] = 1 for every pixel `edit` can change, given the frame as it was traced under
 /// `before`: the old and new footprints, pixels whose ray tree met a mirror or glass, pixels
 /// showing a retinted object (any supersampled pixel, whose samples may have seen it), and,
@@ -29,6 +40,7 @@ PixelRect screenFootprint(const CameraModel& camera, const Aabb& box);
 /// for every 8x8 block in which the mask may be non-zero, so callers can skip the others.
 std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                             const DeepFrame& frame, std::vector<uint8_t>& mask,
-                            std::vector<uint8_t>* touchedBlocks = nullptr);
+                            std::vector<uint8_t>* touchedBlocks = nullptr,
+                            MarkScope scope = MarkScope::All);
 
 }  // namespace rs

@@ -75,6 +75,11 @@ SessionStats RenderSession::stats() const {
     return stats_;
 }
 
+namespace {
+/// More regions than this are merged into their bounding box (a long, winding drag).
+constexpr std::size_t kMaxDeferredShadowRegions = 64;
+}  // namespace
+
 uint64_t RenderSession::update(const SceneDocument& doc) {
     std::lock_guard updating(updateMutex_);
     const auto start = std::chrono::steady_clock::now();
@@ -97,12 +102,29 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
         pendingResize_ = true;
 
     std::size_t marked = 0;
+    if (pendingResize_ || u.edit.everything || !policy_.dirtyRegions)
+        deferredShadowRegions_.clear();  // Every pixel is traced again anyway.
     if (pendingResize_) {
         marked = std::size_t(doc.render.width) * std::size_t(doc.render.height);
     } else {
         SceneEdit edit = u.edit;
         if (!policy_.dirtyRegions) edit.everything = true;
-        marked = markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, &touchedBlocks_);
+        // While dragging with shadows off or deferred, the moving object's shadow is not on
+        // screen: its pixels are marked once, on release, instead of on every step.
+        const bool deferShadows = interacting_ && !edit.everything &&
+                                  (policy_.shadows == MovingShadows::Off ||
+                                   policy_.shadows == MovingShadows::Deferred);
+        marked = markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, &touchedBlocks_,
+                                 deferShadows ? MarkScope::WithoutShadows : MarkScope::All);
+        if (deferShadows) {
+            deferredShadowRegions_.insert(deferredShadowRegions_.end(), edit.regions.begin(),
+                                          edit.regions.end());
+            if (deferredShadowRegions_.size() > kMaxDeferredShadowRegions) {
+                Aabb all;
+                for (const Aabb& b : deferredShadowRegions_) all.expand(b);
+                deferredShadowRegions_.assign(1, all);
+            }
+        }
         // Only blocks this edit or the previous one touched can change flags: the previous
         // edit's re-traced overlay is cleared, this edit's pixels go stale.
         if (lastTouchedBlocks_.size() != touchedBlocks_.size())
@@ -159,6 +181,25 @@ void RenderSession::endInteraction() {
         std::lock_guard lock(mutex_);
         interacting_ = false;
         moving_ = kNoObject;
+        if (!deferredShadowRegions_.empty() && snapshot_ && !pendingResize_) {
+            // The shadows the drag moved: pixels still showing an older shadow go back to
+            // stale. Pixels traced during the drag already wait for refinement (and keep
+            // their deferred records); tiles still in flight trace this same snapshot, so a
+            // commit landing after this is current too.
+            std::unique_lock frameLock(frameMutex_);
+            SceneEdit edit;
+            edit.regions.swap(deferredShadowRegions_);
+            if (markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, nullptr,
+                                MarkScope::ShadowsOnly) > 0) {
+                for (std::size_t i = 0; i < dirtyMask_.size(); ++i) {
+                    if (dirtyMask_[i] && frame_.state[i] >= kBase) {
+                        frame_.state[i] = kStale;
+                        frame_.flags[i] = uint8_t(frame_.flags[i] & ~kDeferredValid);
+                    }
+                }
+            }
+        }
+        deferredShadowRegions_.clear();
     }
     wake_.notify_all();
 }

@@ -106,6 +106,9 @@ private:
     std::vector<uint8_t> dirtyMask_;
     std::vector<uint8_t> touchedBlocks_;      ///< Blocks the latest edit marked (scratch).
     std::vector<uint8_t> lastTouchedBlocks_;  ///< Blocks whose overlay flags may be set.
+    /// Regions of this interaction's edits whose shadow effects were left unmarked
+    /// (MarkScope::WithoutShadows); endInteraction marks them.
+    std::vector<Aabb> deferredShadowRegions_;
     bool pendingResize_ = false;
     bool hasDocument_ = false;
 

@@ -260,6 +260,39 @@ TEST(RenderSession, DeferredShadows_RecordsWhileMovingAndResolvesExactlyAfterRel
     EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
 }
 
+TEST(RenderSession, DeferredShadows_MarkTheMovedShadowOnceOnRelease) {
+    // While dragging with deferred shadows, pixels that only the ball's shadow changes are
+    // not shown differently, so steps do not mark them; release marks them and the frame
+    // ends exact. With full shadows while moving, every step marks them.
+    auto stepMarks = [](MovingShadows shadows, float& diff) {
+        SceneDocument doc = testRoom();
+        RenderSession session(2);
+        InteractionPolicy p;
+        p.shadows = shadows;
+        p.governorTargetMs = 0.0;
+        session.setPolicy(p);
+        session.update(doc);
+        EXPECT_TRUE(session.waitUntilComplete(60s));
+        session.beginInteraction(doc.objects[2].id);
+        std::size_t marked = 0;
+        for (int step = 0; step < 4; ++step) {
+            doc.objects[2].transform.translate.x += 0.1f;
+            EXPECT_TRUE(session.waitForPass(session.update(doc), 30s));
+            marked += session.stats().lastDirtyPixels;
+        }
+        session.endInteraction();
+        EXPECT_TRUE(session.waitUntilComplete(60s));
+        diff = maxDiffToFullRender(session, doc);
+        return marked;
+    };
+    float deferredDiff = 1.0f, fullDiff = 1.0f;
+    const std::size_t deferred = stepMarks(MovingShadows::Deferred, deferredDiff);
+    const std::size_t full = stepMarks(MovingShadows::Full, fullDiff);
+    EXPECT_LT(deferred, full);
+    EXPECT_LE(deferredDiff, 1e-5f);
+    EXPECT_LE(fullDiff, 1e-5f);
+}
+
 TEST(RenderSession, HalfResolutionWhileMoving_TracesAQuarterOfTheDirtyPixels) {
     SceneDocument doc = testRoom();
     RenderSession session(2);
