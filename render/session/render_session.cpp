@@ -248,10 +248,11 @@ bool RenderSession::hasWorkLocked() const {
 
 void RenderSession::run() {
     std::unique_lock lock(mutex_);
+    Plan plan;
     for (;;) {
         wake_.wait(lock, [&] { return stop_ || hasWorkLocked(); });
         if (stop_) return;
-        Plan plan;
+        plan.reset();
         const auto planStart = std::chrono::steady_clock::now();
         if (!planLocked(plan)) continue;
         const double planMs =

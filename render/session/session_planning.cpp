@@ -5,31 +5,61 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cstring>
 
 namespace rs {
 
 namespace {
 
+constexpr uint64_t kOnes = 0x0101010101010101ull;
+constexpr uint64_t kHighs = 0x8080808080808080ull;
+
+/// True when one of the eight bytes of `w` is below `n` (n <= 128; bit-twiddling "hasless").
+inline bool anyByteBelow(uint64_t w, uint8_t n) { return ((w - kOnes * n) & ~w & kHighs) != 0; }
+inline bool anyByteEqual(uint64_t w, uint8_t v) { return anyByteBelow(w ^ (kOnes * v), 1); }
+
+/// Whether any of the `n` bytes at `p` passes `test` (a word test, then a byte test for the
+/// tail), eight at a time.
+template <class WordTest, class ByteTest>
+bool anyInRow(const uint8_t* p, int n, WordTest&& word, ByteTest&& byte) {
+    int x = 0;
+    for (; x + 8 <= n; x += 8) {
+        uint64_t w;
+        std::memcpy(&w, p + x, 8);
+        if (word(w)) return true;
+    }
+    for (; x < n; ++x)
+        if (byte(p[x])) return true;
+    return false;
+}
+
 bool tileHasCandidate(const RenderSession::Plan& plan, const PixelRect& r) {
+    const int n = r.x1 - r.x0;
     for (int y = r.y0; y < r.y1; ++y) {
-        for (int x = r.x0; x < r.x1; ++x) {
-            const std::size_t i = std::size_t(y) * std::size_t(plan.width) + std::size_t(x);
-            const uint8_t s = plan.state[i];
-            switch (plan.kind) {
-                case PassKind::Interactive:
-                    if (s == kStale) {
-                        if (!plan.interleaved) return true;
-                        const int bx = x / plan.step, by = y / plan.step;
-                        if (((bx + by + plan.parity) & 1) == 0) return true;
-                    }
-                    break;
-                case PassKind::Base:
-                    if (s < kBase) return true;
-                    break;
-                case PassKind::Supersample:
-                    if (s == kBase) return true;
-                    break;
+        const uint8_t* row = plan.state.data() + std::size_t(y) * std::size_t(plan.width) + r.x0;
+        switch (plan.kind) {
+            case PassKind::Interactive: {
+                const bool anyStale = anyInRow(
+                    row, n, [](uint64_t w) { return anyByteEqual(w, kStale); },
+                    [](uint8_t s) { return s == kStale; });
+                if (!anyStale) break;
+                if (!plan.interleaved) return true;
+                for (int x = r.x0; x < r.x1; ++x) {
+                    const int bx = x / plan.step, by = y / plan.step;
+                    if (row[x - r.x0] == kStale && ((bx + by + plan.parity) & 1) == 0) return true;
+                }
+                break;
             }
+            case PassKind::Base:
+                if (anyInRow(row, n, [](uint64_t w) { return anyByteBelow(w, kBase); },
+                             [](uint8_t s) { return s < kBase; }))
+                    return true;
+                break;
+            case PassKind::Supersample:
+                if (anyInRow(row, n, [](uint64_t w) { return anyByteEqual(w, kBase); },
+                             [](uint8_t s) { return s == kBase; }))
+                    return true;
+                break;
         }
     }
     return false;
@@ -53,11 +83,18 @@ bool RenderSession::planLocked(Plan& plan) {
     plan.height = frame_.height;
     plan.spp = std::max(1, settings.supersampling);
 
+    // Counted in chunks with 32-bit sums, which the compiler vectorises.
     std::size_t stale = 0, belowBase = 0, belowFinal = 0;
-    for (uint8_t s : frame_.state) {
-        stale += s == kStale;
-        belowBase += s < kBase;
-        belowFinal += s < kFinal;
+    for (std::size_t c0 = 0; c0 < frame_.state.size(); c0 += 65536) {
+        const std::size_t c1 = std::min(frame_.state.size(), c0 + 65536);
+        uint32_t st = 0, bb = 0, bf = 0;
+        for (std::size_t i = c0; i < c1; ++i) {
+            const uint8_t s = frame_.state[i];
+            st += s == kStale;
+            bb += s < kBase;
+            bf += s < kFinal;
+        }
+        stale += st, belowBase += bb, belowFinal += bf;
     }
     const uint8_t target = targetStateLocked();
     const TraceOptions full = TraceOptions::fromSettings(settings);
@@ -65,9 +102,12 @@ bool RenderSession::planLocked(Plan& plan) {
         plan.kind = PassKind::Interactive;
         InteractionPolicy effective = policy_;
         if (policy_.governorTargetMs > 0.0) {
-            // The frame also pays for the edit itself (diff, refit, dirty marking): budget
-            // the pass with what is left of the target.
-            const double budget = std::max(0.0, policy_.governorTargetMs - stats_.lastUpdateMs);
+            // The frame also pays for the edit itself (diff, refit, dirty marking) and for
+            // planning the pass: budget the tracing with what is left of the target, less a
+            // tenth kept for scheduling jitter, so frames meet the target, not just average it.
+            const double budget =
+                std::max(0.0, 0.9 * policy_.governorTargetMs - stats_.lastUpdateMs -
+                                  stats_.lastInteractivePass.planMs);
             plan.governorLevel = governor_.choose(policy_, stale, budget);
             effective = Governor::policyForLevel(policy_, plan.governorLevel);
         }
