@@ -44,9 +44,6 @@ namespace {
 /// (measured: the room's 8 spheres, two SIMD blocks, cost less than the walk over 7 nodes).
 constexpr std::size_t kFlatLimit = 16;
 
-/// Up to this many bounded objects get a light buffer per light (built on every snapshot, so
-/// also on every drag step: 64 objects and 1536 cells cost about 0.1 ms per light).
-constexpr std::size_t kLightBufferLimit = 64;
 
 /// Distances to four planes, with the operations of intersect(PlaneShape) in the same order, so
 /// t is bit-identical. A ray parallel to a plane gets +-inf or NaN here, which the open-range
@@ -91,16 +88,20 @@ void CompiledScene::prepareQueries() {
     }
     // Flat only when every primitive is a world sphere: measured, testing boxes and meshes on
     // every ray (glass-and-mirrors, mesh scenes) is 12-27% slower than the BVH walk.
+    sphereBlocks_.clear();
+    flat_ = primitives_.size() <= kFlatLimit;
+    for (const Primitive& p : primitives_)
+        flat_ = flat_ && !p.hasFrame && std::holds_alternative<SphereShape>(p.shape);
+    // Light buffers where they pay (measured): with a few world spheres a shadow ray then
+    // tests about one shape. With boxes or meshes the BVH's any-hit walk was 7-13% faster
+    // than testing a cell's list (soft-shadows, glass-and-mirrors), so those keep it.
     lightBuffers_.clear();
-    if (primitives_.size() <= kLightBufferLimit) {
+    if (flat_) {
         std::vector<BoundingSphere> spheres;
         spheres.reserve(primitives_.size());
         for (const Primitive& p : primitives_) {
-            const SphereShape* s = std::get_if<SphereShape>(&p.shape);
-            if (s && !p.hasFrame)
-                spheres.push_back({s->center, s->radius});
-            else
-                spheres.push_back({p.worldBounds.center(), 0.5f * glm::length(p.worldBounds.extent())});
+            const SphereShape& s = std::get<SphereShape>(p.shape);
+            spheres.push_back({s.center, s.radius});
         }
         std::vector<BufferPlane> planes;
         planes.reserve(planes_.size());
@@ -109,10 +110,6 @@ void CompiledScene::prepareQueries() {
             lightBuffers_.emplace_back(l.position, l.radius + 4.0f * epsilon_, spheres, planes);
     }
 
-    sphereBlocks_.clear();
-    flat_ = primitives_.size() <= kFlatLimit;
-    for (const Primitive& p : primitives_)
-        flat_ = flat_ && !p.hasFrame && std::holds_alternative<SphereShape>(p.shape);
     if (!flat_) return;
     for (std::size_t i = 0; i < primitives_.size(); ++i) {
         const SphereShape& s = std::get<SphereShape>(primitives_[i].shape);
