@@ -129,7 +129,31 @@ struct MarkContext {
     std::vector<ShadowCone> cones;   ///< Per (region, light), region-major.
     std::vector<Aabb> grownRegions;  ///< Per (region, light): grown by the light's radius.
     bool segments = true;  ///< Test secondary segments against the regions themselves.
+    const CameraModel* camera = nullptr;
+    float lightSlack = 0.0f;  ///< Rounding allowance of the light-facing test (scene scale).
 };
+
+/// Whether a changed light can add to pixel i: unless the pixel sees only one shading point
+/// (no mirror or glass in its tree, one sample) and every changed light sphere lies wholly
+/// below that point's horizon, where the integrator adds nothing (n . l <= 0 for every
+/// sample), the pixel is marked. Background pixels see no light.
+bool lightMayChange(const MarkContext& c, std::size_t i) {
+    const DeepFrame& f = c.frame;
+    if (f.id[i] == kNoObject && f.sampleCount[i] == 0) return false;
+    const glm::vec4 hb = f.hitBound[i];
+    if ((f.flags[i] & (kTouchedSpecular | kTreeUnknown)) || f.sampleCount[i] > 0 || hb.w != 0.0f)
+        return true;
+    const Vec3 p(hb);
+    // The integrator faces the normal toward the incoming camera ray.
+    const Vec3 toEye = c.camera->orthographic() ? -c.camera->forward() : c.camera->origin() - p;
+    const Vec3 n = f.normal[i];
+    const float facing = glm::dot(n, toEye);
+    if (std::abs(facing) <= 1e-4f * glm::length(toEye)) return true;  // Grazing: either side.
+    const Vec3 ns = facing > 0.0f ? n : -n;
+    for (const LightSphere& l : c.edit.lights)
+        if (glm::dot(ns, l.position - p) > -(l.radius + c.lightSlack)) return true;
+    return false;
+}
 
 /// Merges overlapping boxes (a drag step's old and new bounds nearly coincide): fewer tests,
 /// and the union still contains both.
@@ -178,13 +202,14 @@ bool treeMayCross(const MarkContext& c, std::size_t i, int tile) {
 
 /// Which per-pixel tests a tile needs; all false: no pixel of the tile can be affected.
 struct TileTests {
-    bool footprint = false, retint = false, primaryShadow = false, tree = false;
-    bool any() const { return footprint || retint || primaryShadow || tree; }
+    bool footprint = false, retint = false, primaryShadow = false, tree = false, light = false;
+    bool any() const { return footprint || retint || primaryShadow || tree || light; }
 };
 
 TileTests tileTests(const MarkContext& c, const PixelRect& r, const TileSummary& t) {
     TileTests tests;
     tests.retint = !c.edit.retinted.empty();
+    tests.light = !c.edit.lights.empty();
     for (const PixelRect& f : c.footprints)
         if (f.x0 < r.x1 && r.x0 < f.x1 && f.y0 < r.y1 && r.y0 < f.y1) tests.footprint = true;
     // Each slab test is preceded by the division-free light-cone test of its points.
@@ -228,6 +253,7 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
         // A retinted object may be seen in a mirror: then any specular pixel.
         if (!c.edit.retinted.empty() || treeMayCross(c, i, tile)) return true;
     }
+    if (tests.light && lightMayChange(c, i)) return true;
     const glm::vec4 hb = c.frame.hitBound[i];
     if (tests.primaryShadow && hb.w >= 0.0f) {
         // Any segment from the hit points to any point of a light stays within
@@ -259,12 +285,15 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
         if (touchedBlocks) touchedBlocks->assign(blockCount, 1);
         return mask.size();
     }
-    if (edit.regions.empty() && edit.retinted.empty()) return 0;
+    if (!edit.traced()) return 0;
 
     MarkContext c{edit, frame, after.lights(), {}, after.settings().shadowSamples > 0, {}, {}, {}};
+    c.camera = &after.camera();
+    c.lightSlack = 1e-4f * std::max(1.0f, glm::length(after.sceneBounds().extent()));
     if (scope == MarkScope::WithoutShadows) c.shadows = false;
     if (scope == MarkScope::ShadowsOnly) {
-        if (!c.shadows || !edit.retinted.empty()) return 0;  // (retints are never deferred)
+        // Retints and light edits are never deferred.
+        if (!c.shadows || !edit.retinted.empty() || !edit.lights.empty()) return 0;
         c.segments = false;
     }
     c.regions = mergeOverlapping(edit.regions);

@@ -91,7 +91,7 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
     std::unique_lock frameLock(frameMutex_);  // No tile commits while the generation moves.
     doc_ = doc;
     hasDocument_ = true;
-    if (!u.edit.everything && u.edit.regions.empty() && u.edit.retinted.empty()) {
+    if (!u.edit.traced()) {
         snapshot_ = u.snapshot;  // Nothing traced changed (names, tone mapping, ...).
         return generation_.load();
     }

@@ -17,15 +17,31 @@ bool sameTracedSettings(RenderSettings a, RenderSettings b) {
     return a == b;
 }
 
-bool sameLights(const std::vector<Light>& a, const std::vector<Light>& b) {
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        if (a[i].id != b[i].id || a[i].type != b[i].type || a[i].position != b[i].position ||
-            a[i].color != b[i].color || a[i].intensity != b[i].intensity ||
-            (a[i].type == LightType::Sphere && a[i].radius != b[i].radius))
-            return false;
+bool sameLight(const Light& a, const Light& b) {
+    return a.id == b.id && a.type == b.type && a.position == b.position && a.color == b.color &&
+           a.intensity == b.intensity && (a.type != LightType::Sphere || a.radius == b.radius);
+}
+
+LightSphere sphereOf(const Light& l) {
+    return {l.position, l.type == LightType::Sphere ? l.radius : 0.0f};
+}
+
+/// The spheres of every light whose contribution may differ: changed lights (old and new), and
+/// from the first added, removed or reordered light on, all of them, because a light's index
+/// seeds its samples.
+std::vector<LightSphere> changedLights(const std::vector<Light>& before,
+                                       const std::vector<Light>& after) {
+    std::vector<LightSphere> out;
+    const std::size_t common = std::min(before.size(), after.size());
+    std::size_t i = 0;
+    for (; i < common && before[i].id == after[i].id; ++i) {
+        if (sameLight(before[i], after[i])) continue;
+        out.push_back(sphereOf(before[i]));
+        out.push_back(sphereOf(after[i]));
     }
-    return true;
+    for (std::size_t k = i; k < before.size(); ++k) out.push_back(sphereOf(before[k]));
+    for (std::size_t k = i; k < after.size(); ++k) out.push_back(sphereOf(after[k]));
+    return out;
 }
 
 bool sameMaterialData(Material a, const Material& b) {
@@ -49,9 +65,9 @@ SceneUpdate updateScene(const SceneDocument& before,
     }
     edit.resized = before.render.width != after.render.width ||
                    before.render.height != after.render.height;
-    if (!(before.camera == after.camera) || !sameTracedSettings(before.render, after.render) ||
-        !sameLights(before.lights, after.lights))
+    if (!(before.camera == after.camera) || !sameTracedSettings(before.render, after.render))
         edit.everything = true;
+    edit.lights = changedLights(before.lights, after.lights);
     edit.displayOnly = !edit.everything && (before.render.tonemap != after.render.tonemap ||
                                             before.render.exposure != after.render.exposure);
 
@@ -110,7 +126,7 @@ SceneUpdate updateScene(const SceneDocument& before,
         if (isPlane(*o) && o->visible) edit.everything = true;
     }
 
-    if (edit.everything || structural || materialListChanged) {
+    if (edit.everything || structural || materialListChanged || !edit.lights.empty()) {
         update.snapshot = std::make_shared<const CompiledScene>(after, beforeSnapshot.get());
     } else if (!moved.empty() || !edit.retinted.empty()) {
         update.snapshot = std::make_shared<const CompiledScene>(beforeSnapshot->refitted(after, moved));

@@ -9,6 +9,12 @@
 
 namespace rs {
 
+/// A light as far as what it can reach goes: centre and radius (0 for a point light).
+struct LightSphere {
+    Vec3 position;
+    float radius;
+};
+
 /// What an edit changed, in the terms dirty regions need.
 struct SceneEdit {
     bool everything = false;   ///< Camera, settings, lights, planes...: re-trace every pixel.
@@ -16,9 +22,14 @@ struct SceneEdit {
     bool resized = false;      ///< Image size changed.
     std::vector<Aabb> regions;       ///< Old and new world bounds of changed bounded objects.
     std::vector<ObjectId> retinted;  ///< Objects whose material (or its definition) changed.
+    /// Old and new spheres of changed lights (moved, recoloured, added, removed); a pixel
+    /// none of them can light at any of its shading points keeps its colour.
+    std::vector<LightSphere> lights;
     ObjectId focus = kNoObject;      ///< An object the edit is about, for tile priority.
     bool refitted = false;           ///< The snapshot was refitted, not rebuilt.
-    bool any() const { return everything || displayOnly || !regions.empty() || !retinted.empty(); }
+    /// Anything to re-trace: marking can skip the edit otherwise.
+    bool traced() const { return everything || !regions.empty() || !retinted.empty() || !lights.empty(); }
+    bool any() const { return displayOnly || traced(); }
 };
 
 /// A new snapshot and the edit that leads to it.

@@ -107,8 +107,22 @@ void randomEdit(SceneDocument& doc, std::mt19937& rng) {
         case 5:  // Object switches material (diffuse <-> mirror <-> glass).
             if (Object* o = randomObject(doc, rng)) o->material = doc.materials[rng() % doc.materials.size()].name;
             break;
-        case 6:  // Light moves.
-            doc.lights[rng() % doc.lights.size()].position += Vec3(0.3f * u(rng), 0.0f, 0.3f * u(rng));
+        case 6:  // Light edits: move, brightness, add, remove.
+            switch (rng() % 4) {
+                case 0:
+                    doc.lights[rng() % doc.lights.size()].position += Vec3(0.3f * u(rng), 0.0f, 0.3f * u(rng));
+                    break;
+                case 1:
+                    doc.lights[rng() % doc.lights.size()].intensity *= 1.0f + 0.5f * u(rng) * u(rng);
+                    break;
+                case 2:
+                    test::addPointLight(doc, "fill " + std::to_string(doc.nextId),
+                                        Vec3(2.0f * u(rng), 1.0f + u(rng), -3.0f + u(rng)), 0.3f);
+                    break;
+                default:
+                    if (doc.lights.size() > 1) doc.lights.erase(doc.lights.begin() + long(rng() % doc.lights.size()));
+                    break;
+            }
             break;
         case 7:  // Add or remove an object.
             if (rng() % 2 && doc.objects.size() > 3) {
@@ -291,6 +305,37 @@ TEST(RenderSession, DeferredShadows_MarkTheMovedShadowOnceOnRelease) {
     EXPECT_LT(deferred, full);
     EXPECT_LE(deferredDiff, 1e-5f);
     EXPECT_LE(fullDiff, 1e-5f);
+}
+
+TEST(RenderSession, LightEdits_RetraceOnlyPixelsTheLightCanReach) {
+    // A second light below the floor and behind the back wall: neither faces it, so moving
+    // or dimming it re-traces the balls (and what sees them), not the floor or the wall.
+    SceneDocument doc = test::smallRoom(64, 48);
+    const ObjectId under = test::addPointLight(doc, "under", Vec3(0.5f, -3.0f, -9.0f), 0.5f);
+    RenderSession session(2);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    const std::size_t total = std::size_t(doc.render.width) * std::size_t(doc.render.height);
+    for (int k = 0; k < 2; ++k) {
+        Light* l = nullptr;
+        for (Light& candidate : doc.lights)
+            if (candidate.id == under) l = &candidate;
+        ASSERT_NE(l, nullptr);
+        if (k == 0) l->position.x += 0.4f;
+        else l->intensity = 0.8f;
+        session.update(doc);
+        const std::size_t marked = session.stats().lastDirtyPixels;
+        EXPECT_GT(marked, 0u);
+        EXPECT_LT(marked, total / 2) << "edit " << k;
+        ASSERT_TRUE(session.waitUntilComplete(60s));
+        EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f) << "edit " << k;
+    }
+    // The key light above faces nearly everything.
+    doc.lights[0].position.x += 0.3f;
+    session.update(doc);
+    EXPECT_GT(session.stats().lastDirtyPixels, total / 2);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
 }
 
 TEST(RenderSession, HalfResolutionWhileMoving_TracesAQuarterOfTheDirtyPixels) {
