@@ -183,7 +183,7 @@ Color WhittedIntegrator::directLight(const Vec3& p, const Vec3& n, const Vec3& t
             }
             if (traceShadows) {
                 ++counters.shadowRays;
-                if (scene_.occludedToLight(li, Ray::make(origin, toLight), 0.0f, dist - eps_))
+                if (scene_.occludedToLight(li, origin, toLight, 0.0f, dist - eps_))
                     continue;
             }
             lightSum += diffuseColor * nl + Color(spec);

@@ -133,10 +133,11 @@ public:
     /// True when anything lies on the ray with t in (tmin, tmax) (shadow rays).
     bool occluded(const Ray& ray, float tmin, float tmax) const;
     /// occluded() for a shadow ray toward light `light` cast as WhittedIntegrator does: from
-    /// a shading point p offset by epsilon() along the unit normal, toward a point of the light,
-    /// stopping epsilon() short of it. Same answer, but only the objects in the light buffer
-    /// cell of the ray's origin are tested.
-    bool occludedToLight(std::size_t light, const Ray& ray, float tmin, float tmax) const;
+    /// a shading point p offset by epsilon() along the unit normal, toward a point of the light
+    /// (unit `dir`), stopping epsilon() short of it; tmin >= 0. Same answer, but only the
+    /// objects in the light buffer cell of the ray's origin are tested.
+    bool occludedToLight(std::size_t light, const Vec3& origin, const Vec3& dir, float tmin,
+                         float tmax) const;
 
     const CameraModel& camera() const { return camera_; }
     const RenderSettings& settings() const { return settings_; }
@@ -174,6 +175,7 @@ private:
     std::vector<PlaneBlock4> planeBlocks_;
     bool flat_ = false;
     std::vector<SphereBlock4> sphereBlocks_;  ///< Only when flat_.
+    std::vector<SphereShape> flatSpheres_;    ///< primitives_'s spheres, only when flat_.
     /// One per light when there are few enough bounded objects (kLightBufferLimit), else none.
     std::vector<LightBuffer> lightBuffers_;
     float epsilon_ = 1e-4f;

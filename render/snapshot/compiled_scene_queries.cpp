@@ -96,12 +96,14 @@ void CompiledScene::prepareQueries() {
     // tests about one shape. With boxes or meshes the BVH's any-hit walk was 7-13% faster
     // than testing a cell's list (soft-shadows, glass-and-mirrors), so those keep it.
     lightBuffers_.clear();
+    flatSpheres_.clear();
     if (flat_) {
         std::vector<BoundingSphere> spheres;
         spheres.reserve(primitives_.size());
         for (const Primitive& p : primitives_) {
             const SphereShape& s = std::get<SphereShape>(p.shape);
             spheres.push_back({s.center, s.radius});
+            flatSpheres_.push_back(s);
         }
         std::vector<BufferPlane> planes;
         planes.reserve(planes_.size());
@@ -281,17 +283,32 @@ bool CompiledScene::occluded(const Ray& ray, float tmin, float tmax) const {
     return occludedByPlanes(ray, tmin, tmax);
 }
 
-bool CompiledScene::occludedToLight(std::size_t light, const Ray& ray, float tmin,
-                                    float tmax) const {
-    if (light >= lightBuffers_.size()) return occluded(ray, tmin, tmax);
-    ShapeHit sh;
-    const int hit = lightBuffers_[light].anyHit(ray.origin, [&](uint32_t item) {
-        // planeDistances mirrors the scalar plane test, so the answer is the same bit for bit.
-        if (item & LightBuffer::kPlaneBit)
-            return rs::intersect(planes_[item & ~LightBuffer::kPlaneBit].shape, ray, tmin, tmax, sh);
-        return intersectPrimitive(primitives_[item], ray, tmin, tmax, sh);
+bool CompiledScene::occludedToLight(std::size_t light, const Vec3& origin, const Vec3& dir,
+                                    float tmin, float tmax) const {
+    // Buffers exist only for flat scenes: the candidates are world spheres and planes, tested
+    // with the operations of intersect(SphereShape) and intersect(PlaneShape) up to the
+    // answer, so it is the same bit for bit (and no Ray with reciprocals is needed).
+    if (light >= lightBuffers_.size()) return occluded(Ray::make(origin, dir), tmin, tmax);
+    const float a = glm::dot(dir, dir);
+    const int hit = lightBuffers_[light].anyHit(origin, [&](uint32_t item) {
+        if (item & LightBuffer::kPlaneBit) {
+            const PlaneShape& s = planes_[item & ~LightBuffer::kPlaneBit].shape;
+            const float denom = glm::dot(dir, s.normal);
+            const float num = glm::dot(s.point - origin, s.normal);
+            // Opposite signs make t negative (or NaN): a miss for tmin >= 0, without dividing.
+            if (std::signbit(num) != std::signbit(denom) || denom == 0.0f) return false;
+            const float t = num / denom;
+            return t > tmin && t < tmax;
+        }
+        const SphereShape& s = flatSpheres_[item];
+        const float tProj = glm::dot(s.center - origin, dir) / a;
+        const Vec3 f = (origin - s.center) + tProj * dir;
+        const float bHalf = glm::dot(f, dir);
+        const float c = glm::dot(f, f) - s.radius * s.radius;
+        float t, offset;
+        return solveRecentredSphere(a, tProj, bHalf, c, tmin, tmax, t, offset);
     });
-    return hit < 0 ? occluded(ray, tmin, tmax) : hit == 1;
+    return hit < 0 ? occluded(Ray::make(origin, dir), tmin, tmax) : hit == 1;
 }
 
 bool CompiledScene::occludedByPlanes(const Ray& ray, float tmin, float tmax) const {

@@ -56,7 +56,7 @@ public:
     };
 
     /// Calls `test(item)` for the entries a shadow ray leaving `origin` toward the light may
-    /// meet, until one returns true. Returns 1 when one did, 0 when none did, and -1 when the
+    /// meet, in list order (objects, then planes), until one returns true. Returns 1 when one did, 0 when none did, and -1 when the
     /// origin is the light itself (no direction to look up; the caller must test everything).
     template <class Test>
     int anyHit(const Vec3& origin, Test&& test) const {
@@ -73,8 +73,11 @@ public:
         }
         if (!(m > 0.0f)) return -1;  // also NaN
         const float distance2 = v.x * v.x + v.y * v.y + v.z * v.z;
+        // One reciprocal for both coordinates: a rounding step off the quotients moves a
+        // direction by far less than the cells' angular margin.
+        const float inv = 1.0f / m;
         const std::size_t cell =
-            std::size_t((face * kResolution + cellIndex(b / m)) * kResolution + cellIndex(a / m));
+            std::size_t((face * kResolution + cellIndex(b * inv)) * kResolution + cellIndex(a * inv));
         for (uint32_t i = start_[cell], end = start_[cell + 1]; i < end; ++i) {
             const Entry& e = entries_[i];
             if (distance2 >= e.minDistance2 && test(e.item)) return 1;

@@ -96,7 +96,7 @@ void expectSameShadowAnswers(const CompiledScene& scene, std::mt19937& rng, int 
         if (!shadowRay(scene, p, n, light.position + randomInBall(rng, light.radius), ray, tmax))
             continue;
         const bool expected = scene.occluded(ray, 0.0f, tmax);
-        ASSERT_EQ(scene.occludedToLight(0, ray, 0.0f, tmax), expected)
+        ASSERT_EQ(scene.occludedToLight(0, ray.origin, ray.dir, 0.0f, tmax), expected)
             << "camera ray " << k << " from (" << p.x << ", " << p.y << ", " << p.z << ")";
         occludedCount += expected;
         ++total;
@@ -147,7 +147,7 @@ TEST(LightBuffer, RaysGrazingASphereGetTheSameAnswer) {
             float tmax;
             if (!shadowRay(scene, p, n, l.position, ray, tmax)) continue;
             const bool expected = scene.occluded(ray, 0.0f, tmax);
-            ASSERT_EQ(scene.occludedToLight(0, ray, 0.0f, tmax), expected) << "case " << c;
+            ASSERT_EQ(scene.occludedToLight(0, ray.origin, ray.dir, 0.0f, tmax), expected) << "case " << c;
             hits += expected;
             ++total;
         }
