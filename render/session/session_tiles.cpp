@@ -57,6 +57,9 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
     const int w = plan.width;
     std::size_t traced = 0;
     uint64_t rays = 0;
+    // Camera rays of this tile test only what their cone can hit (bit-identical hits).
+    RaySubset subset;
+    cullTile(scene, r.x0, r.y0, r.x1, r.y1, subset);
     ShadingRecord sinkBuffer[kRecordsPerPixel];
     TreeSegment segmentBuffer[kSegmentsPerPixel];
     // Keeps a pixel's secondary segments for dirty marking; an overflow flags the tree unknown.
@@ -73,7 +76,8 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
         PrimaryInfo info;
         SegmentSink segSink{segmentBuffer, kSegmentsPerPixel, 0, false};
         const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
-        const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info, nullptr, &segSink);
+        const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info, nullptr,
+                                               &segSink, &subset);
         PixelOut o = primaryPixel(i, c, ray, info, tc, plan.spp == 1 ? kFinal : kBase,
                                   uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | extraFlags));
         o.base = c;
@@ -104,7 +108,7 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                     const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
                     const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info,
                                                            plan.deferredRecords ? &sink : nullptr,
-                                                           &segSink);
+                                                           &segSink, &subset);
                     const bool complete = plan.deferredRecords && !sink.overflow;
                     PixelOut o = primaryPixel(
                         i, c, ray, info, tc, kInteractive,
@@ -132,7 +136,8 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                 TraceCounters tc;
                 PrimaryInfo info;
                 const Ray ray = camera.generateRay(0.5f * float(x + bx1), 0.5f * float(y + by1));
-                const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info);
+                const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info, nullptr,
+                                                       nullptr, &subset);
                 for (int yy = y; yy < by1; ++yy) {
                     for (int xx = x; xx < bx1; ++xx) {
                         out.push_back(primaryPixel(
@@ -203,7 +208,7 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                     const Ray ray = camera.generateRay(float(x) + off.x, float(y) + off.y);
                     PrimaryInfo info;
                     sum += integrator.traceCamera(ray, pixelSeed(x, y, k), tc, &info, nullptr,
-                                                  &segSink);
+                                                  &segSink, &subset);
                     if (info.id != kNoObject) o.hitBound = growBound(o.hitBound, ray.at(info.depth));
                     if (info.touchedSpecular) o.flags |= kTouchedSpecular;
                 }
