@@ -32,6 +32,13 @@ public:
     const Vec3& origin() const { return origin_; }
     const Vec3& forward() const { return forward_; }
     bool orthographic() const { return orthographic_; }
+    // The terms of generateRay, for tracers that build many rays at once.
+    const Vec3& right() const { return right_; }
+    const Vec3& up() const { return up_; }
+    float halfWidth() const { return halfWidth_; }
+    float halfHeight() const { return halfHeight_; }
+    float invWidth() const { return invWidth_; }
+    float invHeight() const { return invHeight_; }
 
 private:
     Vec3 origin_{0.0f}, forward_{0.0f, 0.0f, -1.0f}, right_{1.0f, 0.0f, 0.0f}, up_{0.0f, 1.0f, 0.0f};

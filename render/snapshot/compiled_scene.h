@@ -152,6 +152,20 @@ public:
     /// Bounds of everything bounded, lights included.
     const Aabb& sceneBounds() const { return sceneBounds_; }
 
+    // The query layout, for tracers that test many rays at once (PacketTracer).
+    /// True when the bounded objects are a few world spheres, tested without the BVH.
+    bool testsFlat() const { return flat_; }
+    /// planes() four at a time.
+    const std::vector<PlaneBlock4>& planeBlocks() const { return planeBlocks_; }
+    /// primitives() four at a time, only when testsFlat().
+    const std::vector<SphereBlock4>& sphereBlocks() const { return sphereBlocks_; }
+    /// The sphere of each primitive, only when testsFlat().
+    const std::vector<SphereShape>& flatSpheres() const { return flatSpheres_; }
+    /// The shadow-ray candidates around light `light` (index into lights()), or null.
+    const LightBuffer* lightBuffer(std::size_t light) const {
+        return light < lightBuffers_.size() ? &lightBuffers_[light] : nullptr;
+    }
+
 private:
     bool intersectPrimitive(const Primitive& p, const Ray& ray, float tmin, float tmax,
                             ShapeHit& hit) const;

@@ -55,11 +55,10 @@ public:
         float minDistance2;
     };
 
-    /// Calls `test(item)` for the entries a shadow ray leaving `origin` toward the light may
-    /// meet, in list order (objects, then planes), until one returns true. Returns 1 when one did, 0 when none did, and -1 when the
-    /// origin is the light itself (no direction to look up; the caller must test everything).
-    template <class Test>
-    int anyHit(const Vec3& origin, Test&& test) const {
+    /// The list a shadow ray leaving `origin` toward the light looks up, and the origin's
+    /// squared distance to the light (for the entries' minDistance2). False when the origin is
+    /// the light itself: there is no direction to look up, and everything must be tested.
+    bool cell(const Vec3& origin, std::span<const Entry>& entries, float& distance2) const {
         const Vec3 v = origin - light_;
         const float ax = std::abs(v.x), ay = std::abs(v.y), az = std::abs(v.z);
         int face;
@@ -71,17 +70,28 @@ public:
         } else {
             face = 4 + (v.z < 0.0f), m = az, a = v.x, b = v.y;
         }
-        if (!(m > 0.0f)) return -1;  // also NaN
-        const float distance2 = v.x * v.x + v.y * v.y + v.z * v.z;
+        if (!(m > 0.0f)) return false;  // also NaN
+        distance2 = v.x * v.x + v.y * v.y + v.z * v.z;
         // One reciprocal for both coordinates: a rounding step off the quotients moves a
         // direction by far less than the cells' angular margin.
         const float inv = 1.0f / m;
-        const std::size_t cell =
+        const std::size_t c =
             std::size_t((face * kResolution + cellIndex(b * inv)) * kResolution + cellIndex(a * inv));
-        for (uint32_t i = start_[cell], end = start_[cell + 1]; i < end; ++i) {
-            const Entry& e = entries_[i];
+        entries = std::span<const Entry>(entries_.data() + start_[c], start_[c + 1] - start_[c]);
+        return true;
+    }
+
+    /// Calls `test(item)` for the entries a shadow ray leaving `origin` toward the light may
+    /// meet, in list order (objects, then planes), until one returns true. Returns 1 when one
+    /// did, 0 when none did, and -1 when the origin is the light itself (no direction to look
+    /// up; the caller must test everything).
+    template <class Test>
+    int anyHit(const Vec3& origin, Test&& test) const {
+        std::span<const Entry> entries;
+        float distance2;
+        if (!cell(origin, entries, distance2)) return -1;
+        for (const Entry& e : entries)
             if (distance2 >= e.minDistance2 && test(e.item)) return 1;
-        }
         return 0;
     }
 
