@@ -2,6 +2,7 @@
 #include "integrator/renderer.h"
 
 #include "core/parallel.h"
+#include "integrator/packet_tracer.h"
 #include "integrator/sampling.h"
 
 #include <tbb/blocked_range2d.h>
@@ -116,10 +117,21 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
     arenaExecute(arena, [&] {
         // Pass 1: one centre sample per pixel (all the image needs without supersampling), or
         // the full pattern when supersampling everywhere. Ids come from the centre ray.
+        const bool packets =
+            (spp == 1 || adaptive) && PacketTracer::profitable() && PacketTracer::supports(scene);
+        const PacketTracer packetTracer(scene);
         result.cancelled = !forEachTile(w, h, options, result.rays,
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
                 RaySubset subset;
                 cullTile(scene, x0, y0, x1, y1, subset);
+                if (packets) {
+                    // The same bits as the loop below, eight rays at a time.
+                    if (!cancelled())
+                        packetTracer.traceTile(x0, y0, x1, y1, subset, std::size_t(w),
+                                               result.image.pixels.data(), result.ids.data(),
+                                               adaptive ? normals.data() : nullptr, counters);
+                    return;
+                }
                 for (int y = y0; y < y1 && !cancelled(); ++y) {
                     for (int x = x0; x < x1; ++x) {
                         const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);

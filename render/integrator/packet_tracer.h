@@ -1,0 +1,51 @@
+// Full-quality tracing of flat scenes eight rays at a time, bit-identical to the integrator.
+#pragma once
+
+#include "integrator/whitted.h"
+
+#include <cstddef>
+
+namespace rs {
+
+/// Traces a tile's centre rays in packets of eight: the camera rays first, then each level
+/// of the tile's reflection and refraction rays, every level intersected and shaded in
+/// eight-lane SIMD. Each lane does WhittedIntegrator's operations in the same order, and the
+/// ray trees are summed leaves-up the way trace() adds them, so every colour, id and normal
+/// is bit-identical to traceCamera's at the scene's render settings (tested); the session,
+/// which needs its per-pixel outputs and quality policies, keeps the scalar integrator.
+///
+/// Why: the scalar integrator walks one ray tree after another, and its data-dependent
+/// branches (which shape, which material, shadowed or not) leave the core waiting on one
+/// chain of divisions and square roots at a time. Eight neighbouring rays share those steps.
+class PacketTracer {
+public:
+    /// True when `scene` qualifies: its bounded objects are tested flat (a few world spheres)
+    /// and no light is sampled as a sphere (point lights, or no shadow samples).
+    static bool supports(const CompiledScene& scene);
+
+    /// True when this CPU runs the eight-lane kernel in single registers (AVX2 on x86-64), so
+    /// it beats the scalar integrator; elsewhere the kernel is still exact, only slower.
+    static bool profitable();
+
+    /// Which machine code traces: the fastest this CPU runs, or the baseline build (so tests
+    /// check both on an AVX2 machine).
+    enum class Kernel { Fastest, Baseline };
+
+    explicit PacketTracer(const CompiledScene& scene, Kernel kernel = Kernel::Fastest);
+
+    /// Traces the centre ray of each pixel in [x0, x1) x [y0, y1) at the scene's render
+    /// settings. Writes the colour, the first hit's id and (when `normals` is not null) its
+    /// normal, as traceCamera's PrimaryInfo has them, into image-sized row-major arrays of
+    /// width `stride`. `subset` is cullTile's for the same pixels.
+    void traceTile(int x0, int y0, int x1, int y1, const RaySubset& subset, std::size_t stride,
+                   Color* colors, ObjectId* ids, Vec3* normals, TraceCounters& counters) const;
+
+private:
+    const CompiledScene& scene_;
+    Kernel kernel_;
+    int maxDepth_;
+    bool shadows_;  ///< Shadow rays are traced (shadow_samples > 0).
+    float eps_;
+};
+
+}  // namespace rs
