@@ -3,7 +3,7 @@
 // into namespace baseline, so one source gives both machine-code versions. It works on raw
 // arrays only: templates from other headers (std::vector) are instantiated outside the
 // AVX2 region, so no code the rest of the program can reach is compiled for AVX2.
-// Expects PathRay and PathNode to be declared.
+// Expects PathNode, RayArrays and PacketTables to be declared.
 
 constexpr int kLanes = 8;
 /// Eight floats (GCC/Clang vector extension): lane-wise IEEE arithmetic, one AVX register or
@@ -54,6 +54,55 @@ inline unsigned bits(I8 m) {
 
 inline F8 select(I8 m, F8 a, F8 b) { return m ? a : b; }
 inline I8 select(I8 m, I8 a, I8 b) { return m ? a : b; }
+
+/// base[index[k]] in lane k (every index valid).
+inline F8 gather(const float* base, I8 index) {
+#if defined(RS_PACKET_AVX2)
+    return F8(_mm256_i32gather_ps(base, __m256i(index), 4));
+#else
+    return F8{base[index[0]], base[index[1]], base[index[2]], base[index[3]],
+              base[index[4]], base[index[5]], base[index[6]], base[index[7]]};
+#endif
+}
+
+inline I8 gather(const int32_t* base, I8 index) {
+#if defined(RS_PACKET_AVX2)
+    return I8(_mm256_i32gather_epi32(base, __m256i(index), 4));
+#else
+    return I8{base[index[0]], base[index[1]], base[index[2]], base[index[3]],
+              base[index[4]], base[index[5]], base[index[6]], base[index[7]]};
+#endif
+}
+
+/// Which table entry each lane reads, and whether all lanes that matter read the same one:
+/// neighbouring rays mostly hit the same shape, and one broadcast is far cheaper than a gather.
+struct Lookup {
+    I8 index;
+    bool uniform;
+    int32_t first;
+};
+
+/// `index` restricted to the lanes of `mask` (the others may read anything).
+inline Lookup lookup(I8 index, I8 mask) {
+    const unsigned m = bits(mask);
+    if (!m) return {index, true, 0};
+    const int32_t first = index[__builtin_ctz(m)];
+    return {index, (bits(index == first) & m) == m, first};
+}
+
+inline F8 fetch(const float* table, const Lookup& l) {
+    return l.uniform ? splat(table[l.first]) : gather(table, l.index);
+}
+
+inline I8 fetch(const int32_t* table, const Lookup& l) {
+    return l.uniform ? splatI(table[l.first]) : gather(table, l.index);
+}
+
+inline F8 load(const float* p) {
+    F8 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
 
 /// Eight rays, structure of arrays.
 struct Rays8 {
@@ -113,14 +162,15 @@ struct Hits8 {
 /// The tracer's SIMD loops over raw arrays; PacketTracer::traceTile drives them.
 class PacketKernel {
 public:
-    PacketKernel(const CompiledScene& scene, int maxDepth, bool shadows, float eps)
-        : scene_(scene), maxDepth_(maxDepth), shadows_(shadows), eps_(eps) {}
+    PacketKernel(const CompiledScene& scene, const PacketTables& tables, int maxDepth,
+                 bool shadows, float eps)
+        : scene_(scene), tables_(tables), maxDepth_(maxDepth), shadows_(shadows), eps_(eps) {}
 
     /// The camera rays through pixels [x, x + count) of row y (count <= 8), with
     /// CameraModel::generateRay's operations, traced as level 0.
     void traceCamera(int x, int y, int count, const RaySubset* subset, PathNode* nodes,
-                     PathRay* next, std::size_t& nextCount, ObjectId* ids, Vec3* normals,
-                     TraceCounters& counters) const {
+                     const RayArrays& next, std::size_t& nextCount, ObjectId* ids,
+                     Vec3* normals, TraceCounters& counters) const {
         const CameraModel& camera = scene_.camera();
         const Vec3 o = camera.origin(), f = camera.forward(), right = camera.right(),
                    up = camera.up();
@@ -146,15 +196,14 @@ public:
         traceBatch(r, count, 0, subset, nodes, next, nextCount, ids, normals, counters);
     }
 
-    /// Secondary rays rays[0, count) (count <= 8) of tree level `level`.
-    void traceSecondary(const PathRay* rays, int count, int level, PathNode* nodes,
-                        PathRay* next, std::size_t& nextCount, TraceCounters& counters) const {
+    /// Secondary rays [i, i + count) of `rays` (count <= 8, readable up to i + 8) of tree
+    /// level `level`.
+    void traceSecondary(const RayArrays& rays, std::size_t i, int count, int level,
+                        PathNode* nodes, const RayArrays& next, std::size_t& nextCount,
+                        TraceCounters& counters) const {
         Rays8 r;
-        for (int k = 0; k < kLanes; ++k) {
-            const PathRay& ray = rays[k < count ? k : 0];
-            r.ox[k] = ray.o.x, r.oy[k] = ray.o.y, r.oz[k] = ray.o.z;
-            r.dx[k] = ray.d.x, r.dy[k] = ray.d.y, r.dz[k] = ray.d.z;
-        }
+        r.ox = load(rays.ox + i), r.oy = load(rays.oy + i), r.oz = load(rays.oz + i);
+        r.dx = load(rays.dx + i), r.dy = load(rays.dy + i), r.dz = load(rays.dz + i);
         traceBatch(r, count, level, nullptr, nodes, next, nextCount, nullptr, nullptr, counters);
     }
 
@@ -214,23 +263,41 @@ public:
         uint64_t planeMask = 0;
         bool allPlanes = false;
         const unsigned liveBits = bits(live);
-        for (int k = 0; k < kLanes; ++k) {
-            if (!(liveBits >> k & 1u)) continue;
+        // Neighbouring rays mostly share a cell: each distinct list is read once, with the
+        // farthest origin's distance (an entry is in reach of some lane when it is of that).
+        const LightBuffer::Entry* cells[kLanes];
+        std::size_t sizes[kLanes];
+        float farthest[kLanes];
+        int distinct = 0;
+        for (unsigned m = liveBits; m; m &= m - 1) {
+            const int k = __builtin_ctz(m);
             std::span<const LightBuffer::Entry> entries;
             float distance2 = 0.0f;
             if (!buffer || !buffer->cell(Vec3(r.ox[k], r.oy[k], r.oz[k]), entries, distance2)) {
                 sphereMask = spheres.size() >= 32 ? ~0u : (1u << spheres.size()) - 1u;
                 allPlanes = true;
+                distinct = 0;
                 break;
             }
-            for (const LightBuffer::Entry& e : entries) {
-                if (!(distance2 >= e.minDistance2)) continue;
-                if (e.item & LightBuffer::kPlaneBit) {
-                    const uint32_t p = e.item & ~LightBuffer::kPlaneBit;
+            int c = 0;
+            while (c < distinct && cells[c] != entries.data()) ++c;
+            if (c == distinct) {
+                cells[c] = entries.data(), sizes[c] = entries.size(), farthest[c] = distance2;
+                ++distinct;
+            } else if (distance2 > farthest[c]) {
+                farthest[c] = distance2;
+            }
+        }
+        for (int c = 0; c < distinct; ++c) {
+            for (std::size_t e = 0; e < sizes[c]; ++e) {
+                const LightBuffer::Entry& entry = cells[c][e];
+                if (!(farthest[c] >= entry.minDistance2)) continue;
+                if (entry.item & LightBuffer::kPlaneBit) {
+                    const uint32_t p = entry.item & ~LightBuffer::kPlaneBit;
                     if (p < 64) planeMask |= uint64_t(1) << p;
                     else allPlanes = true;
                 } else {
-                    sphereMask |= 1u << e.item;
+                    sphereMask |= 1u << entry.item;
                 }
             }
         }
@@ -259,70 +326,52 @@ public:
     /// `nodes`, their children to `next` from `nextCount` on (room for 2 * count more). For the camera level, `primaryIds`/`primaryNormals`
     /// (when not null) receive the first hits.
     void traceBatch(const Rays8& r, int count, int level, const RaySubset* subset,
-                    PathNode* nodes, PathRay* next, std::size_t& nextCount, ObjectId* primaryIds,
-                    Vec3* primaryNormals, TraceCounters& counters) const {
+                    PathNode* nodes, const RayArrays& next, std::size_t& nextCount,
+                    ObjectId* primaryIds, Vec3* primaryNormals, TraceCounters& counters) const {
         counters.rays += uint64_t(count);
         Hits8 h;
         closestHit(r, subset, h);
 
         // The hit normal (raw, outward) and material of each lane; spheres' normals with the
-        // operations of intersectFlat.
-        const auto& prims = scene_.primitives();
-        const auto& planes = scene_.planes();
-        const auto& spheres = scene_.flatSpheres();
-        alignas(32) float cx[kLanes], cy[kLanes], cz[kLanes], radius[kLanes];
-        alignas(32) float pnx[kLanes], pny[kLanes], pnz[kLanes];
-        uint32_t material[kLanes];
-        ObjectId id[kLanes];
-        unsigned hitBits = 0;
-        for (int k = 0; k < kLanes; ++k) {
-            cx[k] = cy[k] = cz[k] = 0.0f;
-            radius[k] = 1.0f;
-            pnx[k] = pny[k] = pnz[k] = 0.0f;
-            material[k] = 0;
-            id[k] = kNoObject;
-            if (k >= count) continue;
-            if (h.sphere[k] >= 0) {
-                const SphereShape& s = spheres[std::size_t(h.sphere[k])];
-                cx[k] = s.center.x, cy[k] = s.center.y, cz[k] = s.center.z;
-                radius[k] = s.radius;
-                material[k] = prims[std::size_t(h.sphere[k])].material;
-                id[k] = prims[std::size_t(h.sphere[k])].id;
-                hitBits |= 1u << k;
-            } else if (h.plane[k] >= 0) {
-                const PlanePrimitive& p = planes[std::size_t(h.plane[k])];
-                pnx[k] = p.shape.normal.x, pny[k] = p.shape.normal.y, pnz[k] = p.shape.normal.z;
-                material[k] = p.material;
-                id[k] = p.id;
-                hitBits |= 1u << k;
-            }
-        }
-        const I8 isSphere = h.sphere >= 0;
+        // operations of intersectFlat. Lanes past `count` repeat rays and are left out.
+        const PacketTables& tb = tables_;
+        const I8 lanes = I8{0, 1, 2, 3, 4, 5, 6, 7} < count;
+        const I8 isSphere = lanes & (h.sphere >= 0);
+        const I8 isPlane = lanes & ~isSphere & (h.plane >= 0);
+        const I8 hitMask = isSphere | isPlane;
+        const unsigned hitBits = bits(hitMask);
+        const I8 si = select(isSphere, h.sphere, splatI(0));
+        const I8 pi = select(isPlane, h.plane, splatI(0));
         F8 hnx, hny, hnz;
+        I8 material;
         {
-            F8 ccx, ccy, ccz, rad;
-            std::memcpy(&ccx, cx, sizeof ccx);
-            std::memcpy(&ccy, cy, sizeof ccy);
-            std::memcpy(&ccz, cz, sizeof ccz);
-            std::memcpy(&rad, radius, sizeof rad);
+            const Lookup sphere = lookup(si, isSphere);
+            const F8 ccx = fetch(tb.sphereX.data(), sphere), ccy = fetch(tb.sphereY.data(), sphere),
+                     ccz = fetch(tb.sphereZ.data(), sphere);
+            const F8 rad = select(isSphere, fetch(tb.sphereRadius.data(), sphere), splat(1.0f));
             const F8 a = r.dx * r.dx + r.dy * r.dy + r.dz * r.dz;
             const F8 tProj = ((ccx - r.ox) * r.dx + (ccy - r.oy) * r.dy + (ccz - r.oz) * r.dz) / a;
             const F8 fx = (r.ox - ccx) + tProj * r.dx;
             const F8 fy = (r.oy - ccy) + tProj * r.dy;
             const F8 fz = (r.oz - ccz) + tProj * r.dz;
-            F8 px, py, pz;
-            std::memcpy(&px, pnx, sizeof px);
-            std::memcpy(&py, pny, sizeof py);
-            std::memcpy(&pz, pnz, sizeof pz);
-            hnx = select(isSphere, (fx + h.offset * r.dx) / rad, px);
-            hny = select(isSphere, (fy + h.offset * r.dy) / rad, py);
-            hnz = select(isSphere, (fz + h.offset * r.dz) / rad, pz);
+            const Lookup plane = lookup(pi, isPlane);
+            hnx = select(isSphere, (fx + h.offset * r.dx) / rad, fetch(tb.planeNx.data(), plane));
+            hny = select(isSphere, (fy + h.offset * r.dy) / rad, fetch(tb.planeNy.data(), plane));
+            hnz = select(isSphere, (fz + h.offset * r.dz) / rad, fetch(tb.planeNz.data(), plane));
+            material = select(hitMask,
+                              select(isSphere, fetch(tb.sphereMaterial.data(), sphere),
+                                     fetch(tb.planeMaterial.data(), plane)),
+                              splatI(0));
         }
         if (level == 0) {
             for (int k = 0; k < count; ++k) {
-                if (primaryIds) primaryIds[k] = id[k];
+                const bool hit = hitBits >> k & 1u;
+                if (primaryIds)
+                    primaryIds[k] = !hit ? kNoObject
+                                         : isSphere[k] ? tb.sphereId[std::size_t(si[k])]
+                                                       : tb.planeId[std::size_t(pi[k])];
                 if (primaryNormals)
-                    primaryNormals[k] = (hitBits >> k & 1u) ? Vec3(hnx[k], hny[k], hnz[k]) : Vec3(0.0f);
+                    primaryNormals[k] = hit ? Vec3(hnx[k], hny[k], hnz[k]) : Vec3(0.0f);
             }
         }
         if (!hitBits) {
@@ -339,22 +388,13 @@ public:
 
         // Material terms per lane.
         const auto& materials = scene_.materials();
-        alignas(32) float mr[kLanes], mg[kLanes], mb[kLanes], md[kLanes], ms[kLanes],
-            mcut[kLanes], mlw[kLanes];
-        for (int k = 0; k < kLanes; ++k) {
-            const CompiledMaterial& m = materials[material[k]];
-            mr[k] = m.color.x, mg[k] = m.color.y, mb[k] = m.color.z;
-            md[k] = m.diffuse, ms[k] = m.specular, mcut[k] = m.specularCutoff;
-            mlw[k] = (hitBits >> k & 1u) ? m.localWeight : 0.0f;
-        }
-        F8 colR, colG, colB, diffuse, specular, cutoff, localWeight;
-        std::memcpy(&colR, mr, sizeof colR);
-        std::memcpy(&colG, mg, sizeof colG);
-        std::memcpy(&colB, mb, sizeof colB);
-        std::memcpy(&diffuse, md, sizeof diffuse);
-        std::memcpy(&specular, ms, sizeof specular);
-        std::memcpy(&cutoff, mcut, sizeof cutoff);
-        std::memcpy(&localWeight, mlw, sizeof localWeight);
+        const Lookup mat = lookup(material, hitMask);
+        const F8 colR = fetch(tb.red.data(), mat), colG = fetch(tb.green.data(), mat),
+                 colB = fetch(tb.blue.data(), mat);
+        const F8 diffuse = fetch(tb.diffuse.data(), mat);
+        const F8 specular = fetch(tb.specular.data(), mat);
+        const F8 cutoff = fetch(tb.cutoff.data(), mat);
+        const F8 localWeight = select(hitMask, fetch(tb.localWeight.data(), mat), splat(0.0f));
 
         // Local term: localWeight * (ambient + directLight) where localWeight > 0.
         const I8 shaded = localWeight > 0.0f;
@@ -387,8 +427,8 @@ public:
                     bits(live & (specular > 0.0f) & (rv > cutoff) & (rv > 0.0f));
                 for (unsigned m = specBits; m; m &= m - 1) {
                     const int k = __builtin_ctz(m);
-                    spec[k] = materials[material[k]].specular *
-                              std::pow(rv[k], materials[material[k]].shininess);
+                    spec[k] = materials[std::size_t(material[k])].specular *
+                              std::pow(rv[k], materials[std::size_t(material[k])].shininess);
                 }
                 if (shadows_ && bits(live)) {
                     counters.shadowRays += uint64_t(__builtin_popcount(bits(live)));
@@ -415,7 +455,7 @@ public:
             if (!(hitBits >> k & 1u)) continue;
             node.hit = true;
             node.local = Color(localR[k], localG[k], localB[k]);
-            const CompiledMaterial& m = materials[material[k]];
+            const CompiledMaterial& m = materials[std::size_t(material[k])];
             if (level >= maxDepth_ || (m.reflectivity <= 0.0f && m.transparency <= 0.0f))
                 continue;
             node.specular = true;
@@ -431,7 +471,7 @@ public:
                     reflectWeight += m.transparency * f;
                     node.refractWeight = m.transparency * (1.0f - f);
                     node.refract = int32_t(nextCount);
-                    next[nextCount++] = {p - n * eps_, t};
+                    next.set(nextCount++, p - n * eps_, t);
                 } else {
                     reflectWeight += m.transparency;
                 }
@@ -439,13 +479,14 @@ public:
             node.reflectWeight = reflectWeight;
             if (reflectWeight > 0.0f) {
                 node.reflect = int32_t(nextCount);
-                next[nextCount++] = {p + n * eps_, d - 2.0f * glm::dot(d, n) * n};
+                next.set(nextCount++, p + n * eps_, d - 2.0f * glm::dot(d, n) * n);
             }
         }
     }
 
 private:
     const CompiledScene& scene_;
+    const PacketTables& tables_;
     int maxDepth_;
     bool shadows_;
     float eps_;

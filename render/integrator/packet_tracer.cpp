@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -18,10 +19,66 @@ namespace rs {
 
 namespace {
 
-/// A secondary ray waiting for its level: origin and direction.
-struct PathRay {
-    Vec3 o, d;
+/// Where a level's rays live: structure of arrays, so a batch loads with six plain loads.
+struct RayArrays {
+    float *ox, *oy, *oz, *dx, *dy, *dz;
+    void set(std::size_t i, const Vec3& o, const Vec3& d) const {
+        ox[i] = o.x, oy[i] = o.y, oz[i] = o.z;
+        dx[i] = d.x, dy[i] = d.y, dz[i] = d.z;
+    }
 };
+
+}  // namespace
+
+/// The scene as the kernel reads it per lane: structure-of-arrays tables to gather from,
+/// built once per PacketTracer. Each table has at least one entry, so index 0 is always
+/// safe to gather for lanes that did not hit that kind of shape.
+struct PacketTables {
+    // Flat spheres, in primitives() order.
+    std::vector<float> sphereX, sphereY, sphereZ, sphereRadius;
+    std::vector<int32_t> sphereMaterial;
+    std::vector<ObjectId> sphereId;
+    // Planes, in planes() order.
+    std::vector<float> planeNx, planeNy, planeNz;
+    std::vector<int32_t> planeMaterial;
+    std::vector<ObjectId> planeId;
+    // Materials.
+    std::vector<float> red, green, blue, diffuse, specular, cutoff, localWeight;
+
+    explicit PacketTables(const CompiledScene& scene) {
+        const auto& spheres = scene.flatSpheres();
+        for (std::size_t i = 0; i < spheres.size(); ++i) {
+            sphereX.push_back(spheres[i].center.x);
+            sphereY.push_back(spheres[i].center.y);
+            sphereZ.push_back(spheres[i].center.z);
+            sphereRadius.push_back(spheres[i].radius);
+            sphereMaterial.push_back(int32_t(scene.primitives()[i].material));
+            sphereId.push_back(scene.primitives()[i].id);
+        }
+        for (const PlanePrimitive& p : scene.planes()) {
+            planeNx.push_back(p.shape.normal.x);
+            planeNy.push_back(p.shape.normal.y);
+            planeNz.push_back(p.shape.normal.z);
+            planeMaterial.push_back(int32_t(p.material));
+            planeId.push_back(p.id);
+        }
+        for (const CompiledMaterial& m : scene.materials()) {
+            red.push_back(m.color.x), green.push_back(m.color.y), blue.push_back(m.color.z);
+            diffuse.push_back(m.diffuse), specular.push_back(m.specular);
+            cutoff.push_back(m.specularCutoff), localWeight.push_back(m.localWeight);
+        }
+        for (auto* v : {&sphereX, &sphereY, &sphereZ, &sphereRadius, &planeNx, &planeNy,
+                        &planeNz, &red, &green, &blue, &diffuse, &specular, &cutoff,
+                        &localWeight})
+            if (v->empty()) v->push_back(0.0f);
+        for (auto* v : {&sphereMaterial, &planeMaterial})
+            if (v->empty()) v->push_back(0);
+        for (auto* v : {&sphereId, &planeId})
+            if (v->empty()) v->push_back(kNoObject);
+    }
+};
+
+namespace {
 
 /// What one ray of a tree gave, to be summed with its children's colours afterwards.
 struct PathNode {
@@ -57,19 +114,27 @@ namespace {
 
 namespace {
 
+constexpr int kBatch = 8;
+
 /// One level of a tile's ray trees.
 struct Level {
-    std::vector<PathRay> rays;  ///< Empty for the camera level, whose rays are generated.
+    /// The level's rays (none for the camera level, whose rays are generated).
+    std::vector<float> ox, oy, oz, dx, dy, dz;
     std::vector<PathNode> nodes;
     std::vector<Color> colors;
+
+    /// Room for `count` rays plus one batch read past the end.
+    RayArrays arrays(std::size_t count) {
+        if (ox.size() < count + kBatch)
+            for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz}) v->resize(count + kBatch, 0.0f);
+        return {ox.data(), oy.data(), oz.data(), dx.data(), dy.data(), dz.data()};
+    }
 };
 
 /// Per-thread storage reused from tile to tile: no allocation once it has grown.
 struct Workspace {
     std::vector<Level> levels;
 };
-
-constexpr int kBatch = 8;
 
     /// trace()'s sums, leaves first: a node's colour from its local term and its children's.
 void sumLevel(const Level& level, const Level* children, const Color& background,
@@ -106,8 +171,7 @@ void traceTileWith(const Kernel& kernel, Workspace& ws, const CompiledScene& sce
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     ws.levels[0].nodes.resize(pixels);
     // Each ray has at most two children.
-    std::vector<PathRay>& firstRays = ws.levels[1].rays;
-    if (firstRays.size() < 2 * pixels) firstRays.resize(2 * pixels);
+    RayArrays next = ws.levels[1].arrays(2 * pixels);
     std::size_t nextCount = 0;
     const RaySubset* cameraSubset = subset.valid ? &subset : nullptr;
     for (int y = y0; y < y1; ++y) {
@@ -116,9 +180,9 @@ void traceTileWith(const Kernel& kernel, Workspace& ws, const CompiledScene& sce
             const std::size_t local =
                 std::size_t(y - y0) * std::size_t(width) + std::size_t(x - x0);
             const std::size_t pixel = std::size_t(y) * stride + std::size_t(x);
-            kernel.traceCamera(x, y, count, cameraSubset, &ws.levels[0].nodes[local],
-                               firstRays.data(), nextCount, ids + pixel,
-                               normals ? normals + pixel : nullptr, counters);
+            kernel.traceCamera(x, y, count, cameraSubset, &ws.levels[0].nodes[local], next,
+                               nextCount, ids + pixel, normals ? normals + pixel : nullptr,
+                               counters);
         }
     }
 
@@ -127,16 +191,16 @@ void traceTileWith(const Kernel& kernel, Workspace& ws, const CompiledScene& sce
     while (nextCount > 0) {
         ++depth;
         if (ws.levels.size() < depth + 2) ws.levels.resize(depth + 2);
-        Level& level = ws.levels[depth];
         const std::size_t count = nextCount;
-        std::vector<PathRay>& next = ws.levels[depth + 1].rays;
-        if (next.size() < 2 * count) next.resize(2 * count);
+        const RayArrays rays = ws.levels[depth].arrays(count);
+        next = ws.levels[depth + 1].arrays(2 * count);
+        Level& level = ws.levels[depth];
         level.nodes.resize(count);
         nextCount = 0;
         for (std::size_t i = 0; i < count; i += kBatch) {
             const int n = int(std::min<std::size_t>(kBatch, count - i));
-            kernel.traceSecondary(&level.rays[i], n, int(depth), &level.nodes[i], next.data(),
-                                  nextCount, counters);
+            kernel.traceSecondary(rays, i, n, int(depth), &level.nodes[i], next, nextCount,
+                                  counters);
         }
     }
 
@@ -171,10 +235,13 @@ bool PacketTracer::profitable() {
 
 PacketTracer::PacketTracer(const CompiledScene& scene, Kernel kernel)
     : scene_(scene),
+      tables_(std::make_unique<PacketTables>(scene)),
       kernel_(kernel),
       maxDepth_(TraceOptions::fromSettings(scene.settings()).maxDepth),
       shadows_(scene.settings().shadowSamples > 0),
       eps_(scene.epsilon()) {}
+
+PacketTracer::~PacketTracer() = default;
 
 void PacketTracer::traceTile(int x0, int y0, int x1, int y1, const RaySubset& subset,
                              std::size_t stride, Color* colors, ObjectId* ids, Vec3* normals,
@@ -185,13 +252,13 @@ void PacketTracer::traceTile(int x0, int y0, int x1, int y1, const RaySubset& su
     // room. The baseline build (two SSE registers per vector) is exact but slower than scalar
     // code, which is why renderImage asks profitable() first.
     if (kernel_ == Kernel::Fastest && __builtin_cpu_supports("avx2")) {
-        const avx2::PacketKernel kernel(scene_, maxDepth_, shadows_, eps_);
+        const avx2::PacketKernel kernel(scene_, *tables_, maxDepth_, shadows_, eps_);
         traceTileWith(kernel, ws, scene_, x0, y0, x1, y1, subset, stride, colors, ids, normals,
                       counters);
         return;
     }
 #endif
-    const baseline::PacketKernel kernel(scene_, maxDepth_, shadows_, eps_);
+    const baseline::PacketKernel kernel(scene_, *tables_, maxDepth_, shadows_, eps_);
     traceTileWith(kernel, ws, scene_, x0, y0, x1, y1, subset, stride, colors, ids, normals,
                   counters);
 }

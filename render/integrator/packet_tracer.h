@@ -4,8 +4,11 @@
 #include "integrator/whitted.h"
 
 #include <cstddef>
+#include <memory>
 
 namespace rs {
+
+struct PacketTables;
 
 /// Traces a tile's centre rays in packets of eight: the camera rays first, then each level
 /// of the tile's reflection and refraction rays, every level intersected and shaded in
@@ -32,6 +35,9 @@ public:
     enum class Kernel { Fastest, Baseline };
 
     explicit PacketTracer(const CompiledScene& scene, Kernel kernel = Kernel::Fastest);
+    ~PacketTracer();
+    PacketTracer(const PacketTracer&) = delete;
+    PacketTracer& operator=(const PacketTracer&) = delete;
 
     /// Traces the centre ray of each pixel in [x0, x1) x [y0, y1) at the scene's render
     /// settings. Writes the colour, the first hit's id and (when `normals` is not null) its
@@ -42,6 +48,7 @@ public:
 
 private:
     const CompiledScene& scene_;
+    std::unique_ptr<PacketTables> tables_;  ///< What the kernel gathers per lane.
     Kernel kernel_;
     int maxDepth_;
     bool shadows_;  ///< Shadow rays are traced (shadow_samples > 0).
