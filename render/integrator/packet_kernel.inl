@@ -261,45 +261,59 @@ public:
         const auto& planes = scene_.planes();
         uint32_t sphereMask = 0;  // flat scenes have at most 16 spheres
         uint64_t planeMask = 0;
-        bool allPlanes = false;
+        bool allPlanes = !buffer;
         const unsigned liveBits = bits(live);
-        // Neighbouring rays mostly share a cell: each distinct list is read once, with the
-        // farthest origin's distance (an entry is in reach of some lane when it is of that).
-        const LightBuffer::Entry* cells[kLanes];
-        std::size_t sizes[kLanes];
-        float farthest[kLanes];
-        int distinct = 0;
-        for (unsigned m = liveBits; m; m &= m - 1) {
-            const int k = __builtin_ctz(m);
-            std::span<const LightBuffer::Entry> entries;
-            float distance2 = 0.0f;
-            if (!buffer || !buffer->cell(Vec3(r.ox[k], r.oy[k], r.oz[k]), entries, distance2)) {
+        if (buffer) {
+            // LightBuffer::cell's operations for eight origins.
+            constexpr int kRes = LightBuffer::kResolution;
+            const Vec3& L = buffer->light();
+            const F8 vx = r.ox - L.x, vy = r.oy - L.y, vz = r.oz - L.z;
+            const F8 ax = select(vx < 0.0f, -vx, vx), ay = select(vy < 0.0f, -vy, vy),
+                     az = select(vz < 0.0f, -vz, vz);
+            const I8 onX = (ax >= ay) & (ax >= az), onY = ~onX & (ay >= az);
+            const I8 face = select(onX, select(vx < 0.0f, splatI(1), splatI(0)),
+                                   select(onY, select(vy < 0.0f, splatI(3), splatI(2)),
+                                          select(vz < 0.0f, splatI(5), splatI(4))));
+            const F8 m = select(onX, ax, select(onY, ay, az));
+            const F8 a = select(onX, vy, select(onY, vz, vx));
+            const F8 b = select(onX, vz, select(onY, vx, vy));
+            const F8 distance2 = vx * vx + vy * vy + vz * vz;
+            if ((bits(m > 0.0f) & liveBits) != liveBits) {
+                allPlanes = true;  // an origin at the light: test everything
                 sphereMask = spheres.size() >= 32 ? ~0u : (1u << spheres.size()) - 1u;
-                allPlanes = true;
-                distinct = 0;
-                break;
-            }
-            int c = 0;
-            while (c < distinct && cells[c] != entries.data()) ++c;
-            if (c == distinct) {
-                cells[c] = entries.data(), sizes[c] = entries.size(), farthest[c] = distance2;
-                ++distinct;
-            } else if (distance2 > farthest[c]) {
-                farthest[c] = distance2;
-            }
-        }
-        for (int c = 0; c < distinct; ++c) {
-            for (std::size_t e = 0; e < sizes[c]; ++e) {
-                const LightBuffer::Entry& entry = cells[c][e];
-                if (!(farthest[c] >= entry.minDistance2)) continue;
-                if (entry.item & LightBuffer::kPlaneBit) {
-                    const uint32_t p = entry.item & ~LightBuffer::kPlaneBit;
-                    if (p < 64) planeMask |= uint64_t(1) << p;
-                    else allPlanes = true;
-                } else {
-                    sphereMask |= 1u << entry.item;
+            } else {
+                const F8 inv = 1.0f / m;
+                auto cellIndex = [](F8 u) {
+                    const I8 i = __builtin_convertvector((u + 1.0f) * (0.5f * float(kRes)), I8);
+                    return select(i < 0, splatI(0), select(i >= kRes, splatI(kRes - 1), i));
+                };
+                const I8 cell = (face * kRes + cellIndex(b * inv)) * kRes + cellIndex(a * inv);
+                const uint32_t* starts = buffer->starts();
+                const LightBuffer::Entry* entries = buffer->entries();
+                // Neighbouring rays mostly share a cell: each distinct list is read once, with
+                // the farthest origin's distance (an entry is in reach of some lane then).
+                for (unsigned todo = liveBits; todo;) {
+                    const int32_t c = cell[__builtin_ctz(todo)];
+                    const unsigned same = bits(cell == c) & todo;
+                    todo &= ~same;
+                    float farthest = 0.0f;
+                    for (unsigned k = same; k; k &= k - 1)
+                        farthest = std::max(farthest, distance2[__builtin_ctz(k)]);
+                    for (uint32_t e = starts[c], end = starts[c + 1]; e < end; ++e) {
+                        const LightBuffer::Entry& entry = entries[e];
+                        if (!(farthest >= entry.minDistance2)) continue;
+                        if (entry.item & LightBuffer::kPlaneBit) {
+                            const uint32_t p = entry.item & ~LightBuffer::kPlaneBit;
+                            if (p < 64) planeMask |= uint64_t(1) << p;
+                            else allPlanes = true;
+                        } else {
+                            sphereMask |= 1u << entry.item;
+                        }
+                    }
                 }
             }
+        } else {
+            sphereMask = spheres.size() >= 32 ? ~0u : (1u << spheres.size()) - 1u;
         }
         I8 blocked = splatI(0);
         const F8 tmin = splat(0.0f);

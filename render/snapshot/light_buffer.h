@@ -98,12 +98,18 @@ public:
     /// Average list length over all cells (for tests and statistics).
     float averageCandidates() const;
 
-private:
+    // The layout, for lookups of many origins at once that mirror cell()'s operations.
+    const Vec3& light() const { return light_; }
+    /// 6 * kResolution^2 + 1 offsets: cell c lists entries()[starts()[c], starts()[c + 1]).
+    const uint32_t* starts() const { return start_.data(); }
+    const Entry* entries() const { return entries_.data(); }
+    /// Cell coordinate of a face coordinate u in [-1, 1] (clamped).
     static int cellIndex(float u) {
         const int i = int((u + 1.0f) * (0.5f * float(kResolution)));
         return i < 0 ? 0 : (i >= kResolution ? kResolution - 1 : i);
     }
 
+private:
     Vec3 light_{0.0f};
     std::vector<uint32_t> start_;  ///< 6 * kResolution^2 + 1 offsets into entries_.
     std::vector<Entry> entries_;
