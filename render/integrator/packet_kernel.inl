@@ -98,6 +98,17 @@ inline I8 fetch(const int32_t* table, const Lookup& l) {
     return l.uniform ? splatI(table[l.first]) : gather(table, l.index);
 }
 
+/// The largest lane (no NaN lanes).
+inline float maxLane(F8 v) {
+    v = select(v > __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3), v,
+               __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3));
+    v = select(v > __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5), v,
+               __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5));
+    v = select(v > __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6), v,
+               __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6));
+    return v[0];
+}
+
 inline F8 load(const float* p) {
     F8 v;
     std::memcpy(&v, p, sizeof v);
@@ -294,11 +305,9 @@ public:
                 // the farthest origin's distance (an entry is in reach of some lane then).
                 for (unsigned todo = liveBits; todo;) {
                     const int32_t c = cell[__builtin_ctz(todo)];
-                    const unsigned same = bits(cell == c) & todo;
-                    todo &= ~same;
-                    float farthest = 0.0f;
-                    for (unsigned k = same; k; k &= k - 1)
-                        farthest = std::max(farthest, distance2[__builtin_ctz(k)]);
+                    const I8 sameMask = live & (cell == c);
+                    todo &= ~bits(sameMask);
+                    const float farthest = maxLane(select(sameMask, distance2, splat(0.0f)));
                     for (uint32_t e = starts[c], end = starts[c + 1]; e < end; ++e) {
                         const LightBuffer::Entry& entry = entries[e];
                         if (!(farthest >= entry.minDistance2)) continue;

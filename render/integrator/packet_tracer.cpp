@@ -136,28 +136,17 @@ struct Workspace {
     std::vector<Level> levels;
 };
 
-    /// trace()'s sums, leaves first: a node's colour from its local term and its children's.
-void sumLevel(const Level& level, const Level* children, const Color& background,
-                     std::vector<Color>& colors) {
-    colors.resize(level.nodes.size());
-    for (std::size_t i = 0; i < level.nodes.size(); ++i) {
-        const PathNode& node = level.nodes[i];
-        if (!node.hit) {
-            colors[i] = background;
-            continue;
-        }
-        Color result = node.local;
-        if (!node.specular) {
-            colors[i] = result;
-            continue;
-        }
-        Color refracted(0.0f);
-        if (node.refract >= 0)
-            refracted = node.refractWeight * children->colors[std::size_t(node.refract)];
-        if (node.reflectWeight > 0.0f)
-            result += node.reflectWeight * children->colors[std::size_t(node.reflect)];
-        colors[i] = result + refracted;
-    }
+/// trace()'s sums for one node, its children's colours already known.
+inline Color sumNode(const PathNode& node, const Level* children, const Color& background) {
+    if (!node.hit) return background;
+    Color result = node.local;
+    if (!node.specular) return result;
+    Color refracted(0.0f);
+    if (node.refract >= 0)
+        refracted = node.refractWeight * children->colors[std::size_t(node.refract)];
+    if (node.reflectWeight > 0.0f)
+        result += node.reflectWeight * children->colors[std::size_t(node.reflect)];
+    return result + refracted;
 }
 
 /// Traces a tile level by level with `kernel`: camera rays, then each level's children.
@@ -205,14 +194,20 @@ void traceTileWith(const Kernel& kernel, Workspace& ws, const CompiledScene& sce
     }
 
     const Color& background = scene.settings().background;
-    for (std::size_t l = depth + 1; l-- > 0;)
-        sumLevel(ws.levels[l], l < depth ? &ws.levels[l + 1] : nullptr, background,
-                 ws.levels[l].colors);
-    const std::vector<Color>& top = ws.levels[0].colors;
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x)
-            colors[std::size_t(y) * stride + std::size_t(x)] =
-                top[std::size_t(y - y0) * std::size_t(width) + std::size_t(x - x0)];
+    // Leaves first; the camera level's colours go straight to the image.
+    for (std::size_t l = depth; l > 0; --l) {
+        Level& level = ws.levels[l];
+        const Level* children = l < depth ? &ws.levels[l + 1] : nullptr;
+        level.colors.resize(level.nodes.size());
+        for (std::size_t i = 0; i < level.nodes.size(); ++i)
+            level.colors[i] = sumNode(level.nodes[i], children, background);
+    }
+    const Level* children = depth > 0 ? &ws.levels[1] : nullptr;
+    const PathNode* node = ws.levels[0].nodes.data();
+    for (int y = y0; y < y1; ++y) {
+        Color* row = colors + std::size_t(y) * stride;
+        for (int x = x0; x < x1; ++x) row[x] = sumNode(*node++, children, background);
+    }
 }
 
 }  // namespace
