@@ -11,6 +11,8 @@
 #include "session_controller.h"
 #include "viewport.h"
 
+#include <algorithm>
+
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDragEnterEvent>
@@ -137,8 +139,9 @@ void MainWindow::importMesh(const QString& path) {
 bool MainWindow::exportFrame(const QString& path) {
     const auto frame = viewport_->frame();
     if (!frame || frame->empty()) return false;
-    ImageRgb image(frame->width, frame->height);
-    image.pixels = frame->color;
+    ImageRgb image = ImageRgb::uninitialized(frame->width, frame->height);
+    if (frame->color.size() != image.pixels.size()) return false;
+    std::copy(frame->color.begin(), frame->color.end(), image.pixels.begin());
     std::string error;
     if (!writeImage(path.toStdString(), image, frame->tonemap, frame->exposure, error)) {
         reportError(this, tr("Cannot export image"), QString::fromStdString(error));

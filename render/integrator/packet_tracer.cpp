@@ -170,8 +170,8 @@ void traceTileWith(const Kernel& kernel, Workspace& ws, const CompiledScene& sce
                 std::size_t(y - y0) * std::size_t(width) + std::size_t(x - x0);
             const std::size_t pixel = std::size_t(y) * stride + std::size_t(x);
             kernel.traceCamera(x, y, count, cameraSubset, &ws.levels[0].nodes[local], next,
-                               nextCount, ids + pixel, normals ? normals + pixel : nullptr,
-                               counters);
+                               nextCount, ids ? ids + pixel : nullptr,
+                               normals ? normals + pixel : nullptr, counters);
         }
     }
 

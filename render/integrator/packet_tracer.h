@@ -40,9 +40,9 @@ public:
     PacketTracer& operator=(const PacketTracer&) = delete;
 
     /// Traces the centre ray of each pixel in [x0, x1) x [y0, y1) at the scene's render
-    /// settings. Writes the colour, the first hit's id and (when `normals` is not null) its
-    /// normal, as traceCamera's PrimaryInfo has them, into image-sized row-major arrays of
-    /// width `stride`. `subset` is cullTile's for the same pixels.
+    /// settings. Writes the colour and, when `ids` and `normals` are not null, the first
+    /// hit's id and normal as traceCamera's PrimaryInfo has them, into image-sized row-major
+    /// arrays of width `stride`. `subset` is cullTile's for the same pixels.
     void traceTile(int x0, int y0, int x1, int y1, const RaySubset& subset, std::size_t stride,
                    Color* colors, ObjectId* ids, Vec3* normals, TraceCounters& counters) const;
 

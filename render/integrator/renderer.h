@@ -18,6 +18,8 @@ struct RenderOptions {
     int threads = 0;    ///< Worker threads; 0 = all cores.
     int tileSize = 32;  ///< Tile edge in pixels.
     const std::atomic<bool>* cancel = nullptr;  ///< Polled once per row; may be null.
+    /// Fill RenderResult::ids (picking); renders that only write an image leave it off.
+    bool ids = true;
     /// Called (serialised) after each tile with tiles done and total; may be empty.
     std::function<void(int done, int total)> progress;
 };
@@ -25,10 +27,10 @@ struct RenderOptions {
 /// A finished (or cancelled) render.
 struct RenderResult {
     ImageRgb image;
-    std::vector<ObjectId> ids;  ///< Object id seen through each pixel's centre.
+    std::vector<ObjectId> ids;  ///< Object id seen through each pixel's centre (options.ids).
     uint64_t rays = 0;          ///< All rays traced, shadow rays included.
     double ms = 0.0;            ///< Wall time of the render, loading excluded.
-    bool cancelled = false;
+    bool cancelled = false;  ///< Tiles not traced are black, with no ids.
 };
 
 /// Seed of sample `k` of pixel (x, y): depends on the pixel alone, not on tiles or threads.

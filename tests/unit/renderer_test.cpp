@@ -108,13 +108,58 @@ TEST(Renderer, AdaptiveSupersampling_MatchesFullSupersamplingOnEdgesOnly) {
 }
 
 TEST(Renderer, CancelFlag_StopsTheRenderAndSaysSo) {
+    // Point lights only (packet tracer where the CPU has it), then a sphere light (scalar).
     SceneDocument doc = test::smallRoom(64, 48);
-    std::atomic<bool> cancel{true};
-    RenderOptions options;
-    options.cancel = &cancel;
-    const RenderResult r = renderImage(CompiledScene(doc), options);
-    EXPECT_TRUE(r.cancelled);
-    EXPECT_EQ(r.rays, 0u);
+    for (int pass = 0; pass < 2; ++pass) {
+        if (pass == 1) {
+            Light area;
+            area.name = "area";
+            area.type = LightType::Sphere;
+            area.position = Vec3(2, 3, -2);
+            doc.addLight(area);
+        }
+        const CompiledScene scene(doc);
+        renderImage(scene);  // leaves a used image behind for the allocator to hand out again
+        std::atomic<bool> cancel{true};
+        RenderOptions options;
+        options.cancel = &cancel;
+        const RenderResult r = renderImage(scene, options);
+        EXPECT_TRUE(r.cancelled);
+        EXPECT_EQ(r.rays, 0u);
+        // The buffers are not cleared up front: untraced tiles must still read as nothing.
+        for (const Color& c : r.image.pixels) ASSERT_EQ(c, Color(0.0f)) << "pass " << pass;
+        ASSERT_EQ(r.ids.size(), r.image.pixels.size());
+        for (ObjectId id : r.ids) ASSERT_EQ(id, kNoObject) << "pass " << pass;
+    }
+}
+
+TEST(Renderer, SameImageForAnyThreadCount_PointLights) {
+    // The packet tracer's path (on CPUs with AVX2): tiles of any size, any thread count.
+    const CompiledScene scene(test::smallRoom(83, 61));
+    RenderOptions one, two, four;
+    one.threads = 1;
+    two.threads = 2;
+    four.threads = 4;
+    four.tileSize = 7;
+    const RenderResult a = renderImage(scene, one);
+    const RenderResult b = renderImage(scene, two);
+    const RenderResult c = renderImage(scene, four);
+    EXPECT_EQ(a.image.pixels, b.image.pixels);
+    EXPECT_EQ(a.image.pixels, c.image.pixels);
+    EXPECT_EQ(a.ids, c.ids);
+    EXPECT_EQ(a.rays, c.rays);
+}
+
+TEST(Renderer, IdsOff_SameImageWithoutTheIdBuffer) {
+    const CompiledScene scene(test::smallRoom(40, 30));
+    RenderOptions withoutIds;
+    withoutIds.ids = false;
+    const RenderResult a = renderImage(scene);
+    const RenderResult b = renderImage(scene, withoutIds);
+    EXPECT_EQ(a.ids.size(), a.image.pixels.size());
+    EXPECT_TRUE(b.ids.empty());
+    EXPECT_EQ(a.image.pixels, b.image.pixels);
+    EXPECT_EQ(a.rays, b.rays);
 }
 
 TEST(Renderer, ProgressReportsEveryTileOnce) {
