@@ -24,6 +24,7 @@ int runRender(int argc, char** argv) {
     if (!output || output->empty()) throw UsageError{"missing -o OUT (the image to write)"};
     RenderOptions options;
     options.threads = args.intValue("--threads", 1, 1024).value_or(0);
+    options.ids = false;  // only the image is written
 
     SceneDocument doc;
     if (!loadSceneOrReport(args.positional()[0], doc)) return 2;
