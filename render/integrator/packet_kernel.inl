@@ -177,19 +177,23 @@ public:
                  bool shadows, float eps)
         : scene_(scene), tables_(tables), maxDepth_(maxDepth), shadows_(shadows), eps_(eps) {}
 
-    /// The camera rays through pixels [x, x + count) of row y (count <= 8), with
-    /// CameraModel::generateRay's operations, traced as level 0.
-    void traceCamera(int x, int y, int count, const RaySubset* subset, PathNode* nodes,
-                     const RayArrays& next, std::size_t& nextCount, ObjectId* ids,
-                     Vec3* normals, TraceCounters& counters) const {
+    /// The camera rays through the centres of pixels (xs[k], ys[k]), k < count <= 8, with
+    /// CameraModel::generateRay's operations, traced as level 0. `ids`, `normals` and
+    /// `depths` (each may be null) receive traceCamera's PrimaryInfo fields per lane.
+    void traceCamera(const int32_t* xs, const int32_t* ys, int count, const RaySubset* subset,
+                     PathNode* nodes, const RayArrays& next, std::size_t& nextCount,
+                     ObjectId* ids, Vec3* normals, float* depths,
+                     TraceCounters& counters) const {
         const CameraModel& camera = scene_.camera();
         const Vec3 o = camera.origin(), f = camera.forward(), right = camera.right(),
                    up = camera.up();
-        const float invW = camera.invWidth(), halfW = camera.halfWidth();
-        const float v = (1.0f - 2.0f * (float(y) + 0.5f) * camera.invHeight()) * camera.halfHeight();
-        F8 u;
-        for (int k = 0; k < kLanes; ++k) u[k] = float(x + (k < count ? k : 0)) + 0.5f;
-        u = (2.0f * u * invW - 1.0f) * halfW;
+        F8 u, v;
+        for (int k = 0; k < kLanes; ++k) {
+            u[k] = float(xs[k < count ? k : 0]) + 0.5f;
+            v[k] = float(ys[k < count ? k : 0]) + 0.5f;
+        }
+        u = (2.0f * u * camera.invWidth() - 1.0f) * camera.halfWidth();
+        v = (1.0f - 2.0f * v * camera.invHeight()) * camera.halfHeight();
         Rays8 r;
         if (camera.orthographic()) {
             r.ox = (o.x + right.x * u) + up.x * v;
@@ -204,7 +208,7 @@ public:
             r.ox = splat(o.x), r.oy = splat(o.y), r.oz = splat(o.z);
             r.dx = dx * s, r.dy = dy * s, r.dz = dz * s;
         }
-        traceBatch(r, count, 0, subset, nodes, next, nextCount, ids, normals, counters);
+        traceBatch(r, count, 0, subset, nodes, next, nextCount, ids, normals, depths, counters);
     }
 
     /// Secondary rays [i, i + count) of `rays` (count <= 8, readable up to i + 8) of tree
@@ -215,7 +219,8 @@ public:
         Rays8 r;
         r.ox = load(rays.ox + i), r.oy = load(rays.oy + i), r.oz = load(rays.oz + i);
         r.dx = load(rays.dx + i), r.dy = load(rays.dy + i), r.dz = load(rays.dz + i);
-        traceBatch(r, count, level, nullptr, nodes, next, nextCount, nullptr, nullptr, counters);
+        traceBatch(r, count, level, nullptr, nodes, next, nextCount, nullptr, nullptr, nullptr,
+                   counters);
     }
 
     /// Closest hits over planes then spheres, in scene order with strict comparisons, as
@@ -350,7 +355,8 @@ public:
     /// (when not null) receive the first hits.
     void traceBatch(const Rays8& r, int count, int level, const RaySubset* subset,
                     PathNode* nodes, const RayArrays& next, std::size_t& nextCount,
-                    ObjectId* primaryIds, Vec3* primaryNormals, TraceCounters& counters) const {
+                    ObjectId* primaryIds, Vec3* primaryNormals, float* primaryDepths,
+                    TraceCounters& counters) const {
         counters.rays += uint64_t(count);
         Hits8 h;
         closestHit(r, subset, h);
@@ -395,6 +401,7 @@ public:
                                                        : tb.planeId[std::size_t(pi[k])];
                 if (primaryNormals)
                     primaryNormals[k] = hit ? Vec3(hnx[k], hny[k], hnz[k]) : Vec3(0.0f);
+                if (primaryDepths) primaryDepths[k] = hit ? h.t[k] : kInfinity;
             }
         }
         if (!hitBits) {
@@ -422,6 +429,7 @@ public:
         // Local term: localWeight * (ambient + directLight) where localWeight > 0.
         const I8 shaded = localWeight > 0.0f;
         F8 localR = splat(0.0f), localG = splat(0.0f), localB = splat(0.0f);
+        I8 shadowRays = splatI(0);
         if (bits(shaded)) {
             const Color& amb = scene_.settings().ambient;
             const F8 ambR = (amb.x * colR) * diffuse, ambG = (amb.y * colG) * diffuse,
@@ -455,6 +463,7 @@ public:
                 }
                 if (shadows_ && bits(live)) {
                     counters.shadowRays += uint64_t(__builtin_popcount(bits(live)));
+                    shadowRays -= live;  // true lanes are -1
                     shadow.dx = lx, shadow.dy = ly, shadow.dz = lz;
                     live &= ~occluded(li, shadow, dist - eps_, live);
                 }
@@ -477,8 +486,11 @@ public:
             node = PathNode{};
             if (!(hitBits >> k & 1u)) continue;
             node.hit = true;
+            node.t = h.t[k];
+            node.shadowRays = uint32_t(shadowRays[k]);
             node.local = Color(localR[k], localG[k], localB[k]);
             const CompiledMaterial& m = materials[std::size_t(material[k])];
+            node.specularMaterial = m.reflectivity > 0.0f || m.transparency > 0.0f;
             if (level >= maxDepth_ || (m.reflectivity <= 0.0f && m.transparency <= 0.0f))
                 continue;
             node.specular = true;

@@ -87,8 +87,11 @@ struct PathNode {
     float refractWeight = 0.0f;
     int32_t reflect = -1;       ///< Index of the reflection child in the next level, or -1.
     int32_t refract = -1;       ///< Index of the refraction child in the next level, or -1.
+    float t = 0.0f;             ///< Hit distance.
+    uint32_t shadowRays = 0;    ///< Shadow rays traced at this hit.
     bool hit = false;           ///< False: the ray escaped and sees the background.
     bool specular = false;      ///< The tree continues here (trace() did not return early).
+    bool specularMaterial = false;  ///< Hit a mirror or glass (PrimaryInfo::touchedSpecular).
 };
 
 }  // namespace
@@ -122,6 +125,8 @@ struct Level {
     std::vector<float> ox, oy, oz, dx, dy, dz;
     std::vector<PathNode> nodes;
     std::vector<Color> colors;
+    std::vector<uint32_t> treeRays;     ///< Rays of each node's subtree (tracePixels only).
+    std::vector<uint8_t> treeSpecular;  ///< The subtree met a mirror or glass (same).
 
     /// Room for `count` rays plus one batch read past the end.
     RayArrays arrays(std::size_t count) {
@@ -134,6 +139,10 @@ struct Level {
 /// Per-thread storage reused from tile to tile: no allocation once it has grown.
 struct Workspace {
     std::vector<Level> levels;
+    // The camera level's first hits (tracePixels).
+    std::vector<ObjectId> ids;
+    std::vector<Vec3> normals;
+    std::vector<float> depths;
 };
 
 /// trace()'s sums for one node, its children's colours already known.
@@ -149,6 +158,79 @@ inline Color sumNode(const PathNode& node, const Level* children, const Color& b
     return result + refracted;
 }
 
+/// Traces the levels below the camera level (whose children are `nextCount` rays in level 1)
+/// until no ray is left; returns the deepest level.
+template <class Kernel>
+std::size_t traceSecondaryLevels(const Kernel& kernel, Workspace& ws, std::size_t nextCount,
+                                 TraceCounters& counters) {
+    std::size_t depth = 0;
+    while (nextCount > 0) {
+        ++depth;
+        if (ws.levels.size() < depth + 2) ws.levels.resize(depth + 2);
+        const std::size_t count = nextCount;
+        const RayArrays rays = ws.levels[depth].arrays(count);
+        const RayArrays next = ws.levels[depth + 1].arrays(2 * count);  // two children at most
+        Level& level = ws.levels[depth];
+        level.nodes.resize(count);
+        nextCount = 0;
+        for (std::size_t i = 0; i < count; i += kBatch) {
+            const int n = int(std::min<std::size_t>(kBatch, count - i));
+            kernel.traceSecondary(rays, i, n, int(depth), &level.nodes[i], next, nextCount,
+                                  counters);
+        }
+    }
+    return depth;
+}
+
+/// trace()'s sums of levels depth..1, leaves first (the camera level is left to the caller);
+/// with `treeInfo`, also each node's subtree ray count and whether it met a mirror or glass.
+void sumLevels(Workspace& ws, std::size_t depth, const Color& background, bool treeInfo) {
+    for (std::size_t l = depth; l > 0; --l) {
+        Level& level = ws.levels[l];
+        const Level* children = l < depth ? &ws.levels[l + 1] : nullptr;
+        const std::size_t n = level.nodes.size();
+        level.colors.resize(n);
+        for (std::size_t i = 0; i < n; ++i)
+            level.colors[i] = sumNode(level.nodes[i], children, background);
+        if (!treeInfo) continue;
+        level.treeRays.resize(n);
+        level.treeSpecular.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const PathNode& node = level.nodes[i];
+            uint32_t rays = 1 + node.shadowRays;
+            uint8_t specular = node.specularMaterial;
+            for (int32_t child : {node.refract, node.reflect}) {
+                if (child < 0) continue;
+                rays += children->treeRays[std::size_t(child)];
+                specular |= children->treeSpecular[std::size_t(child)];
+            }
+            level.treeRays[i] = rays;
+            level.treeSpecular[i] = specular;
+        }
+    }
+}
+
+/// Appends the secondary segments below `node` (level `level`) in trace()'s order: each
+/// child's own segment, then its subtree, the refraction child before the reflection child.
+void collectSegments(const Workspace& ws, std::size_t level, const PathNode& node, int capacity,
+                     std::vector<TreeSegment>& segments, PacketPixel& out) {
+    const Level& below = ws.levels[level + 1];
+    for (int32_t child : {node.refract, node.reflect}) {
+        if (child < 0) continue;
+        const std::size_t c = std::size_t(child);
+        const PathNode& n = below.nodes[c];
+        const Vec3 o(below.ox[c], below.oy[c], below.oz[c]);
+        const Vec3 d(below.dx[c], below.dy[c], below.dz[c]);
+        if (out.segmentCount < uint32_t(capacity)) {
+            segments.push_back(n.hit ? TreeSegment{o, o + d * n.t, 0u} : TreeSegment{o, d, 1u});
+            ++out.segmentCount;
+        } else {
+            out.segmentOverflow = true;
+        }
+        collectSegments(ws, level + 1, n, capacity, segments, out);
+    }
+}
+
 /// Traces a tile level by level with `kernel`: camera rays, then each level's children.
 template <class Kernel>
 void traceTileWith(const Kernel& kernel, Workspace& ws, const CompiledScene& scene, int x0,
@@ -159,54 +241,75 @@ void traceTileWith(const Kernel& kernel, Workspace& ws, const CompiledScene& sce
     if (ws.levels.size() < 2) ws.levels.resize(2);
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     ws.levels[0].nodes.resize(pixels);
-    // Each ray has at most two children.
-    RayArrays next = ws.levels[1].arrays(2 * pixels);
+    const RayArrays next = ws.levels[1].arrays(2 * pixels);  // two children per ray at most
     std::size_t nextCount = 0;
     const RaySubset* cameraSubset = subset.valid ? &subset : nullptr;
+    int32_t xs[kBatch], ys[kBatch];
     for (int y = y0; y < y1; ++y) {
         for (int x = x0; x < x1; x += kBatch) {
             const int count = std::min(kBatch, x1 - x);
+            for (int k = 0; k < count; ++k) xs[k] = x + k, ys[k] = y;
             const std::size_t local =
                 std::size_t(y - y0) * std::size_t(width) + std::size_t(x - x0);
             const std::size_t pixel = std::size_t(y) * stride + std::size_t(x);
-            kernel.traceCamera(x, y, count, cameraSubset, &ws.levels[0].nodes[local], next,
+            kernel.traceCamera(xs, ys, count, cameraSubset, &ws.levels[0].nodes[local], next,
                                nextCount, ids ? ids + pixel : nullptr,
-                               normals ? normals + pixel : nullptr, counters);
+                               normals ? normals + pixel : nullptr, nullptr, counters);
         }
     }
-
-    // Reflection and refraction levels, until no ray is left.
-    std::size_t depth = 0;
-    while (nextCount > 0) {
-        ++depth;
-        if (ws.levels.size() < depth + 2) ws.levels.resize(depth + 2);
-        const std::size_t count = nextCount;
-        const RayArrays rays = ws.levels[depth].arrays(count);
-        next = ws.levels[depth + 1].arrays(2 * count);
-        Level& level = ws.levels[depth];
-        level.nodes.resize(count);
-        nextCount = 0;
-        for (std::size_t i = 0; i < count; i += kBatch) {
-            const int n = int(std::min<std::size_t>(kBatch, count - i));
-            kernel.traceSecondary(rays, i, n, int(depth), &level.nodes[i], next, nextCount,
-                                  counters);
-        }
-    }
-
+    const std::size_t depth = traceSecondaryLevels(kernel, ws, nextCount, counters);
     const Color& background = scene.settings().background;
-    // Leaves first; the camera level's colours go straight to the image.
-    for (std::size_t l = depth; l > 0; --l) {
-        Level& level = ws.levels[l];
-        const Level* children = l < depth ? &ws.levels[l + 1] : nullptr;
-        level.colors.resize(level.nodes.size());
-        for (std::size_t i = 0; i < level.nodes.size(); ++i)
-            level.colors[i] = sumNode(level.nodes[i], children, background);
-    }
+    sumLevels(ws, depth, background, false);
+    // The camera level's colours go straight to the image.
     const Level* children = depth > 0 ? &ws.levels[1] : nullptr;
     const PathNode* node = ws.levels[0].nodes.data();
     for (int y = y0; y < y1; ++y) {
         Color* row = colors + std::size_t(y) * stride;
         for (int x = x0; x < x1; ++x) row[x] = sumNode(*node++, children, background);
+    }
+}
+
+/// Traces a list of pixels with `kernel`, with the session's per-pixel outputs.
+template <class Kernel>
+void tracePixelsWith(const Kernel& kernel, Workspace& ws, const CompiledScene& scene,
+                     const int32_t* xs, const int32_t* ys, std::size_t count,
+                     const RaySubset& subset, int segmentCapacity, PacketPixel* out,
+                     std::vector<TreeSegment>& segments, TraceCounters& counters) {
+    if (count == 0) return;
+    if (ws.levels.size() < 2) ws.levels.resize(2);
+    ws.levels[0].nodes.resize(count);
+    ws.ids.resize(count);
+    ws.normals.resize(count);
+    ws.depths.resize(count);
+    const RayArrays next = ws.levels[1].arrays(2 * count);
+    std::size_t nextCount = 0;
+    const RaySubset* cameraSubset = subset.valid ? &subset : nullptr;
+    for (std::size_t i = 0; i < count; i += kBatch) {
+        const int n = int(std::min<std::size_t>(kBatch, count - i));
+        kernel.traceCamera(xs + i, ys + i, n, cameraSubset, &ws.levels[0].nodes[i], next,
+                           nextCount, &ws.ids[i], &ws.normals[i], &ws.depths[i], counters);
+    }
+    const std::size_t depth = traceSecondaryLevels(kernel, ws, nextCount, counters);
+    const Color& background = scene.settings().background;
+    sumLevels(ws, depth, background, true);
+    const Level* children = depth > 0 ? &ws.levels[1] : nullptr;
+    for (std::size_t i = 0; i < count; ++i) {
+        const PathNode& node = ws.levels[0].nodes[i];
+        PacketPixel& o = out[i];
+        o = PacketPixel{};
+        o.color = sumNode(node, children, background);
+        o.info.id = ws.ids[i];
+        o.info.depth = ws.depths[i];
+        o.info.normal = ws.normals[i];
+        o.rays = 1 + node.shadowRays;
+        o.info.touchedSpecular = node.specularMaterial;
+        for (int32_t child : {node.refract, node.reflect}) {
+            if (child < 0) continue;
+            o.rays += children->treeRays[std::size_t(child)];
+            o.info.touchedSpecular |= children->treeSpecular[std::size_t(child)] != 0;
+        }
+        o.segmentOffset = uint32_t(segments.size());
+        if (depth > 0) collectSegments(ws, 0, node, segmentCapacity, segments, o);
     }
 }
 
@@ -237,6 +340,24 @@ PacketTracer::PacketTracer(const CompiledScene& scene, Kernel kernel)
       eps_(scene.epsilon()) {}
 
 PacketTracer::~PacketTracer() = default;
+
+void PacketTracer::tracePixels(const int32_t* xs, const int32_t* ys, std::size_t count,
+                               const RaySubset& subset, int segmentCapacity, PacketPixel* out,
+                               std::vector<TreeSegment>& segments,
+                               TraceCounters& counters) const {
+    thread_local Workspace ws;
+#if defined(RS_PACKET_DISPATCH)
+    if (kernel_ == Kernel::Fastest && __builtin_cpu_supports("avx2")) {
+        const avx2::PacketKernel kernel(scene_, *tables_, maxDepth_, shadows_, eps_);
+        tracePixelsWith(kernel, ws, scene_, xs, ys, count, subset, segmentCapacity, out,
+                        segments, counters);
+        return;
+    }
+#endif
+    const baseline::PacketKernel kernel(scene_, *tables_, maxDepth_, shadows_, eps_);
+    tracePixelsWith(kernel, ws, scene_, xs, ys, count, subset, segmentCapacity, out, segments,
+                    counters);
+}
 
 void PacketTracer::traceTile(int x0, int y0, int x1, int y1, const RaySubset& subset,
                              std::size_t stride, Color* colors, ObjectId* ids, Vec3* normals,

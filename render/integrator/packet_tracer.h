@@ -5,10 +5,22 @@
 
 #include <cstddef>
 #include <memory>
+#include <vector>
 
 namespace rs {
 
 struct PacketTables;
+
+/// One pixel from PacketTracer::tracePixels: what traceCamera gives with a PrimaryInfo and a
+/// SegmentSink, and the rays it traced (shadow rays included).
+struct PacketPixel {
+    Color color{0.0f};
+    PrimaryInfo info;
+    uint32_t rays = 0;
+    uint32_t segmentOffset = 0;    ///< Its secondary segments in tracePixels' `segments`...
+    uint32_t segmentCount = 0;     ///< ...at most the capacity asked for,
+    bool segmentOverflow = false;  ///< and whether more were dropped (SegmentSink::overflow).
+};
 
 /// Traces a tile's centre rays in packets of eight: the camera rays first, then each level
 /// of the tile's reflection and refraction rays, every level intersected and shaded in
@@ -45,6 +57,14 @@ public:
     /// arrays of width `stride`. `subset` is cullTile's for the same pixels.
     void traceTile(int x0, int y0, int x1, int y1, const RaySubset& subset, std::size_t stride,
                    Color* colors, ObjectId* ids, Vec3* normals, TraceCounters& counters) const;
+
+    /// Traces the centre rays of pixels (xs[i], ys[i]), i < count, into out[i], appending each
+    /// pixel's secondary segments to `segments` as a SegmentSink of `segmentCapacity` would
+    /// hold them. For the interactive session's full-quality passes. `subset` is cullTile's for
+    /// a rectangle holding the pixels.
+    void tracePixels(const int32_t* xs, const int32_t* ys, std::size_t count,
+                     const RaySubset& subset, int segmentCapacity, PacketPixel* out,
+                     std::vector<TreeSegment>& segments, TraceCounters& counters) const;
 
 private:
     const CompiledScene& scene_;

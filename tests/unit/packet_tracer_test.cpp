@@ -155,6 +155,64 @@ TEST(PacketTracer, RandomFlatScenes_SameBitsAsTheIntegrator) {
     }
 }
 
+/// tracePixels on every `step`-th pixel against traceCamera with a PrimaryInfo and a
+/// SegmentSink of `capacity`: colour, first hit, touched-specular flag, rays and segments.
+void expectPixelsSameAsScalar(const CompiledScene& scene, const std::string& what, int step,
+                              int capacity, PacketTracer::Kernel kernel) {
+    const int w = scene.settings().width, h = scene.settings().height;
+    std::vector<int32_t> xs, ys;
+    for (int i = 0; i < w * h; i += step) xs.push_back(i % w), ys.push_back(i / w);
+    std::vector<PacketPixel> out(xs.size());
+    std::vector<TreeSegment> segments;
+    TraceCounters packetCounters, scalarCounters;
+    const PacketTracer tracer(scene, kernel);
+    tracer.tracePixels(xs.data(), ys.data(), xs.size(), RaySubset{}, capacity, out.data(),
+                       segments, packetCounters);
+    const WhittedIntegrator integrator(scene);
+    int mismatches = 0;
+    std::ostringstream first;
+    std::vector<TreeSegment> buffer(std::size_t(capacity) + 1);
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+        PrimaryInfo info;
+        TraceCounters tc;
+        SegmentSink sink{buffer.data(), capacity, 0, false};
+        const Color c = integrator.traceCamera(
+            scene.camera().generateRay(float(xs[i]) + 0.5f, float(ys[i]) + 0.5f),
+            pixelSeed(xs[i], ys[i], 0), tc, &info, nullptr, &sink);
+        scalarCounters.rays += tc.rays;
+        scalarCounters.shadowRays += tc.shadowRays;
+        const PacketPixel& p = out[i];
+        bool same = sameBits(c, p.color) && info.id == p.info.id &&
+                    std::memcmp(&info.depth, &p.info.depth, sizeof(float)) == 0 &&
+                    sameBits(info.normal, p.info.normal) &&
+                    info.touchedSpecular == p.info.touchedSpecular && tc.total() == p.rays &&
+                    uint32_t(sink.count) == p.segmentCount && sink.overflow == p.segmentOverflow;
+        for (int k = 0; same && k < sink.count; ++k) {
+            const TreeSegment& a = buffer[std::size_t(k)];
+            const TreeSegment& b = segments[p.segmentOffset + std::size_t(k)];
+            same = sameBits(a.a, b.a) && sameBits(a.b, b.b) && a.escapes == b.escapes;
+        }
+        if (!same && mismatches++ == 0)
+            first << "pixel (" << xs[i] << ", " << ys[i] << "): rays " << tc.total() << " vs "
+                  << p.rays << ", segments " << sink.count << " vs " << p.segmentCount;
+    }
+    EXPECT_EQ(mismatches, 0) << what << ", first at " << first.str();
+    EXPECT_EQ(packetCounters.rays, scalarCounters.rays) << what;
+    EXPECT_EQ(packetCounters.shadowRays, scalarCounters.shadowRays) << what;
+}
+
+TEST(PacketTracer, PixelLists_SameOutputsAsTheIntegrator) {
+    for (const auto kernel : {PacketTracer::Kernel::Fastest, PacketTracer::Kernel::Baseline}) {
+        SceneDocument room = test::smallRoom(61, 37);
+        room.render.maxDepth = 6;
+        expectPixelsSameAsScalar(CompiledScene(room), "small room", 3, 24, kernel);
+        expectPixelsSameAsScalar(CompiledScene(room), "small room, 2 segments", 1, 2, kernel);
+        for (uint32_t seed = 100; seed < 120; ++seed)
+            expectPixelsSameAsScalar(CompiledScene(randomFlatScene(seed)),
+                                     "seed " + std::to_string(seed), 2, 5, kernel);
+    }
+}
+
 TEST(PacketTracer, RenderImage_GivesTheScalarPixels) {
     // Whichever path renderImage takes on this machine, its image and ids are traceCamera's.
     SceneDocument doc = test::smallRoom(50, 30);
