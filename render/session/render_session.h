@@ -22,6 +22,8 @@
 
 namespace rs {
 
+class PacketTracer;
+
 struct PassCounters;
 
 /// Counters for the status bar and benchmarks.
@@ -102,6 +104,10 @@ private:
 
     SceneDocument doc_;
     std::shared_ptr<const CompiledScene> snapshot_;
+    /// Packet tracer for snapshot_'s full-quality traces (null where it does not pay), and the
+    /// snapshot it reads, kept alive with it.
+    std::shared_ptr<const PacketTracer> packets_;
+    std::shared_ptr<const CompiledScene> packetsScene_;
     DeepFrame frame_;
     std::vector<uint8_t> dirtyMask_;
     std::vector<uint8_t> touchedBlocks_;      ///< Blocks the latest edit marked (scratch).

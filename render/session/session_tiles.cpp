@@ -1,5 +1,6 @@
 // Tile work of a pass: trace (or resolve, or supersample) into a local buffer, then commit it
 // to the frame only if its generation is still current.
+#include "integrator/packet_tracer.h"
 #include "integrator/renderer.h"
 #include "session/session_plan.h"
 #include "session/tile_output.h"
@@ -87,6 +88,20 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
         ++traced;
     };
 
+    // With a packet tracer, full-quality centre samples are collected and traced together.
+    thread_local std::vector<int32_t> baseXs, baseYs;
+    thread_local std::vector<uint8_t> baseFlags;
+    thread_local std::vector<PacketPixel> basePixels;
+    baseXs.clear();
+    baseYs.clear();
+    baseFlags.clear();
+    auto requestBase = [&](int x, int y, std::size_t i, uint8_t extraFlags) {
+        if (!plan.packets) return traceBase(x, y, i, extraFlags);
+        baseXs.push_back(x);
+        baseYs.push_back(y);
+        baseFlags.push_back(extraFlags);
+    };
+
     for (int y = r.y0; y < r.y1; ++y) {
         // Stale work stops within one row of an edit.
         if (generation_.load(std::memory_order_relaxed) != plan.generation) return;
@@ -98,7 +113,7 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                     if (s != kStale) continue;
                     if (plan.interleaved && ((x + y + plan.parity) & 1)) continue;
                     if (plan.resultIsBase) {
-                        traceBase(x, y, i, kTracedLastUpdate);
+                        requestBase(x, y, i, kTracedLastUpdate);
                         continue;
                     }
                     TraceCounters tc;
@@ -175,7 +190,7 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                     rays += tc.total();
                     ++traced;
                 } else {
-                    traceBase(x, y, i, uint8_t(plan.flags[i] & kTracedLastUpdate));
+                    requestBase(x, y, i, uint8_t(plan.flags[i] & kTracedLastUpdate));
                 }
             } else {  // Supersample
                 if (s != kBase) continue;
@@ -225,6 +240,32 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                 ++traced;
             }
         }
+    }
+
+    if (!baseXs.empty()) {
+        if (generation_.load(std::memory_order_relaxed) != plan.generation) return;
+        basePixels.resize(baseXs.size());
+        TraceCounters tc;
+        plan.packets->tracePixels(baseXs.data(), baseYs.data(), baseXs.size(), subset,
+                                  kSegmentsPerPixel, basePixels.data(), segments, tc);
+        for (std::size_t k = 0; k < basePixels.size(); ++k) {
+            const PacketPixel& p = basePixels[k];
+            const int x = baseXs[k], y = baseYs[k];
+            const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
+            TraceCounters cost;
+            cost.rays = p.rays;
+            PixelOut o = primaryPixel(
+                i, p.color, ray, p.info, cost, plan.spp == 1 ? kFinal : kBase,
+                uint8_t((p.info.touchedSpecular ? kTouchedSpecular : 0) | baseFlags[k]));
+            o.base = p.color;
+            o.segmentOffset = p.segmentOffset;
+            o.segmentCount = uint8_t(p.segmentCount);
+            if (p.segmentOverflow) o.flags |= kTreeUnknown;
+            out.push_back(o);
+        }
+        rays += tc.total();
+        traced += basePixels.size();
     }
 
     {
