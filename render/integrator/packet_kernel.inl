@@ -179,10 +179,11 @@ public:
 
     /// The camera rays through the centres of pixels (xs[k], ys[k]), k < count <= 8, with
     /// CameraModel::generateRay's operations, traced as level 0. `ids`, `normals` and
-    /// `depths` (each may be null) receive traceCamera's PrimaryInfo fields per lane.
+    /// `depths` (each may be null) receive traceCamera's PrimaryInfo fields per lane, and
+    /// `points` (may be null) the hit point, Ray::at(depth).
     void traceCamera(const int32_t* xs, const int32_t* ys, int count, const RaySubset* subset,
                      PathNode* nodes, const RayArrays& next, std::size_t& nextCount,
-                     ObjectId* ids, Vec3* normals, float* depths,
+                     ObjectId* ids, Vec3* normals, float* depths, Vec3* points,
                      TraceCounters& counters) const {
         const CameraModel& camera = scene_.camera();
         const Vec3 o = camera.origin(), f = camera.forward(), right = camera.right(),
@@ -208,7 +209,8 @@ public:
             r.ox = splat(o.x), r.oy = splat(o.y), r.oz = splat(o.z);
             r.dx = dx * s, r.dy = dy * s, r.dz = dz * s;
         }
-        traceBatch(r, count, 0, subset, nodes, next, nextCount, ids, normals, depths, counters);
+        traceBatch(r, count, 0, subset, nodes, next, nextCount, ids, normals, depths, points,
+                   counters);
     }
 
     /// Secondary rays [i, i + count) of `rays` (count <= 8, readable up to i + 8) of tree
@@ -220,7 +222,7 @@ public:
         r.ox = load(rays.ox + i), r.oy = load(rays.oy + i), r.oz = load(rays.oz + i);
         r.dx = load(rays.dx + i), r.dy = load(rays.dy + i), r.dz = load(rays.dz + i);
         traceBatch(r, count, level, nullptr, nodes, next, nextCount, nullptr, nullptr, nullptr,
-                   counters);
+                   nullptr, counters);
     }
 
     /// Closest hits over planes then spheres, in scene order with strict comparisons, as
@@ -356,7 +358,7 @@ public:
     void traceBatch(const Rays8& r, int count, int level, const RaySubset* subset,
                     PathNode* nodes, const RayArrays& next, std::size_t& nextCount,
                     ObjectId* primaryIds, Vec3* primaryNormals, float* primaryDepths,
-                    TraceCounters& counters) const {
+                    Vec3* primaryPoints, TraceCounters& counters) const {
         counters.rays += uint64_t(count);
         Hits8 h;
         closestHit(r, subset, h);
@@ -402,6 +404,10 @@ public:
                 if (primaryNormals)
                     primaryNormals[k] = hit ? Vec3(hnx[k], hny[k], hnz[k]) : Vec3(0.0f);
                 if (primaryDepths) primaryDepths[k] = hit ? h.t[k] : kInfinity;
+                if (primaryPoints)
+                    primaryPoints[k] = hit ? Vec3(r.ox[k], r.oy[k], r.oz[k]) +
+                                                 Vec3(r.dx[k], r.dy[k], r.dz[k]) * h.t[k]
+                                           : Vec3(0.0f);
             }
         }
         if (!hitBits) {

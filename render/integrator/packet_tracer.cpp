@@ -143,6 +143,7 @@ struct Workspace {
     std::vector<ObjectId> ids;
     std::vector<Vec3> normals;
     std::vector<float> depths;
+    std::vector<Vec3> points;
 };
 
 /// trace()'s sums for one node, its children's colours already known.
@@ -254,7 +255,7 @@ void traceTileWith(const Kernel& kernel, Workspace& ws, const CompiledScene& sce
             const std::size_t pixel = std::size_t(y) * stride + std::size_t(x);
             kernel.traceCamera(xs, ys, count, cameraSubset, &ws.levels[0].nodes[local], next,
                                nextCount, ids ? ids + pixel : nullptr,
-                               normals ? normals + pixel : nullptr, nullptr, counters);
+                               normals ? normals + pixel : nullptr, nullptr, nullptr, counters);
         }
     }
     const std::size_t depth = traceSecondaryLevels(kernel, ws, nextCount, counters);
@@ -281,13 +282,15 @@ void tracePixelsWith(const Kernel& kernel, Workspace& ws, const CompiledScene& s
     ws.ids.resize(count);
     ws.normals.resize(count);
     ws.depths.resize(count);
+    ws.points.resize(count);
     const RayArrays next = ws.levels[1].arrays(2 * count);
     std::size_t nextCount = 0;
     const RaySubset* cameraSubset = subset.valid ? &subset : nullptr;
     for (std::size_t i = 0; i < count; i += kBatch) {
         const int n = int(std::min<std::size_t>(kBatch, count - i));
         kernel.traceCamera(xs + i, ys + i, n, cameraSubset, &ws.levels[0].nodes[i], next,
-                           nextCount, &ws.ids[i], &ws.normals[i], &ws.depths[i], counters);
+                           nextCount, &ws.ids[i], &ws.normals[i], &ws.depths[i], &ws.points[i],
+                           counters);
     }
     const std::size_t depth = traceSecondaryLevels(kernel, ws, nextCount, counters);
     const Color& background = scene.settings().background;
@@ -300,6 +303,7 @@ void tracePixelsWith(const Kernel& kernel, Workspace& ws, const CompiledScene& s
         o.color = sumNode(node, children, background);
         o.info.id = ws.ids[i];
         o.info.depth = ws.depths[i];
+        o.hitPoint = ws.points[i];
         o.info.normal = ws.normals[i];
         o.rays = 1 + node.shadowRays;
         o.info.touchedSpecular = node.specularMaterial;

@@ -16,6 +16,7 @@ struct PacketTables;
 struct PacketPixel {
     Color color{0.0f};
     PrimaryInfo info;
+    Vec3 hitPoint{0.0f};  ///< The camera ray's Ray::at(info.depth) when it hit something.
     uint32_t rays = 0;
     uint32_t segmentOffset = 0;    ///< Its secondary segments in tracePixels' `segments`...
     uint32_t segmentCount = 0;     ///< ...at most the capacity asked for,

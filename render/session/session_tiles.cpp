@@ -19,8 +19,8 @@ glm::vec4 pointBound(const Ray& ray, const PrimaryInfo& info) {
     return glm::vec4(ray.at(info.depth), 0.0f);
 }
 
-/// A pixel written from one camera ray's result.
-PixelOut primaryPixel(std::size_t index, const Color& color, const Ray& ray, const PrimaryInfo& info,
+/// A pixel written from one camera ray's result; hitBound is left to the caller.
+PixelOut primaryPixel(std::size_t index, const Color& color, const PrimaryInfo& info,
                       const TraceCounters& tc, uint8_t state, uint8_t flags) {
     PixelOut o{};
     o.index = uint32_t(index);
@@ -31,6 +31,14 @@ PixelOut primaryPixel(std::size_t index, const Color& color, const Ray& ray, con
     o.cost = uint32_t(tc.total());
     o.state = state;
     o.flags = flags;
+    return o;
+}
+
+/// primaryPixel with the hit point of `ray` as the bound.
+PixelOut primaryPixel(std::size_t index, const Color& color, const Ray& ray,
+                      const PrimaryInfo& info, const TraceCounters& tc, uint8_t state,
+                      uint8_t flags) {
+    PixelOut o = primaryPixel(index, color, info, tc, state, flags);
     o.hitBound = pointBound(ray, info);
     return o;
 }
@@ -252,12 +260,13 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
             const PacketPixel& p = basePixels[k];
             const int x = baseXs[k], y = baseYs[k];
             const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
-            const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
             TraceCounters cost;
             cost.rays = p.rays;
             PixelOut o = primaryPixel(
-                i, p.color, ray, p.info, cost, plan.spp == 1 ? kFinal : kBase,
+                i, p.color, p.info, cost, plan.spp == 1 ? kFinal : kBase,
                 uint8_t((p.info.touchedSpecular ? kTouchedSpecular : 0) | baseFlags[k]));
+            o.hitBound = p.info.id == kNoObject ? glm::vec4(0.0f, 0.0f, 0.0f, -1.0f)
+                                                : glm::vec4(p.hitPoint, 0.0f);
             o.base = p.color;
             o.segmentOffset = p.segmentOffset;
             o.segmentCount = uint8_t(p.segmentCount);

@@ -156,7 +156,8 @@ TEST(PacketTracer, RandomFlatScenes_SameBitsAsTheIntegrator) {
 }
 
 /// tracePixels on every `step`-th pixel against traceCamera with a PrimaryInfo and a
-/// SegmentSink of `capacity`: colour, first hit, touched-specular flag, rays and segments.
+/// SegmentSink of `capacity`: colour, first hit and its point, touched-specular flag, rays
+/// and segments.
 void expectPixelsSameAsScalar(const CompiledScene& scene, const std::string& what, int step,
                               int capacity, PacketTracer::Kernel kernel) {
     const int w = scene.settings().width, h = scene.settings().height;
@@ -176,9 +177,9 @@ void expectPixelsSameAsScalar(const CompiledScene& scene, const std::string& wha
         PrimaryInfo info;
         TraceCounters tc;
         SegmentSink sink{buffer.data(), capacity, 0, false};
-        const Color c = integrator.traceCamera(
-            scene.camera().generateRay(float(xs[i]) + 0.5f, float(ys[i]) + 0.5f),
-            pixelSeed(xs[i], ys[i], 0), tc, &info, nullptr, &sink);
+        const Ray ray = scene.camera().generateRay(float(xs[i]) + 0.5f, float(ys[i]) + 0.5f);
+        const Color c =
+            integrator.traceCamera(ray, pixelSeed(xs[i], ys[i], 0), tc, &info, nullptr, &sink);
         scalarCounters.rays += tc.rays;
         scalarCounters.shadowRays += tc.shadowRays;
         const PacketPixel& p = out[i];
@@ -186,7 +187,8 @@ void expectPixelsSameAsScalar(const CompiledScene& scene, const std::string& wha
                     std::memcmp(&info.depth, &p.info.depth, sizeof(float)) == 0 &&
                     sameBits(info.normal, p.info.normal) &&
                     info.touchedSpecular == p.info.touchedSpecular && tc.total() == p.rays &&
-                    uint32_t(sink.count) == p.segmentCount && sink.overflow == p.segmentOverflow;
+                    uint32_t(sink.count) == p.segmentCount && sink.overflow == p.segmentOverflow &&
+                    (info.id == kNoObject || sameBits(ray.at(info.depth), p.hitPoint));
         for (int k = 0; same && k < sink.count; ++k) {
             const TreeSegment& a = buffer[std::size_t(k)];
             const TreeSegment& b = segments[p.segmentOffset + std::size_t(k)];
