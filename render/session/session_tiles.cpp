@@ -161,15 +161,15 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                 const Ray ray = camera.generateRay(0.5f * float(x + bx1), 0.5f * float(y + by1));
                 const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info, nullptr,
                                                        nullptr, &subset);
-                for (int yy = y; yy < by1; ++yy) {
-                    for (int xx = x; xx < bx1; ++xx) {
-                        out.push_back(primaryPixel(
-                            std::size_t(yy) * std::size_t(w) + std::size_t(xx), c, ray, info, tc,
-                            kInteractive,
-                            uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) |
-                                    kTracedLastUpdate)));
-                    }
-                }
+                // One entry for the block; the commit writes it to every pixel of it.
+                PixelOut o = primaryPixel(
+                    std::size_t(y) * std::size_t(w) + std::size_t(x), c, ray, info, tc,
+                    kInteractive,
+                    uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) |
+                            kTracedLastUpdate));
+                o.spanX = uint8_t(bx1 - x);
+                o.spanY = uint8_t(by1 - y);
+                out.push_back(o);
                 rays += tc.total();
                 ++traced;
             } else if (plan.kind == PassKind::Base) {
@@ -283,18 +283,19 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
         std::shared_lock lock(frameMutex_);
         if (generation_.load() != plan.generation) return;  // Never write a stale tile.
         for (const PixelOut& o : out) {
-            const std::size_t i = o.index;
-            frame_.color[i] = o.color;
-            frame_.id[i] = o.id;
-            frame_.depth[i] = o.depth;
-            frame_.normal[i] = o.normal;
-            frame_.cost[i] = o.cost;
-            frame_.state[i] = o.state;
-            frame_.flags[i] = o.flags;
-            frame_.hitBound[i] = o.hitBound;
-            if (o.state >= kBase) frame_.base[i] = o.base;
-            frame_.sampleSum[i] = o.sampleSum;
-            frame_.sampleCount[i] = o.sampleCount;
+            forEachWritten(o, w, [&](std::size_t i) {
+                frame_.color[i] = o.color;
+                frame_.id[i] = o.id;
+                frame_.depth[i] = o.depth;
+                frame_.normal[i] = o.normal;
+                frame_.cost[i] = o.cost;
+                frame_.state[i] = o.state;
+                frame_.flags[i] = o.flags;
+                frame_.hitBound[i] = o.hitBound;
+                if (o.state >= kBase) frame_.base[i] = o.base;
+                frame_.sampleSum[i] = o.sampleSum;
+                frame_.sampleCount[i] = o.sampleCount;
+            });
         }
         if (plan.kind == PassKind::Interactive && plan.deferredRecords) {
             // Rebuild the tile's record pool: new records for traced pixels, old ones kept for

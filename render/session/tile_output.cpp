@@ -33,6 +33,15 @@ void commitSegments(DeepFrame& frame, const PixelRect& r, int tile, const std::v
     uint32_t& live = frame.tileLiveSegments[std::size_t(tile)];
     for (const PixelOut& o : out) {
         if (o.segmentMode == kKeep) continue;
+        if (o.spanX != 1 || o.spanY != 1) {
+            // An undersampled block: its pixels keep no segments.
+            forEachWritten(o, frame.width, [&](std::size_t i) {
+                live -= frame.segmentCount[i];
+                frame.segmentStart[i] = uint32_t(pool.size());
+                frame.segmentCount[i] = 0;
+            });
+            continue;
+        }
         const std::size_t i = o.index;
         const uint32_t oldStart = frame.segmentStart[i], oldCount = frame.segmentCount[i];
         const uint32_t start = uint32_t(pool.size());
@@ -55,11 +64,14 @@ void commitSegments(DeepFrame& frame, const PixelRect& r, int tile, const std::v
     uint32_t done = 0;  // Bit per block of the tile (a 32x32 tile holds 16 8x8 blocks).
     const int perRow = (r.x1 - r.x0 + DeepFrame::kBlock - 1) / DeepFrame::kBlock;
     for (const PixelOut& o : out) {
-        const int x = int(o.index % uint32_t(frame.width)), y = int(o.index / uint32_t(frame.width));
-        const int bit = ((y - r.y0) / DeepFrame::kBlock) * perRow + (x - r.x0) / DeepFrame::kBlock;
-        if (bit < 32 && (done >> bit) & 1u) continue;
-        if (bit < 32) done |= 1u << bit;
-        frame.summarizeBlock(x, y);
+        forEachWritten(o, frame.width, [&](std::size_t i) {
+            const int x = int(i % std::size_t(frame.width)), y = int(i / std::size_t(frame.width));
+            const int bit =
+                ((y - r.y0) / DeepFrame::kBlock) * perRow + (x - r.x0) / DeepFrame::kBlock;
+            if (bit < 32 && (done >> bit) & 1u) return;
+            if (bit < 32) done |= 1u << bit;
+            frame.summarizeBlock(x, y);
+        });
     }
 }
 

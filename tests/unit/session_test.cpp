@@ -244,6 +244,48 @@ TEST(RenderSession, MovingADiffuseBall_RefitsAndTracesOnlyItsRegion) {
     EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
 }
 
+TEST(RenderSession, QuarterResolution_EachTracedRayFillsItsBlock) {
+    // An undersampled pass commits one entry per 4x4 block; every pixel of the block must get
+    // the block's sample, and refinement must still end at the full render.
+    SceneDocument doc = testRoom();
+    doc.render.width = 70;  // not a multiple of 4 or of the tile size: partial blocks
+    doc.render.height = 45;
+    RenderSession session(2);
+    InteractionPolicy p;
+    p.resolution = MovingResolution::Quarter;
+    p.dirtyRegions = false;  // every pixel is re-traced at quarter resolution
+    p.governorTargetMs = 0.0;
+    session.setPolicy(p);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    session.beginInteraction(doc.objects[2].id);
+    doc.objects[2].transform.translate.x += 0.3f;
+    const uint64_t gen = session.update(doc);
+    PassInfo info;
+    ASSERT_TRUE(session.waitForPass(gen, 30s, &info));
+    ASSERT_EQ(info.kind, PassKind::Interactive);
+    std::size_t interactive = 0, differing = 0;
+    session.withFrame([&](const DeepFrame& f, const auto&) {
+        for (int y = 0; y < f.height; ++y) {
+            for (int x = 0; x < f.width; ++x) {
+                const std::size_t i = f.index(x, y);
+                // The block's sample sits at its top-left pixel; blocks never cross tiles.
+                const std::size_t corner = f.index(x / 4 * 4, y / 4 * 4);
+                if (f.state[i] != kInteractive) continue;
+                ++interactive;
+                differing += f.color[i] != f.color[corner] || f.id[i] != f.id[corner] ||
+                             f.state[corner] != kInteractive;
+            }
+        }
+    });
+    EXPECT_EQ(interactive, std::size_t(70 * 45));
+    EXPECT_EQ(differing, 0u);
+    EXPECT_EQ(info.tracedPixels, std::size_t(18 * 12));  // ceil(70 / 4) x ceil(45 / 4) rays
+    session.endInteraction();
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+}
+
 TEST(RenderSession, DeferredShadows_RecordsWhileMovingAndResolvesExactlyAfterRelease) {
     SceneDocument doc = testRoom();
     RenderSession session(2);
