@@ -177,21 +177,40 @@ public:
                  bool shadows, float eps)
         : scene_(scene), tables_(tables), maxDepth_(maxDepth), shadows_(shadows), eps_(eps) {}
 
-    /// The camera rays through the centres of pixels (xs[k], ys[k]), k < count <= 8, with
+    /// The camera rays through image points (px[k], py[k]), k < count <= 8, with
     /// CameraModel::generateRay's operations, traced as level 0. `ids`, `normals` and
     /// `depths` (each may be null) receive traceCamera's PrimaryInfo fields per lane, and
     /// `points` (may be null) the hit point, Ray::at(depth).
-    void traceCamera(const int32_t* xs, const int32_t* ys, int count, const RaySubset* subset,
+    void traceCamera(const float* px, const float* py, int count, const RaySubset* subset,
                      PathNode* nodes, const RayArrays& next, std::size_t& nextCount,
                      ObjectId* ids, Vec3* normals, float* depths, Vec3* points,
                      TraceCounters& counters) const {
+        const Rays8 r = cameraRays(px, py, count);
+        traceBatch(r, count, 0, subset, nodes, next, nextCount, ids, normals, depths, points,
+                   counters);
+    }
+
+    /// The id of the first thing each camera ray through (px[k], py[k]) hits (CompiledScene::
+    /// intersect's answer), kNoObject for none; no shading.
+    void firstHits(const float* px, const float* py, int count, const RaySubset* subset,
+                   ObjectId* ids) const {
+        Hits8 h;
+        closestHit(cameraRays(px, py, count), subset, h);
+        for (int k = 0; k < count; ++k)
+            ids[k] = h.sphere[k] >= 0 ? tables_.sphereId[std::size_t(h.sphere[k])]
+                     : h.plane[k] >= 0 ? tables_.planeId[std::size_t(h.plane[k])]
+                                       : kNoObject;
+    }
+
+    /// CameraModel::generateRay for eight image points (lanes past `count` repeat the first).
+    Rays8 cameraRays(const float* px, const float* py, int count) const {
         const CameraModel& camera = scene_.camera();
         const Vec3 o = camera.origin(), f = camera.forward(), right = camera.right(),
                    up = camera.up();
         F8 u, v;
         for (int k = 0; k < kLanes; ++k) {
-            u[k] = float(xs[k < count ? k : 0]) + 0.5f;
-            v[k] = float(ys[k < count ? k : 0]) + 0.5f;
+            u[k] = px[k < count ? k : 0];
+            v[k] = py[k < count ? k : 0];
         }
         u = (2.0f * u * camera.invWidth() - 1.0f) * camera.halfWidth();
         v = (1.0f - 2.0f * v * camera.invHeight()) * camera.halfHeight();
@@ -209,8 +228,7 @@ public:
             r.ox = splat(o.x), r.oy = splat(o.y), r.oz = splat(o.z);
             r.dx = dx * s, r.dy = dy * s, r.dz = dz * s;
         }
-        traceBatch(r, count, 0, subset, nodes, next, nextCount, ids, normals, depths, points,
-                   counters);
+        return r;
     }
 
     /// Secondary rays [i, i + count) of `rays` (count <= 8, readable up to i + 8) of tree

@@ -2,6 +2,9 @@
 // refractions, intersected and shaded with the integrator's operations lane by lane.
 #include "integrator/packet_tracer.h"
 
+#include "integrator/renderer.h"
+#include "integrator/sampling.h"
+
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -144,6 +147,9 @@ struct Workspace {
     std::vector<Vec3> normals;
     std::vector<float> depths;
     std::vector<Vec3> points;
+    // Image points of the camera rays, and per-pixel sums of samples.
+    std::vector<float> px, py;
+    std::vector<Color> sums;
 };
 
 /// trace()'s sums for one node, its children's colours already known.
@@ -245,15 +251,15 @@ void traceTileWith(const Kernel& kernel, Workspace& ws, const CompiledScene& sce
     const RayArrays next = ws.levels[1].arrays(2 * pixels);  // two children per ray at most
     std::size_t nextCount = 0;
     const RaySubset* cameraSubset = subset.valid ? &subset : nullptr;
-    int32_t xs[kBatch], ys[kBatch];
+    float px[kBatch], py[kBatch];
     for (int y = y0; y < y1; ++y) {
         for (int x = x0; x < x1; x += kBatch) {
             const int count = std::min(kBatch, x1 - x);
-            for (int k = 0; k < count; ++k) xs[k] = x + k, ys[k] = y;
+            for (int k = 0; k < count; ++k) px[k] = float(x + k) + 0.5f, py[k] = float(y) + 0.5f;
             const std::size_t local =
                 std::size_t(y - y0) * std::size_t(width) + std::size_t(x - x0);
             const std::size_t pixel = std::size_t(y) * stride + std::size_t(x);
-            kernel.traceCamera(xs, ys, count, cameraSubset, &ws.levels[0].nodes[local], next,
+            kernel.traceCamera(px, py, count, cameraSubset, &ws.levels[0].nodes[local], next,
                                nextCount, ids ? ids + pixel : nullptr,
                                normals ? normals + pixel : nullptr, nullptr, nullptr, counters);
         }
@@ -270,6 +276,14 @@ void traceTileWith(const Kernel& kernel, Workspace& ws, const CompiledScene& sce
     }
 }
 
+/// Image points of the pixels' centres, as renderImage passes them to generateRay.
+void centres(Workspace& ws, const int32_t* xs, const int32_t* ys, std::size_t count) {
+    ws.px.resize(count + kBatch);
+    ws.py.resize(count + kBatch);
+    for (std::size_t i = 0; i < count; ++i)
+        ws.px[i] = float(xs[i]) + 0.5f, ws.py[i] = float(ys[i]) + 0.5f;
+}
+
 /// Traces a list of pixels with `kernel`, with the session's per-pixel outputs.
 template <class Kernel>
 void tracePixelsWith(const Kernel& kernel, Workspace& ws, const CompiledScene& scene,
@@ -283,12 +297,13 @@ void tracePixelsWith(const Kernel& kernel, Workspace& ws, const CompiledScene& s
     ws.normals.resize(count);
     ws.depths.resize(count);
     ws.points.resize(count);
+    centres(ws, xs, ys, count);
     const RayArrays next = ws.levels[1].arrays(2 * count);
     std::size_t nextCount = 0;
     const RaySubset* cameraSubset = subset.valid ? &subset : nullptr;
     for (std::size_t i = 0; i < count; i += kBatch) {
         const int n = int(std::min<std::size_t>(kBatch, count - i));
-        kernel.traceCamera(xs + i, ys + i, n, cameraSubset, &ws.levels[0].nodes[i], next,
+        kernel.traceCamera(&ws.px[i], &ws.py[i], n, cameraSubset, &ws.levels[0].nodes[i], next,
                            nextCount, &ws.ids[i], &ws.normals[i], &ws.depths[i], &ws.points[i],
                            counters);
     }
@@ -315,6 +330,41 @@ void tracePixelsWith(const Kernel& kernel, Workspace& ws, const CompiledScene& s
         o.segmentOffset = uint32_t(segments.size());
         if (depth > 0) collectSegments(ws, 0, node, segmentCapacity, segments, o);
     }
+}
+
+/// renderPixel's supersampled colours for a list of pixels: sample k of every pixel is traced
+/// as one list, and each pixel adds its samples in order k = 0, 1, ... as renderPixel does.
+template <class Kernel>
+void traceSamplesWith(const Kernel& kernel, Workspace& ws, const CompiledScene& scene,
+                      const int32_t* xs, const int32_t* ys, std::size_t count, int spp,
+                      const RaySubset& subset, Color* out, TraceCounters& counters) {
+    if (count == 0) return;
+    if (ws.levels.size() < 2) ws.levels.resize(2);
+    ws.levels[0].nodes.resize(count);
+    ws.px.resize(count + kBatch);
+    ws.py.resize(count + kBatch);
+    ws.sums.assign(count, Color(0.0f));
+    const RaySubset* cameraSubset = subset.valid ? &subset : nullptr;
+    const Color& background = scene.settings().background;
+    for (int k = 0; k < spp; ++k) {
+        for (std::size_t i = 0; i < count; ++i) {
+            const Vec3 o = pixelSampleOffset(k, spp, pixelSeed(xs[i], ys[i], 0x5eed));
+            ws.px[i] = float(xs[i]) + o.x, ws.py[i] = float(ys[i]) + o.y;
+        }
+        const RayArrays next = ws.levels[1].arrays(2 * count);
+        std::size_t nextCount = 0;
+        for (std::size_t i = 0; i < count; i += kBatch) {
+            const int n = int(std::min<std::size_t>(kBatch, count - i));
+            kernel.traceCamera(&ws.px[i], &ws.py[i], n, cameraSubset, &ws.levels[0].nodes[i],
+                               next, nextCount, nullptr, nullptr, nullptr, nullptr, counters);
+        }
+        const std::size_t depth = traceSecondaryLevels(kernel, ws, nextCount, counters);
+        sumLevels(ws, depth, background, false);
+        const Level* children = depth > 0 ? &ws.levels[1] : nullptr;
+        for (std::size_t i = 0; i < count; ++i)
+            ws.sums[i] += sumNode(ws.levels[0].nodes[i], children, background);
+    }
+    for (std::size_t i = 0; i < count; ++i) out[i] = ws.sums[i] / float(spp);
 }
 
 }  // namespace
@@ -344,6 +394,41 @@ PacketTracer::PacketTracer(const CompiledScene& scene, Kernel kernel)
       eps_(scene.epsilon()) {}
 
 PacketTracer::~PacketTracer() = default;
+
+void PacketTracer::traceSamples(const int32_t* xs, const int32_t* ys, std::size_t count, int spp,
+                                const RaySubset& subset, Color* out,
+                                TraceCounters& counters) const {
+    thread_local Workspace ws;
+#if defined(RS_PACKET_DISPATCH)
+    if (kernel_ == Kernel::Fastest && __builtin_cpu_supports("avx2")) {
+        const avx2::PacketKernel kernel(scene_, *tables_, maxDepth_, shadows_, eps_);
+        traceSamplesWith(kernel, ws, scene_, xs, ys, count, spp, subset, out, counters);
+        return;
+    }
+#endif
+    const baseline::PacketKernel kernel(scene_, *tables_, maxDepth_, shadows_, eps_);
+    traceSamplesWith(kernel, ws, scene_, xs, ys, count, spp, subset, out, counters);
+}
+
+void PacketTracer::firstHits(const int32_t* xs, const int32_t* ys, std::size_t count,
+                             const RaySubset& subset, ObjectId* out) const {
+    thread_local Workspace ws;
+    centres(ws, xs, ys, count);
+    const RaySubset* cameraSubset = subset.valid ? &subset : nullptr;
+#if defined(RS_PACKET_DISPATCH)
+    if (kernel_ == Kernel::Fastest && __builtin_cpu_supports("avx2")) {
+        const avx2::PacketKernel kernel(scene_, *tables_, maxDepth_, shadows_, eps_);
+        for (std::size_t i = 0; i < count; i += kBatch)
+            kernel.firstHits(&ws.px[i], &ws.py[i], int(std::min<std::size_t>(kBatch, count - i)),
+                             cameraSubset, out + i);
+        return;
+    }
+#endif
+    const baseline::PacketKernel kernel(scene_, *tables_, maxDepth_, shadows_, eps_);
+    for (std::size_t i = 0; i < count; i += kBatch)
+        kernel.firstHits(&ws.px[i], &ws.py[i], int(std::min<std::size_t>(kBatch, count - i)),
+                         cameraSubset, out + i);
+}
 
 void PacketTracer::tracePixels(const int32_t* xs, const int32_t* ys, std::size_t count,
                                const RaySubset& subset, int segmentCapacity, PacketPixel* out,

@@ -67,6 +67,16 @@ public:
                      const RaySubset& subset, int segmentCapacity, PacketPixel* out,
                      std::vector<TreeSegment>& segments, TraceCounters& counters) const;
 
+    /// renderPixel's colours for pixels (xs[i], ys[i]) with `spp` samples each (its pattern,
+    /// its seeds, its order of summing) into out[i].
+    void traceSamples(const int32_t* xs, const int32_t* ys, std::size_t count, int spp,
+                      const RaySubset& subset, Color* out, TraceCounters& counters) const;
+
+    /// The id of what the centre ray of pixel (xs[i], ys[i]) hits first (kNoObject for
+    /// nothing) into out[i], without shading: renderImage's ids when it supersamples.
+    void firstHits(const int32_t* xs, const int32_t* ys, std::size_t count,
+                   const RaySubset& subset, ObjectId* out) const;
+
 private:
     const CompiledScene& scene_;
     std::unique_ptr<PacketTables> tables_;  ///< What the kernel gathers per lane.

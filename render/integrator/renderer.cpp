@@ -126,12 +126,37 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
         }
     };
 
+    // Packet tracing of supersampled pixels: all pixels of a tile (pass 1 without adaptive
+    // supersampling, with the centre rays' ids), or those `pick` selects (adaptive pass 2).
+    auto supersampleTile = [&](const PacketTracer& tracer, int x0, int y0, int x1, int y1,
+                               const RaySubset& subset, TraceCounters& counters,
+                               ImageRgb* into = nullptr,
+                               const std::function<bool(int, int)>& pick = {}) {
+        thread_local std::vector<int32_t> xs, ys;
+        thread_local std::vector<Color> colors;
+        xs.clear();
+        ys.clear();
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x)
+                if (!pick || pick(x, y)) xs.push_back(x), ys.push_back(y);
+        colors.resize(xs.size());
+        tracer.traceSamples(xs.data(), ys.data(), xs.size(), spp, subset, colors.data(), counters);
+        ImageRgb& image = into ? *into : result.image;
+        for (std::size_t k = 0; k < xs.size(); ++k) image.at(xs[k], ys[k]) = colors[k];
+        if (into || ids.empty()) return;
+        thread_local std::vector<ObjectId> tileIds;
+        tileIds.resize(xs.size());
+        tracer.firstHits(xs.data(), ys.data(), xs.size(), subset, tileIds.data());
+        for (std::size_t k = 0; k < xs.size(); ++k)
+            ids[std::size_t(ys[k]) * std::size_t(w) + std::size_t(xs[k])] = tileIds[k];
+    };
+
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::info::default_concurrency());
     arenaExecute(arena, [&] {
         // Pass 1: one centre sample per pixel (all the image needs without supersampling), or
         // the full pattern when supersampling everywhere. Ids come from the centre ray.
         const bool packets =
-            (spp == 1 || adaptive) && PacketTracer::profitable() && PacketTracer::supports(scene);
+            options.packets && PacketTracer::profitable() && PacketTracer::supports(scene);
         const PacketTracer packetTracer(scene);
         result.cancelled = !forEachTile(w, h, options, result.rays,
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
@@ -141,11 +166,13 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
                     // The same bits as the loop below, eight rays at a time.
                     if (cancelled())
                         clearRows(x0, x1, y0, y1);
-                    else
+                    else if (spp == 1 || adaptive)
                         packetTracer.traceTile(x0, y0, x1, y1, subset, std::size_t(w),
                                                result.image.pixels.data(),
                                                ids.empty() ? nullptr : ids.data(),
                                                adaptive ? normals.data() : nullptr, counters);
+                    else
+                        supersampleTile(packetTracer, x0, y0, x1, y1, subset, counters);
                     return;
                 }
                 int y = y0;
@@ -181,6 +208,16 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
                 RaySubset subset;
                 cullTile(scene, x0, y0, x1, y1, subset);
+                if (packets) {
+                    if (cancelled()) return;
+                    supersampleTile(packetTracer, x0, y0, x1, y1, subset, counters, &refined,
+                                    [&](int x, int y) {
+                                        return needsSupersampling(result.image.pixels.data(),
+                                                                  ids.data(), normals.data(), w,
+                                                                  h, x, y);
+                                    });
+                    return;
+                }
                 for (int y = y0; y < y1 && !cancelled(); ++y)
                     for (int x = x0; x < x1; ++x)
                         if (needsSupersampling(result.image.pixels.data(), ids.data(),

@@ -20,6 +20,9 @@ struct RenderOptions {
     const std::atomic<bool>* cancel = nullptr;  ///< Polled once per row; may be null.
     /// Fill RenderResult::ids (picking); renders that only write an image leave it off.
     bool ids = true;
+    /// Trace with PacketTracer where it applies and pays (same bits either way); off forces
+    /// the scalar integrator, for tests and for measuring the difference.
+    bool packets = true;
     /// Called (serialised) after each tile with tiles done and total; may be empty.
     std::function<void(int done, int total)> progress;
 };

@@ -215,6 +215,61 @@ TEST(PacketTracer, PixelLists_SameOutputsAsTheIntegrator) {
     }
 }
 
+TEST(PacketTracer, Supersamples_SameBitsAsRenderPixel) {
+    for (const auto kernel : {PacketTracer::Kernel::Fastest, PacketTracer::Kernel::Baseline}) {
+        for (uint32_t seed = 200; seed < 206; ++seed) {
+            const CompiledScene scene(randomFlatScene(seed));
+            const PacketTracer tracer(scene, kernel);
+            const WhittedIntegrator integrator(scene);
+            const int w = scene.settings().width, h = scene.settings().height;
+            std::vector<int32_t> xs, ys;
+            for (int i = 0; i < w * h; i += 3) xs.push_back(i % w), ys.push_back(i / w);
+            for (int spp : {2, 3, 4, 5}) {  // regular grids and n-rooks patterns
+                std::vector<Color> colors(xs.size());
+                std::vector<ObjectId> ids(xs.size());
+                TraceCounters packetCounters, scalarCounters;
+                tracer.traceSamples(xs.data(), ys.data(), xs.size(), spp, RaySubset{},
+                                    colors.data(), packetCounters);
+                tracer.firstHits(xs.data(), ys.data(), xs.size(), RaySubset{}, ids.data());
+                int mismatches = 0;
+                for (std::size_t i = 0; i < xs.size(); ++i) {
+                    const Color c =
+                        renderPixel(integrator, scene.camera(), xs[i], ys[i], spp, scalarCounters);
+                    SurfaceHit hit;
+                    const Ray centre =
+                        scene.camera().generateRay(float(xs[i]) + 0.5f, float(ys[i]) + 0.5f);
+                    const ObjectId id =
+                        scene.intersect(centre, 0.0f, kInfinity, hit) ? hit.id : kNoObject;
+                    mismatches += !sameBits(c, colors[i]) || id != ids[i];
+                }
+                EXPECT_EQ(mismatches, 0) << "seed " << seed << ", spp " << spp;
+                EXPECT_EQ(packetCounters.total(), scalarCounters.total())
+                    << "seed " << seed << ", spp " << spp;
+            }
+        }
+    }
+}
+
+TEST(PacketTracer, RenderImage_PacketsOnOrOff_SameResult) {
+    // Every path of renderImage: centre samples, full and adaptive supersampling.
+    for (int spp : {1, 3, 4}) {  // 3: n-rooks, and a division that is not exact
+        for (bool adaptive : {false, true}) {
+            SceneDocument doc = test::smallRoom(67, 41);
+            doc.render.supersampling = spp;
+            doc.render.adaptiveSupersampling = adaptive;
+            const CompiledScene scene(doc);
+            RenderOptions on, off;
+            on.threads = off.threads = 2;
+            off.packets = false;
+            const RenderResult a = renderImage(scene, on);
+            const RenderResult b = renderImage(scene, off);
+            EXPECT_EQ(a.image.pixels, b.image.pixels) << "spp " << spp << " adaptive " << adaptive;
+            EXPECT_EQ(a.ids, b.ids) << "spp " << spp << " adaptive " << adaptive;
+            EXPECT_EQ(a.rays, b.rays) << "spp " << spp << " adaptive " << adaptive;
+        }
+    }
+}
+
 TEST(PacketTracer, RenderImage_GivesTheScalarPixels) {
     // Whichever path renderImage takes on this machine, its image and ids are traceCamera's.
     SceneDocument doc = test::smallRoom(50, 30);
