@@ -244,6 +244,22 @@ TEST(RenderSession, MovingADiffuseBall_RefitsAndTracesOnlyItsRegion) {
     EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
 }
 
+/// Renders `doc` under `policy` with every pixel dirty on every edit and no governor (exactly
+/// this policy, whatever the machine's speed), then begins dragging objects[2] and moves it
+/// once; true when that step's interactive pass finished (its info in `info`).
+bool firstDragStep(RenderSession& session, SceneDocument& doc, InteractionPolicy policy,
+                   PassInfo& info) {
+    policy.dirtyRegions = false;
+    policy.governorTargetMs = 0.0;
+    session.setPolicy(policy);
+    session.update(doc);
+    if (!session.waitUntilComplete(60s)) return false;
+    session.beginInteraction(doc.objects[2].id);
+    doc.objects[2].transform.translate.x += 0.3f;
+    const uint64_t gen = session.update(doc);
+    return session.waitForPass(gen, 30s, &info) && info.kind == PassKind::Interactive;
+}
+
 TEST(RenderSession, QuarterResolution_EachTracedRayFillsItsBlock) {
     // An undersampled pass commits one entry per 4x4 block; every pixel of the block must get
     // the block's sample, and refinement must still end at the full render.
@@ -253,17 +269,8 @@ TEST(RenderSession, QuarterResolution_EachTracedRayFillsItsBlock) {
     RenderSession session(2);
     InteractionPolicy p;
     p.resolution = MovingResolution::Quarter;
-    p.dirtyRegions = false;  // every pixel is re-traced at quarter resolution
-    p.governorTargetMs = 0.0;
-    session.setPolicy(p);
-    session.update(doc);
-    ASSERT_TRUE(session.waitUntilComplete(60s));
-    session.beginInteraction(doc.objects[2].id);
-    doc.objects[2].transform.translate.x += 0.3f;
-    const uint64_t gen = session.update(doc);
     PassInfo info;
-    ASSERT_TRUE(session.waitForPass(gen, 30s, &info));
-    ASSERT_EQ(info.kind, PassKind::Interactive);
+    ASSERT_TRUE(firstDragStep(session, doc, p, info));
     std::size_t interactive = 0, differing = 0;
     session.withFrame([&](const DeepFrame& f, const auto&) {
         for (int y = 0; y < f.height; ++y) {
@@ -291,17 +298,8 @@ TEST(RenderSession, DeferredShadows_RecordsWhileMovingAndResolvesExactlyAfterRel
     RenderSession session(2);
     InteractionPolicy p;
     p.shadows = MovingShadows::Deferred;
-    p.dirtyRegions = false;  // Every pixel goes through the deferred path.
-    p.governorTargetMs = 0.0;  // Exactly this policy, whatever the machine's speed.
-    session.setPolicy(p);
-    session.update(doc);
-    ASSERT_TRUE(session.waitUntilComplete(60s));
-    session.beginInteraction(doc.objects[2].id);
-    doc.objects[2].transform.translate.x += 0.3f;
-    const uint64_t gen = session.update(doc);
     PassInfo info;
-    ASSERT_TRUE(session.waitForPass(gen, 30s, &info));
-    EXPECT_EQ(info.kind, PassKind::Interactive);
+    ASSERT_TRUE(firstDragStep(session, doc, p, info));
     std::size_t deferred = 0, interactive = 0;
     session.withFrame([&](const DeepFrame& f, const auto&) {
         for (std::size_t i = 0; i < f.pixelCount(); ++i) {
