@@ -170,7 +170,7 @@ struct Hits8 {
     I8 plane, sphere;
 };
 
-/// The tracer's SIMD loops over raw arrays; PacketTracer::traceTile drives them.
+/// The tracer's SIMD loops over raw arrays; PacketTracer's methods drive them level by level.
 class PacketKernel {
 public:
     PacketKernel(const CompiledScene& scene, const PacketTables& tables, int maxDepth,

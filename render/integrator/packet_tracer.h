@@ -23,12 +23,14 @@ struct PacketPixel {
     bool segmentOverflow = false;  ///< and whether more were dropped (SegmentSink::overflow).
 };
 
-/// Traces a tile's centre rays in packets of eight: the camera rays first, then each level
-/// of the tile's reflection and refraction rays, every level intersected and shaded in
-/// eight-lane SIMD. Each lane does WhittedIntegrator's operations in the same order, and the
-/// ray trees are summed leaves-up the way trace() adds them, so every colour, id and normal
-/// is bit-identical to traceCamera's at the scene's render settings (tested); the session,
-/// which needs its per-pixel outputs and quality policies, keeps the scalar integrator.
+/// Traces camera rays in packets of eight (a tile's centre rays, a list of pixels, or each
+/// sample of supersampled pixels): the camera rays first, then each level of their reflection
+/// and refraction rays, every level intersected and shaded in eight-lane SIMD. Each lane does
+/// WhittedIntegrator's operations in the same order, and the ray trees are summed leaves-up
+/// the way trace() adds them, so every colour, id, normal, ray count and segment is
+/// bit-identical to traceCamera's at the scene's render settings (tested). Full renders use
+/// it, and so do the session's full-quality passes; the session's reduced-quality passes
+/// (deferred shadows, diffuse mirrors, ...) keep the scalar integrator.
 ///
 /// Why: the scalar integrator walks one ray tree after another, and its data-dependent
 /// branches (which shape, which material, shadowed or not) leave the core waiting on one
