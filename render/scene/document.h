@@ -46,6 +46,9 @@ struct RenderSettings {
     int width = 1280;
     int height = 720;
     int maxDepth = 3;
+    /// Reflected or refracted rays whose accumulated weight is below this are not traced
+    /// (scene-format.md `min_weight`, POV-Ray's adc_bailout); 0 traces to maxDepth always.
+    float minWeight = 1.0f / 255.0f;
     int shadowSamples = 1;
     int supersampling = 1;
     bool adaptiveSupersampling = false;
