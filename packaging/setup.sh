@@ -8,7 +8,7 @@ readonly DEFAULT_SCENE="scenes/reference-room.scene.json"
 readonly REQUIRED_PACKAGES=(
     build-essential cmake ninja-build pkg-config git
     qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libgl-dev
-    libglm-dev libopenimageio-dev openimageio-tools libassimp-dev libtbb-dev
+    libglm-dev libopenimageio-dev openimageio-tools libassimp-dev libtbb-dev libembree-dev
     nlohmann-json3-dev libgtest-dev googletest
     xvfb xauth mesa-utils libgl1-mesa-dri
 )

@@ -1,4 +1,5 @@
-// A triangle mesh ready for tracing: triangles plus their own BVH, in object space.
+// A triangle mesh ready for tracing: its data, bounds and normal rule, and (built on first
+// use) the thesis's triangle BVH, all in object space.
 #pragma once
 
 #include "accel/bvh.h"
@@ -6,33 +7,48 @@
 #include "scene/mesh_data.h"
 
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace rs {
 
 /// Immutable once built; shared by every snapshot that shows the mesh (moving the object only
-/// changes its instance transform, so the triangle BVH is never rebuilt on a move).
+/// changes its instance transform, so the triangles are never rebuilt on a move). The
+/// triangle BVH is only built for the built-in engine (ensureBvh), so a scene traced with
+/// Embree never pays for it.
 class MeshAccel {
 public:
-    /// Builds triangles and the BVH. `smooth` interpolates vertex normals when the data has them.
+    /// Computes the bounds. `smooth` interpolates vertex normals when the data has them.
     MeshAccel(std::shared_ptr<const MeshData> data, bool smooth);
+
+    /// Builds the triangle list and BVH once; safe to call from several threads.
+    void ensureBvh() const;
 
     /// Closest hit in (tmin, tmax); on a hit shrinks tmax and fills `hit` (object space normal).
     bool intersect(const Ray& ray, float tmin, float& tmax, ShapeHit& hit) const;
     /// Any hit in (tmin, tmax).
     bool occluded(const Ray& ray, float tmin, float tmax) const;
 
-    const Aabb& bounds() const { return bvh_.bounds(); }
+    /// The unit object-space normal at barycentrics (b1, b2) of triangle `tri`: the
+    /// interpolated vertex normal when smooth, else the geometric one. Every engine's mesh hits
+    /// get their normal here.
+    Vec3 normal(uint32_t tri, float b1, float b2) const;
+    /// True when triangle `tri` has three valid vertex indices (others are never hit).
+    bool validTriangle(uint32_t tri) const;
+
+    const Aabb& bounds() const { return bounds_; }
     /// The mesh data this was built from (snapshots reuse an accel for the same data).
     const std::shared_ptr<const MeshData>& data() const { return data_; }
     bool smooth() const { return smooth_; }
-    std::size_t triangleCount() const { return triangles_.size(); }
+    std::size_t triangleCount() const { return data_ ? data_->triangleCount() : 0; }
 
 private:
     std::shared_ptr<const MeshData> data_;
-    std::vector<TriangleShape> triangles_;  ///< In BVH leaf order is not required; indexed.
     bool smooth_;
-    Bvh bvh_;
+    Aabb bounds_;
+    mutable std::once_flag bvhOnce_;
+    mutable std::vector<TriangleShape> triangles_;  ///< Triangle i of the indices (ensureBvh).
+    mutable Bvh bvh_;
 };
 
 }  // namespace rs

@@ -2,8 +2,8 @@
 #include "integrator/renderer.h"
 
 #include "core/parallel.h"
-#include "integrator/packet_tracer.h"
 #include "integrator/sampling.h"
+#include "integrator/trace_kernel.h"
 
 #include <tbb/blocked_range2d.h>
 #include <tbb/info.h>
@@ -15,22 +15,62 @@
 
 namespace rs {
 
+namespace {
+/// Camera rays handed to the kernel per call when supersampling (a bounded working set).
+constexpr std::size_t kSampleBatch = 4096;
+}  // namespace
+
 Color renderPixel(const WhittedIntegrator& integrator, const CameraModel& camera, int x, int y,
-                  int spp, TraceCounters& counters, const RaySubset* subset) {
+                  int spp, TraceCounters& counters) {
     if (spp <= 1) {
         Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
-        return integrator.traceCamera(ray, pixelSeed(x, y, 0), counters, nullptr, nullptr,
-                                      nullptr, subset);
+        return integrator.traceCamera(ray, pixelSeed(x, y, 0), counters);
     }
     Color sum(0.0f);
     const uint32_t patternSeed = pixelSeed(x, y, 0x5eed);
     for (int k = 0; k < spp; ++k) {
         Vec3 o = pixelSampleOffset(k, spp, patternSeed);
         Ray ray = camera.generateRay(float(x) + o.x, float(y) + o.y);
-        sum += integrator.traceCamera(ray, pixelSeed(x, y, k), counters, nullptr, nullptr,
-                                      nullptr, subset);
+        sum += integrator.traceCamera(ray, pixelSeed(x, y, k), counters);
     }
     return sum / float(spp);
+}
+
+bool supersamplePixels(const TraceKernel& kernel, const int32_t* xs, const int32_t* ys,
+                       std::size_t count, int spp, Color* out, TraceCounters& counters,
+                       const std::function<bool()>& stale) {
+    thread_local std::vector<Vec3> origins, dirs;
+    thread_local std::vector<uint32_t> seeds;
+    thread_local std::vector<Color> colors;
+    const CameraModel& camera = kernel.scene().camera();
+    const std::size_t perCall = std::max<std::size_t>(1, kSampleBatch / std::size_t(spp));
+    for (std::size_t first = 0; first < count; first += perCall) {
+        const std::size_t n = std::min(perCall, count - first);
+        origins.clear(), dirs.clear(), seeds.clear();
+        for (std::size_t i = first; i < first + n; ++i) {
+            const uint32_t patternSeed = pixelSeed(xs[i], ys[i], 0x5eed);
+            for (int k = 0; k < spp; ++k) {
+                const Vec3 o = pixelSampleOffset(k, spp, patternSeed);
+                const Ray ray = camera.generateRay(float(xs[i]) + o.x, float(ys[i]) + o.y);
+                origins.push_back(ray.origin);
+                dirs.push_back(ray.dir);
+                seeds.push_back(pixelSeed(xs[i], ys[i], k));
+            }
+        }
+        colors.resize(origins.size());
+        TraceOutput result;
+        result.color = colors.data();
+        if (!kernel.trace(CameraBatch{origins.data(), dirs.data(), seeds.data(), origins.size(), true},
+                          result, counters, stale))
+            return false;
+        // Each pixel adds its samples in order k = 0, 1, ... as renderPixel does.
+        for (std::size_t j = 0; j < n; ++j) {
+            Color sum(0.0f);
+            for (int k = 0; k < spp; ++k) sum += colors[j * std::size_t(spp) + std::size_t(k)];
+            out[first + j] = sum / float(spp);
+        }
+    }
+    return true;
 }
 
 bool needsSupersampling(const Color* colors, const ObjectId* ids, const Vec3* normals, int width,
@@ -52,15 +92,6 @@ bool needsSupersampling(const Color* colors, const ObjectId* ids, const Vec3* no
         }
     }
     return false;
-}
-
-void cullTile(const CompiledScene& scene, int x0, int y0, int x1, int y1, RaySubset& subset) {
-    Vec3 axis;
-    float halfAngle;
-    if (scene.camera().tileCone(x0, y0, x1, y1, axis, halfAngle))
-        scene.cull(scene.camera().origin(), axis, halfAngle, subset);
-    else
-        subset = RaySubset{};
 }
 
 namespace {
@@ -96,6 +127,17 @@ bool forEachTile(int width, int height, const RenderOptions& options, uint64_t& 
     return !(options.cancel && options.cancel->load(std::memory_order_relaxed));
 }
 
+/// A tile's pixels as lists (row-major), optionally only those `pick` selects.
+template <class Pick>
+void tilePixels(int x0, int y0, int x1, int y1, std::vector<int32_t>& xs,
+                std::vector<int32_t>& ys, Pick&& pick) {
+    xs.clear();
+    ys.clear();
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x)
+            if (pick(x, y)) xs.push_back(x), ys.push_back(y);
+}
+
 }  // namespace
 
 RenderResult renderImage(const CompiledScene& scene, const RenderOptions& options) {
@@ -105,8 +147,10 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
     const int spp = std::max(1, settings.supersampling);
     const bool adaptive = settings.adaptiveSupersampling && spp > 1;
     const CameraModel& camera = scene.camera();
-    const WhittedIntegrator integrator(scene);
-    auto cancelled = [&] { return options.cancel && options.cancel->load(std::memory_order_relaxed); };
+    const TraceKernel kernel(scene, TraceOptions::fromSettings(settings));
+    const std::function<bool()> cancelled = [&] {
+        return options.cancel && options.cancel->load(std::memory_order_relaxed);
+    };
 
     // Pass 1 writes every pixel (tiles skipped on cancellation are cleared), so the buffers
     // are not cleared first: that would touch 15 MB at 1280x720 before any tracing.
@@ -116,7 +160,7 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
     std::vector<ObjectId> ids;  // adaptive supersampling reads them even when not asked for
     if (options.ids || adaptive) ids.resize(pixelCount);
     std::vector<Vec3> normals(adaptive ? pixelCount : 0);
-    auto clearRows = [&](int x0, int x1, int y0, int y1) {
+    auto clearTile = [&](int x0, int x1, int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
@@ -126,76 +170,54 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
         }
     };
 
-    // Packet tracing of supersampled pixels: all pixels of a tile (pass 1 without adaptive
-    // supersampling, with the centre rays' ids), or those `pick` selects (adaptive pass 2).
-    auto supersampleTile = [&](const PacketTracer& tracer, int x0, int y0, int x1, int y1,
-                               const RaySubset& subset, TraceCounters& counters,
-                               ImageRgb* into = nullptr,
-                               const std::function<bool(int, int)>& pick = {}) {
-        thread_local std::vector<int32_t> xs, ys;
-        thread_local std::vector<Color> colors;
-        xs.clear();
-        ys.clear();
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x)
-                if (!pick || pick(x, y)) xs.push_back(x), ys.push_back(y);
-        colors.resize(xs.size());
-        tracer.traceSamples(xs.data(), ys.data(), xs.size(), spp, subset, colors.data(), counters);
-        ImageRgb& image = into ? *into : result.image;
-        for (std::size_t k = 0; k < xs.size(); ++k) image.at(xs[k], ys[k]) = colors[k];
-        if (into || ids.empty()) return;
-        thread_local std::vector<ObjectId> tileIds;
-        tileIds.resize(xs.size());
-        tracer.firstHits(xs.data(), ys.data(), xs.size(), subset, tileIds.data());
-        for (std::size_t k = 0; k < xs.size(); ++k)
-            ids[std::size_t(ys[k]) * std::size_t(w) + std::size_t(xs[k])] = tileIds[k];
-    };
-
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::info::default_concurrency());
     arenaExecute(arena, [&] {
         // Pass 1: one centre sample per pixel (all the image needs without supersampling), or
         // the full pattern when supersampling everywhere. Ids come from the centre ray.
-        const bool packets =
-            options.packets && PacketTracer::profitable() && PacketTracer::supports(scene);
-        const PacketTracer packetTracer(scene);
         result.cancelled = !forEachTile(w, h, options, result.rays,
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
-                RaySubset subset;
-                cullTile(scene, x0, y0, x1, y1, subset);
-                if (packets) {
-                    // The same bits as the loop below, eight rays at a time.
-                    if (cancelled())
-                        clearRows(x0, x1, y0, y1);
-                    else if (spp == 1 || adaptive)
-                        packetTracer.traceTile(x0, y0, x1, y1, subset, std::size_t(w),
-                                               result.image.pixels.data(),
-                                               ids.empty() ? nullptr : ids.data(),
-                                               adaptive ? normals.data() : nullptr, counters);
-                    else
-                        supersampleTile(packetTracer, x0, y0, x1, y1, subset, counters);
-                    return;
+                thread_local std::vector<int32_t> xs, ys;
+                thread_local std::vector<Vec3> origins, dirs;
+                thread_local std::vector<uint32_t> seeds;
+                thread_local std::vector<Color> colors;
+                thread_local std::vector<PrimaryInfo> infos;
+                thread_local std::vector<ObjectId> tileIds;
+                if (cancelled()) return clearTile(x0, x1, y0, y1);
+                tilePixels(x0, y0, x1, y1, xs, ys, [](int, int) { return true; });
+                const std::size_t n = xs.size();
+                origins.resize(n), dirs.resize(n), seeds.resize(n), colors.resize(n);
+                for (std::size_t k = 0; k < n; ++k) {
+                    const Ray ray = camera.generateRay(float(xs[k]) + 0.5f, float(ys[k]) + 0.5f);
+                    origins[k] = ray.origin, dirs[k] = ray.dir;
+                    seeds[k] = pixelSeed(xs[k], ys[k], 0);
                 }
-                int y = y0;
-                for (; y < y1 && !cancelled(); ++y) {
-                    for (int x = x0; x < x1; ++x) {
-                        const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
-                        PrimaryInfo info;
-                        Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
-                        if (spp == 1 || adaptive) {
-                            result.image.pixels[i] = integrator.traceCamera(
-                                ray, pixelSeed(x, y, 0), counters, &info, nullptr, nullptr, &subset);
-                        } else {
-                            info = PrimaryInfo{};
-                            SurfaceHit hit;
-                            if (scene.intersect(ray, 0.0f, kInfinity, hit, &subset)) info.id = hit.id;
-                            result.image.pixels[i] =
-                                renderPixel(integrator, camera, x, y, spp, counters, &subset);
-                        }
-                        if (!ids.empty()) ids[i] = info.id;
-                        if (adaptive) normals[i] = info.normal;
+                const CameraBatch centres{origins.data(), dirs.data(), seeds.data(), n, true};
+                bool done;
+                if (spp == 1 || adaptive) {
+                    TraceOutput out;
+                    out.color = colors.data();
+                    if (!ids.empty()) {
+                        infos.resize(n);
+                        out.primary = infos.data();
+                    }
+                    done = kernel.trace(centres, out, counters, cancelled);
+                } else {
+                    done = supersamplePixels(kernel, xs.data(), ys.data(), n, spp, colors.data(),
+                                             counters, cancelled);
+                    if (done && !ids.empty()) {
+                        tileIds.resize(n);
+                        kernel.firstHits(centres, tileIds.data());
+                        infos.resize(n);
+                        for (std::size_t k = 0; k < n; ++k) infos[k].id = tileIds[k];
                     }
                 }
-                clearRows(x0, x1, y, y1);
+                if (!done) return clearTile(x0, x1, y0, y1);
+                for (std::size_t k = 0; k < n; ++k) {
+                    const std::size_t i = std::size_t(ys[k]) * std::size_t(w) + std::size_t(xs[k]);
+                    result.image.pixels[i] = colors[k];
+                    if (!ids.empty()) ids[i] = infos[k].id;
+                    if (adaptive) normals[i] = infos[k].normal;
+                }
             });
         if (!adaptive || result.cancelled) {
             if (options.ids) result.ids = std::move(ids);
@@ -206,24 +228,18 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
         ImageRgb refined = result.image;
         result.cancelled = !forEachTile(w, h, options, result.rays,
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
-                RaySubset subset;
-                cullTile(scene, x0, y0, x1, y1, subset);
-                if (packets) {
-                    if (cancelled()) return;
-                    supersampleTile(packetTracer, x0, y0, x1, y1, subset, counters, &refined,
-                                    [&](int x, int y) {
-                                        return needsSupersampling(result.image.pixels.data(),
-                                                                  ids.data(), normals.data(), w,
-                                                                  h, x, y);
-                                    });
+                thread_local std::vector<int32_t> xs, ys;
+                thread_local std::vector<Color> colors;
+                if (cancelled()) return;
+                tilePixels(x0, y0, x1, y1, xs, ys, [&](int x, int y) {
+                    return needsSupersampling(result.image.pixels.data(), ids.data(),
+                                              normals.data(), w, h, x, y);
+                });
+                colors.resize(xs.size());
+                if (!supersamplePixels(kernel, xs.data(), ys.data(), xs.size(), spp,
+                                       colors.data(), counters, cancelled))
                     return;
-                }
-                for (int y = y0; y < y1 && !cancelled(); ++y)
-                    for (int x = x0; x < x1; ++x)
-                        if (needsSupersampling(result.image.pixels.data(), ids.data(),
-                                               normals.data(), w, h, x, y))
-                            refined.at(x, y) =
-                                renderPixel(integrator, camera, x, y, spp, counters, &subset);
+                for (std::size_t k = 0; k < xs.size(); ++k) refined.at(xs[k], ys[k]) = colors[k];
             });
         result.image = std::move(refined);
         if (options.ids) result.ids = std::move(ids);

@@ -13,16 +13,15 @@
 
 namespace rs {
 
+class TraceKernel;
+
 /// How to run a full render.
 struct RenderOptions {
     int threads = 0;    ///< Worker threads; 0 = all cores.
     int tileSize = 32;  ///< Tile edge in pixels.
-    const std::atomic<bool>* cancel = nullptr;  ///< Polled once per row; may be null.
+    const std::atomic<bool>* cancel = nullptr;  ///< Polled between ray-tree levels; may be null.
     /// Fill RenderResult::ids (picking); renders that only write an image leave it off.
     bool ids = true;
-    /// Trace with PacketTracer where it applies and pays (same bits either way); off forces
-    /// the scalar integrator, for tests and for measuring the difference.
-    bool packets = true;
     /// Called (serialised) after each tile with tiles done and total; may be empty.
     std::function<void(int done, int total)> progress;
 };
@@ -42,13 +41,15 @@ inline uint32_t pixelSeed(int x, int y, int k) {
 }
 
 /// The supersampled colour of one pixel: `spp` samples on the pattern of pixelSampleOffset.
-/// `subset` (cullTile of a tile holding the pixel) may narrow the camera rays' tests.
 Color renderPixel(const WhittedIntegrator& integrator, const CameraModel& camera, int x, int y,
-                  int spp, TraceCounters& counters, const RaySubset* subset = nullptr);
+                  int spp, TraceCounters& counters);
 
-/// What the camera rays through pixels [x0, x1) x [y0, y1) can hit (an invalid subset, which
-/// tests everything, for an orthographic camera or a scene too large to list).
-void cullTile(const CompiledScene& scene, int x0, int y0, int x1, int y1, RaySubset& subset);
+/// renderPixel's colours for pixels (xs[i], ys[i]) into out[i], traced as batches: every
+/// sample of a group of pixels in one kernel call, each pixel summing its samples in order.
+/// False when `stale` stopped the trace.
+bool supersamplePixels(const TraceKernel& kernel, const int32_t* xs, const int32_t* ys,
+                       std::size_t count, int spp, Color* out, TraceCounters& counters,
+                       const std::function<bool()>& stale = {});
 
 /// True when the 1-sample pixel at (x, y) differs from a neighbour in object id, normal or
 /// colour enough to deserve adaptive supersampling.

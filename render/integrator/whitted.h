@@ -39,11 +39,14 @@ struct TraceOptions {
     bool reflectionAsDiffuse = false;  ///< Mirror share shaded as Lambert in the surface colour.
     bool refractionAsDiffuse = false;  ///< Glass share shaded as Lambert in the surface colour.
     ObjectId refractionExempt = kNoObject;  ///< Keeps real refraction on this object.
+    /// Reflection and refraction rays with a smaller accumulated weight are not traced.
+    float minWeight = 1.0f / 255.0f;
     /// The full quality the scene's render settings ask for.
     static TraceOptions fromSettings(const RenderSettings& s) {
         TraceOptions o;
         // Documents built in code skip the reader's limit; never recurse past it.
         o.maxDepth = std::min(s.maxDepth, kMaxDepthLimit);
+        o.minWeight = std::max(0.0f, s.minWeight);
         return o;
     }
 };
@@ -82,7 +85,8 @@ struct SegmentSink {
     bool overflow = false;  ///< The tree did not fit: treat the pixel as always affected.
 };
 
-/// Traces rays through a compiled scene. Stateless apart from the scene it reads.
+/// One camera ray at a time through the trace kernel: for picking, tests and anything that
+/// needs a single pixel. The same path (TraceKernel) as every batch, so the same bits.
 class WhittedIntegrator {
 public:
     /// Full quality, as the scene's render settings say.
@@ -91,35 +95,19 @@ public:
 
     /// Radiance arriving along a camera ray. `seed` decorrelates light sampling per pixel
     /// sample; `primary` (optional) receives the first hit and whether the tree met a mirror
-    /// or glass; `sink` receives shading records when shadows are Deferred. `subset` (from
-    /// CompiledScene::cull for a cone holding this ray) narrows the camera ray's own test.
+    /// or glass; `sink` receives shading records when shadows are Deferred; `segments` the
+    /// tree's secondary segments.
     Color traceCamera(const Ray& ray, uint32_t seed, TraceCounters& counters,
                       PrimaryInfo* primary = nullptr, RecordSink* sink = nullptr,
-                      SegmentSink* segments = nullptr, const RaySubset* subset = nullptr) const;
+                      SegmentSink* segments = nullptr) const;
 
     /// What a Deferred trace's unshadowed light terms at `record` are off by: shadowed minus
     /// unshadowed, added to the pixel to finish it.
     Color resolveDeferred(const ShadingRecord& record, TraceCounters& counters) const;
 
 private:
-    /// Optional outputs of one camera ray, passed down the recursion.
-    struct Outputs {
-        PrimaryInfo* primary;
-        RecordSink* records;
-        SegmentSink* segments;
-        const RaySubset* cameraSubset;
-    };
-    Color trace(const Ray& ray, int depth, float weight, uint32_t seed, TraceCounters& counters,
-                const Outputs& out) const;
-    /// Sum over lights of the shadowed Lambert + Phong terms (the format's inner sum).
-    Color directLight(const Vec3& p, const Vec3& n, const Vec3& toViewer,
-                      const CompiledMaterial& m, uint32_t seed, ShadowQuality shadows,
-                      TraceCounters& counters) const;
-
     const CompiledScene& scene_;
     TraceOptions options_;
-    int shadowSamples_;
-    float eps_;
 };
 
 /// Schlick's approximation of Fresnel reflectance for cosine `cosIncident` on the incident side.

@@ -60,6 +60,10 @@ void RenderSession::setPolicy(const InteractionPolicy& policy) {
     wake_.notify_all();
 }
 
+void RenderSession::setEngine(EngineKind engine) { engine_.store(engine); }
+
+EngineKind RenderSession::engine() const { return engine_.load(); }
+
 InteractionPolicy RenderSession::policy() const {
     std::lock_guard lock(mutex_);
     return policy_;
@@ -85,7 +89,7 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
     const auto start = std::chrono::steady_clock::now();
     // Only update() writes doc_ and snapshot_, and updates are serialised, so the diff and the
     // (possibly slow) snapshot build run without holding the frame lock.
-    SceneUpdate u = updateScene(doc_, hasDocument_ ? snapshot_ : nullptr, doc);
+    SceneUpdate u = updateScene(doc_, hasDocument_ ? snapshot_ : nullptr, doc, engine_.load());
 
     std::unique_lock lock(mutex_);
     std::unique_lock frameLock(frameMutex_);  // No tile commits while the generation moves.

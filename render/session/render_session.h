@@ -22,8 +22,6 @@
 
 namespace rs {
 
-class PacketTracer;
-
 struct PassCounters;
 
 /// Counters for the status bar and benchmarks.
@@ -51,6 +49,9 @@ public:
     void setObserver(SessionObserver* observer);
     void setThreads(int threads);
     void setPolicy(const InteractionPolicy& policy);
+    /// The ray engine later updates build snapshots with; the next update rebuilds with it.
+    void setEngine(EngineKind engine);
+    EngineKind engine() const;
     InteractionPolicy policy() const;
 
     /// Shows `doc`: diffs it against the previous document, refits or rebuilds the snapshot,
@@ -104,10 +105,6 @@ private:
 
     SceneDocument doc_;
     std::shared_ptr<const CompiledScene> snapshot_;
-    /// Packet tracer for snapshot_'s full-quality traces (null where it does not pay), and the
-    /// snapshot it reads, kept alive with it.
-    std::shared_ptr<const PacketTracer> packets_;
-    std::shared_ptr<const CompiledScene> packetsScene_;
     DeepFrame frame_;
     std::vector<uint8_t> dirtyMask_;
     std::vector<uint8_t> touchedBlocks_;      ///< Blocks the latest edit marked (scratch).
@@ -125,6 +122,7 @@ private:
     float focusX_ = -1.0f, focusY_ = -1.0f;
     int interleaveParity_ = 0;
     int threads_ = 0;
+    std::atomic<EngineKind> engine_{EngineKind::Embree};
     bool threadsChanged_ = false;
 
     uint64_t completedPassGeneration_ = 0;

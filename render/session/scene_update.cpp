@@ -55,11 +55,11 @@ bool isPlane(const Object& o) { return std::holds_alternative<PlaneGeometry>(o.g
 
 SceneUpdate updateScene(const SceneDocument& before,
                         const std::shared_ptr<const CompiledScene>& beforeSnapshot,
-                        const SceneDocument& after) {
+                        const SceneDocument& after, EngineKind engine) {
     SceneUpdate update;
     SceneEdit& edit = update.edit;
-    if (!beforeSnapshot) {
-        update.snapshot = std::make_shared<const CompiledScene>(after);
+    if (!beforeSnapshot || beforeSnapshot->engineKind() != engine) {
+        update.snapshot = std::make_shared<const CompiledScene>(after, beforeSnapshot.get(), engine);
         edit.everything = edit.resized = true;
         return update;
     }
@@ -127,7 +127,7 @@ SceneUpdate updateScene(const SceneDocument& before,
     }
 
     if (edit.everything || structural || materialListChanged || !edit.lights.empty()) {
-        update.snapshot = std::make_shared<const CompiledScene>(after, beforeSnapshot.get());
+        update.snapshot = std::make_shared<const CompiledScene>(after, beforeSnapshot.get(), engine);
     } else if (!moved.empty() || !edit.retinted.empty()) {
         update.snapshot = std::make_shared<const CompiledScene>(beforeSnapshot->refitted(after, moved));
         edit.refitted = true;

@@ -40,9 +40,10 @@ struct SceneUpdate {
 
 /// Compares `before` and `after` (objects and lights matched by id) and builds the snapshot of
 /// `after`: a refit of `beforeSnapshot` when only transforms, shapes or object materials
-/// changed, a rebuild (reusing mesh BVHs) otherwise.
+/// changed, a rebuild (reusing mesh BVHs) otherwise. The snapshot traces with `engine`; a
+/// snapshot of another engine is rebuilt whole.
 SceneUpdate updateScene(const SceneDocument& before,
                         const std::shared_ptr<const CompiledScene>& beforeSnapshot,
-                        const SceneDocument& after);
+                        const SceneDocument& after, EngineKind engine = EngineKind::Embree);
 
 }  // namespace rs

@@ -30,9 +30,6 @@ struct RenderSession::Plan {
     int width = 0, height = 0;
     std::shared_ptr<const CompiledScene> scene;  ///< Traced (a box proxy while moving).
     TraceOptions options;
-    /// Traces the pass's full-quality centre samples eight at a time, when not null (the scene
-    /// qualifies, the CPU has the vector unit, and the pass traces `scene` at full quality).
-    std::shared_ptr<const PacketTracer> packets;
     bool deferredRecords = false;  ///< Interactive pass whose records complete each pixel.
     bool resultIsBase = false;     ///< Interactive pass that is in fact full quality.
     int step = 1;                  ///< Undersampling block size.

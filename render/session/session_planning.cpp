@@ -1,5 +1,4 @@
 // Pass planning: which kind of pass comes next, at which quality, over which tiles, in what order.
-#include "integrator/packet_tracer.h"
 #include "integrator/renderer.h"
 #include "session/session_plan.h"
 
@@ -146,16 +145,6 @@ bool RenderSession::planLocked(Plan& plan) {
         }
     } else {
         return false;
-    }
-    if (plan.kind == PassKind::Base || plan.resultIsBase) {
-        // Full-quality centre samples of the snapshot: the packet tracer gives the same bits.
-        if (packetsScene_ != snapshot_) {
-            packetsScene_ = snapshot_;
-            packets_ = PacketTracer::profitable() && PacketTracer::supports(*snapshot_)
-                           ? std::make_shared<const PacketTracer>(*snapshot_)
-                           : nullptr;
-        }
-        plan.packets = packets_;
     }
     plan.state = frame_.state;
     plan.flags = frame_.flags;

@@ -1,7 +1,8 @@
-// Tile work of a pass: trace (or resolve, or supersample) into a local buffer, then commit it
-// to the frame only if its generation is still current.
-#include "integrator/packet_tracer.h"
+// Tile work of a pass: gather the tile's pixels by what they need, trace each list as one
+// batch through the trace kernel (or resolve deferred shadows, or add samples), then commit
+// to the frame only if the generation is still current.
 #include "integrator/renderer.h"
+#include "integrator/trace_kernel.h"
 #include "session/session_plan.h"
 #include "session/tile_output.h"
 
@@ -14,33 +15,25 @@ namespace {
 constexpr int kRecordsPerPixel = 16;
 constexpr int kSegmentsPerPixel = 24;
 
-glm::vec4 pointBound(const Ray& ray, const PrimaryInfo& info) {
-    if (info.id == kNoObject) return glm::vec4(0.0f, 0.0f, 0.0f, -1.0f);
-    return glm::vec4(ray.at(info.depth), 0.0f);
-}
-
 /// A pixel written from one camera ray's result; hitBound is left to the caller.
 PixelOut primaryPixel(std::size_t index, const Color& color, const PrimaryInfo& info,
-                      const TraceCounters& tc, uint8_t state, uint8_t flags) {
+                      uint32_t cost, uint8_t state, uint8_t flags) {
     PixelOut o{};
     o.index = uint32_t(index);
     o.color = color;
     o.id = info.id;
     o.depth = info.depth;
     o.normal = info.normal;
-    o.cost = uint32_t(tc.total());
+    o.cost = cost;
     o.state = state;
     o.flags = flags;
     return o;
 }
 
-/// primaryPixel with the hit point of `ray` as the bound.
-PixelOut primaryPixel(std::size_t index, const Color& color, const Ray& ray,
-                      const PrimaryInfo& info, const TraceCounters& tc, uint8_t state,
-                      uint8_t flags) {
-    PixelOut o = primaryPixel(index, color, info, tc, state, flags);
-    o.hitBound = pointBound(ray, info);
-    return o;
+/// The hit point of a camera ray as a bounding sphere of radius 0 (none for a miss).
+glm::vec4 pointBound(const Vec3& origin, const Vec3& dir, const PrimaryInfo& info) {
+    if (info.id == kNoObject) return glm::vec4(0.0f, 0.0f, 0.0f, -1.0f);
+    return glm::vec4(origin + dir * info.depth, 0.0f);
 }
 
 /// Grows a bounding sphere to contain `p` (conservative, centre kept).
@@ -50,69 +43,94 @@ glm::vec4 growBound(glm::vec4 b, const Vec3& p) {
     return b;
 }
 
+/// Camera rays of one list of a tile and everything the kernel writes back for them.
+struct RayList {
+    std::vector<Vec3> origin, dir;
+    std::vector<uint32_t> seed;
+    std::vector<std::size_t> pixel;  ///< Frame index (block entries: the block's top-left).
+    std::vector<uint8_t> extra;      ///< Flags or span packed by the caller.
+    std::vector<Color> color;
+    std::vector<PrimaryInfo> info;
+    std::vector<uint32_t> rays;
+    std::vector<ShadingRecord> records;
+    std::vector<uint8_t> recordCount, recordOverflow;
+    std::vector<TreeSegment> segments;
+    std::vector<uint8_t> segmentCount, segmentOverflow;
+
+    void clear() {
+        origin.clear(), dir.clear(), seed.clear(), pixel.clear(), extra.clear();
+    }
+    void add(const Ray& ray, uint32_t s, std::size_t i, uint8_t e) {
+        origin.push_back(ray.origin);
+        dir.push_back(ray.dir);
+        seed.push_back(s);
+        pixel.push_back(i);
+        extra.push_back(e);
+    }
+    std::size_t size() const { return origin.size(); }
+    /// Traces the list; false when the generation went stale meanwhile.
+    bool trace(const TraceKernel& kernel, bool withRecords, bool withSegments,
+               TraceCounters& counters, const std::function<bool()>& stale) {
+        const std::size_t n = size();
+        if (n == 0) return true;
+        color.resize(n), info.resize(n), rays.resize(n);
+        TraceOutput out;
+        out.color = color.data();
+        out.primary = info.data();
+        out.rays = rays.data();
+        if (withRecords) {
+            records.resize(n * kRecordsPerPixel);
+            recordCount.resize(n), recordOverflow.resize(n);
+            out.records = records.data();
+            out.recordCapacity = kRecordsPerPixel;
+            out.recordCount = recordCount.data();
+            out.recordOverflow = recordOverflow.data();
+        }
+        if (withSegments) {
+            segments.resize(n * kSegmentsPerPixel);
+            segmentCount.resize(n), segmentOverflow.resize(n);
+            out.segments = segments.data();
+            out.segmentCapacity = kSegmentsPerPixel;
+            out.segmentCount = segmentCount.data();
+            out.segmentOverflow = segmentOverflow.data();
+        }
+        return kernel.trace(CameraBatch{origin.data(), dir.data(), seed.data(), n, true}, out,
+                            counters, stale);
+    }
+};
+
 }  // namespace
 
 void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounters& counters) {
     thread_local std::vector<PixelOut> out;
     thread_local std::vector<ShadingRecord> records;
     thread_local std::vector<TreeSegment> segments;
+    thread_local RayList full, moving, blocks, samples;
+    thread_local std::vector<std::size_t> resolvePixels;
+    thread_local std::vector<ShadingRecord> resolveRecords;
+    thread_local std::vector<Color> resolved;
+    thread_local std::vector<std::size_t> samplePixels;
+    thread_local std::vector<int> sampleFirst;  ///< Per supersampled pixel: its first sample.
     out.clear();
     records.clear();
     segments.clear();
+    full.clear(), moving.clear(), blocks.clear(), samples.clear();
+    resolvePixels.clear(), resolveRecords.clear(), samplePixels.clear(), sampleFirst.clear();
     const CompiledScene& scene = *plan.scene;
     const CameraModel& camera = scene.camera();
-    const WhittedIntegrator integrator(scene, plan.options);
+    const TraceKernel kernel(scene, plan.options);
     const PixelRect& r = job.rect;
     const int w = plan.width;
-    std::size_t traced = 0;
-    uint64_t rays = 0;
-    // Camera rays of this tile test only what their cone can hit (bit-identical hits).
-    RaySubset subset;
-    cullTile(scene, r.x0, r.y0, r.x1, r.y1, subset);
-    ShadingRecord sinkBuffer[kRecordsPerPixel];
-    TreeSegment segmentBuffer[kSegmentsPerPixel];
-    // Keeps a pixel's secondary segments for dirty marking; an overflow flags the tree unknown.
-    auto keepSegments = [&](PixelOut& o, const SegmentSink& sink) {
-        o.segmentOffset = uint32_t(segments.size());
-        o.segmentCount = uint8_t(sink.count);
-        segments.insert(segments.end(), sink.data, sink.data + sink.count);
-        if (sink.overflow) o.flags |= kTreeUnknown;
+    const std::function<bool()> stale = [&] {
+        return generation_.load(std::memory_order_relaxed) != plan.generation;
+    };
+    if (stale()) return;
+    auto centreRay = [&](int x, int y) {
+        return camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
     };
 
-    // A full-quality centre sample: the Base pass, or an interactive pass at full quality.
-    auto traceBase = [&](int x, int y, std::size_t i, uint8_t extraFlags) {
-        TraceCounters tc;
-        PrimaryInfo info;
-        SegmentSink segSink{segmentBuffer, kSegmentsPerPixel, 0, false};
-        const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
-        const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info, nullptr,
-                                               &segSink, &subset);
-        PixelOut o = primaryPixel(i, c, ray, info, tc, plan.spp == 1 ? kFinal : kBase,
-                                  uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | extraFlags));
-        o.base = c;
-        keepSegments(o, segSink);
-        out.push_back(o);
-        rays += tc.total();
-        ++traced;
-    };
-
-    // With a packet tracer, full-quality centre samples are collected and traced together.
-    thread_local std::vector<int32_t> baseXs, baseYs;
-    thread_local std::vector<uint8_t> baseFlags;
-    thread_local std::vector<PacketPixel> basePixels;
-    baseXs.clear();
-    baseYs.clear();
-    baseFlags.clear();
-    auto requestBase = [&](int x, int y, std::size_t i, uint8_t extraFlags) {
-        if (!plan.packets) return traceBase(x, y, i, extraFlags);
-        baseXs.push_back(x);
-        baseYs.push_back(y);
-        baseFlags.push_back(extraFlags);
-    };
-
+    // Gather: which pixels need what.
     for (int y = r.y0; y < r.y1; ++y) {
-        // Stale work stops within one row of an edit.
-        if (generation_.load(std::memory_order_relaxed) != plan.generation) return;
         for (int x = r.x0; x < r.x1; ++x) {
             const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
             const uint8_t s = plan.state[i];
@@ -120,30 +138,8 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                 if (plan.step == 1) {
                     if (s != kStale) continue;
                     if (plan.interleaved && ((x + y + plan.parity) & 1)) continue;
-                    if (plan.resultIsBase) {
-                        requestBase(x, y, i, kTracedLastUpdate);
-                        continue;
-                    }
-                    TraceCounters tc;
-                    PrimaryInfo info;
-                    RecordSink sink{sinkBuffer, kRecordsPerPixel, 0, false};
-                    SegmentSink segSink{segmentBuffer, kSegmentsPerPixel, 0, false};
-                    const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
-                    const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info,
-                                                           plan.deferredRecords ? &sink : nullptr,
-                                                           &segSink, &subset);
-                    const bool complete = plan.deferredRecords && !sink.overflow;
-                    PixelOut o = primaryPixel(
-                        i, c, ray, info, tc, kInteractive,
-                        uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | kTracedLastUpdate |
-                                (complete ? kDeferredValid : 0)));
-                    o.recordOffset = uint32_t(records.size());
-                    o.recordCount = complete ? uint8_t(sink.count) : 0;
-                    if (complete) records.insert(records.end(), sinkBuffer, sinkBuffer + sink.count);
-                    keepSegments(o, segSink);
-                    out.push_back(o);
-                    rays += tc.total();
-                    ++traced;
+                    (plan.resultIsBase ? full : moving)
+                        .add(centreRay(x, y), pixelSeed(x, y, 0), i, kTracedLastUpdate);
                     continue;
                 }
                 // Undersampling: one ray per step x step block, shown over the whole block.
@@ -156,126 +152,176 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                     for (int xx = x; xx < bx1 && !anyStale; ++xx)
                         anyStale = plan.state[std::size_t(yy) * std::size_t(w) + std::size_t(xx)] == kStale;
                 if (!anyStale) continue;
-                TraceCounters tc;
-                PrimaryInfo info;
                 const Ray ray = camera.generateRay(0.5f * float(x + bx1), 0.5f * float(y + by1));
-                const Color c = integrator.traceCamera(ray, pixelSeed(x, y, 0), tc, &info, nullptr,
-                                                       nullptr, &subset);
-                // One entry for the block; the commit writes it to every pixel of it.
-                PixelOut o = primaryPixel(
-                    std::size_t(y) * std::size_t(w) + std::size_t(x), c, ray, info, tc,
-                    kInteractive,
-                    uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) |
-                            kTracedLastUpdate));
-                o.spanX = uint8_t(bx1 - x);
-                o.spanY = uint8_t(by1 - y);
-                out.push_back(o);
-                rays += tc.total();
-                ++traced;
+                blocks.add(ray, pixelSeed(x, y, 0), i, uint8_t((bx1 - x) | ((by1 - y) << 4)));
             } else if (plan.kind == PassKind::Base) {
                 if (s >= kBase) continue;
                 if (s == kInteractive && (plan.flags[i] & kDeferredValid)) {
                     // Deferred shadows: add the light terms at the stored shading points;
                     // camera and secondary rays are not traced again (thesis 3.3).
-                    TraceCounters tc;
-                    Color c = frame_.color[i];
                     const auto& pool = frame_.tileRecords[std::size_t(job.tile)];
                     const uint32_t start = frame_.recordStart[i];
-                    for (uint32_t k = 0; k < frame_.recordCount[i]; ++k)
-                        c += integrator.resolveDeferred(pool[start + k], tc);
-                    PixelOut o{};
-                    o.index = uint32_t(i);
-                    o.color = o.base = c;
-                    o.id = frame_.id[i];
-                    o.depth = frame_.depth[i];
-                    o.normal = frame_.normal[i];
-                    o.cost = frame_.cost[i] + uint32_t(tc.total());
-                    o.state = plan.spp == 1 ? kFinal : kBase;
-                    o.flags = uint8_t(plan.flags[i] & (kTouchedSpecular | kTracedLastUpdate | kTreeUnknown));
-                    o.hitBound = frame_.hitBound[i];
-                    o.segmentMode = kKeep;
-                    out.push_back(o);
-                    rays += tc.total();
-                    ++traced;
+                    resolvePixels.push_back(i);
+                    resolveRecords.insert(resolveRecords.end(), pool.begin() + start,
+                                          pool.begin() + start + frame_.recordCount[i]);
                 } else {
-                    requestBase(x, y, i, uint8_t(plan.flags[i] & kTracedLastUpdate));
+                    full.add(centreRay(x, y), pixelSeed(x, y, 0), i,
+                             uint8_t(plan.flags[i] & kTracedLastUpdate));
                 }
             } else {  // Supersample
                 if (s != kBase) continue;
-                PixelOut o{};
-                o.index = uint32_t(i);
-                o.base = frame_.base[i];
-                o.id = frame_.id[i];
-                o.depth = frame_.depth[i];
-                o.normal = frame_.normal[i];
-                o.flags = plan.flags[i];
-                o.hitBound = frame_.hitBound[i];
-                o.cost = frame_.cost[i];
-                o.segmentMode = kKeep;
                 if (!plan.needSupersampling[i]) {
-                    o.color = o.base;
+                    PixelOut o{};
+                    o.index = uint32_t(i);
+                    o.color = o.base = frame_.base[i];
+                    o.id = frame_.id[i];
+                    o.depth = frame_.depth[i];
+                    o.normal = frame_.normal[i];
+                    o.flags = plan.flags[i];
+                    o.hitBound = frame_.hitBound[i];
+                    o.cost = frame_.cost[i];
+                    o.segmentMode = kKeep;
                     o.state = kFinal;
                     out.push_back(o);
                     continue;
                 }
-                SegmentSink segSink{segmentBuffer, kSegmentsPerPixel, 0, false};
-                // Progressive: add up to sppChunk samples in the order renderPixel sums them,
-                // so the final average is bit-identical to a full render's.
-                Color sum = frame_.sampleSum[i];
-                int count = frame_.sampleCount[i];
+                // Progressive: up to sppChunk samples more, in the order renderPixel sums them.
+                const int count = frame_.sampleCount[i];
                 const int end = std::min(plan.spp, count + plan.sppChunk);
                 const uint32_t patternSeed = pixelSeed(x, y, 0x5eed);
-                TraceCounters tc;
+                samplePixels.push_back(i);
+                sampleFirst.push_back(int(samples.size()));
                 for (int k = count; k < end; ++k) {
                     const Vec3 off = pixelSampleOffset(k, plan.spp, patternSeed);
-                    const Ray ray = camera.generateRay(float(x) + off.x, float(y) + off.y);
-                    PrimaryInfo info;
-                    sum += integrator.traceCamera(ray, pixelSeed(x, y, k), tc, &info, nullptr,
-                                                  &segSink, &subset);
-                    if (info.id != kNoObject) o.hitBound = growBound(o.hitBound, ray.at(info.depth));
-                    if (info.touchedSpecular) o.flags |= kTouchedSpecular;
+                    samples.add(camera.generateRay(float(x) + off.x, float(y) + off.y),
+                                pixelSeed(x, y, k), i, 0);
                 }
-                count = end;
-                keepSegments(o, segSink);
-                o.segmentMode = kAppend;
-                o.sampleSum = sum;
-                o.sampleCount = uint16_t(count);
-                o.color = count == plan.spp ? sum / float(plan.spp) : sum / float(count);
-                o.state = count == plan.spp ? kFinal : kBase;
-                o.cost += uint32_t(tc.total());
-                out.push_back(o);
-                rays += tc.total();
-                ++traced;
             }
         }
     }
+    sampleFirst.push_back(int(samples.size()));
 
-    if (!baseXs.empty()) {
-        if (generation_.load(std::memory_order_relaxed) != plan.generation) return;
-        basePixels.resize(baseXs.size());
-        TraceCounters tc;
-        plan.packets->tracePixels(baseXs.data(), baseYs.data(), baseXs.size(), subset,
-                                  kSegmentsPerPixel, basePixels.data(), segments, tc);
-        for (std::size_t k = 0; k < basePixels.size(); ++k) {
-            const PacketPixel& p = basePixels[k];
-            const int x = baseXs[k], y = baseYs[k];
-            const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
-            TraceCounters cost;
-            cost.rays = p.rays;
-            PixelOut o = primaryPixel(
-                i, p.color, p.info, cost, plan.spp == 1 ? kFinal : kBase,
-                uint8_t((p.info.touchedSpecular ? kTouchedSpecular : 0) | baseFlags[k]));
-            o.hitBound = p.info.id == kNoObject ? glm::vec4(0.0f, 0.0f, 0.0f, -1.0f)
-                                                : glm::vec4(p.hitPoint, 0.0f);
-            o.base = p.color;
-            o.segmentOffset = p.segmentOffset;
-            o.segmentCount = uint8_t(p.segmentCount);
-            if (p.segmentOverflow) o.flags |= kTreeUnknown;
-            out.push_back(o);
-        }
-        rays += tc.total();
-        traced += basePixels.size();
+    // Trace.
+    TraceCounters tc;
+    const bool segmentsWanted = true;
+    if (!full.trace(kernel, false, segmentsWanted, tc, stale)) return;
+    if (!moving.trace(kernel, plan.deferredRecords, segmentsWanted, tc, stale)) return;
+    if (!blocks.trace(kernel, false, false, tc, stale)) return;
+    if (!samples.trace(kernel, false, segmentsWanted, tc, stale)) return;
+    resolved.resize(resolveRecords.size());
+    kernel.resolveDeferred(resolveRecords.data(), resolveRecords.size(), resolved.data(), tc);
+    if (stale()) return;
+    const std::size_t traced = full.size() + moving.size() + blocks.size() + resolvePixels.size() +
+                               samplePixels.size();
+
+    // Results as PixelOut entries.
+    auto keepSegments = [&](PixelOut& o, const RayList& list, std::size_t k) {
+        o.segmentOffset = uint32_t(segments.size());
+        o.segmentCount = list.segmentCount[k];
+        const TreeSegment* first = list.segments.data() + k * kSegmentsPerPixel;
+        segments.insert(segments.end(), first, first + list.segmentCount[k]);
+        if (list.segmentOverflow[k]) o.flags |= kTreeUnknown;
+    };
+    const uint8_t doneState = plan.spp == 1 ? kFinal : kBase;
+    for (std::size_t k = 0; k < full.size(); ++k) {
+        const PrimaryInfo& info = full.info[k];
+        PixelOut o = primaryPixel(full.pixel[k], full.color[k], info, full.rays[k], doneState,
+                                  uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | full.extra[k]));
+        o.hitBound = pointBound(full.origin[k], full.dir[k], info);
+        o.base = full.color[k];
+        keepSegments(o, full, k);
+        out.push_back(o);
     }
+    for (std::size_t k = 0; k < moving.size(); ++k) {
+        const PrimaryInfo& info = moving.info[k];
+        const bool complete = plan.deferredRecords && !moving.recordOverflow[k];
+        PixelOut o = primaryPixel(
+            moving.pixel[k], moving.color[k], info, moving.rays[k], kInteractive,
+            uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | moving.extra[k] |
+                    (complete ? kDeferredValid : 0)));
+        o.hitBound = pointBound(moving.origin[k], moving.dir[k], info);
+        o.recordOffset = uint32_t(records.size());
+        o.recordCount = complete ? moving.recordCount[k] : 0;
+        if (complete) {
+            const ShadingRecord* first = moving.records.data() + k * kRecordsPerPixel;
+            records.insert(records.end(), first, first + moving.recordCount[k]);
+        }
+        keepSegments(o, moving, k);
+        out.push_back(o);
+    }
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+        const PrimaryInfo& info = blocks.info[k];
+        // One entry for the block; the commit writes it to every pixel of it.
+        PixelOut o = primaryPixel(
+            blocks.pixel[k], blocks.color[k], info, blocks.rays[k], kInteractive,
+            uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) | kTracedLastUpdate));
+        o.hitBound = pointBound(blocks.origin[k], blocks.dir[k], info);
+        o.spanX = uint8_t(blocks.extra[k] & 15);
+        o.spanY = uint8_t(blocks.extra[k] >> 4);
+        out.push_back(o);
+    }
+    for (std::size_t k = 0, record = 0; k < resolvePixels.size(); ++k) {
+        const std::size_t i = resolvePixels[k];
+        Color c = frame_.color[i];
+        for (uint32_t j = 0; j < frame_.recordCount[i]; ++j) c += resolved[record++];
+        PixelOut o{};
+        o.index = uint32_t(i);
+        o.color = o.base = c;
+        o.id = frame_.id[i];
+        o.depth = frame_.depth[i];
+        o.normal = frame_.normal[i];
+        o.cost = frame_.cost[i];
+        o.state = doneState;
+        o.flags = uint8_t(plan.flags[i] & (kTouchedSpecular | kTracedLastUpdate | kTreeUnknown));
+        o.hitBound = frame_.hitBound[i];
+        o.segmentMode = kKeep;
+        out.push_back(o);
+    }
+    for (std::size_t k = 0; k < samplePixels.size(); ++k) {
+        const std::size_t i = samplePixels[k];
+        PixelOut o{};
+        o.index = uint32_t(i);
+        o.base = frame_.base[i];
+        o.id = frame_.id[i];
+        o.depth = frame_.depth[i];
+        o.normal = frame_.normal[i];
+        o.flags = plan.flags[i];
+        o.hitBound = frame_.hitBound[i];
+        o.cost = frame_.cost[i];
+        Color sum = frame_.sampleSum[i];
+        int count = frame_.sampleCount[i];
+        o.segmentOffset = uint32_t(segments.size());
+        uint32_t kept = 0;
+        for (int j = sampleFirst[k]; j < sampleFirst[k + 1]; ++j) {
+            const std::size_t q = std::size_t(j);
+            sum += samples.color[q];
+            const PrimaryInfo& info = samples.info[q];
+            if (info.id != kNoObject)
+                o.hitBound = growBound(o.hitBound, samples.origin[q] + samples.dir[q] * info.depth);
+            if (info.touchedSpecular) o.flags |= kTouchedSpecular;
+            o.cost += samples.rays[q];
+            // The pixel's segments of all its new samples, as one sink of kSegmentsPerPixel.
+            const TreeSegment* first = samples.segments.data() + q * kSegmentsPerPixel;
+            for (uint8_t s = 0; s < samples.segmentCount[q]; ++s) {
+                if (kept < kSegmentsPerPixel) {
+                    segments.push_back(first[s]);
+                    ++kept;
+                } else {
+                    o.flags |= kTreeUnknown;
+                }
+            }
+            if (samples.segmentOverflow[q]) o.flags |= kTreeUnknown;
+            ++count;
+        }
+        o.segmentCount = uint8_t(kept);
+        o.segmentMode = kAppend;
+        o.sampleSum = sum;
+        o.sampleCount = uint16_t(count);
+        o.color = count == plan.spp ? sum / float(plan.spp) : sum / float(count);
+        o.state = count == plan.spp ? kFinal : kBase;
+        out.push_back(o);
+    }
+    const uint64_t rays = tc.total();
 
     {
         // Shared: other tiles commit their own pixels concurrently; an edit holds it exclusively

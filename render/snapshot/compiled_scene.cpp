@@ -23,6 +23,7 @@ bool isSimilarity(const Transform& t) {
 
 Frame makeFrame(const Mat4& worldFromObject) {
     Frame f;
+    f.worldFromObject = worldFromObject;
     f.objectFromWorld = glm::inverse(worldFromObject);
     f.dirToObject = Mat3(f.objectFromWorld);
     f.normalToWorld = glm::transpose(Mat3(f.objectFromWorld));
@@ -89,6 +90,7 @@ bool compileBounded(const Object& o, uint32_t material, std::shared_ptr<const Me
     } else if (const auto* mesh = std::get_if<MeshGeometry>(&o.geometry)) {
         if (!mesh->data || mesh->data->triangleCount() == 0) return false;
         if (!accel) accel = std::make_shared<const MeshAccel>(mesh->data, mesh->smoothNormals);
+        if (accel->bounds().empty()) return false;  // no valid triangle
         prim.worldBounds = accel->bounds().transformed(m);
         prim.shape = MeshShape{std::move(accel)};
         prim.hasFrame = true;
@@ -99,9 +101,20 @@ bool compileBounded(const Object& o, uint32_t material, std::shared_ptr<const Me
     return true;
 }
 
+/// The planes of `doc` that are shown.
+std::shared_ptr<const std::vector<PlanePrimitive>> compilePlanes(const SceneDocument& doc) {
+    auto planes = std::make_shared<std::vector<PlanePrimitive>>();
+    for (const Object& o : doc.objects)
+        if (const auto* plane = std::get_if<PlaneGeometry>(&o.geometry); plane && o.visible)
+            planes->push_back({{plane->point, glm::normalize(plane->normal)},
+                               materialIndex(doc, o.material), o.id});
+    return planes;
+}
+
 }  // namespace
 
-CompiledScene::CompiledScene(const SceneDocument& doc, const CompiledScene* previous)
+CompiledScene::CompiledScene(const SceneDocument& doc, const CompiledScene* previous,
+                             EngineKind engine)
     : camera_(doc.camera, doc.render.width, doc.render.height), settings_(doc.render) {
     materials_.push_back(compileMaterial(Material{}));
     for (const Material& m : doc.materials) materials_.push_back(compileMaterial(m));
@@ -109,35 +122,39 @@ CompiledScene::CompiledScene(const SceneDocument& doc, const CompiledScene* prev
         const float radius = l.type == LightType::Sphere ? l.radius : 0.0f;
         lights_.push_back({l.position, radius, l.color * l.intensity, l.id});
     }
+    planes_ = compilePlanes(doc);
+    auto prims = std::make_shared<std::vector<Primitive>>();
     for (const Object& o : doc.objects) {
-        if (!o.visible) continue;
-        const uint32_t mat = materialIndex(doc, o.material);
-        if (const auto* plane = std::get_if<PlaneGeometry>(&o.geometry)) {
-            planes_.push_back({{plane->point, glm::normalize(plane->normal)}, mat, o.id});
-            continue;
-        }
+        if (!o.visible || std::holds_alternative<PlaneGeometry>(o.geometry)) continue;
         std::shared_ptr<const MeshAccel> accel;
         if (const auto* mesh = std::get_if<MeshGeometry>(&o.geometry))
             accel = findMeshAccel(previous, *mesh);
         Primitive prim;
-        if (compileBounded(o, mat, std::move(accel), prim)) primitives_.push_back(std::move(prim));
+        if (compileBounded(o, materialIndex(doc, o.material), std::move(accel), prim))
+            prims->push_back(std::move(prim));
     }
-    std::vector<Aabb> boxes;
-    boxes.reserve(primitives_.size());
-    for (const Primitive& p : primitives_) boxes.push_back(p.worldBounds);
-    bvh_.build(boxes, 2);
+    primitives_ = std::move(prims);
     computeEpsilon();
-    prepareQueries();
+    engine_ = buildEngine(engine, geometry(), previous ? previous->engine_.get() : nullptr);
+}
+
+SceneGeometry CompiledScene::geometry() const {
+    SceneGeometry g;
+    g.primitives = primitives_;
+    g.planes = planes_;
+    for (const CompiledLight& l : lights_) g.lights.push_back({l.position, l.radius});
+    g.epsilon = epsilon_;
+    return g;
 }
 
 void CompiledScene::computeEpsilon() {
     sceneBounds_ = Aabb{};
-    for (const Primitive& p : primitives_) sceneBounds_.expand(p.worldBounds);
+    for (const Primitive& p : *primitives_) sceneBounds_.expand(p.worldBounds);
     for (const CompiledLight& l : lights_) {
         sceneBounds_.expand(l.position - Vec3(l.radius));
         sceneBounds_.expand(l.position + Vec3(l.radius));
     }
-    for (const PlanePrimitive& p : planes_) sceneBounds_.expand(p.shape.point);
+    for (const PlanePrimitive& p : *planes_) sceneBounds_.expand(p.shape.point);
     sceneBounds_.expand(camera_.origin());
     // Offsets grow with the scene so large scenes do not self-intersect in float precision.
     const float extent = sceneBounds_.empty() ? 1.0f : glm::length(sceneBounds_.extent());
@@ -151,23 +168,22 @@ CompiledScene CompiledScene::refitted(const SceneDocument& doc,
     out.materials_.resize(1);
     for (const Material& m : doc.materials) out.materials_.push_back(compileMaterial(m));
     // Planes are few and cheap: recompile them for material changes.
-    out.planes_.clear();
-    for (const Object& o : doc.objects)
-        if (const auto* plane = std::get_if<PlaneGeometry>(&o.geometry); plane && o.visible)
-            out.planes_.push_back({{plane->point, glm::normalize(plane->normal)},
-                                   materialIndex(doc, o.material), o.id});
+    out.planes_ = compilePlanes(doc);
+    auto prims = std::make_shared<std::vector<Primitive>>(*primitives_);
+    std::vector<uint32_t> indices;
     for (ObjectId id : moved) {
         const int index = primitiveIndex(id);
         const Object* o = doc.findObject(id);
         if (index < 0 || !o) continue;
-        Primitive& prim = out.primitives_[std::size_t(index)];
+        Primitive& prim = (*prims)[std::size_t(index)];
         std::shared_ptr<const MeshAccel> accel;
         if (const auto* m = std::get_if<MeshShape>(&prim.shape)) accel = m->accel;
         compileBounded(*o, materialIndex(doc, o->material), std::move(accel), prim);
-        out.bvh_.refitPrimitive(uint32_t(index), prim.worldBounds);
+        indices.push_back(uint32_t(index));
     }
+    out.primitives_ = std::move(prims);
     out.computeEpsilon();
-    out.prepareQueries();
+    out.engine_ = engine_->updated(out.geometry(), indices);
     return out;
 }
 
@@ -175,23 +191,40 @@ CompiledScene CompiledScene::withBoxProxy(ObjectId id) const {
     CompiledScene out = *this;
     const int index = primitiveIndex(id);
     if (index >= 0) {
-        Primitive& prim = out.primitives_[std::size_t(index)];
+        auto prims = std::make_shared<std::vector<Primitive>>(*primitives_);
+        Primitive& prim = (*prims)[std::size_t(index)];
         prim.shape = BoxShape{prim.worldBounds};
         prim.hasFrame = false;
+        out.primitives_ = std::move(prims);
+        const uint32_t changed[] = {uint32_t(index)};
+        out.engine_ = engine_->updated(out.geometry(), changed);
     }
-    out.prepareQueries();
     return out;
 }
 
 int CompiledScene::primitiveIndex(ObjectId id) const {
-    for (std::size_t i = 0; i < primitives_.size(); ++i)
-        if (primitives_[i].id == id) return int(i);
+    const auto& prims = *primitives_;
+    for (std::size_t i = 0; i < prims.size(); ++i)
+        if (prims[i].id == id) return int(i);
     return -1;
 }
 
 Aabb CompiledScene::objectBounds(ObjectId id) const {
     const int index = primitiveIndex(id);
-    return index < 0 ? Aabb{} : primitives_[std::size_t(index)].worldBounds;
+    return index < 0 ? Aabb{} : (*primitives_)[std::size_t(index)].worldBounds;
+}
+
+bool CompiledScene::intersect(const Ray& ray, float tmax, SurfaceHit& hit) const {
+    EngineHit h;
+    if (!engine_->closestHit(ray, tmax, h)) return false;
+    hit.t = h.t;
+    hit.n = h.n;
+    describe(h.slot, hit.material, hit.id);
+    return true;
+}
+
+bool CompiledScene::occluded(const Ray& ray, float tmax) const {
+    return engine_->anyHit(ray, tmax);
 }
 
 }  // namespace rs

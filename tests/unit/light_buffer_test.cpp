@@ -1,5 +1,6 @@
 // Light buffer and camera-tile culling: both only narrow which shapes a ray tests, so the
 // answers must equal the plain queries' exactly, also for rays that graze an object.
+#include "accel/bvh_engine.h"
 #include "snapshot/compiled_scene.h"
 
 #include <gtest/gtest.h>
@@ -72,6 +73,24 @@ bool shadowRay(const CompiledScene& scene, const Vec3& p, const Vec3& n, const V
     return true;
 }
 
+/// The built-in engine's any-hit answer with the light buffer (a ray toward light 0) and
+/// without it (testing everything).
+struct ShadowAnswers {
+    bool buffered, everything;
+};
+ShadowAnswers shadowAnswers(const CompiledScene& scene, const Ray& ray, float tmax) {
+    const RayEngine& engine = scene.engine();
+    EXPECT_EQ(engine.kind(), EngineKind::Builtin);
+    const uint32_t light = 0;
+    RayBatch batch{&ray.origin.x, &ray.origin.y, &ray.origin.z, &ray.dir.x, &ray.dir.y,
+                   &ray.dir.z,    &tmax,         1};
+    uint8_t plain = 0, buffered = 0;
+    engine.anyHit(batch, &plain);
+    batch.light = &light;
+    engine.anyHit(batch, &buffered);
+    return {buffered != 0, plain != 0};
+}
+
 Vec3 randomInBall(std::mt19937& rng, float radius) {
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     Vec3 v;
@@ -88,15 +107,16 @@ void expectSameShadowAnswers(const CompiledScene& scene, std::mt19937& rng, int 
         const Ray view = scene.camera().generateRay(u01(rng) * float(scene.camera().width()),
                                                     u01(rng) * float(scene.camera().height()));
         SurfaceHit hit;
-        if (!scene.intersect(view, 0.0f, kInfinity, hit)) continue;
+        if (!scene.intersect(view, kInfinity, hit)) continue;
         const Vec3 p = view.at(hit.t);
         const Vec3 n = glm::dot(hit.n, view.dir) > 0.0f ? -hit.n : hit.n;
         Ray ray;
         float tmax;
         if (!shadowRay(scene, p, n, light.position + randomInBall(rng, light.radius), ray, tmax))
             continue;
-        const bool expected = scene.occluded(ray, 0.0f, tmax);
-        ASSERT_EQ(scene.occludedToLight(0, ray.origin, ray.dir, 0.0f, tmax), expected)
+        const ShadowAnswers a = shadowAnswers(scene, ray, tmax);
+        const bool expected = a.everything;
+        ASSERT_EQ(a.buffered, expected)
             << "camera ray " << k << " from (" << p.x << ", " << p.y << ", " << p.z << ")";
         occludedCount += expected;
         ++total;
@@ -109,7 +129,7 @@ TEST(LightBuffer, ShadowAnswersEqualTestingEverything_PointAndSphereLights) {
     for (int scene = 0; scene < 40; ++scene) {
         SceneDocument doc = randomRoom(rng, 3 + scene % 12, scene % 2 ? 0.4f : 0.0f);
         if (scene % 3 == 0) addBoxAndRectangle(doc);  // not flat: boxes and frames too
-        const CompiledScene compiled(doc);
+        const CompiledScene compiled(doc, nullptr, EngineKind::Builtin);
         expectSameShadowAnswers(compiled, rng, 4000, occluded, total);
     }
     // Both answers occur often, so the comparison means something.
@@ -137,7 +157,7 @@ TEST(LightBuffer, RaysGrazingASphereGetTheSameAnswer) {
         l.name = "light";
         l.position = touch + (1.0f + 3.0f * std::abs(u(rng))) * tangent;
         doc.addLight(l);
-        const CompiledScene scene(doc);
+        const CompiledScene scene(doc, nullptr, EngineKind::Builtin);
         for (int k = 0; k < 50; ++k) {
             // Shading points on the far side of the tangent point, nudged across the surface.
             const float nudge = 1e-3f * u(rng) * radius;
@@ -146,8 +166,9 @@ TEST(LightBuffer, RaysGrazingASphereGetTheSameAnswer) {
             Ray ray;
             float tmax;
             if (!shadowRay(scene, p, n, l.position, ray, tmax)) continue;
-            const bool expected = scene.occluded(ray, 0.0f, tmax);
-            ASSERT_EQ(scene.occludedToLight(0, ray.origin, ray.dir, 0.0f, tmax), expected) << "case " << c;
+            const ShadowAnswers a = shadowAnswers(scene, ray, tmax);
+            const bool expected = a.everything;
+            ASSERT_EQ(a.buffered, expected) << "case " << c;
             hits += expected;
             ++total;
         }
@@ -173,46 +194,6 @@ TEST(LightBuffer, ListsOnlyWhatADirectionCanMeet) {
     EXPECT_LT(buffer.averageCandidates(), 7.0f);
     // The light itself has no direction: the caller must test everything.
     EXPECT_EQ(buffer.anyHit(scene.lights()[0].position, [](uint32_t) { return false; }), -1);
-}
-
-TEST(TileCulling, CameraRaysHitExactlyWhatTheyHitWithoutIt) {
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
-    int culledAway = 0, tiles = 0;
-    for (int s = 0; s < 30; ++s) {
-        SceneDocument doc = randomRoom(rng, 2 + s % 14, 0.0f);
-        if (s % 4 == 0) addBoxAndRectangle(doc);
-        const CompiledScene scene(doc);
-        const CameraModel& camera = scene.camera();
-        for (int ty = 0; ty < camera.height(); ty += 16) {
-            for (int tx = 0; tx < camera.width(); tx += 16) {
-                const int x1 = std::min(camera.width(), tx + 16), y1 = std::min(camera.height(), ty + 16);
-                Vec3 axis;
-                float halfAngle;
-                ASSERT_TRUE(camera.tileCone(tx, ty, x1, y1, axis, halfAngle));
-                RaySubset subset;
-                scene.cull(camera.origin(), axis, halfAngle, subset);
-                ASSERT_TRUE(subset.valid);
-                ++tiles;
-                culledAway += subset.planeBlocks * 4 < int(scene.planes().size());
-                for (int k = 0; k < 40; ++k) {
-                    // Anywhere in the tile, its edges included (supersamples reach them).
-                    const float px = float(tx) + u01(rng) * float(x1 - tx);
-                    const float py = float(ty) + u01(rng) * float(y1 - ty);
-                    const Ray ray = camera.generateRay(k == 0 ? float(tx) : px, k == 1 ? float(y1) : py);
-                    SurfaceHit a{}, b{};
-                    const bool hitA = scene.intersect(ray, 0.0f, kInfinity, a);
-                    const bool hitB = scene.intersect(ray, 0.0f, kInfinity, b, &subset);
-                    ASSERT_EQ(hitA, hitB);
-                    if (!hitA) continue;
-                    ASSERT_EQ(a.id, b.id);
-                    ASSERT_EQ(a.t, b.t);
-                    ASSERT_EQ(a.n, b.n);
-                }
-            }
-        }
-    }
-    EXPECT_GT(culledAway, tiles / 2);  // The test exercises culling, not a no-op.
 }
 
 TEST(TileCulling, OrthographicCamerasTestEverything) {

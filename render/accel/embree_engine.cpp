@@ -1,0 +1,267 @@
+// Embree 3 scenes from a SceneGeometry, the user-geometry callbacks, and packet queries.
+#include "accel/embree_engine.h"
+
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace rs {
+
+namespace {
+
+void reportError(void*, RTCError code, const char* message) {
+    std::fprintf(stderr, "raystudio: Embree error %d: %s\n", int(code), message ? message : "");
+}
+
+/// One device for the process: Embree's thread pool and memory are shared by every scene.
+RTCDevice device() {
+    static RTCDevice dev = [] {
+        RTCDevice d = rtcNewDevice(nullptr);
+        if (!d) throw std::runtime_error("Embree: cannot create a device");
+        rtcSetDeviceErrorFunction(d, reportError, nullptr);
+        return d;
+    }();
+    return dev;
+}
+
+const EmbreeEngine& engineOf(void* userPtr) {
+    return *static_cast<const EmbreeEngine*>(userPtr);
+}
+
+void boundsCallback(const RTCBoundsFunctionArguments* args) {
+    const Aabb& b = engineOf(args->geometryUserPtr).userPrimitive(args->primID).worldBounds;
+    args->bounds_o->lower_x = b.min.x, args->bounds_o->lower_y = b.min.y;
+    args->bounds_o->lower_z = b.min.z;
+    args->bounds_o->upper_x = b.max.x, args->bounds_o->upper_y = b.max.y;
+    args->bounds_o->upper_z = b.max.z;
+}
+
+/// The lane's ray as the project's Ray (with the reciprocals the box test uses).
+Ray laneRay(RTCRayN* ray, unsigned N, unsigned i) {
+    return Ray::make(Vec3(RTCRayN_org_x(ray, N, i), RTCRayN_org_y(ray, N, i), RTCRayN_org_z(ray, N, i)),
+                     Vec3(RTCRayN_dir_x(ray, N, i), RTCRayN_dir_y(ray, N, i), RTCRayN_dir_z(ray, N, i)));
+}
+
+void intersectCallback(const RTCIntersectFunctionNArguments* args) {
+    const Primitive& p = engineOf(args->geometryUserPtr).userPrimitive(args->primID);
+    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        float& tfar = RTCRayN_tfar(ray, args->N, i);
+        ShapeHit sh;
+        // The open range (0, tfar) of every engine; origins are offset by the caller.
+        if (!intersectPrimitive(p, laneRay(ray, args->N, i), 0.0f, tfar, sh)) continue;
+        tfar = sh.t;
+        RTCHitN_Ng_x(hit, args->N, i) = sh.n.x;
+        RTCHitN_Ng_y(hit, args->N, i) = sh.n.y;
+        RTCHitN_Ng_z(hit, args->N, i) = sh.n.z;
+        RTCHitN_u(hit, args->N, i) = 0.0f;
+        RTCHitN_v(hit, args->N, i) = 0.0f;
+        RTCHitN_primID(hit, args->N, i) = args->primID;
+        RTCHitN_geomID(hit, args->N, i) = args->geomID;
+        RTCHitN_instID(hit, args->N, i, 0) = args->context->instID[0];
+    }
+}
+
+void occludedCallback(const RTCOccludedFunctionNArguments* args) {
+    const Primitive& p = engineOf(args->geometryUserPtr).userPrimitive(args->primID);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        float& tfar = RTCRayN_tfar(args->ray, args->N, i);
+        ShapeHit sh;
+        if (intersectPrimitive(p, laneRay(args->ray, args->N, i), 0.0f, tfar, sh))
+            tfar = -kInfinity;  // Embree's mark for an occluded ray
+    }
+}
+
+constexpr int kPacket = 8;
+
+struct alignas(32) Packet {
+    int valid[kPacket];
+    RTCRayHit8 rh;
+};
+
+/// Fills lanes [0, n) of `p` from rays [first, first + n).
+void loadPacket(Packet& p, const RayBatch& rays, std::size_t first, int n) {
+    for (int k = 0; k < kPacket; ++k) {
+        const bool on = k < n;
+        p.valid[k] = on ? -1 : 0;
+        const std::size_t i = first + std::size_t(on ? k : 0);
+        p.rh.ray.org_x[k] = rays.ox[i], p.rh.ray.org_y[k] = rays.oy[i], p.rh.ray.org_z[k] = rays.oz[i];
+        p.rh.ray.dir_x[k] = rays.dx[i], p.rh.ray.dir_y[k] = rays.dy[i], p.rh.ray.dir_z[k] = rays.dz[i];
+        p.rh.ray.tnear[k] = 0.0f;
+        p.rh.ray.tfar[k] = rays.tmax[i];
+        p.rh.ray.time[k] = 0.0f;
+        p.rh.ray.mask[k] = 0xffffffffu;
+        p.rh.ray.id[k] = unsigned(k);
+        p.rh.ray.flags[k] = 0;
+        p.rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+        p.rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+    }
+}
+
+}  // namespace
+
+struct EmbreeMesh {
+    std::shared_ptr<const MeshAccel> accel;
+    RTCScene scene = nullptr;
+
+    explicit EmbreeMesh(std::shared_ptr<const MeshAccel> a) : accel(std::move(a)) {
+        const MeshData& data = *accel->data();
+        scene = rtcNewScene(device());
+        rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);  // no cracks between triangles
+        RTCGeometry geom = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_TRIANGLE);
+        // Copies: Embree may read 16 bytes at the last vertex, past the end of the data.
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+            geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+            std::max<std::size_t>(1, data.positions.size())));
+        if (!data.positions.empty())
+            std::memcpy(vertices, data.positions.data(), data.positions.size() * sizeof(Vec3));
+        const std::size_t triangles = data.triangleCount();
+        auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+            geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triangles));
+        for (std::size_t t = 0; t < triangles; ++t) {
+            // An out-of-range index becomes a degenerate triangle, never hit (as MeshAccel).
+            const bool valid = accel->validTriangle(uint32_t(t));
+            for (int k = 0; k < 3; ++k) indices[3 * t + k] = valid ? data.indices[3 * t + k] : 0u;
+        }
+        rtcCommitGeometry(geom);
+        rtcAttachGeometry(scene, geom);
+        rtcReleaseGeometry(geom);
+        rtcCommitScene(scene);
+    }
+    ~EmbreeMesh() { rtcReleaseScene(scene); }
+    EmbreeMesh(const EmbreeMesh&) = delete;
+    EmbreeMesh& operator=(const EmbreeMesh&) = delete;
+};
+
+EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* previous)
+    : geometry_(geometry), planes_(*geometry.planes) {
+    const auto& prims = *geometry_.primitives;
+    std::unordered_map<const MeshAccel*, std::shared_ptr<const EmbreeMesh>> known;
+    if (previous)
+        for (const auto& m : previous->meshes_)
+            if (m) known.emplace(m->accel.get(), m);
+    scene_ = rtcNewScene(device());
+    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+    meshes_.resize(prims.size());
+    for (uint32_t i = 0; i < prims.size(); ++i) {
+        const auto* mesh = std::get_if<MeshShape>(&prims[i].shape);
+        if (!mesh) {
+            userPrims_.push_back(i);
+            continue;
+        }
+        auto& slot = known[mesh->accel.get()];
+        if (!slot) slot = std::make_shared<const EmbreeMesh>(mesh->accel);
+        meshes_[i] = slot;
+        RTCGeometry inst = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(inst, slot->scene);
+        rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR,
+                                &prims[i].frame.worldFromObject[0][0]);
+        rtcCommitGeometry(inst);
+        const unsigned id = rtcAttachGeometry(scene_, inst);
+        rtcReleaseGeometry(inst);
+        if (instancePrims_.size() <= id) instancePrims_.resize(id + 1, kNoSlot);
+        instancePrims_[id] = i;
+    }
+    if (!userPrims_.empty()) {
+        RTCGeometry user = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(user, unsigned(userPrims_.size()));
+        rtcSetGeometryUserData(user, this);
+        rtcSetGeometryBoundsFunction(user, boundsCallback, this);
+        rtcSetGeometryIntersectFunction(user, intersectCallback);
+        rtcSetGeometryOccludedFunction(user, occludedCallback);
+        rtcCommitGeometry(user);
+        userGeomID_ = rtcAttachGeometry(scene_, user);
+        rtcReleaseGeometry(user);
+    }
+    rtcCommitScene(scene_);
+}
+
+EmbreeEngine::~EmbreeEngine() { rtcReleaseScene(scene_); }
+
+std::shared_ptr<const RayEngine> EmbreeEngine::updated(const SceneGeometry& geometry,
+                                                       std::span<const uint32_t>) const {
+    // The top level holds one entry per object (mesh instances, user primitives): committing
+    // a new one is O(objects) and leaves every mesh's triangle scene as it is.
+    return std::make_shared<const EmbreeEngine>(geometry, this);
+}
+
+void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = rays.coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                  : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    const auto& prims = *geometry_.primitives;
+    const auto& planes = *geometry_.planes;
+    Packet p;
+    int planeHit[kPacket];
+    for (std::size_t first = 0; first < rays.count; first += kPacket) {
+        const int n = int(std::min<std::size_t>(kPacket, rays.count - first));
+        loadPacket(p, rays, first, n);
+        // Planes first, with the same rule as every engine: their t bounds the tree's walk.
+        for (int k = 0; k < n; ++k) {
+            const std::size_t i = first + std::size_t(k);
+            const Ray ray = Ray::make(Vec3(rays.ox[i], rays.oy[i], rays.oz[i]),
+                                      Vec3(rays.dx[i], rays.dy[i], rays.dz[i]));
+            planeHit[k] = planes_.closest(ray, 0.0f, p.rh.ray.tfar[k]);
+        }
+        rtcIntersect8(p.valid, scene_, &context, &p.rh);
+        for (int k = 0; k < n; ++k) {
+            const std::size_t i = first + std::size_t(k);
+            const unsigned inst = p.rh.hit.instID[0][k];
+            Vec3 normal;
+            uint32_t slot;
+            if (inst != RTC_INVALID_GEOMETRY_ID) {
+                slot = instancePrims_[inst];
+                const Primitive& prim = prims[slot];
+                const MeshAccel& mesh = *std::get<MeshShape>(prim.shape).accel;
+                normal = glm::normalize(prim.frame.normalToWorld *
+                                        mesh.normal(p.rh.hit.primID[k], p.rh.hit.u[k], p.rh.hit.v[k]));
+            } else if (p.rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID) {
+                slot = userPrims_[p.rh.hit.primID[k]];
+                normal = Vec3(p.rh.hit.Ng_x[k], p.rh.hit.Ng_y[k], p.rh.hit.Ng_z[k]);
+            } else if (planeHit[k] >= 0) {
+                slot = kPlaneSlot | uint32_t(planeHit[k]);
+                normal = planes[std::size_t(planeHit[k])].shape.normal;
+            } else {
+                hits.t[i] = kInfinity;
+                hits.nx[i] = hits.ny[i] = hits.nz[i] = 0.0f;
+                hits.slot[i] = kNoSlot;
+                continue;
+            }
+            hits.t[i] = p.rh.ray.tfar[k];
+            hits.nx[i] = normal.x, hits.ny[i] = normal.y, hits.nz[i] = normal.z;
+            hits.slot[i] = slot;
+        }
+    }
+}
+
+void EmbreeEngine::anyHit(const RayBatch& rays, uint8_t* occluded) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = rays.coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                  : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    Packet p;
+    for (std::size_t first = 0; first < rays.count; first += kPacket) {
+        const int n = int(std::min<std::size_t>(kPacket, rays.count - first));
+        loadPacket(p, rays, first, n);
+        // Bounded objects first: a shadow ray toward a light inside a room never reaches a wall.
+        rtcOccluded8(p.valid, scene_, &context, &p.rh.ray);
+        for (int k = 0; k < n; ++k) {
+            const std::size_t i = first + std::size_t(k);
+            bool blocked = p.rh.ray.tfar[k] == -kInfinity;
+            if (!blocked && !planes_.empty()) {
+                const Ray ray = Ray::make(Vec3(rays.ox[i], rays.oy[i], rays.oz[i]),
+                                          Vec3(rays.dx[i], rays.dy[i], rays.dz[i]));
+                blocked = planes_.any(ray, 0.0f, rays.tmax[i]);
+            }
+            occluded[i] = blocked;
+        }
+    }
+}
+
+}  // namespace rs

@@ -1,0 +1,387 @@
+// Breadth-first ray trees over the ray engine: closest hits of a level, shading of its hits
+// with their shadow rays as one batch, then the next level's reflection and refraction rays.
+#include "integrator/trace_kernel.h"
+
+#include "integrator/light_sampling.h"
+#include "integrator/sampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rs {
+
+namespace {
+
+/// Camera rays taken at a time: one 32 x 32 tile.
+constexpr std::size_t kCameraChunk = 1024;
+/// Rays of one level kept at once. With the default min_weight a camera ray's level holds at
+/// most 255 rays (weights of a level sum to at most 1), so a chunk never reaches this; only
+/// min_weight near 0 with wide glass trees does, and then the level is traced in parts.
+constexpr std::size_t kLevelCap = std::size_t(1) << 18;
+/// Light samples (so shadow rays) gathered before the batch is sent to the engine.
+constexpr std::size_t kSampleCap = 16384;
+
+/// A hit to shade: where, facing which way, with what, for which camera ray and weight.
+struct ShadePoint {
+    Vec3 p, n, toViewer;
+    uint32_t material, seed, owner;
+    float weight;     ///< Accumulated weight of the ray that hit here.
+    float asDiffuse;  ///< Mirror/glass share shown as Lambert while moving (0 otherwise).
+};
+
+}  // namespace
+
+struct TraceKernel::Level {
+    std::vector<float> ox, oy, oz, dx, dy, dz, tmax, weight;
+    std::vector<uint32_t> seed, owner;
+
+    std::size_t size() const { return ox.size(); }
+    void clear() {
+        for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tmax, &weight}) v->clear();
+        seed.clear();
+        owner.clear();
+    }
+    void push(const Vec3& o, const Vec3& d, float w, uint32_t s, uint32_t who) {
+        ox.push_back(o.x), oy.push_back(o.y), oz.push_back(o.z);
+        dx.push_back(d.x), dy.push_back(d.y), dz.push_back(d.z);
+        tmax.push_back(kInfinity);
+        weight.push_back(w);
+        seed.push_back(s);
+        owner.push_back(who);
+    }
+    void append(const Level& from, std::size_t begin, std::size_t end) {
+        auto copy = [&](auto& to, const auto& src) {
+            to.insert(to.end(), src.begin() + std::ptrdiff_t(begin), src.begin() + std::ptrdiff_t(end));
+        };
+        copy(ox, from.ox), copy(oy, from.oy), copy(oz, from.oz);
+        copy(dx, from.dx), copy(dy, from.dy), copy(dz, from.dz);
+        copy(tmax, from.tmax), copy(weight, from.weight);
+        copy(seed, from.seed), copy(owner, from.owner);
+    }
+    RayBatch batch(bool coherent) const {
+        RayBatch b{ox.data(), oy.data(), oz.data(), dx.data(), dy.data(), dz.data(), tmax.data(), size()};
+        b.coherent = coherent;
+        return b;
+    }
+};
+
+/// Per-thread storage reused from call to call: no allocation once it has grown.
+struct TraceKernel::Workspace {
+    Level ping, pong;
+    std::vector<float> t, nx, ny, nz;
+    std::vector<uint32_t> slot;
+    std::vector<ShadePoint> points;
+    std::vector<LightSample> samples, centreSamples;
+    std::vector<LightSpan> spans, centreSpans;
+    std::vector<uint32_t> pointSpans;  ///< First span of each point of a group, plus an end.
+    std::vector<uint32_t> centrePointSpans;
+    std::vector<float> sox, soy, soz, sdx, sdy, sdz, stmax;
+    std::vector<uint32_t> slight;
+    std::vector<uint8_t> occluded;
+
+    HitBatch hits(std::size_t n) {
+        for (auto* v : {&t, &nx, &ny, &nz}) v->resize(n);
+        slot.resize(n);
+        return {t.data(), nx.data(), ny.data(), nz.data(), slot.data()};
+    }
+    /// Shadow rays for samples [0, samples.size()) of points whose spans pointSpans lists.
+    void shadowRays(const std::vector<ShadePoint>& pts, std::size_t first, std::size_t count,
+                    float eps) {
+        const std::size_t n = samples.size();
+        for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n);
+        slight.resize(n);
+        for (std::size_t j = 0; j < count; ++j) {
+            const ShadePoint& pt = pts[first + j];
+            const Vec3 o = shadowOrigin(pt.p, pt.n, eps);
+            for (uint32_t k = pointSpans[j]; k < pointSpans[j + 1]; ++k) {
+                const LightSpan& span = spans[k];
+                for (uint32_t i = span.first; i < span.first + span.listed; ++i) {
+                    sox[i] = o.x, soy[i] = o.y, soz[i] = o.z;
+                    sdx[i] = samples[i].dir.x, sdy[i] = samples[i].dir.y, sdz[i] = samples[i].dir.z;
+                    stmax[i] = shadowLength(samples[i], eps);
+                    slight[i] = span.light;
+                }
+            }
+        }
+    }
+    RayBatch shadowBatch(bool coherent) const {
+        RayBatch b{sox.data(), soy.data(), soz.data(), sdx.data(), sdy.data(), sdz.data(),
+                   stmax.data(), samples.size()};
+        b.light = slight.data();
+        b.coherent = coherent;
+        return b;
+    }
+};
+
+namespace {
+
+/// Appends to a fixed-capacity per-camera-ray list, or sets its overflow flag when full.
+template <class T>
+void appendTo(T* base, int capacity, uint8_t* count, uint8_t* overflow, uint32_t owner,
+              const T& value) {
+    uint8_t& c = count[owner];
+    if (c < capacity) {
+        base[std::size_t(owner) * std::size_t(capacity) + c] = value;
+        ++c;
+    } else {
+        overflow[owner] = 1;
+    }
+}
+
+}  // namespace
+
+TraceKernel::TraceKernel(const CompiledScene& scene, const TraceOptions& options)
+    : scene_(scene), options_(options), eps_(scene.epsilon()) {}
+
+bool TraceKernel::trace(const CameraBatch& rays, const TraceOutput& out, TraceCounters& counters,
+                        const std::function<bool()>& stale) const {
+    thread_local Workspace ws;
+    for (std::size_t start = 0; start < rays.count; start += kCameraChunk) {
+        const std::size_t end = std::min(rays.count, start + kCameraChunk);
+        ws.ping.clear();
+        for (std::size_t i = start; i < end; ++i) {
+            out.color[i] = Color(0.0f);
+            if (out.primary) out.primary[i] = PrimaryInfo{};
+            if (out.rays) out.rays[i] = 0;
+            if (out.recordCount) out.recordCount[i] = 0, out.recordOverflow[i] = 0;
+            if (out.segmentCount) out.segmentCount[i] = 0, out.segmentOverflow[i] = 0;
+            ws.ping.push(rays.origin[i], rays.dir[i], 1.0f, rays.seed[i], uint32_t(i));
+        }
+        if (!traceLevels(ws, ws.ping, 0, out, counters, stale)) return false;
+    }
+    return true;
+}
+
+bool TraceKernel::traceLevels(Workspace& ws, Level& start, int depth, const TraceOutput& out,
+                              TraceCounters& counters, const std::function<bool()>& stale) const {
+    Level* cur = &start;
+    while (cur->size() > 0) {
+        if (stale && stale()) return false;
+        if (cur->size() > kLevelCap) {
+            // Too wide to keep with its children: trace it in parts, each to the bottom.
+            const Level whole = std::move(*cur);
+            cur->clear();
+            for (std::size_t b = 0; b < whole.size(); b += kLevelCap / 2) {
+                Level part;
+                part.append(whole, b, std::min(whole.size(), b + kLevelCap / 2));
+                if (!traceLevels(ws, part, depth, out, counters, stale)) return false;
+            }
+            return true;
+        }
+        Level* next = cur == &ws.ping ? &ws.pong : &ws.ping;
+        next->clear();
+        shadeLevel(ws, *cur, depth, *next, out, counters);
+        cur = next;
+        ++depth;
+    }
+    return true;
+}
+
+void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level& next,
+                             const TraceOutput& out, TraceCounters& counters) const {
+    const std::size_t n = level.size();
+    const HitBatch hits = ws.hits(n);
+    scene_.engine().closestHit(level.batch(depth == 0), hits);
+    counters.rays += n;
+    const RenderSettings& settings = scene_.settings();
+    const auto& materials = scene_.materials();
+    ws.points.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+        const uint32_t owner = level.owner[i];
+        const float weight = level.weight[i];
+        if (out.rays) ++out.rays[owner];
+        const Vec3 o(level.ox[i], level.oy[i], level.oz[i]);
+        const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
+        const bool found = hits.slot[i] != kNoSlot;
+        if (out.segments && depth > 0) {
+            const TreeSegment s = found ? TreeSegment{o, o + d * hits.t[i], 0u} : TreeSegment{o, d, 1u};
+            appendTo(out.segments, out.segmentCapacity, out.segmentCount, out.segmentOverflow, owner, s);
+        }
+        if (!found) {
+            out.color[owner] += weight * settings.background;
+            continue;
+        }
+        uint32_t materialIndex;
+        ObjectId id;
+        scene_.describe(hits.slot[i], materialIndex, id);
+        const CompiledMaterial& m = materials[materialIndex];
+        const Vec3 normal(hits.nx[i], hits.ny[i], hits.nz[i]);
+        if (out.primary) {
+            PrimaryInfo& info = out.primary[owner];
+            if (depth == 0) {
+                info.id = id;
+                info.depth = hits.t[i];
+                info.normal = normal;
+            }
+            if (m.reflectivity > 0.0f || m.transparency > 0.0f) info.touchedSpecular = true;
+        }
+        const Vec3 p = o + d * hits.t[i];
+        // Face the normal toward the incoming ray; `inside` tells glass which way the ratio
+        // goes (thesis Algorithm 6).
+        const bool inside = glm::dot(normal, d) > 0.0f;
+        const Vec3 nf = inside ? -normal : normal;
+
+        // While moving, mirror and glass shares may be shown as plain Lambert (thesis 4.2).
+        float reflectivity = m.reflectivity, transparency = m.transparency, asDiffuse = 0.0f;
+        if (options_.reflectionAsDiffuse && reflectivity > 0.0f) {
+            asDiffuse += reflectivity;
+            reflectivity = 0.0f;
+        }
+        if (options_.refractionAsDiffuse && transparency > 0.0f && id != options_.refractionExempt) {
+            asDiffuse += transparency;
+            transparency = 0.0f;
+        }
+        if (m.localWeight > 0.0f || asDiffuse > 0.0f)
+            ws.points.push_back({p, nf, -d, materialIndex, level.seed[i], owner, weight, asDiffuse});
+
+        if (depth >= options_.maxDepth || (reflectivity <= 0.0f && transparency <= 0.0f)) continue;
+        // Reflection is traced once and weighted by the mirror part plus the glass part's
+        // Fresnel (or all of the glass part on total internal reflection). A child whose
+        // accumulated weight falls below min_weight is not traced (scene-format.md).
+        float reflectWeight = reflectivity;
+        if (transparency > 0.0f) {
+            const float eta = inside ? m.ior : 1.0f / m.ior;
+            Vec3 t;
+            if (refractDir(d, nf, eta, t)) {
+                const float f = schlick(-glm::dot(nf, d), m.ior);
+                reflectWeight += transparency * f;
+                const float w = weight * (transparency * (1.0f - f));
+                if (w >= options_.minWeight)
+                    next.push(p - nf * eps_, t, w, hashCombine(level.seed[i], 2u), owner);
+            } else {
+                reflectWeight += transparency;
+            }
+        }
+        if (reflectWeight > 0.0f) {
+            const float w = weight * reflectWeight;
+            if (w >= options_.minWeight)
+                next.push(p + nf * eps_, d - 2.0f * glm::dot(d, nf) * nf, w,
+                          hashCombine(level.seed[i], 1u), owner);
+        }
+    }
+
+    // The local terms, with the shadow rays of as many points as fit one batch.
+    const int shadowSamples = settings.shadowSamples;
+    const bool deferred = options_.shadows == ShadowQuality::Deferred;
+    const bool traceShadows = shadowSamples > 0 && (options_.shadows == ShadowQuality::Full ||
+                                                    options_.shadows == ShadowQuality::HardOnly);
+    const bool area = shadowSamples > 0 && options_.shadows == ShadowQuality::Full;
+    for (std::size_t first = 0; first < ws.points.size();) {
+        ws.samples.clear();
+        ws.spans.clear();
+        ws.pointSpans.clear();
+        std::size_t count = 0;
+        while (first + count < ws.points.size() && (count == 0 || ws.samples.size() < kSampleCap)) {
+            const ShadePoint& pt = ws.points[first + count];
+            ws.pointSpans.push_back(uint32_t(ws.spans.size()));
+            sampleLights(scene_, pt.p, pt.n, pt.seed, area, ws.samples, ws.spans);
+            ++count;
+        }
+        ws.pointSpans.push_back(uint32_t(ws.spans.size()));
+        const uint8_t* occluded = nullptr;
+        if (traceShadows && !ws.samples.empty()) {
+            ws.shadowRays(ws.points, first, count, eps_);
+            ws.occluded.resize(ws.samples.size());
+            scene_.engine().anyHit(ws.shadowBatch(area), ws.occluded.data());
+            occluded = ws.occluded.data();
+            counters.shadowRays += ws.samples.size();
+        }
+        for (std::size_t j = 0; j < count; ++j) {
+            const ShadePoint& pt = ws.points[first + j];
+            const LightSpan* spans = ws.spans.data() + ws.pointSpans[j];
+            const std::size_t spanCount = ws.pointSpans[j + 1] - ws.pointSpans[j];
+            if (out.rays && occluded)
+                for (std::size_t k = 0; k < spanCount; ++k) out.rays[pt.owner] += spans[k].listed;
+            const CompiledMaterial& m = materials[pt.material];
+            if (m.localWeight > 0.0f) {
+                const Color ambient = settings.ambient * m.color * m.diffuse;
+                const Color direct = shadeLights(scene_, m, pt.n, pt.toViewer, spans, spanCount,
+                                                 ws.samples.data(), occluded);
+                out.color[pt.owner] += pt.weight * (m.localWeight * (ambient + direct));
+                // Shown unshadowed while moving; the record lets the shadows be added later.
+                if (deferred && out.records)
+                    appendTo(out.records, out.recordCapacity, out.recordCount, out.recordOverflow,
+                             pt.owner,
+                             ShadingRecord{pt.p, pt.n, pt.toViewer, pt.weight * m.localWeight,
+                                           pt.material, pt.seed});
+            }
+            if (pt.asDiffuse > 0.0f) {
+                CompiledMaterial lambert{};
+                lambert.color = m.color;
+                lambert.diffuse = 1.0f;
+                const Color direct = shadeLights(scene_, lambert, pt.n, pt.toViewer, spans,
+                                                 spanCount, ws.samples.data(), occluded);
+                out.color[pt.owner] += pt.weight * (pt.asDiffuse * (settings.ambient * m.color + direct));
+            }
+        }
+        first += count;
+    }
+}
+
+void TraceKernel::resolveDeferred(const ShadingRecord* records, std::size_t count, Color* out,
+                                  TraceCounters& counters) const {
+    thread_local Workspace ws;
+    thread_local std::vector<ShadePoint> points;
+    const bool shadows = scene_.settings().shadowSamples > 0;
+    for (std::size_t first = 0; first < count;) {
+        ws.samples.clear();
+        ws.spans.clear();
+        ws.pointSpans.clear();
+        ws.centreSamples.clear();
+        ws.centreSpans.clear();
+        ws.centrePointSpans.clear();
+        points.clear();
+        std::size_t n = 0;
+        while (first + n < count && (n == 0 || ws.samples.size() < kSampleCap)) {
+            const ShadingRecord& r = records[first + n];
+            points.push_back({r.p, r.n, r.toViewer, r.material, r.seed, 0, r.weight, 0.0f});
+            ws.pointSpans.push_back(uint32_t(ws.spans.size()));
+            ws.centrePointSpans.push_back(uint32_t(ws.centreSpans.size()));
+            // Shadowed as a full trace samples the lights, unshadowed as the Deferred trace did.
+            sampleLights(scene_, r.p, r.n, r.seed, true, ws.samples, ws.spans);
+            sampleLights(scene_, r.p, r.n, r.seed, false, ws.centreSamples, ws.centreSpans);
+            ++n;
+        }
+        ws.pointSpans.push_back(uint32_t(ws.spans.size()));
+        ws.centrePointSpans.push_back(uint32_t(ws.centreSpans.size()));
+        const uint8_t* occluded = nullptr;
+        if (shadows && !ws.samples.empty()) {
+            ws.shadowRays(points, 0, n, eps_);
+            ws.occluded.resize(ws.samples.size());
+            scene_.engine().anyHit(ws.shadowBatch(true), ws.occluded.data());
+            occluded = ws.occluded.data();
+            counters.shadowRays += ws.samples.size();
+        }
+        for (std::size_t j = 0; j < n; ++j) {
+            const ShadePoint& pt = points[j];
+            const CompiledMaterial& m = scene_.materials()[pt.material];
+            const Color shadowed = shadeLights(
+                scene_, m, pt.n, pt.toViewer, ws.spans.data() + ws.pointSpans[j],
+                ws.pointSpans[j + 1] - ws.pointSpans[j], ws.samples.data(), occluded);
+            const Color unshadowed = shadeLights(
+                scene_, m, pt.n, pt.toViewer, ws.centreSpans.data() + ws.centrePointSpans[j],
+                ws.centrePointSpans[j + 1] - ws.centrePointSpans[j], ws.centreSamples.data(), nullptr);
+            out[first + j] = pt.weight * (shadowed - unshadowed);
+        }
+        first += n;
+    }
+}
+
+void TraceKernel::firstHits(const CameraBatch& rays, ObjectId* ids) const {
+    thread_local Workspace ws;
+    for (std::size_t start = 0; start < rays.count; start += kCameraChunk) {
+        const std::size_t end = std::min(rays.count, start + kCameraChunk);
+        ws.ping.clear();
+        for (std::size_t i = start; i < end; ++i)
+            ws.ping.push(rays.origin[i], rays.dir[i], 1.0f, 0u, uint32_t(i));
+        const HitBatch hits = ws.hits(ws.ping.size());
+        scene_.engine().closestHit(ws.ping.batch(rays.coherent), hits);
+        for (std::size_t i = start; i < end; ++i) {
+            ids[i] = kNoObject;
+            uint32_t material;
+            if (hits.slot[i - start] != kNoSlot) scene_.describe(hits.slot[i - start], material, ids[i]);
+        }
+    }
+}
+
+}  // namespace rs
