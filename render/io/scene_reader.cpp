@@ -24,6 +24,16 @@ bool parseSyntax(const std::string& text, const std::string& fileName, Json& roo
                  std::vector<SceneError>& errors) {
     SceneError e;
     e.file = fileName;
+    // nlohmann takes a NUL byte for the end of the input, so a scene followed by "\0junk"
+    // would pass. JSON text never holds a raw NUL (in strings it must be escaped).
+    if (std::size_t nul = text.find('\0'); nul != std::string::npos) {
+        TextPosition pos = positionOfOffset(text, nul);
+        e.line = pos.line;
+        e.column = pos.column;
+        e.message = "syntax error: NUL byte; a scene file is text, one JSON object";
+        errors.push_back(std::move(e));
+        return false;
+    }
     try {
         root = Json::parse(text);
         return true;

@@ -72,6 +72,8 @@ TEST_P(SceneReaderError, FailsLoadWithPointerLineAndColumn) {
 }
 
 const std::string kSphere = R"("type": "sphere", "center": [0, 0, 0])";
+// A whole valid scene, for what may or may not follow it.
+const std::string kValid = scene(R"(  "render": {})");
 
 const ErrorCase kCases[] = {
     {"SyntaxError", scene(R"(  "render": { "width": @@# })"), "", "syntax error"},
@@ -271,6 +273,13 @@ const ErrorCase kCases[] = {
      "/objects/0/file", "nan_vertex.obj\": vertex 0"},
     {"MaterialsNotArray", scene(R"(  "materials": @@{})"), "/materials", "must be an array"},
     {"ObjectEntryNotObject", scene(R"(  "objects": [ @@3 ])"), "/objects/0", "must be an object"},
+    {"NulByteAfterTopLevelObject", kValid + "@@" + std::string(1, '\0') + "garbage", "",
+     "NUL byte"},
+    {"NulByteInsideTopLevelObject",
+     "{ \"format\": \"raystudio-scene\",@@" + std::string(1, '\0') + " \"version\": 1 }", "",
+     "NUL byte"},
+    {"TextAfterTopLevelObject", kValid + "  @@garbage\n", "", "expected end of input"},
+    {"SecondTopLevelObject", kValid + "@@{}", "", "expected end of input"},
     {"NestingTooDeep",
      "@@" + scene("  \"x-deep\": " + std::string(300, '[') + std::string(300, ']')), "", "nesting"},
 };
