@@ -1,6 +1,8 @@
 // Loading triangle meshes through assimp into one object-space MeshData.
 #include "io/mesh_io.h"
 
+#include "io/input_file.h"
+
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -85,7 +87,10 @@ MeshLoadResult loadMesh(const std::string& path, bool smoothNormals) {
         return result;
     };
     if (!fs::exists(file, ec)) return fail("file not found");
-    if (!fs::is_regular_file(file, ec)) return fail("not a regular file");
+    // Before anything is opened: directories, devices, FIFOs and oversized files are refused.
+    std::uintmax_t size = 0;
+    if (std::string why = checkInputFile(file.string(), kMaxMeshFileBytes, &size); !why.empty())
+        return fail(why);
     if (!std::ifstream(file, std::ios::binary))
         return fail("cannot open: " + std::error_code(errno, std::generic_category()).message());
 

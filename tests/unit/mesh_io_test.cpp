@@ -1,11 +1,18 @@
 // Mesh loading through assimp: formats, node transforms, degenerate triangles and bad files.
 #include "io/mesh_io.h"
 
+#include "io/input_file.h"
+
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <cctype>
+#include <chrono>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace rs {
@@ -118,6 +125,58 @@ TEST(MeshIo, Directory_IsAnError) {
     MeshLoadResult r = loadMesh(std::string(RAYSTUDIO_TEST_DATA) + "/meshes", true);
     EXPECT_FALSE(r.ok());
     EXPECT_NE(r.error.find("not a regular file"), std::string::npos) << r.error;
+}
+
+TEST(MeshIo, Device_IsRefusedWithoutReadingIt) {
+    MeshLoadResult r = loadMesh("/dev/zero", true);
+    EXPECT_FALSE(r.ok());
+    EXPECT_NE(r.error.find("/dev/zero"), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find("device"), std::string::npos) << r.error;
+}
+
+// Hand-made mesh files in a fresh folder, removed afterwards.
+class MeshFiles : public testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = std::filesystem::path(testing::TempDir()) /
+               ("mesh_io_" +
+                std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+        std::filesystem::remove_all(dir_);
+        std::filesystem::create_directories(dir_);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir_); }
+    std::string write(const std::string& name, const std::string& bytes) {
+        const std::string p = (dir_ / name).string();
+        std::ofstream(p, std::ios::binary) << bytes;
+        return p;
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    std::filesystem::path dir_;
+};
+
+// Loads `path`, expecting a refusal within a second whose message names the file.
+void expectRefusedQuickly(const std::string& path, const char* part) {
+    const auto start = std::chrono::steady_clock::now();
+    MeshLoadResult r = loadMesh(path, true);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_FALSE(r.ok());
+    EXPECT_LT(seconds, 1.0);
+    EXPECT_NE(r.error.find(path), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find(part), std::string::npos) << r.error;
+}
+
+TEST_F(MeshFiles, Fifo_IsRefusedWithoutBlocking) {
+    const std::string fifo = path("pipe.obj");
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+    expectRefusedQuickly(fifo, "FIFO");
+}
+
+TEST_F(MeshFiles, FileAboveTheSizeLimit_IsRefusedBeforeReading) {
+    // A sparse file: its size is over the limit, its blocks are not on disk.
+    const std::string big = write("big.stl", "solid x\n");
+    std::filesystem::resize_file(big, kMaxMeshFileBytes + 1);
+    expectRefusedQuickly(big, "limit");
 }
 
 }  // namespace
