@@ -2,6 +2,7 @@
 #include "io/mesh_io.h"
 
 #include "io/input_file.h"
+#include "io/mesh_header_check.h"
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -93,6 +94,8 @@ MeshLoadResult loadMesh(const std::string& path, bool smoothNormals) {
         return fail(why);
     if (!std::ifstream(file, std::ios::binary))
         return fail("cannot open: " + std::error_code(errno, std::generic_category()).message());
+    // A header that lies about its counts makes assimp allocate for them first.
+    if (std::string why = checkMeshHeader(file.string(), size); !why.empty()) return fail(why);
 
     // No Assimp::DefaultLogger is created: assimp then logs to its null logger, so loading
     // never writes to stdout.
