@@ -67,7 +67,7 @@ struct Step {
 int runDrag(int argc, char** argv) {
     OptionSpec spec;
     spec.valued = {"--object", "--to", "--steps", "--policy", "--threads", "--width", "--height",
-                   "--max-depth", "--shadow-samples", "--supersampling"};
+                   "--max-depth", "--min-weight", "--shadow-samples", "--supersampling"};
     spec.flags = {"--verify", "--json"};
     Arguments args(argc, argv, 2, spec);
     if (args.positional().size() != 1) throw UsageError{"expects exactly one scene file"};

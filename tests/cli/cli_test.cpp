@@ -82,6 +82,7 @@ TEST_F(CliTest, Help_PrintsUsageToStdoutAndExits0) {
     CliRun r = cli("--help");
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_NE(r.out.find("usage"), std::string::npos);
+    EXPECT_NE(r.out.find("--min-weight W"), std::string::npos) << r.out;
     EXPECT_EQ(r.err, "");
 }
 
@@ -127,6 +128,35 @@ TEST_F(CliTest, Render_BadNumbers_Exit2NamingTheOption) {
         EXPECT_NE(r.err.find(std::string(bad).substr(0, std::string(bad).find(' '))),
                   std::string::npos) << bad << ": " << r.err;
         EXPECT_EQ(r.out, "") << bad;
+    }
+}
+
+TEST_F(CliTest, MinWeight_IsAcceptedByRenderBenchAndDrag) {
+    CliRun r = cli("render " + kRoom + " -o " + path("x.png") + " --width 8 --height 8" +
+                   " --min-weight 0.5");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    r = cli("render " + kRoom + " -o " + path("x.png") + " --width 8 --height 8 --min-weight=0");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    r = cli("bench " + kRoom + " --repeat 1 --json --width 8 --height 8 --min-weight 0.01");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    r = cli("drag " + kRoom + " --object 'blue ball' --to 0,1,-5 --steps 2 --threads 2" +
+            " --width 16 --height 9 --min-weight 0.001");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
+TEST_F(CliTest, MinWeight_OutsideZeroToOne_Exits2NamingTheOption) {
+    for (const char* bad : {"1", "1.5", "-0.1", "abc", "nan", "inf", "0.5x", ""}) {
+        for (const char* command : {"render", "bench", "drag"}) {
+            const std::string rest = std::string(command) == "render" ? " -o " + path("x.png")
+                                     : std::string(command) == "drag"
+                                         ? " --object 'blue ball' --to 0,1,-5"
+                                         : "";
+            CliRun r = cli(std::string(command) + " " + kRoom + rest +
+                           " --width 8 --height 8 --min-weight '" + bad + "'");
+            EXPECT_EQ(r.exitCode, 2) << command << " " << bad << ": " << r.err;
+            EXPECT_NE(r.err.find("--min-weight"), std::string::npos) << command << " " << r.err;
+            EXPECT_EQ(r.out, "") << command << " " << bad;
+        }
     }
 }
 
