@@ -1,4 +1,4 @@
-// `raystudio-cli validate`: prints ok, or every error of the scene file (on stderr) with its location.
+// `raystudio-cli validate`: prints ok, or every error of the scene file with its location.
 #include "arguments.h"
 #include "commands.h"
 

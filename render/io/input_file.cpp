@@ -18,12 +18,18 @@ std::string errnoText(const char* fallback) {
 
 const char* describeNonRegular(fs::file_type type) {
     switch (type) {
-        case fs::file_type::directory: return "is a directory, not a regular file";
-        case fs::file_type::character: return "is a character device, not a regular file";
-        case fs::file_type::block: return "is a block device, not a regular file";
-        case fs::file_type::fifo: return "is a FIFO (named pipe), not a regular file";
-        case fs::file_type::socket: return "is a socket, not a regular file";
-        default: return "is not a regular file";
+        case fs::file_type::directory:
+            return "is a directory, not a regular file";
+        case fs::file_type::character:
+            return "is a character device, not a regular file";
+        case fs::file_type::block:
+            return "is a block device, not a regular file";
+        case fs::file_type::fifo:
+            return "is a FIFO (named pipe), not a regular file";
+        case fs::file_type::socket:
+            return "is a socket, not a regular file";
+        default:
+            return "is not a regular file";
     }
 }
 }  // namespace

@@ -1,14 +1,14 @@
 // OFF and PLY header counts against the file size, read from the head of the file only.
 #include "io/mesh_header_check.h"
 
-#include "io/input_file.h"
-
 #include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <optional>
 #include <string_view>
 #include <vector>
+
+#include "io/input_file.h"
 
 namespace rs {
 
@@ -96,8 +96,7 @@ private:
 std::string checkOff(std::string_view head, std::uintmax_t fileSize) {
     OffTokens tokens(head);
     auto keyword = tokens.next();
-    if (!keyword || keyword->size() < 3 || keyword->substr(keyword->size() - 3) != "OFF")
-        return {};
+    if (!keyword || keyword->size() < 3 || keyword->substr(keyword->size() - 3) != "OFF") return {};
     const std::string_view prefix = keyword->substr(0, keyword->size() - 3);
     if (prefix.find_first_not_of("STCN4n") != std::string_view::npos) return {};
     std::uintmax_t coordinates = prefix.find('4') != std::string_view::npos ? 4 : 3;
@@ -128,8 +127,8 @@ std::string checkOff(std::string_view head, std::uintmax_t fileSize) {
 std::uintmax_t plyScalarBytes(std::string_view type) {
     if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
     if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" ||
-        type == "float" || type == "float32")
+    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+        type == "float32")
         return 4;
     if (type == "double" || type == "float64") return 8;
     return 0;
@@ -168,8 +167,9 @@ std::string checkPly(std::string_view head, std::uintmax_t fileSize) {
             ascii = w[1] == "ascii";
         } else if (w[0] == "element" && w.size() >= 3) {
             auto count = parseCount(w[2]);
-            if (!count) return "PLY header declares an unreadable " + std::string(w[1]) +
-                               " count: " + std::string(w[2]);
+            if (!count)
+                return "PLY header declares an unreadable " + std::string(w[1]) +
+                       " count: " + std::string(w[2]);
             claims.push_back({std::string(w[1]) + " elements", *count, 0});
         } else if (w[0] == "property" && !claims.empty()) {
             // A list costs at least its count; each scalar its size (ASCII: a number).
