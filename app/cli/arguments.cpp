@@ -2,6 +2,7 @@
 #include "arguments.h"
 
 #include <charconv>
+#include <cmath>
 
 namespace rs::cli {
 
@@ -57,6 +58,18 @@ std::optional<int> Arguments::intValue(const std::string& name, int lo, int hi) 
     if (v < lo || v > hi)
         throw UsageError{name + " must be between " + std::to_string(lo) + " and " +
                          std::to_string(hi) + ", got " + std::to_string(v)};
+    return v;
+}
+
+std::optional<double> Arguments::numberValue(const std::string& name) const {
+    auto text = value(name);
+    if (!text) return std::nullopt;
+    double v = 0.0;
+    const char* end = text->data() + text->size();
+    // from_chars, unlike strtod, ignores the C locale and takes no leading spaces or '+'.
+    auto [ptr, ec] = std::from_chars(text->data(), end, v);
+    if (ec != std::errc() || ptr != end || text->empty() || !std::isfinite(v))
+        throw UsageError{name + " expects a number, got '" + *text + "'"};
     return v;
 }
 

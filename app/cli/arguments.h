@@ -33,6 +33,9 @@ public:
     /// The integer value of `name` in [lo, hi], or nullopt when absent; throws UsageError
     /// when it is not a whole number or out of range.
     std::optional<int> intValue(const std::string& name, int lo, int hi) const;
+    /// The finite number `name` gives, or nullopt when absent; throws UsageError when it is
+    /// not a number (ranges differ per option, so callers check them).
+    std::optional<double> numberValue(const std::string& name) const;
 
 private:
     std::vector<std::string> positional_;

@@ -36,7 +36,7 @@ double median(std::vector<double> v) {
 
 int runBench(int argc, char** argv) {
     OptionSpec spec;
-    spec.valued = {"--repeat", "--threads", "--width", "--height"};
+    spec.valued = {"--repeat", "--threads", "--width", "--height", "--min-weight"};
     spec.flags = {"--json"};
     Arguments args(argc, argv, 2, spec);
     if (args.positional().size() != 1) throw UsageError{"expects exactly one scene file"};

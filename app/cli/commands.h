@@ -15,7 +15,7 @@ int runDrag(int argc, char** argv);
 /// Loads a scene for a command; prints every error to stderr and returns false on failure.
 bool loadSceneOrReport(const std::string& path, SceneDocument& doc);
 
-/// Applies the shared render-setting overrides (--width, --height, --max-depth,
+/// Applies the shared render-setting overrides (--width, --height, --max-depth, --min-weight,
 /// --shadow-samples, --supersampling); throws UsageError on bad values.
 void applyRenderOverrides(const Arguments& args, RenderSettings& settings);
 

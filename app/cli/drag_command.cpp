@@ -4,12 +4,12 @@
 #include "commands.h"
 
 #include "integrator/renderer.h"
+#include "io/input_file.h"
 #include "session/render_session.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <thread>
 
@@ -19,6 +19,9 @@ namespace {
 
 using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
+
+// Policy files are a dozen keys; anything this large is not one.
+constexpr std::uintmax_t kMaxPolicyFileBytes = std::uintmax_t(1) << 20;
 
 double msSince(Clock::time_point t) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
@@ -44,13 +47,13 @@ Vec3 parseVec3(const std::string& text) {
 InteractionPolicy parsePolicy(const std::string& name) {
     if (name == "default") return InteractionPolicy{};
     if (name == "none") return InteractionPolicy::none();
-    std::ifstream in(name);
-    if (!in) throw UsageError{"--policy: cannot read '" + name + "' (default, none or a JSON file)"};
-    std::stringstream text;
-    text << in.rdbuf();
+    // Checked like scene files: a FIFO or a device named here must not block or never end.
+    std::string text, error;
+    if (!readInputFile(name, kMaxPolicyFileBytes, text, error))
+        throw UsageError{"--policy: cannot read '" + name + "': " + error +
+                         " (default, none or a JSON file)"};
     InteractionPolicy p;
-    std::string error;
-    if (!policyFromJson(text.str(), p, error)) throw UsageError{"--policy " + name + ": " + error};
+    if (!policyFromJson(text, p, error)) throw UsageError{"--policy " + name + ": " + error};
     return p;
 }
 
@@ -64,7 +67,7 @@ struct Step {
 int runDrag(int argc, char** argv) {
     OptionSpec spec;
     spec.valued = {"--object", "--to", "--steps", "--policy", "--threads", "--width", "--height",
-                   "--max-depth", "--shadow-samples", "--supersampling"};
+                   "--max-depth", "--min-weight", "--shadow-samples", "--supersampling"};
     spec.flags = {"--verify", "--json"};
     Arguments args(argc, argv, 2, spec);
     if (args.positional().size() != 1) throw UsageError{"expects exactly one scene file"};

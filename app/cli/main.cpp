@@ -14,18 +14,21 @@ const char* const kUsage =
     "usage: raystudio-cli <command> [options]\n"
     "\n"
     "commands:\n"
-    "  render SCENE -o OUT [--width W] [--height H] [--max-depth D] [--shadow-samples N]\n"
-    "                      [--supersampling N] [--threads N] [--stats]\n"
+    "  render SCENE -o OUT [--width W] [--height H] [--max-depth D] [--min-weight W]\n"
+    "                      [--shadow-samples N] [--supersampling N] [--threads N] [--stats]\n"
     "      render a scene file to an image (PNG, JPEG, TIFF, EXR, HDR by extension)\n"
     "  validate SCENE\n"
-    "      check a scene file; prints 'ok' or every error found\n"
+    "      check a scene file; prints 'ok', or every error found on stderr\n"
     "  bench SCENE [--repeat N] [--json] [--threads N] [--width W] [--height H]\n"
+    "              [--min-weight W]\n"
     "      the thesis's chapter 4.2 experiments (shadow samples, depth, supersampling)\n"
     "  drag SCENE --object NAME --to X,Y,Z [--steps N] [--policy default|none|FILE]\n"
-    "             [--threads N] [--verify] [--json]\n"
+    "             [--threads N] [--verify] [--json] [--width W] [--height H] [--max-depth D]\n"
+    "             [--min-weight W] [--shadow-samples N] [--supersampling N]\n"
     "      drag an object through the interactive session, refine, compare with a full render\n"
     "\n"
-    "exit codes: 0 success, 2 bad input or usage, 1 any other failure\n";
+    "results go to stdout, errors to stderr; exit codes: 0 success, 2 bad input or usage,\n"
+    "1 any other failure\n";
 
 }  // namespace
 

@@ -13,8 +13,8 @@ namespace rs::cli {
 
 int runRender(int argc, char** argv) {
     OptionSpec spec;
-    spec.valued = {"--output", "--width", "--height", "--max-depth", "--shadow-samples",
-                   "--supersampling", "--threads"};
+    spec.valued = {"--output",     "--width",          "--height",        "--max-depth",
+                   "--min-weight", "--shadow-samples", "--supersampling", "--threads"};
     spec.flags = {"--stats"};
     spec.aliases = {{"-o", "--output"}};
     Arguments args(argc, argv, 2, spec);

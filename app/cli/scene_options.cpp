@@ -20,6 +20,13 @@ void applyRenderOverrides(const Arguments& args, RenderSettings& settings) {
     if (auto v = args.intValue("--width", 1, kMaxImageSide)) settings.width = *v;
     if (auto v = args.intValue("--height", 1, kMaxImageSide)) settings.height = *v;
     if (auto v = args.intValue("--max-depth", 0, kMaxDepthLimit)) settings.maxDepth = *v;
+    if (auto v = args.numberValue("--min-weight")) {
+        // The scene file's rule for min_weight, applied to the float that is stored.
+        const float weight = static_cast<float>(*v);
+        if (!(weight >= 0.0f && weight < 1.0f))
+            throw UsageError{"--min-weight must be in [0, 1), got " + *args.value("--min-weight")};
+        settings.minWeight = weight;
+    }
     if (auto v = args.intValue("--shadow-samples", 0, kMaxSampleCount)) settings.shadowSamples = *v;
     if (auto v = args.intValue("--supersampling", 1, kMaxSampleCount)) settings.supersampling = *v;
 }

@@ -1,6 +1,9 @@
 // Loading triangle meshes through assimp into one object-space MeshData.
 #include "io/mesh_io.h"
 
+#include "io/input_file.h"
+#include "io/mesh_header_check.h"
+
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -85,9 +88,14 @@ MeshLoadResult loadMesh(const std::string& path, bool smoothNormals) {
         return result;
     };
     if (!fs::exists(file, ec)) return fail("file not found");
-    if (!fs::is_regular_file(file, ec)) return fail("not a regular file");
+    // Before anything is opened: directories, devices, FIFOs and oversized files are refused.
+    std::uintmax_t size = 0;
+    if (std::string why = checkInputFile(file.string(), kMaxMeshFileBytes, &size); !why.empty())
+        return fail(why);
     if (!std::ifstream(file, std::ios::binary))
         return fail("cannot open: " + std::error_code(errno, std::generic_category()).message());
+    // A header that lies about its counts makes assimp allocate for them first.
+    if (std::string why = checkMeshHeader(file.string(), size); !why.empty()) return fail(why);
 
     // No Assimp::DefaultLogger is created: assimp then logs to its null logger, so loading
     // never writes to stdout.

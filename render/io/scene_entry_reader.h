@@ -52,6 +52,8 @@ struct NumberRange {
     static NumberRange positive() { return {0.0, std::numeric_limits<double>::infinity(), true}; }
     static NumberRange nonNegative() { return {0.0, std::numeric_limits<double>::infinity()}; }
     static NumberRange fraction() { return {0.0, 1.0}; }
+    /// [0, 1): a fraction that must stay below one (min_weight: 1 would stop every ray).
+    static NumberRange fractionBelowOne() { return {0.0, 1.0, false, true}; }
     static NumberRange open(double lo, double hi) { return {lo, hi, true, true}; }
     bool contains(double v) const;
     /// "> 0", ">= 0", "in [0, 1]", "in (0, 180)".

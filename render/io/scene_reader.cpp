@@ -1,10 +1,8 @@
 // Reading scene files: syntax, the top level, and the SceneError text forms.
-#include <cerrno>
 #include <climits>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
+#include "io/input_file.h"
 #include "io/scene_io.h"
 #include "io/scene_reader_sections.h"
 
@@ -24,6 +22,16 @@ bool parseSyntax(const std::string& text, const std::string& fileName, Json& roo
                  std::vector<SceneError>& errors) {
     SceneError e;
     e.file = fileName;
+    // nlohmann takes a NUL byte for the end of the input, so a scene followed by "\0junk"
+    // would pass. JSON text never holds a raw NUL (in strings it must be escaped).
+    if (std::size_t nul = text.find('\0'); nul != std::string::npos) {
+        TextPosition pos = positionOfOffset(text, nul);
+        e.line = pos.line;
+        e.column = pos.column;
+        e.message = "syntax error: NUL byte; a scene file is text, one JSON object";
+        errors.push_back(std::move(e));
+        return false;
+    }
     try {
         root = Json::parse(text);
         return true;
@@ -119,17 +127,13 @@ SceneLoadResult loadScene(const std::string& path) {
         result.errors.push_back(SceneError{path, "", 0, 0, "cannot read scene file: " + why});
         return result;
     };
+    // Directories, devices, FIFOs and oversized files are refused before anything is opened.
+    std::string text, error;
+    if (!readInputFile(path, kMaxSceneFileBytes, text, error)) return fail(error);
     std::error_code ec;
-    // A directory opens fine as a stream on Linux and then reads as empty text.
-    if (fs::is_directory(path, ec)) return fail("is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return fail(std::error_code(errno, std::generic_category()).message());
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) return fail(std::error_code(errno, std::generic_category()).message());
     fs::path absolute = fs::absolute(fs::path(path), ec);
     std::string baseDir = (ec ? fs::path(path) : absolute).parent_path().string();
-    return parseScene(text.str(), baseDir, path);
+    return parseScene(text, baseDir, path);
 }
 
 }  // namespace rs

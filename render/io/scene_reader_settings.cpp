@@ -75,6 +75,7 @@ void readRenderSettings(SceneErrorSink& sink, const Json& json, RenderSettings& 
     readImageSide(r, "height", settings.height);
     // Upper limits the format leaves open: beyond them a render overflows the stack or never ends.
     r.integer("max_depth", settings.maxDepth, 0, kMaxDepthLimit);
+    r.number("min_weight", settings.minWeight, NumberRange::fractionBelowOne());
     r.integer("shadow_samples", settings.shadowSamples, 0, kMaxSampleCount);
     r.integer("supersampling", settings.supersampling, 1, kMaxSampleCount);
     r.boolean("adaptive_supersampling", settings.adaptiveSupersampling);

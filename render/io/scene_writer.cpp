@@ -55,6 +55,7 @@ Json renderJson(const RenderSettings& r) {
     j["width"] = r.width;
     j["height"] = r.height;
     if (r.maxDepth != d.maxDepth) j["max_depth"] = r.maxDepth;
+    if (r.minWeight != d.minWeight) j["min_weight"] = number(r.minWeight);
     if (r.shadowSamples != d.shadowSamples) j["shadow_samples"] = r.shadowSamples;
     if (r.supersampling != d.supersampling) j["supersampling"] = r.supersampling;
     if (r.adaptiveSupersampling != d.adaptiveSupersampling)

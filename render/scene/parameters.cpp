@@ -145,6 +145,9 @@ const std::vector<Field<RenderSettings>>& renderFields() {
         intField("width", "Width", &RenderSettings::width, 1, 16384),
         intField("height", "Height", &RenderSettings::height, 1, 16384),
         intField("max_depth", "Max depth", &RenderSettings::maxDepth, 0, 64),
+        // [0, 1) in the format: the largest float below 1 closes the descriptor's range.
+        floatField("min_weight", "Min ray weight", &RenderSettings::minWeight, 0.0,
+                   double(std::nextafter(1.0f, 0.0f)), 0.001),
         intField("shadow_samples", "Shadow samples", &RenderSettings::shadowSamples, 0, 256),
         intField("supersampling", "Supersampling", &RenderSettings::supersampling, 1, 256),
         boolField("adaptive_supersampling", "Adaptive supersampling",

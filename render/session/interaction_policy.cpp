@@ -111,7 +111,10 @@ bool policyFromJson(const std::string& text, InteractionPolicy& out, std::string
         return false;
     }
     InteractionPolicy p = out;
-    for (const auto& [key, value] : j.items()) {
+    // Not a structured binding: clang before 16 refuses to capture one in needBool below.
+    for (const auto& item : j.items()) {
+        const std::string& key = item.key();
+        const nlohmann::json& value = item.value();
         auto needBool = [&](bool& field) {
             if (!value.is_boolean()) {
                 error = "policy key '" + key + "' must be true or false";

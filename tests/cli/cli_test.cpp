@@ -2,10 +2,15 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
+#include <chrono>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -16,20 +21,33 @@ namespace {
 namespace fs = std::filesystem;
 
 struct CliRun {
-    int exitCode;  ///< -1 when the process died from a signal.
-    std::string out;
+    int exitCode;     ///< -1 when the process died from a signal; 124 when it hung.
+    std::string out;  ///< stdout: results only.
+    std::string err;  ///< stderr: messages, usage, progress.
 };
 
-/// Runs the CLI with `args` (shell words), capturing stdout and stderr together.
-CliRun cli(const std::string& args, bool stdoutOnly = false) {
-    const std::string cmd =
-        std::string("'") + RAYSTUDIO_CLI + "' " + args + (stdoutOnly ? " 2>/dev/null" : " 2>&1");
+std::string readAll(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+/// Runs the CLI with `args` (shell words), capturing stdout and stderr apart. A run that
+/// takes over `timeoutS` seconds is killed: nothing the CLI is given may make it hang.
+CliRun cli(const std::string& args, int timeoutS = 120) {
+    static int calls = 0;
+    const fs::path errFile = fs::temp_directory_path() / ("raystudio-cli-test-stderr-" +
+                                                          std::to_string(getpid()) + "-" +
+                                                          std::to_string(++calls));
+    const std::string cmd = "timeout " + std::to_string(timeoutS) + " '" + RAYSTUDIO_CLI + "' " +
+                            args + " 2>'" + errFile.string() + "'";
     FILE* pipe = popen(cmd.c_str(), "r");
-    CliRun run{-1, {}};
+    CliRun run{-1, {}, {}};
     std::array<char, 4096> buf;
     while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) run.out.append(buf.data(), n);
     const int status = pclose(pipe);
     run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.err = readAll(errFile);
+    fs::remove(errFile);
     return run;
 }
 
@@ -53,25 +71,37 @@ protected:
 
 const std::string kRoom = std::string(RAYSTUDIO_SCENES_DIR) + "/reference-room.scene.json";
 
-TEST_F(CliTest, NoArguments_PrintsUsageAndExits2) {
+TEST_F(CliTest, NoArguments_PrintsUsageToStderrAndExits2) {
     CliRun r = cli("");
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.out.find("usage"), std::string::npos);
+    EXPECT_NE(r.err.find("usage"), std::string::npos);
+    EXPECT_EQ(r.out, "");
 }
 
-TEST_F(CliTest, UnknownCommandOrOption_Exits2NamingIt) {
+TEST_F(CliTest, Help_PrintsUsageToStdoutAndExits0) {
+    CliRun r = cli("--help");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("usage"), std::string::npos);
+    EXPECT_NE(r.out.find("--min-weight W"), std::string::npos) << r.out;
+    EXPECT_EQ(r.err, "");
+}
+
+TEST_F(CliTest, UnknownCommandOrOption_Exits2NamingItOnStderr) {
     CliRun r = cli("paint " + kRoom);
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.out.find("paint"), std::string::npos);
+    EXPECT_NE(r.err.find("paint"), std::string::npos);
+    EXPECT_EQ(r.out, "");
     r = cli("render " + kRoom + " -o " + path("x.png") + " --fast");
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.out.find("--fast"), std::string::npos);
+    EXPECT_NE(r.err.find("--fast"), std::string::npos);
+    EXPECT_EQ(r.out, "");
 }
 
 TEST_F(CliTest, Render_WritesTheImageAndStatsLine) {
     CliRun r = cli("render " + kRoom + " -o " + path("room.png") +
-                " --width 64 --height 36 --threads 2 --stats", true);
-    ASSERT_EQ(r.exitCode, 0) << r.out;
+                   " --width 64 --height 36 --threads 2 --stats");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err, "");  // not a terminal: no progress bar
     EXPECT_TRUE(fs::exists(path("room.png")));
     auto stats = nlohmann::json::parse(r.out);
     EXPECT_EQ(stats["width"], 64);
@@ -85,7 +115,7 @@ TEST_F(CliTest, Render_EveryOutputFormat) {
     for (const char* ext : {"png", "jpg", "tif", "exr", "hdr"}) {
         const std::string out = path(std::string("room.") + ext);
         CliRun r = cli("render " + kRoom + " -o " + out + " --width 16 --height 9");
-        EXPECT_EQ(r.exitCode, 0) << ext << ": " << r.out;
+        EXPECT_EQ(r.exitCode, 0) << ext << ": " << r.err;
         EXPECT_GT(fs::file_size(out), 0u) << ext;
     }
 }
@@ -95,26 +125,84 @@ TEST_F(CliTest, Render_BadNumbers_Exit2NamingTheOption) {
                             "--supersampling 0", "--max-depth -1", "--width 99999"}) {
         CliRun r = cli("render " + kRoom + " -o " + path("x.png") + " " + bad);
         EXPECT_EQ(r.exitCode, 2) << bad;
-        EXPECT_NE(r.out.find(std::string(bad).substr(0, std::string(bad).find(' '))),
-                  std::string::npos) << bad << ": " << r.out;
+        EXPECT_NE(r.err.find(std::string(bad).substr(0, std::string(bad).find(' '))),
+                  std::string::npos) << bad << ": " << r.err;
+        EXPECT_EQ(r.out, "") << bad;
+    }
+}
+
+TEST_F(CliTest, MinWeight_IsAcceptedByRenderBenchAndDrag) {
+    CliRun r = cli("render " + kRoom + " -o " + path("x.png") + " --width 8 --height 8" +
+                   " --min-weight 0.5");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    r = cli("render " + kRoom + " -o " + path("x.png") + " --width 8 --height 8 --min-weight=0");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    r = cli("bench " + kRoom + " --repeat 1 --json --width 8 --height 8 --min-weight 0.01");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    r = cli("drag " + kRoom + " --object 'blue ball' --to 0,1,-5 --steps 2 --threads 2" +
+            " --width 16 --height 9 --min-weight 0.001");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
+TEST_F(CliTest, MinWeight_OutsideZeroToOne_Exits2NamingTheOption) {
+    for (const char* bad : {"1", "1.5", "-0.1", "abc", "nan", "inf", "0.5x", ""}) {
+        for (const char* command : {"render", "bench", "drag"}) {
+            const std::string rest = std::string(command) == "render" ? " -o " + path("x.png")
+                                     : std::string(command) == "drag"
+                                         ? " --object 'blue ball' --to 0,1,-5"
+                                         : "";
+            CliRun r = cli(std::string(command) + " " + kRoom + rest +
+                           " --width 8 --height 8 --min-weight '" + bad + "'");
+            EXPECT_EQ(r.exitCode, 2) << command << " " << bad << ": " << r.err;
+            EXPECT_NE(r.err.find("--min-weight"), std::string::npos) << command << " " << r.err;
+            EXPECT_EQ(r.out, "") << command << " " << bad;
+        }
     }
 }
 
 TEST_F(CliTest, Render_MissingSceneOrOutput_Exit2) {
     CliRun r = cli("render " + path("nope.scene.json") + " -o " + path("x.png"));
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.out.find("nope.scene.json"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("nope.scene.json"), std::string::npos) << r.err;
     r = cli("render " + kRoom);
     EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("-o OUT"), std::string::npos) << r.err;
     r = cli("render " + kRoom + " -o " + path("x.bmpx") + " --width 8 --height 8");
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.out.find("x.bmpx"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("x.bmpx"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "");
 }
 
 TEST_F(CliTest, Validate_GoodScenePrintsOk) {
     CliRun r = cli("validate " + kRoom);
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_EQ(r.out, "ok\n");
+    EXPECT_EQ(r.err, "");
+}
+
+TEST_F(CliTest, Validate_DeviceDirectoryAndFifo_FailAtOnceNamingThePath) {
+    const std::string fifo = path("pipe.scene.json");
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+    for (const std::string& bad : {std::string("/dev/zero"), fifo, dir_.string()}) {
+        const auto start = std::chrono::steady_clock::now();
+        CliRun r = cli("validate '" + bad + "'", 10);
+        const double s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.err;
+        EXPECT_LT(s, 5.0) << bad;
+        EXPECT_EQ(r.err.rfind(bad + ": cannot read scene file: ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << r.err;
+        EXPECT_EQ(r.out, "");
+    }
+}
+
+TEST_F(CliTest, Validate_NulByteAfterTheScene_IsAnErrorAtItsLineAndColumn) {
+    const std::string good = "{\"format\": \"raystudio-scene\", \"version\": 1}\n";
+    const std::string scene = write("nul.scene.json", good + std::string(1, '\0') + "garbage");
+    CliRun r = cli("validate " + scene);
+    EXPECT_EQ(r.exitCode, 2) << r.out;
+    EXPECT_NE(r.err.find(scene + ":2:1: syntax error: NUL byte"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "");
 }
 
 TEST_F(CliTest, Validate_BadScenePrintsEveryErrorWithItsPointer) {
@@ -127,14 +215,36 @@ TEST_F(CliTest, Validate_BadScenePrintsEveryErrorWithItsPointer) {
 })");
     CliRun r = cli("validate " + scene);
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.out.find("/objects/0/radius"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("/objects/1/colour"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find(":4:"), std::string::npos) << "line of the first error: " << r.out;
+    EXPECT_NE(r.err.find("/objects/0/radius"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("/objects/1/colour"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(":4:"), std::string::npos) << "line of the first error: " << r.err;
+    EXPECT_EQ(r.out, "") << "errors belong on stderr";
+}
+
+TEST_F(CliTest, EveryCommand_BadSceneGoesToStderrWithExit2) {
+    const std::string bad = write("bad.scene.json", R"({"format": "raystudio-scene", "version": 1,
+ "render": {"width": 0}})");
+    for (const std::string& command :
+         {"validate " + bad, "render " + bad + " -o " + path("x.png"), "bench " + bad,
+          "drag " + bad + " --object a --to 0,0,0"}) {
+        CliRun r = cli(command);
+        EXPECT_EQ(r.exitCode, 2) << command;
+        EXPECT_NE(r.err.find("/render/width"), std::string::npos) << command << ": " << r.err;
+        EXPECT_EQ(r.out, "") << command;
+    }
+}
+
+TEST_F(CliTest, Drag_PolicyFileThatIsAFifo_IsRefusedWithoutBlocking) {
+    const std::string fifo = path("policy.json");
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+    CliRun r = cli("drag " + kRoom + " --object 'blue ball' --to 0,1,-5 --policy " + fifo, 10);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("FIFO"), std::string::npos) << r.err;
 }
 
 TEST_F(CliTest, Bench_JsonHasOneEntryPerExperiment) {
-    CliRun r = cli("bench " + kRoom + " --repeat 1 --json --width 16 --height 9", true);
-    ASSERT_EQ(r.exitCode, 0) << r.out;
+    CliRun r = cli("bench " + kRoom + " --repeat 1 --json --width 16 --height 9");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
     auto entries = nlohmann::json::parse(r.out);
     ASSERT_TRUE(entries.is_array());
     EXPECT_EQ(entries.size(), 13u);  // Baseline + 3 experiments of 4 values.
@@ -164,7 +274,7 @@ TEST_F(CliTest, GarbageSceneFiles_NeverCrash) {
         const std::string scene = write("fuzz.scene.json", text);
         CliRun r = cli("render " + scene + " -o " + path("fuzz.png"));
         EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 2) << "exit " << r.exitCode << " for:\n"
-                                                        << text << "\n" << r.out;
+                                                        << text << "\n" << r.err;
     }
 }
 
@@ -183,15 +293,15 @@ TEST_F(CliTest, DeepRecursionBetweenMirrors_IsRefusedNotACrash) {
     { "name": "b", "type": "plane", "point": [0, 0, 2], "normal": [0, 0, -1], "material": "m" } ]
 })");
     CliRun r = cli("render " + scene + " -o " + path("x.png"));
-    EXPECT_EQ(r.exitCode, 2) << r.out;
-    EXPECT_NE(r.out.find("/render/max_depth"), std::string::npos) << r.out;
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("/render/max_depth"), std::string::npos) << r.err;
     // The deepest accepted recursion renders (a mirror corridor bounces every ray 1000 times).
     std::ifstream in(scene);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     text.replace(text.find("200000"), 6, "1000");
     const std::string deepest = write("deepest.scene.json", text);
     r = cli("render " + deepest + " -o " + path("x.png"));
-    EXPECT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_EQ(r.exitCode, 0) << r.err;
 }
 
 }  // namespace

@@ -1,11 +1,18 @@
 // Mesh loading through assimp: formats, node transforms, degenerate triangles and bad files.
 #include "io/mesh_io.h"
 
+#include "io/input_file.h"
+
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <cctype>
+#include <chrono>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace rs {
@@ -44,6 +51,7 @@ INSTANTIATE_TEST_SUITE_P(
     Formats, MeshFormat,
     testing::Values(FormatCase{"cube.obj", 12, Vec3(0), Vec3(1)},
                     FormatCase{"tetra.ply", 4, Vec3(0), Vec3(1)},
+                    FormatCase{"tetra.off", 4, Vec3(0), Vec3(1)},
                     FormatCase{"tetra.stl", 4, Vec3(0), Vec3(1)},
                     // The node translates the unit quad by +10 in x: transforms are applied.
                     FormatCase{"quad_translated.gltf", 2, Vec3(10, 0, 0), Vec3(11, 1, 0)},
@@ -118,6 +126,117 @@ TEST(MeshIo, Directory_IsAnError) {
     MeshLoadResult r = loadMesh(std::string(RAYSTUDIO_TEST_DATA) + "/meshes", true);
     EXPECT_FALSE(r.ok());
     EXPECT_NE(r.error.find("not a regular file"), std::string::npos) << r.error;
+}
+
+TEST(MeshIo, Device_IsRefusedWithoutReadingIt) {
+    MeshLoadResult r = loadMesh("/dev/zero", true);
+    EXPECT_FALSE(r.ok());
+    EXPECT_NE(r.error.find("/dev/zero"), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find("device"), std::string::npos) << r.error;
+}
+
+// Hand-made mesh files in a fresh folder, removed afterwards.
+class MeshFiles : public testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = std::filesystem::path(testing::TempDir()) /
+               ("mesh_io_" +
+                std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+        std::filesystem::remove_all(dir_);
+        std::filesystem::create_directories(dir_);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir_); }
+    std::string write(const std::string& name, const std::string& bytes) {
+        const std::string p = (dir_ / name).string();
+        std::ofstream(p, std::ios::binary) << bytes;
+        return p;
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    std::filesystem::path dir_;
+};
+
+// The unit tetrahedron's four vertices, then (when `withFaces`) its four faces, as the body
+// of a little-endian binary PLY (this test runs on little-endian machines only).
+std::string binaryTetraBody(bool withFaces = true) {
+    std::string body;
+    auto put = [&](const void* p, std::size_t n) { body.append(static_cast<const char*>(p), n); };
+    const float corners[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (const auto& c : corners) put(c, sizeof c);
+    const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    for (const auto& f : faces) {
+        if (!withFaces) break;
+        const unsigned char three = 3;
+        put(&three, 1);
+        put(f, sizeof f);
+    }
+    return body;
+}
+
+std::string binaryPlyHeader(const char* vertexCount, const char* faceCount = "4") {
+    return std::string("ply\nformat binary_little_endian 1.0\nelement vertex ") + vertexCount +
+           "\nproperty float x\nproperty float y\nproperty float z\nelement face " + faceCount +
+           "\nproperty list uchar int vertex_indices\nend_header\n";
+}
+
+// Loads `path`, expecting a refusal within a second whose message names the file.
+void expectRefusedQuickly(const std::string& path, const char* part) {
+    const auto start = std::chrono::steady_clock::now();
+    MeshLoadResult r = loadMesh(path, true);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_FALSE(r.ok());
+    EXPECT_LT(seconds, 1.0);
+    EXPECT_NE(r.error.find(path), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find(part), std::string::npos) << r.error;
+}
+
+TEST_F(MeshFiles, BinaryPly_Loads) {
+    MeshLoadResult r = loadMesh(write("t.ply", binaryPlyHeader("4") + binaryTetraBody()), true);
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_EQ(r.mesh->triangleCount(), 4u);
+}
+
+TEST_F(MeshFiles, OffClaimingMoreVerticesThanTheFileHolds_IsRefusedQuickly) {
+    const std::string path = write("lie.off",
+                                   "OFF\n1350000000 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                                   "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+    expectRefusedQuickly(path, "OFF header declares 1350000000 vertices");
+}
+
+TEST_F(MeshFiles, OffVertexCountBeyondAnyInteger_IsRefused) {
+    expectRefusedQuickly(write("huge.off", "OFF\n99999999999999999999999 1 0\n0 0 0\n"),
+                         "too large");
+}
+
+TEST_F(MeshFiles, AsciiPlyClaimingMoreVerticesThanTheFileHolds_IsRefusedQuickly) {
+    std::ifstream in(meshPath("tetra.ply"));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.find("element vertex 4"), 16, "element vertex 2000000000");
+    expectRefusedQuickly(write("lie.ply", text), "PLY header declares 2000000000 vertex");
+}
+
+TEST_F(MeshFiles, BinaryPlyClaimingMoreVerticesThanTheFileHolds_IsRefusedQuickly) {
+    expectRefusedQuickly(write("lie.ply", binaryPlyHeader("2000000000") + binaryTetraBody()),
+                         "PLY header declares 2000000000 vertex");
+}
+
+TEST_F(MeshFiles, BinaryPlyOneVertexShort_IsRefused) {
+    // Without faces, a binary vertex list is exactly 12 bytes a vertex: one more is a lie.
+    expectRefusedQuickly(write("short.ply", binaryPlyHeader("5", "0") + binaryTetraBody(false)),
+                         "5 vertex");
+}
+
+TEST_F(MeshFiles, Fifo_IsRefusedWithoutBlocking) {
+    const std::string fifo = path("pipe.obj");
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+    expectRefusedQuickly(fifo, "FIFO");
+}
+
+TEST_F(MeshFiles, FileAboveTheSizeLimit_IsRefusedBeforeReading) {
+    // A sparse file: its size is over the limit, its blocks are not on disk.
+    const std::string big = write("big.stl", "solid x\n");
+    std::filesystem::resize_file(big, kMaxMeshFileBytes + 1);
+    expectRefusedQuickly(big, "limit");
 }
 
 }  // namespace

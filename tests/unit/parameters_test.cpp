@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace rs {
 namespace {
 
@@ -65,6 +67,21 @@ TEST(Parameters, SphereLight_HasRadiusAndPointLightDoesNot) {
     EXPECT_NE(findParameter(lightKind(l), "radius"), nullptr);
     EXPECT_TRUE(setParameter(l, "radius", 0.25f).empty());
     EXPECT_EQ(l.radius, 0.25f);
+}
+
+TEST(Parameters, RenderMinWeight_IsPublishedWithItsDefaultAndRangeBelowOne) {
+    const ParamDescriptor* d = findParameter(ParamKind::Render, "min_weight");
+    ASSERT_NE(d, nullptr);
+    EXPECT_EQ(d->type, ParamType::Float);
+    EXPECT_EQ(std::get<float>(d->defaultValue), 1.0f / 255.0f);
+    RenderSettings r;
+    EXPECT_EQ(std::get<float>(*getParameter(r, "min_weight")), 1.0f / 255.0f);
+    EXPECT_TRUE(setParameter(r, "min_weight", 0.0f).empty());
+    EXPECT_EQ(r.minWeight, 0.0f);
+    EXPECT_TRUE(setParameter(r, "min_weight", std::nextafter(1.0f, 0.0f)).empty());
+    EXPECT_FALSE(setParameter(r, "min_weight", 1.0f).empty());
+    EXPECT_FALSE(setParameter(r, "min_weight", -0.5f).empty());
+    EXPECT_EQ(r.minWeight, std::nextafter(1.0f, 0.0f));
 }
 
 TEST(Parameters, EnumsAndInts_AreRangeChecked) {

@@ -1,10 +1,16 @@
 // Scene reader errors: every rule of scene-format.md fails the load with pointer, line, column.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <cerrno>
+#include <chrono>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <ostream>
 #include <string>
 
+#include "io/input_file.h"
 #include "io/scene_io.h"
 
 namespace rs {
@@ -72,6 +78,8 @@ TEST_P(SceneReaderError, FailsLoadWithPointerLineAndColumn) {
 }
 
 const std::string kSphere = R"("type": "sphere", "center": [0, 0, 0])";
+// A whole valid scene, for what may or may not follow it.
+const std::string kValid = scene(R"(  "render": {})");
 
 const ErrorCase kCases[] = {
     {"SyntaxError", scene(R"(  "render": { "width": @@# })"), "", "syntax error"},
@@ -119,6 +127,12 @@ const ErrorCase kCases[] = {
      "in [0, 1000]"},
     {"MaxDepthBeyondStackSafeLimit", scene(R"(  "render": { "max_depth": @@200000 })"),
      "/render/max_depth", "in [0, 1000], got 200000"},
+    {"MinWeightOfOne", scene(R"(  "render": { "min_weight": @@1 })"), "/render/min_weight",
+     "in [0, 1), got 1"},
+    {"NegativeMinWeight", scene(R"(  "render": { "min_weight": @@-0.01 })"), "/render/min_weight",
+     "in [0, 1)"},
+    {"MinWeightNotNumber", scene(R"(  "render": { "min_weight": @@"1/255" })"),
+     "/render/min_weight", "must be a number"},
     {"NegativeShadowSamples", scene(R"(  "render": { "shadow_samples": @@-2 })"),
      "/render/shadow_samples", "in [0, 4096]"},
     {"ShadowSamplesBeyondLimit", scene(R"(  "render": { "shadow_samples": @@5000 })"),
@@ -265,6 +279,13 @@ const ErrorCase kCases[] = {
      "/objects/0/file", "nan_vertex.obj\": vertex 0"},
     {"MaterialsNotArray", scene(R"(  "materials": @@{})"), "/materials", "must be an array"},
     {"ObjectEntryNotObject", scene(R"(  "objects": [ @@3 ])"), "/objects/0", "must be an object"},
+    {"NulByteAfterTopLevelObject", kValid + "@@" + std::string(1, '\0') + "garbage", "",
+     "NUL byte"},
+    {"NulByteInsideTopLevelObject",
+     "{ \"format\": \"raystudio-scene\",@@" + std::string(1, '\0') + " \"version\": 1 }", "",
+     "NUL byte"},
+    {"TextAfterTopLevelObject", kValid + "  @@garbage\n", "", "expected end of input"},
+    {"SecondTopLevelObject", kValid + "@@{}", "", "expected end of input"},
     {"NestingTooDeep",
      "@@" + scene("  \"x-deep\": " + std::string(300, '[') + std::string(300, ']')), "", "nesting"},
 };
@@ -326,6 +347,56 @@ TEST(SceneReader, LoadDirectory_IsAnErrorNotAnEmptyScene) {
     SceneLoadResult r = loadScene(RAYSTUDIO_TEST_DATA);
     ASSERT_EQ(r.errors.size(), 1u);
     EXPECT_NE(r.errors[0].message.find("directory"), std::string::npos);
+}
+
+TEST(SceneReader, TrailingWhitespace_IsFine) {
+    SceneLoadResult r = parseScene(kValid + " \t\r\n\n", "");
+    EXPECT_TRUE(r.ok()) << r.errorText();
+}
+
+// Refusals that must come at once, before any read: each names the path and says why.
+void expectRefusedAtOnce(const std::string& path, const char* why) {
+    const auto start = std::chrono::steady_clock::now();
+    SceneLoadResult r = loadScene(path);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+    ASSERT_EQ(r.errors.size(), 1u) << r.errorText();
+    EXPECT_EQ(r.errors[0].file, path);
+    EXPECT_EQ(r.errors[0].line, 0) << r.errorText();
+    EXPECT_NE(r.errors[0].message.find("cannot read scene file"), std::string::npos)
+        << r.errorText();
+    EXPECT_NE(r.errors[0].message.find(why), std::string::npos) << r.errorText();
+}
+
+TEST(SceneReader, LoadDevice_IsRefusedWithoutReadingIt) {
+    expectRefusedAtOnce("/dev/zero", "device");
+}
+
+TEST(SceneReader, LoadFifo_IsRefusedWithoutBlocking) {
+    const std::string fifo = testing::TempDir() + "/scene_errors_fifo.scene.json";
+    std::filesystem::remove(fifo);
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+    expectRefusedAtOnce(fifo, "FIFO");
+    std::filesystem::remove(fifo);
+}
+
+TEST(SceneReader, LoadFileAboveTheSizeLimit_IsRefusedBeforeReading) {
+    // A sparse file: its size is over the limit, its blocks are not on disk.
+    const std::string big = testing::TempDir() + "/scene_errors_big.scene.json";
+    std::ofstream(big) << "{}";
+    std::filesystem::resize_file(big, kMaxSceneFileBytes + 1);
+    expectRefusedAtOnce(big, "limit");
+    std::filesystem::remove(big);
+}
+
+TEST(SceneReader, ReadError_IsReportedAsOneNotAsASyntaxError) {
+    // procfs says a regular file of size 0; reading offset 0 of a process's memory fails.
+    const std::string mem = "/proc/self/mem";
+    if (!std::filesystem::exists(mem)) GTEST_SKIP() << "no procfs";
+    SceneLoadResult r = loadScene(mem);
+    ASSERT_EQ(r.errors.size(), 1u) << r.errorText();
+    EXPECT_EQ(r.errors[0].line, 0) << r.errorText();
+    EXPECT_NE(r.errors[0].message.find("read error"), std::string::npos) << r.errorText();
+    EXPECT_EQ(r.errors[0].message.find("syntax"), std::string::npos) << r.errorText();
 }
 
 }  // namespace

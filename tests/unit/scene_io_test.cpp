@@ -79,6 +79,18 @@ TEST(SceneReader, AbsentKeys_TakeTheFormatsDefaults) {
     EXPECT_NE(o.id, l.id);
 }
 
+TEST(SceneReader, MinWeight_IsReadAndDefaultsToOne255th) {
+    SceneLoadResult r = parseScene(scene(R"("render": { "min_weight": 0.01 })"), "");
+    ASSERT_TRUE(r.ok()) << r.errorText();
+    EXPECT_EQ(r.document.render.minWeight, 0.01f);
+    r = parseScene(scene(R"("render": { "min_weight": 0 })"), "");
+    ASSERT_TRUE(r.ok()) << r.errorText();
+    EXPECT_EQ(r.document.render.minWeight, 0.0f);
+    r = parseScene(scene(""), "");
+    ASSERT_TRUE(r.ok()) << r.errorText();
+    EXPECT_EQ(r.document.render.minWeight, 1.0f / 255.0f);
+}
+
 TEST(SceneReader, PlaneNormal_IsNormalised) {
     SceneLoadResult r = parseScene(scene(R"("objects": [ { "name": "p", "type": "plane",
         "point": [0, 0, 0], "normal": [0, 3, 4] } ])"),
@@ -160,6 +172,18 @@ TEST(SceneWriter, Output_IsPrettyWithFormatAndVersionFirstAndDefaultsOmitted) {
     // Floats are written as the short decimal the file had, not 0.60000002384185791.
     EXPECT_NE(text.find("\"radius\": 0.6\n"), std::string::npos) << text;
     EXPECT_FALSE(j["lights"][0].contains("radius"));  // point lights take none
+}
+
+TEST(SceneWriter, MinWeight_IsOmittedAtItsDefaultAndWrittenOtherwise) {
+    SceneDocument doc;
+    nlohmann::json j = nlohmann::json::parse(serializeScene(doc, ""));
+    EXPECT_FALSE(j["render"].contains("min_weight")) << j.dump();
+    doc.render.minWeight = 0.0f;
+    j = nlohmann::json::parse(serializeScene(doc, ""));
+    EXPECT_EQ(j["render"]["min_weight"], 0.0);
+    doc.render.minWeight = 0.02f;
+    j = nlohmann::json::parse(serializeScene(doc, ""));
+    EXPECT_EQ(j["render"]["min_weight"], 0.02);
 }
 
 TEST(SceneWriter, UniformScaleFromNumber_IsWrittenAsANumber) {

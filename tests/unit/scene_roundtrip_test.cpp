@@ -93,6 +93,7 @@ private:
         r.width = pick(1, 16384);
         r.height = pick(1, 4096);
         r.maxDepth = pick(0, 12);
+        if (coin()) r.minWeight = coin() ? 0.0f : unit();
         r.shadowSamples = pick(0, 64);
         r.supersampling = pick(1, 16);
         r.adaptiveSupersampling = coin();

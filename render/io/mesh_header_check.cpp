@@ -1,0 +1,198 @@
+// OFF and PLY header counts against the file size, read from the head of the file only.
+#include "io/mesh_header_check.h"
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "io/input_file.h"
+
+namespace rs {
+
+namespace {
+
+// A PLY header longer than this is not a real one (they are a few hundred bytes).
+constexpr std::size_t kMaxHeaderBytes = std::size_t(1) << 20;
+
+// In ASCII, a number takes at least one character and one separator.
+constexpr std::uintmax_t kMinAsciiNumberBytes = 2;
+
+std::string readHead(const std::string& path, std::size_t limit) {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(limit, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(limit));
+    head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+    return head;
+}
+
+std::optional<std::uintmax_t> parseCount(std::string_view token) {
+    std::uintmax_t value = 0;
+    const char* end = token.data() + token.size();
+    auto [ptr, ec] = std::from_chars(token.data(), end, value);
+    if (ec != std::errc() || ptr != end || token.empty()) return std::nullopt;
+    return value;
+}
+
+// One kind of element the header declares: how many, and the least bytes each needs.
+struct ElementClaim {
+    std::string name;  ///< As messages count them: "vertices", "vertex elements".
+    std::uintmax_t count = 0;
+    std::uintmax_t minBytes = 1;
+};
+
+// Empty when `headerBytes` plus the claimed elements fit in `fileSize` (+ `slack` bytes).
+std::string compareWithSize(const char* format, std::uintmax_t headerBytes,
+                            const std::vector<ElementClaim>& claims, std::uintmax_t fileSize,
+                            std::uintmax_t slack = 0) {
+    // Compared by division, element by element, so no count can overflow the sum.
+    const std::uintmax_t capacity = fileSize + slack;
+    std::uintmax_t needed = std::min(headerBytes, capacity);
+    bool fits = true;
+    for (const ElementClaim& c : claims) {
+        if (c.count > (capacity - needed) / c.minBytes) {
+            fits = false;
+            break;
+        }
+        needed += c.count * c.minBytes;
+    }
+    if (fits) return {};
+    std::string counts;
+    for (const ElementClaim& c : claims)
+        counts += (counts.empty() ? "" : ", ") + std::to_string(c.count) + " " + c.name;
+    return std::string(format) + " header declares " + counts + ", more than the file's " +
+           describeByteCount(fileSize) + " can hold (refused before reading it)";
+}
+
+// Splits ASCII header text into tokens, skipping '#' comments (OFF).
+class OffTokens {
+public:
+    explicit OffTokens(std::string_view text) : t_(text) {}
+    std::optional<std::string_view> next() {
+        for (;;) {
+            while (i_ < t_.size() && isSpace(t_[i_])) ++i_;
+            if (i_ < t_.size() && t_[i_] == '#') {
+                while (i_ < t_.size() && t_[i_] != '\n') ++i_;
+                continue;
+            }
+            break;
+        }
+        if (i_ >= t_.size()) return std::nullopt;
+        const std::size_t start = i_;
+        while (i_ < t_.size() && !isSpace(t_[i_]) && t_[i_] != '#') ++i_;
+        return t_.substr(start, i_ - start);
+    }
+    std::size_t offset() const { return i_; }
+
+private:
+    static bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+    std::string_view t_;
+    std::size_t i_ = 0;
+};
+
+// OFF: "[ST][C][N][4][n]OFF", for nOFF the dimension, then "vertices faces edges".
+std::string checkOff(std::string_view head, std::uintmax_t fileSize) {
+    OffTokens tokens(head);
+    auto keyword = tokens.next();
+    if (!keyword || keyword->size() < 3 || keyword->substr(keyword->size() - 3) != "OFF") return {};
+    const std::string_view prefix = keyword->substr(0, keyword->size() - 3);
+    if (prefix.find_first_not_of("STCN4n") != std::string_view::npos) return {};
+    std::uintmax_t coordinates = prefix.find('4') != std::string_view::npos ? 4 : 3;
+    auto token = tokens.next();
+    if (token && prefix.find('n') != std::string_view::npos) {
+        auto dimension = parseCount(*token);
+        if (!dimension) return {};
+        coordinates = std::max<std::uintmax_t>(*dimension, 1);
+        token = tokens.next();
+    }
+    if (!token || *token == "BINARY") return {};  // the importer refuses binary OFF itself
+    auto vertices = parseCount(*token);
+    auto faceToken = tokens.next();
+    auto faces = faceToken ? parseCount(*faceToken) : std::nullopt;
+    if (!vertices || !faces) {
+        if (!vertices && token->find_first_not_of("0123456789") == std::string_view::npos)
+            return "OFF header declares a vertex count too large to be read: " +
+                   std::string(*token);
+        return {};  // malformed: the importer says what is wrong
+    }
+    // Binary coordinates take 4 bytes each, ASCII ones at least 2; faces at least a count.
+    return compareWithSize("OFF", tokens.offset(),
+                           {{"vertices", *vertices, coordinates * kMinAsciiNumberBytes},
+                            {"faces", *faces, kMinAsciiNumberBytes}},
+                           fileSize);
+}
+
+std::uintmax_t plyScalarBytes(std::string_view type) {
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+        type == "float32")
+        return 4;
+    if (type == "double" || type == "float64") return 8;
+    return 0;
+}
+
+std::vector<std::string_view> words(std::string_view line) {
+    std::vector<std::string_view> out;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+        const std::size_t start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+        if (i > start) out.push_back(line.substr(start, i - start));
+    }
+    return out;
+}
+
+// PLY: "ply", "format ascii|binary_* 1.0", then elements and their properties.
+std::string checkPly(std::string_view head, std::uintmax_t fileSize) {
+    if (head.substr(0, 3) != "ply" || head.size() < 4 || (head[3] != '\n' && head[3] != '\r'))
+        return {};
+    bool ascii = true;
+    std::vector<ElementClaim> claims;
+    std::size_t pos = 0;
+    for (;;) {
+        const std::size_t eol = head.find('\n', pos);
+        if (eol == std::string_view::npos)
+            return head.size() >= kMaxHeaderBytes
+                       ? "PLY header is longer than " + describeByteCount(kMaxHeaderBytes)
+                       : std::string();  // truncated: the importer says what is wrong
+        const std::vector<std::string_view> w = words(head.substr(pos, eol - pos));
+        pos = eol + 1;
+        if (w.empty()) continue;
+        if (w[0] == "end_header") break;
+        if (w[0] == "format" && w.size() >= 2) {
+            ascii = w[1] == "ascii";
+        } else if (w[0] == "element" && w.size() >= 3) {
+            auto count = parseCount(w[2]);
+            if (!count)
+                return "PLY header declares an unreadable " + std::string(w[1]) +
+                       " count: " + std::string(w[2]);
+            claims.push_back({std::string(w[1]) + " elements", *count, 0});
+        } else if (w[0] == "property" && !claims.empty()) {
+            // A list costs at least its count; each scalar its size (ASCII: a number).
+            const bool list = w.size() >= 2 && w[1] == "list";
+            const std::uintmax_t bytes = plyScalarBytes(w.size() >= 2 ? w[list ? 2 : 1] : "");
+            if (bytes == 0) return {};  // unknown type: the importer says what is wrong
+            claims.back().minBytes += ascii ? kMinAsciiNumberBytes : bytes;
+        }
+    }
+    // An element without properties still takes a line (ASCII) or is not worth allocating for.
+    for (ElementClaim& c : claims) c.minBytes = std::max<std::uintmax_t>(c.minBytes, 1);
+    // The last ASCII number may end the file without a separator.
+    const std::uintmax_t slack = ascii ? 1 : 0;
+    return compareWithSize("PLY", pos, claims, fileSize, slack);
+}
+
+}  // namespace
+
+std::string checkMeshHeader(const std::string& path, std::uintmax_t fileSize) {
+    const std::string head = readHead(path, kMaxHeaderBytes);
+    if (std::string why = checkPly(head, fileSize); !why.empty()) return why;
+    // OFF headers are three lines at most, bar comments; 64 KiB covers any real one.
+    return checkOff(std::string_view(head).substr(0, 1 << 16), fileSize);
+}
+
+}  // namespace rs
