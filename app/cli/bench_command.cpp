@@ -36,9 +36,10 @@ double median(std::vector<double> v) {
 
 int runBench(int argc, char** argv) {
     OptionSpec spec;
-    spec.valued = {"--repeat", "--threads", "--width", "--height", "--min-weight"};
+    spec.valued = {"--repeat", "--threads", "--width", "--height", "--min-weight", "--engine"};
     spec.flags = {"--json"};
     Arguments args(argc, argv, 2, spec);
+    const EngineKind engine = engineOption(args);
     if (args.positional().size() != 1) throw UsageError{"expects exactly one scene file"};
     const int repeat = args.intValue("--repeat", 1, 1000).value_or(5);
     RenderOptions options;
@@ -64,7 +65,7 @@ int runBench(int argc, char** argv) {
         for (int value : e.values) {
             SceneDocument variant = doc;
             e.apply(variant.render, value);
-            const CompiledScene scene(variant);
+            const CompiledScene scene(variant, nullptr, engine);
             std::vector<double> times;
             uint64_t rays = 0;
             for (int r = 0; r < repeat; ++r) {

@@ -1,6 +1,7 @@
 // The raystudio-cli sub-commands; each returns the process exit code (0, 1 or 2).
 #pragma once
 
+#include "accel/ray_engine.h"
 #include "io/scene_io.h"
 
 namespace rs::cli {
@@ -18,6 +19,9 @@ bool loadSceneOrReport(const std::string& path, SceneDocument& doc);
 /// Applies the shared render-setting overrides (--width, --height, --max-depth, --min-weight,
 /// --shadow-samples, --supersampling); throws UsageError on bad values.
 void applyRenderOverrides(const Arguments& args, RenderSettings& settings);
+
+/// The ray engine `--engine embree|builtin` names (Embree when absent); UsageError otherwise.
+EngineKind engineOption(const Arguments& args);
 
 /// Largest accepted image side; larger images are refused before any allocation.
 inline constexpr int kMaxImageSide = 16384;

@@ -67,9 +67,10 @@ struct Step {
 int runDrag(int argc, char** argv) {
     OptionSpec spec;
     spec.valued = {"--object", "--to", "--steps", "--policy", "--threads", "--width", "--height",
-                   "--max-depth", "--min-weight", "--shadow-samples", "--supersampling"};
+                   "--max-depth", "--min-weight", "--shadow-samples", "--supersampling", "--engine"};
     spec.flags = {"--verify", "--json"};
     Arguments args(argc, argv, 2, spec);
+    const EngineKind engine = engineOption(args);
     if (args.positional().size() != 1) throw UsageError{"expects exactly one scene file"};
     const auto objectName = args.value("--object");
     const auto to = args.value("--to");
@@ -96,6 +97,7 @@ int runDrag(int argc, char** argv) {
 
     RenderSession session(threads);
     session.setPolicy(policy);
+    session.setEngine(engine);
     session.update(doc);
     if (!session.waitUntilComplete(600s)) throw std::runtime_error("initial render timed out");
 
@@ -116,7 +118,7 @@ int runDrag(int argc, char** argv) {
 
     RenderOptions options;
     options.threads = threads;
-    const RenderResult full = renderImage(CompiledScene(doc), options);
+    const RenderResult full = renderImage(CompiledScene(doc, nullptr, engine), options);
     float maxDiff = 0.0f;
     session.withFrame([&](const DeepFrame& frame, const auto&) {
         for (std::size_t i = 0; i < frame.pixelCount(); ++i) {

@@ -14,7 +14,7 @@ namespace rs::cli {
 int runRender(int argc, char** argv) {
     OptionSpec spec;
     spec.valued = {"--output",     "--width",          "--height",        "--max-depth",
-                   "--min-weight", "--shadow-samples", "--supersampling", "--threads"};
+                   "--min-weight", "--shadow-samples", "--supersampling", "--threads", "--engine"};
     spec.flags = {"--stats"};
     spec.aliases = {{"-o", "--output"}};
     Arguments args(argc, argv, 2, spec);
@@ -30,7 +30,7 @@ int runRender(int argc, char** argv) {
     if (!loadSceneOrReport(args.positional()[0], doc)) return 2;
     applyRenderOverrides(args, doc.render);
 
-    const CompiledScene scene(doc);
+    const CompiledScene scene(doc, nullptr, engineOption(args));
     ProgressBar bar;
     options.progress = [&bar](int done, int total) { bar.update(done, total); };
     RenderResult result = renderImage(scene, options);

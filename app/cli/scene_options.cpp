@@ -31,4 +31,11 @@ void applyRenderOverrides(const Arguments& args, RenderSettings& settings) {
     if (auto v = args.intValue("--supersampling", 1, kMaxSampleCount)) settings.supersampling = *v;
 }
 
+EngineKind engineOption(const Arguments& args) {
+    EngineKind kind = EngineKind::Embree;
+    if (auto v = args.value("--engine"); v && !parseEngineKind(*v, kind))
+        throw UsageError{"--engine must be embree or builtin, got '" + *v + "'"};
+    return kind;
+}
+
 }  // namespace rs::cli
