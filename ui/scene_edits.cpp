@@ -130,6 +130,14 @@ void moveBy(SceneDocument& doc, ObjectId id, const Vec3& delta) {
     }
 }
 
+void restoreEntity(SceneDocument& doc, const SceneDocument& from, ObjectId id) {
+    if (Object* o = doc.findObject(id)) {
+        if (const Object* was = from.findObject(id)) *o = *was;
+    } else if (Light* l = doc.findLight(id)) {
+        if (const Light* was = from.findLight(id)) *l = *was;
+    }
+}
+
 bool rename(SceneDocument& doc, ObjectId id, const std::string& name) {
     if (name.empty()) return false;
     std::string* target = nullptr;
