@@ -1,6 +1,7 @@
 // MainWindow construction: actions, menus, toolbar, docks, status bar and settings.
 #include "main_window.h"
 
+#include "background_jobs.h"
 #include "outliner_view.h"
 #include "property_panel.h"
 #include "scene_editor.h"
@@ -49,7 +50,10 @@ MainWindow::MainWindow(QWidget* parent)
     editor_->resetDocument(SceneDocument{}, {});
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // Before the session and the widgets a job reports to go.
+    cancelJobs(this);
+}
 
 void MainWindow::createActions() {
     deleteAct_ = new QAction(tr("&Delete"), this);
@@ -204,6 +208,8 @@ void MainWindow::writeSettings() {
 void MainWindow::closeEvent(QCloseEvent* event) {
     if (maybeSave()) {
         writeSettings();
+        // A render still running would keep the process alive after the window is gone.
+        cancelJobs(this);
         event->accept();
     } else {
         event->ignore();

@@ -40,6 +40,9 @@ public:
     void importMesh(const QString& path);
     /// Exports the current viewport frame to an image file.
     bool exportFrame(const QString& path);
+    /// Renders the document at full quality at width x height into `path` in the background
+    /// (Render -> Render Image without its dialogs); closing the window cancels it.
+    void renderImage(const QString& path, int width, int height);
     /// Overrides the render size of the open document without an undo step (tests).
     void setRenderSize(int width, int height);
     /// Opens the (non-modal) preferences dialog and returns it.
