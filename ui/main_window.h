@@ -10,6 +10,7 @@
 #include <memory>
 
 class QAction;
+class QDialog;
 class QLabel;
 class QMenu;
 
@@ -47,6 +48,8 @@ public:
     void setRenderSize(int width, int height);
     /// Opens the (non-modal) preferences dialog and returns it.
     PreferencesDialog* showPreferences();
+    /// Opens Help -> Keyboard Shortcuts (every menu shortcut, read from the actions).
+    QDialog* showShortcuts();
     /// Applies preferences to the session and stores them.
     void applyPreferences(const Preferences& prefs);
 
