@@ -5,6 +5,7 @@
 #include "integrator/renderer.h"
 #include "snapshot/compiled_scene.h"
 
+#include <QCoreApplication>
 #include <QPointer>
 #include <QProgressDialog>
 #include <QThread>
@@ -16,8 +17,11 @@ namespace rs::ui {
 
 namespace {
 
+const QString kJobDialogName = QStringLiteral("backgroundJob");
+
 QProgressDialog* makeProgress(QWidget* parent, const QString& text, int maximum) {
     auto* dialog = new QProgressDialog(text, QObject::tr("Cancel"), 0, maximum, parent);
+    dialog->setObjectName(kJobDialogName);  // cancelJobs() finds the jobs by their dialogs.
     dialog->setWindowModality(Qt::WindowModal);
     dialog->setMinimumDuration(300);
     dialog->setAutoClose(false);
@@ -26,11 +30,20 @@ QProgressDialog* makeProgress(QWidget* parent, const QString& text, int maximum)
     return dialog;
 }
 
-/// Runs `work` on a new QThread that deletes itself when done.
-void startWorker(QObject* owner, std::function<void()> work) {
+/// Runs `work` on a new QThread that deletes itself when done. When `owner` is destroyed
+/// (its window closes) the thread must be gone before the objects `work` reports to are:
+/// `cancel` is set first so the wait ends at the work's next check, not when it completes.
+/// Quitting the application sets it too, before any window is torn down.
+void startWorker(QObject* owner, std::shared_ptr<std::atomic<bool>> cancel,
+                 std::function<void()> work) {
     QThread* thread = QThread::create(std::move(work));
     QObject::connect(thread, &QThread::finished, thread, &QObject::deleteLater);
-    QObject::connect(owner, &QObject::destroyed, thread, [thread] { thread->wait(); });
+    QObject::connect(owner, &QObject::destroyed, thread, [thread, cancel] {
+        *cancel = true;
+        thread->wait();
+    });
+    if (QCoreApplication* app = QCoreApplication::instance())
+        QObject::connect(app, &QCoreApplication::aboutToQuit, thread, [cancel] { *cancel = true; });
     thread->start();
 }
 
@@ -43,7 +56,7 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
     auto cancelled = std::make_shared<std::atomic<bool>>(false);
     QObject::connect(dialog, &QProgressDialog::canceled, dialog, [cancelled] { *cancelled = true; });
     QObject* receiver = parent ? static_cast<QObject*>(parent) : dialog.data();
-    startWorker(dialog, [=, file = path.toStdString()] {
+    startWorker(dialog, cancelled, [=, file = path.toStdString()] {
         MeshLoadResult result = loadMesh(file, smoothNormals);
         QMetaObject::invokeMethod(receiver, [=] {
             if (dialog) dialog->deleteLater();
@@ -55,10 +68,14 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
 void renderToFileAsync(QWidget* parent, const SceneDocument& doc, const QString& path,
                        int threads, std::function<void(bool ok, const QString& error)> done) {
     QPointer<QProgressDialog> dialog = makeProgress(parent, QObject::tr("Rendering %1 ...").arg(path), 1);
+    // Not window-modal: Qt refuses the window manager's close of a window a modal dialog
+    // blocks, so the main window could not be closed during a render. The render works on
+    // its own copy of the document, so editing meanwhile is harmless.
+    dialog->setWindowModality(Qt::NonModal);
     auto cancel = std::make_shared<std::atomic<bool>>(false);
     QObject::connect(dialog, &QProgressDialog::canceled, dialog, [cancel] { *cancel = true; });
     QObject* receiver = parent ? static_cast<QObject*>(parent) : dialog.data();
-    startWorker(dialog, [=, file = path.toStdString()] {
+    startWorker(dialog, cancel, [=, file = path.toStdString()] {
         const CompiledScene scene(doc);
         RenderOptions options;
         options.threads = threads;
@@ -79,6 +96,13 @@ void renderToFileAsync(QWidget* parent, const SceneDocument& doc, const QString&
             done(ok, QString::fromStdString(error));
         }, Qt::QueuedConnection);
     });
+}
+
+void cancelJobs(QWidget* parent) {
+    // Deleting a job's dialog cancels the job and waits for its thread (startWorker).
+    for (QProgressDialog* dialog :
+         parent->findChildren<QProgressDialog*>(kJobDialogName, Qt::FindDirectChildrenOnly))
+        delete dialog;
 }
 
 }  // namespace rs::ui

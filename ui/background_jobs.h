@@ -23,4 +23,8 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
 void renderToFileAsync(QWidget* parent, const SceneDocument& doc, const QString& path,
                        int threads, std::function<void(bool ok, const QString& error)> done);
 
+/// Cancels every job started with `parent` and waits until their threads have stopped (a
+/// closing window): no result is delivered. Returns within a tile of a render.
+void cancelJobs(QWidget* parent);
+
 }  // namespace rs::ui

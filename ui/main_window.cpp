@@ -1,10 +1,13 @@
 // MainWindow construction: actions, menus, toolbar, docks, status bar and settings.
 #include "main_window.h"
 
+#include "background_jobs.h"
+#include "command_shortcut_filter.h"
 #include "outliner_view.h"
 #include "property_panel.h"
 #include "scene_editor.h"
 #include "session_controller.h"
+#include "shortcuts_dialog.h"
 #include "viewport.h"
 
 #include <QActionGroup>
@@ -23,7 +26,14 @@ namespace rs::ui {
 
 namespace {
 constexpr int kMaxRecentFiles = 8;
+
+/// The platform's keys for `key`, or `fallback` where it defines none: Save As and Quit have
+/// no standard keys on X11 without GNOME or KDE (and offscreen), which left them keyless.
+QList<QKeySequence> standardOr(QKeySequence::StandardKey key, const QKeySequence& fallback) {
+    const QList<QKeySequence> keys = QKeySequence::keyBindings(key);
+    return keys.isEmpty() ? QList<QKeySequence>{fallback} : keys;
 }
+}  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), editor_(new SceneEditor(this)), prefs_(loadPreferences()) {
@@ -44,12 +54,16 @@ MainWindow::MainWindow(QWidget* parent)
     createDocks();
     createMenus();
     createStatusBar();
+    new CommandShortcutFilter(this);
     readSettings();
     updateTitle();
     editor_->resetDocument(SceneDocument{}, {});
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // Before the session and the widgets a job reports to go.
+    cancelJobs(this);
+}
 
 void MainWindow::createActions() {
     deleteAct_ = new QAction(tr("&Delete"), this);
@@ -102,12 +116,14 @@ void MainWindow::createMenus() {
     file->addAction(tr("&Open..."), QKeySequence::Open, this, &MainWindow::open);
     recentMenu_ = file->addMenu(tr("Open &Recent"));
     file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
-    file->addAction(tr("Save &As..."), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+    file->addAction(tr("Save &As..."), this, &MainWindow::saveAs)
+        ->setShortcuts(standardOr(QKeySequence::SaveAs, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)));
     file->addSeparator();
     file->addAction(tr("&Import Mesh..."), QKeySequence(Qt::CTRL | Qt::Key_I), this, &MainWindow::importMeshDialog);
     file->addAction(tr("&Export Image..."), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportImageDialog);
     file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    file->addAction(tr("&Quit"), this, &QWidget::close)
+        ->setShortcuts(standardOr(QKeySequence::Quit, QKeySequence(Qt::CTRL | Qt::Key_Q)));
     updateRecentFileActions();
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
@@ -151,6 +167,8 @@ void MainWindow::createMenus() {
     render->addAction(tr("&Export Current Frame..."), this, &MainWindow::exportImageDialog);
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts)
+        ->setObjectName(QStringLiteral("keyboardShortcuts"));
     help->addAction(tr("&About RayStudio"), this, &MainWindow::about);
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 
@@ -204,6 +222,8 @@ void MainWindow::writeSettings() {
 void MainWindow::closeEvent(QCloseEvent* event) {
     if (maybeSave()) {
         writeSettings();
+        // A render still running would keep the process alive after the window is gone.
+        cancelJobs(this);
         event->accept();
     } else {
         event->ignore();
@@ -250,6 +270,10 @@ void MainWindow::applyPreferences(const Preferences& prefs) {
     prefs_ = prefs;
     session_->session().setPolicy(prefs.policy);
     savePreferences(prefs);
+}
+
+QDialog* MainWindow::showShortcuts() {
+    return showShortcutsDialog(this, menuShortcuts(menuBar()));
 }
 
 void MainWindow::about() {

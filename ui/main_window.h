@@ -10,6 +10,7 @@
 #include <memory>
 
 class QAction;
+class QDialog;
 class QLabel;
 class QMenu;
 
@@ -40,10 +41,15 @@ public:
     void importMesh(const QString& path);
     /// Exports the current viewport frame to an image file.
     bool exportFrame(const QString& path);
+    /// Renders the document at full quality at width x height into `path` in the background
+    /// (Render -> Render Image without its dialogs); closing the window cancels it.
+    void renderImage(const QString& path, int width, int height);
     /// Overrides the render size of the open document without an undo step (tests).
     void setRenderSize(int width, int height);
     /// Opens the (non-modal) preferences dialog and returns it.
     PreferencesDialog* showPreferences();
+    /// Opens Help -> Keyboard Shortcuts (every menu shortcut, read from the actions).
+    QDialog* showShortcuts();
     /// Applies preferences to the session and stores them.
     void applyPreferences(const Preferences& prefs);
 

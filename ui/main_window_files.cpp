@@ -175,9 +175,13 @@ void MainWindow::renderImageDialog() {
     if (dialog.exec() != QDialog::Accepted) return;
     const QString path = QFileDialog::getSaveFileName(this, tr("Render Image To"), QString(), kImageFilter);
     if (path.isEmpty()) return;
+    renderImage(path, width->value(), height->value());
+}
+
+void MainWindow::renderImage(const QString& path, int width, int height) {
     SceneDocument doc = editor_->document();
-    doc.render.width = width->value();
-    doc.render.height = height->value();
+    doc.render.width = width;
+    doc.render.height = height;
     renderToFileAsync(this, doc, path, prefs_.threads, [this, path](bool ok, const QString& error) {
         if (ok)
             statusBar()->showMessage(tr("Rendered %1").arg(path), 5000);

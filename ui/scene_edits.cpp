@@ -26,8 +26,20 @@ Vec3 spawnPoint(const SceneDocument& doc) {
 
 std::string uniqueName(const SceneDocument& doc, const std::string& base) {
     if (!nameTaken(doc, base)) return base;
-    for (int i = 2;; ++i) {
-        std::string n = base + " " + std::to_string(i);
+    // "right wall 2" is copy 2 of "right wall": count on from its number instead of
+    // appending another ("right wall 2 2"). Only a plain number counts (no sign, no leading 0).
+    std::string stem = base;
+    long first = 2;
+    const std::size_t space = base.find_last_of(' ');
+    if (space != std::string::npos && space > 0 && space + 1 < base.size() &&
+        base[space + 1] != '0' && base.size() - space - 1 <= 9 &&
+        std::all_of(base.begin() + long(space) + 1, base.end(),
+                    [](char c) { return c >= '0' && c <= '9'; })) {
+        stem = base.substr(0, space);
+        first = std::stol(base.substr(space + 1)) + 1;
+    }
+    for (long i = first;; ++i) {
+        std::string n = stem + " " + std::to_string(i);
         if (!nameTaken(doc, n)) return n;
     }
 }
@@ -115,6 +127,14 @@ void moveBy(SceneDocument& doc, ObjectId id, const Vec3& delta) {
             o->transform.translate += delta;
     } else if (Light* l = doc.findLight(id)) {
         l->position += delta;
+    }
+}
+
+void restoreEntity(SceneDocument& doc, const SceneDocument& from, ObjectId id) {
+    if (Object* o = doc.findObject(id)) {
+        if (const Object* was = from.findObject(id)) *o = *was;
+    } else if (Light* l = doc.findLight(id)) {
+        if (const Light* was = from.findLight(id)) *l = *was;
     }
 }
 

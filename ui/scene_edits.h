@@ -26,6 +26,8 @@ ObjectId duplicate(SceneDocument& doc, ObjectId id);
 bool remove(SceneDocument& doc, ObjectId id);
 /// Moves object or light `id` by `delta` (translate for shapes, point for planes).
 void moveBy(SceneDocument& doc, ObjectId id, const Vec3& delta);
+/// Replaces object or light `id` of `doc` with its state in `from` (nothing when either lacks it).
+void restoreEntity(SceneDocument& doc, const SceneDocument& from, ObjectId id);
 /// Renames object or light `id`; false (unchanged) when the name is empty or taken.
 bool rename(SceneDocument& doc, ObjectId id, const std::string& name);
 /// Number of objects whose material is `name`.

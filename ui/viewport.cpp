@@ -143,18 +143,24 @@ void Viewport::keyPressEvent(QKeyEvent* e) {
 }
 
 void Viewport::startObjectDrag() {
+    // The frame may have changed size since the press (a resize, a new render size): when the
+    // press point no longer lies on the image there is nothing to grab, and the press stays
+    // a click.
+    const auto px = pixelAt(pressPos_);
+    if (!px) {
+        drag_ = Drag::None;
+        return;
+    }
     drag_ = Drag::Object;
     axisLock_ = -1;
     dragStartDoc_ = editor_->document();
     const auto snapshot = session_->session().snapshot();
     const Aabb bounds = snapshot ? snapshot->objectBounds(dragId_) : Aabb{};
-    const auto px = pixelAt(pressPos_);
     const std::size_t i = std::size_t(px->y()) * frame_->width + px->x();
     const CameraModel cam(dragStartDoc_.camera, frame_->width, frame_->height);
     const Ray ray = cam.generateRay(px->x() + 0.5f, px->y() + 0.5f);
-    const Vec3 hit = ray.at(std::isfinite(frame_->depth.empty() ? 0.0f : frame_->depth[i])
-                                ? frame_->depth[i]
-                                : 1.0f);
+    const float depth = i < frame_->depth.size() ? frame_->depth[i] : kInfinity;
+    const Vec3 hit = ray.at(std::isfinite(depth) ? depth : 1.0f);
     // Planes are unbounded: drag them through the point that was clicked.
     anchor_ = bounds.empty() ? hit : bounds.center();
     grabOffset_ = Vec3(0.0f);
@@ -166,7 +172,8 @@ Vec3 Viewport::dragPoint(const QPoint& pos) const {
     const QRect r = fitRect(size(), QSize(frame_->width, frame_->height));
     const float px = float(pos.x() - r.x()) * frame_->width / std::max(1, r.width());
     const float py = float(pos.y() - r.y()) * frame_->height / std::max(1, r.height());
-    const CameraModel cam(dragStartDoc_.camera, frame_->width, frame_->height);
+    // The current camera, not the one at press: the user may dolly during the drag.
+    const CameraModel cam(editor_->document().camera, frame_->width, frame_->height);
     const Ray ray = cam.generateRay(px, py);
     if (axisLock_ >= 0) {
         Vec3 axis(0.0f);
@@ -188,7 +195,10 @@ void Viewport::updateObjectDrag(const QPoint& pos) {
         delta = Vec3(0.0f);
         delta[axisLock_] = d;
     }
-    SceneDocument doc = dragStartDoc_;
+    // Everything but the dragged object comes from the current document, so a camera dolly
+    // (or any other edit) made during the drag survives the next step.
+    SceneDocument doc = editor_->document();
+    restoreEntity(doc, dragStartDoc_, dragId_);
     moveBy(doc, dragId_, delta);
     if (const auto px = pixelAt(pos)) session_->session().setFocus(px->x() + 0.5f, px->y() + 0.5f);
     editor_->edit(tr("Move object"), std::move(doc), MergeKind::Drag, QString::number(dragId_));
@@ -197,8 +207,11 @@ void Viewport::updateObjectDrag(const QPoint& pos) {
 void Viewport::finishDrag(bool cancel) {
     const Drag was = drag_;
     drag_ = Drag::None;
-    if (was == Drag::Object && cancel)
-        editor_->edit(tr("Move object"), dragStartDoc_, MergeKind::Drag, QString::number(dragId_));
+    if (was == Drag::Object && cancel) {
+        SceneDocument doc = editor_->document();
+        restoreEntity(doc, dragStartDoc_, dragId_);
+        editor_->edit(tr("Move object"), std::move(doc), MergeKind::Drag, QString::number(dragId_));
+    }
     if (was == Drag::Object || was == Drag::Orbit || was == Drag::Pan) session_->endInteraction();
     editor_->closeMerge();
 }

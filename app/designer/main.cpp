@@ -1,33 +1,11 @@
 // raystudio: the designer. Opens the scene given on the command line, or the bundled
 // reference room found next to the build tree or the installed data.
+#include "default_scene.h"
 #include "main_window.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QDir>
-#include <QFileInfo>
 #include <QSurfaceFormat>
-
-namespace {
-
-/// scenes/reference-room.scene.json relative to the executable (build tree: two levels up;
-/// installed: ../share/raystudio), or the working folder.
-QString defaultScene() {
-    const QString name = QStringLiteral("scenes/reference-room.scene.json");
-    const QDir exe(QCoreApplication::applicationDirPath());
-    const QStringList candidates = {
-        exe.filePath(QStringLiteral("../../") + name),
-        exe.filePath(QStringLiteral("../share/raystudio/") + name),
-        exe.filePath(QStringLiteral("../") + name),
-        exe.filePath(name),
-        QDir::current().filePath(name),
-    };
-    for (const QString& c : candidates)
-        if (QFileInfo::exists(c)) return QFileInfo(c).canonicalFilePath();
-    return {};
-}
-
-}  // namespace
 
 int main(int argc, char* argv[]) {
     QSurfaceFormat format;
@@ -50,7 +28,9 @@ int main(int argc, char* argv[]) {
     rs::ui::MainWindow window;
     window.show();
     const QStringList args = parser.positionalArguments();
-    const QString scene = args.isEmpty() ? defaultScene() : args.first();
+    const QString scene = args.isEmpty()
+                              ? rs::ui::defaultScenePath(QCoreApplication::applicationDirPath())
+                              : args.first();
     if (!scene.isEmpty()) window.openFile(scene);
     return app.exec();
 }

@@ -51,6 +51,14 @@ bool sameMaterialData(Material a, const Material& b) {
 
 bool isPlane(const Object& o) { return std::holds_alternative<PlaneGeometry>(o.geometry); }
 
+/// A mesh whose triangles or normals differ (smooth normals toggled, another file or reloaded
+/// data): a refit would keep the old mesh BVH, so the object must be compiled afresh.
+bool meshChanged(const Object& before, const Object& after) {
+    const auto* a = std::get_if<MeshGeometry>(&before.geometry);
+    const auto* b = std::get_if<MeshGeometry>(&after.geometry);
+    return a && b && (!(*a == *b) || a->data != b->data);
+}
+
 }  // namespace
 
 SceneUpdate updateScene(const SceneDocument& before,
@@ -107,7 +115,7 @@ SceneUpdate updateScene(const SceneDocument& before,
             structural |= kindChanged || prev.visible != o.visible;
             continue;
         }
-        if (kindChanged || prev.visible != o.visible) {
+        if (kindChanged || prev.visible != o.visible || meshChanged(prev, o)) {
             structural = true;
             added.push_back(o.id);
             removed.push_back(o.id);
