@@ -151,7 +151,8 @@ EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* pr
     for (uint32_t i = 0; i < prims.size(); ++i) {
         const auto* mesh = std::get_if<MeshShape>(&prims[i].shape);
         if (!mesh) {
-            userPrims_.push_back(i);
+            const bool worldSphere = !prims[i].hasFrame && std::holds_alternative<SphereShape>(prims[i].shape);
+            (worldSphere ? spherePrims_ : userPrims_).push_back(i);
             continue;
         }
         auto& slot = known[mesh->accel.get()];
@@ -177,6 +178,21 @@ EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* pr
         rtcCommitGeometry(user);
         userGeomID_ = rtcAttachGeometry(scene_, user);
         rtcReleaseGeometry(user);
+    }
+    if (!spherePrims_.empty()) {
+        // Embree's sphere primitive is tested in SIMD inside its BVH leaves: no callback.
+        RTCGeometry spheres = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_SPHERE_POINT);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+            spheres, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float),
+            spherePrims_.size()));
+        for (std::size_t k = 0; k < spherePrims_.size(); ++k) {
+            const SphereShape& s = std::get<SphereShape>(prims[spherePrims_[k]].shape);
+            v[4 * k] = s.center.x, v[4 * k + 1] = s.center.y, v[4 * k + 2] = s.center.z;
+            v[4 * k + 3] = std::abs(s.radius);
+        }
+        rtcCommitGeometry(spheres);
+        sphereGeomID_ = rtcAttachGeometry(scene_, spheres);
+        rtcReleaseGeometry(spheres);
     }
     rtcCommitScene(scene_);
 }
@@ -205,9 +221,9 @@ void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const 
         // Planes first, with the same rule as every engine: their t bounds the tree's walk.
         for (int k = 0; k < n; ++k) {
             const std::size_t i = first + std::size_t(k);
-            const Ray ray = Ray::make(Vec3(rays.ox[i], rays.oy[i], rays.oz[i]),
-                                      Vec3(rays.dx[i], rays.dy[i], rays.dz[i]));
-            planeHit[k] = planes_.closest(ray, 0.0f, p.rh.ray.tfar[k]);
+            planeHit[k] = planes_.closest(Vec3(rays.ox[i], rays.oy[i], rays.oz[i]),
+                                          Vec3(rays.dx[i], rays.dy[i], rays.dz[i]), 0.0f,
+                                          p.rh.ray.tfar[k]);
         }
         rtcIntersect8(p.valid, scene_, &context, &p.rh);
         for (int k = 0; k < n; ++k) {
@@ -219,8 +235,24 @@ void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const 
                 slot = instancePrims_[inst];
                 const Primitive& prim = prims[slot];
                 const MeshAccel& mesh = *std::get<MeshShape>(prim.shape).accel;
-                normal = glm::normalize(prim.frame.normalToWorld *
-                                        mesh.normal(p.rh.hit.primID[k], p.rh.hit.u[k], p.rh.hit.v[k]));
+                const unsigned tri = p.rh.hit.primID[k];
+                float b1 = p.rh.hit.u[k], b2 = p.rh.hit.v[k];
+                // Embree picked the triangle; its distance and barycentrics come from the
+                // project's own triangle test in the object's frame, as the built-in engine
+                // computes them (Embree's own t drifts by ~1e-5 under scaled instances).
+                const Ray local = Ray::make(
+                    Vec3(prim.frame.objectFromWorld * glm::vec4(rays.ox[i], rays.oy[i], rays.oz[i], 1.0f)),
+                    prim.frame.dirToObject * Vec3(rays.dx[i], rays.dy[i], rays.dz[i]));
+                float t;
+                if (mesh.intersectTriangle(tri, local, t, b1, b2)) p.rh.ray.tfar[k] = t;
+                normal = glm::normalize(prim.frame.normalToWorld * mesh.normal(tri, b1, b2));
+            } else if (p.rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID &&
+                       p.rh.hit.geomID[k] == sphereGeomID_) {
+                slot = spherePrims_[p.rh.hit.primID[k]];
+                // The outward normal from the centre, as intersect(SphereShape) defines it.
+                const SphereShape& s = std::get<SphereShape>(prims[slot].shape);
+                const Vec3 o(rays.ox[i], rays.oy[i], rays.oz[i]), d(rays.dx[i], rays.dy[i], rays.dz[i]);
+                normal = divide((o - s.center) + p.rh.ray.tfar[k] * d, s.radius);
             } else if (p.rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID) {
                 slot = userPrims_[p.rh.hit.primID[k]];
                 normal = Vec3(p.rh.hit.Ng_x[k], p.rh.hit.Ng_y[k], p.rh.hit.Ng_z[k]);
@@ -255,9 +287,8 @@ void EmbreeEngine::anyHit(const RayBatch& rays, uint8_t* occluded) const {
             const std::size_t i = first + std::size_t(k);
             bool blocked = p.rh.ray.tfar[k] == -kInfinity;
             if (!blocked && !planes_.empty()) {
-                const Ray ray = Ray::make(Vec3(rays.ox[i], rays.oy[i], rays.oz[i]),
-                                          Vec3(rays.dx[i], rays.dy[i], rays.dz[i]));
-                blocked = planes_.any(ray, 0.0f, rays.tmax[i]);
+                blocked = planes_.any(Vec3(rays.ox[i], rays.oy[i], rays.oz[i]),
+                                      Vec3(rays.dx[i], rays.dy[i], rays.dz[i]), 0.0f, rays.tmax[i]);
             }
             occluded[i] = blocked;
         }

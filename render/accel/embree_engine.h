@@ -1,6 +1,7 @@
 // The production engine: Embree 3. Meshes are triangle scenes of their own, placed by
-// instances, so moving one re-commits only the top level; spheres, boxes and rectangles are
-// user geometry calling the project's own shape tests; planes stay outside (PlaneSet).
+// instances, so moving one re-commits only the top level; world-space spheres are Embree's
+// own (SIMD) spheres; boxes, rectangles and spheres in a frame of their own are user
+// geometry calling the project's shape tests; planes stay outside (PlaneSet).
 #pragma once
 
 #include "accel/plane_set.h"
@@ -41,6 +42,8 @@ private:
     PlaneSet planes_;
     RTCScene scene_ = nullptr;
     unsigned userGeomID_ = RTC_INVALID_GEOMETRY_ID;
+    unsigned sphereGeomID_ = RTC_INVALID_GEOMETRY_ID;
+    std::vector<uint32_t> spherePrims_;    ///< Primitive index of each sphere primID.
     std::vector<uint32_t> userPrims_;      ///< Primitive index of each user-geometry primID.
     std::vector<uint32_t> instancePrims_;  ///< Primitive index of each geomID (meshes only).
     std::vector<std::shared_ptr<const EmbreeMesh>> meshes_;  ///< Per primitive; null if no mesh.

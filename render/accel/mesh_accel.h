@@ -33,6 +33,9 @@ public:
     /// interpolated vertex normal when smooth, else the geometric one. Every engine's mesh hits
     /// get their normal here.
     Vec3 normal(uint32_t tri, float b1, float b2) const;
+    /// The project's triangle test (Moeller-Trumbore) of triangle `tri` alone, over (0, inf):
+    /// distance and barycentrics, for engines that found the triangle by other means.
+    bool intersectTriangle(uint32_t tri, const Ray& ray, float& t, float& b1, float& b2) const;
     /// True when triangle `tri` has three valid vertex indices (others are never hit).
     bool validTriangle(uint32_t tri) const;
 

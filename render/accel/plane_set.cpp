@@ -8,9 +8,9 @@ namespace {
 /// Distances to four planes. A ray parallel to a plane gets +-inf or NaN here, which the
 /// open-range tests reject like intersect(PlaneShape)'s denom == 0 branch.
 inline Float4 distances(const Float4& px, const Float4& py, const Float4& pz, const Float4& nx,
-                        const Float4& ny, const Float4& nz, const Ray& ray) {
-    const Float4 denom = ray.dir.x * nx + ray.dir.y * ny + ray.dir.z * nz;
-    const Float4 num = (px - ray.origin.x) * nx + (py - ray.origin.y) * ny + (pz - ray.origin.z) * nz;
+                        const Float4& ny, const Float4& nz, const Vec3& o, const Vec3& d) {
+    const Float4 denom = d.x * nx + d.y * ny + d.z * nz;
+    const Float4 num = (px - o.x) * nx + (py - o.y) * ny + (pz - o.z) * nz;
     return num / denom;
 }
 
@@ -27,11 +27,11 @@ PlaneSet::PlaneSet(const std::vector<PlanePrimitive>& planes) {
     }
 }
 
-int PlaneSet::closest(const Ray& ray, float tmin, float& tmax) const {
+int PlaneSet::closest(const Vec3& origin, const Vec3& dir, float tmin, float& tmax) const {
     int nearest = -1;
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
         const Block& k4 = blocks_[b];
-        const Float4 t = distances(k4.px, k4.py, k4.pz, k4.nx, k4.ny, k4.nz, ray);
+        const Float4 t = distances(k4.px, k4.py, k4.pz, k4.nx, k4.ny, k4.nz, origin, dir);
         for (int k = 0; k < 4; ++k) {
             if (t[k] > tmin && t[k] < tmax) {
                 tmax = t[k];
@@ -42,9 +42,9 @@ int PlaneSet::closest(const Ray& ray, float tmin, float& tmax) const {
     return nearest;
 }
 
-bool PlaneSet::any(const Ray& ray, float tmin, float tmax) const {
+bool PlaneSet::any(const Vec3& origin, const Vec3& dir, float tmin, float tmax) const {
     for (const Block& k4 : blocks_) {
-        const Float4 t = distances(k4.px, k4.py, k4.pz, k4.nx, k4.ny, k4.nz, ray);
+        const Float4 t = distances(k4.px, k4.py, k4.pz, k4.nx, k4.ny, k4.nz, origin, dir);
         for (int k = 0; k < 4; ++k)
             if (t[k] > tmin && t[k] < tmax) return true;
     }

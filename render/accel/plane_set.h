@@ -17,9 +17,13 @@ public:
     /// The nearest plane with t in (tmin, tmax): shrinks tmax to it and returns its index into
     /// the planes, or -1. Scanning in order with a strict < keeps the first of equally near
     /// planes.
-    int closest(const Ray& ray, float tmin, float& tmax) const;
+    int closest(const Vec3& origin, const Vec3& dir, float tmin, float& tmax) const;
+    int closest(const Ray& ray, float tmin, float& tmax) const {
+        return closest(ray.origin, ray.dir, tmin, tmax);
+    }
     /// True when a plane lies within (tmin, tmax).
-    bool any(const Ray& ray, float tmin, float tmax) const;
+    bool any(const Vec3& origin, const Vec3& dir, float tmin, float tmax) const;
+    bool any(const Ray& ray, float tmin, float tmax) const { return any(ray.origin, ray.dir, tmin, tmax); }
     bool empty() const { return blocks_.empty(); }
 
 private:

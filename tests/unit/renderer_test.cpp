@@ -138,11 +138,50 @@ TEST(Renderer, CancelFlag_StopsTheRenderAndSaysSo) {
 }
 
 TEST(Renderer, SameImageForAnyThreadCount_PointLights) {
-    // The packet tracer's path (on CPUs with AVX2), centre samples and supersampled.
-    SceneDocument doc = test::smallRoom(83, 61);
-    expectSameForAnyThreadCount(CompiledScene(doc));
-    doc.render.supersampling = 3;
-    expectSameForAnyThreadCount(CompiledScene(doc));
+    // Centre samples and supersampled, with each engine.
+    for (EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
+        SCOPED_TRACE(engineName(engine));
+        SceneDocument doc = test::smallRoom(83, 61);
+        expectSameForAnyThreadCount(CompiledScene(doc, nullptr, engine));
+        doc.render.supersampling = 3;
+        expectSameForAnyThreadCount(CompiledScene(doc, nullptr, engine));
+    }
+}
+
+TEST(Renderer, SameImageForAnyThreadCount_EachEngine_MeshesBoxesAndASphereLight) {
+    for (EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
+        SCOPED_TRACE(engineName(engine));
+        SceneDocument doc = test::smallRoom(72, 54);
+        doc.render.shadowSamples = 3;
+        Light area;
+        area.name = "area";
+        area.type = LightType::Sphere;
+        area.position = Vec3(-1.5f, 2.5f, -3.0f);
+        area.radius = 0.4f;
+        doc.addLight(area);
+        Object box;
+        box.name = "box";
+        box.material = "mirror";
+        box.geometry = BoxGeometry{Vec3(-0.4f), Vec3(0.4f)};
+        box.transform.translate = Vec3(-0.6f, -1.4f, -3.6f);
+        box.transform.rotate = Vec3(0, 30, 10);
+        doc.addObject(box);
+        Object mesh;
+        mesh.name = "mesh";
+        mesh.material = "glass";
+        auto data = std::make_shared<MeshData>();
+        data->positions = {Vec3(0, 0.5f, 0), Vec3(-0.4f, -0.3f, 0.3f), Vec3(0.4f, -0.3f, 0.3f),
+                           Vec3(0, -0.3f, -0.4f)};
+        data->indices = {0, 1, 2, 0, 2, 3, 0, 3, 1, 1, 3, 2};
+        MeshGeometry g;
+        g.file = "tetrahedron.obj";
+        g.data = data;
+        mesh.geometry = g;
+        mesh.transform.translate = Vec3(0.9f, -1.2f, -3.3f);
+        mesh.transform.scale = Vec3(1.5f);
+        doc.addObject(mesh);
+        expectSameForAnyThreadCount(CompiledScene(doc, nullptr, engine));
+    }
 }
 
 TEST(Renderer, IdsOff_SameImageWithoutTheIdBuffer) {

@@ -12,20 +12,25 @@ namespace {
 
 using namespace std::chrono_literals;
 
-/// Largest per-channel difference between the session's frame and a fresh full render.
+/// Largest per-channel difference between the session's frame and a fresh full render with
+/// the session's engine; the object ids seen through the pixel centres must agree too.
 float maxDiffToFullRender(RenderSession& session, const SceneDocument& doc) {
-    const RenderResult full = renderImage(CompiledScene(doc));
+    const RenderResult full = renderImage(CompiledScene(doc, nullptr, session.engine()));
     float worst = 0.0f;
-    session.withFrame([&](const DeepFrame& frame, const auto&) {
+    session.withFrame([&](const DeepFrame& frame, const auto& snapshot) {
         EXPECT_EQ(frame.pixelCount(), full.image.pixels.size());
         if (frame.pixelCount() != full.image.pixels.size()) {
             worst = kInfinity;
             return;
         }
+        EXPECT_EQ(snapshot->engineKind(), session.engine());
+        std::size_t idMismatches = 0;
         for (std::size_t i = 0; i < frame.pixelCount(); ++i) {
             const Color d = glm::abs(frame.color[i] - full.image.pixels[i]);
             worst = std::max(worst, std::max(d.x, std::max(d.y, d.z)));
+            idMismatches += frame.id[i] != full.ids[i];
         }
+        EXPECT_EQ(idMismatches, 0u);
     });
     return worst;
 }
@@ -97,9 +102,18 @@ Object* randomObject(SceneDocument& doc, std::mt19937& rng) {
 void randomEdit(SceneDocument& doc, std::mt19937& rng) {
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     switch (rng() % 10) {
-        case 0: case 1: case 2: case 3:  // Move (the common case: refit + dirty regions).
+        case 0: case 1: case 2:  // Move (the common case: refit + dirty regions).
             if (Object* o = randomObject(doc, rng))
                 o->transform.translate += Vec3(0.4f * u(rng), 0.3f * u(rng), 0.4f * u(rng));
+            break;
+        case 3:  // Rotate or scale (uniformly or not): frames change, spheres may leave world space.
+            if (Object* o = randomObject(doc, rng)) {
+                if (rng() % 2)
+                    o->transform.rotate += Vec3(20.0f * u(rng), 30.0f * u(rng), 0.0f);
+                else
+                    o->transform.scale *= rng() % 2 ? Vec3(1.0f + 0.2f * u(rng))
+                                                    : Vec3(1.0f, 1.0f + 0.3f * u(rng), 1.0f);
+            }
             break;
         case 4:  // Material edit.
             doc.materials[rng() % doc.materials.size()].color = Color(0.5f + 0.4f * u(rng), 0.5f, 0.6f);
@@ -142,11 +156,12 @@ void randomEdit(SceneDocument& doc, std::mt19937& rng) {
 }
 
 void runRandomEdits(const InteractionPolicy& policy, uint32_t seed, bool adaptive,
-                    SceneDocument doc = testRoom()) {
+                    SceneDocument doc = testRoom(), EngineKind engine = EngineKind::Embree) {
     doc.render.supersampling = 4;
     doc.render.adaptiveSupersampling = adaptive;
     RenderSession session(2);
     session.setPolicy(policy);
+    session.setEngine(engine);
     session.update(doc);
     ASSERT_TRUE(session.waitUntilComplete(60s));
     ASSERT_LE(maxDiffToFullRender(session, doc), 1e-5f);
@@ -215,6 +230,46 @@ TEST(RenderSession, RandomEdits_BoxesRectanglesMeshes_FrameEqualsFullRender) {
     shortcuts.boxProxy = true;
     shortcuts.resolution = MovingResolution::Half;
     runRandomEdits(shortcuts, 23u, false, mixedRoom(false));
+}
+
+/// mixedRoom with a sampled sphere light: every shape kind, frames, instances, soft shadows.
+SceneDocument everyKindRoom() {
+    SceneDocument doc = mixedRoom(false);
+    Light area;
+    area.name = "area";
+    area.type = LightType::Sphere;
+    area.position = Vec3(1.5f, 2.0f, -3.5f);
+    area.radius = 0.3f;
+    area.intensity = 0.6f;
+    doc.addLight(area);
+    test::addSphere(doc, "scaled", Vec3(1.2f, -1.6f, -4.0f), 0.3f, "glass");
+    doc.objects.back().transform.scale = Vec3(1.0f, 1.6f, 1.0f);
+    return doc;
+}
+
+TEST(RenderSession, RandomEdits_EachEngine_EveryShapeKindAndSphereLight_FrameEqualsFullRender) {
+    for (EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
+        SCOPED_TRACE(engineName(engine));
+        runRandomEdits(InteractionPolicy{}, 41u, true, everyKindRoom(), engine);
+        InteractionPolicy shortcuts;
+        shortcuts.governorTargetMs = 0.0;
+        shortcuts.boxProxy = true;
+        shortcuts.refraction = RefractionMode::Diffuse;
+        runRandomEdits(shortcuts, 42u, false, everyKindRoom(), engine);
+    }
+}
+
+TEST(RenderSession, SwitchingEngines_RebuildsAndEndsExact) {
+    SceneDocument doc = everyKindRoom();
+    RenderSession session(2);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    session.setEngine(EngineKind::Builtin);
+    doc.objects[2].transform.translate.x += 0.1f;
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    EXPECT_EQ(session.snapshot()->engineKind(), EngineKind::Builtin);
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
 }
 
 TEST(RenderSession, RandomEdits_OrthographicCamera_FrameEqualsFullRender) {
