@@ -22,6 +22,8 @@
 #include <QStatusBar>
 #include <QToolBar>
 
+#include <tuple>
+
 namespace rs::ui {
 
 namespace {
@@ -43,8 +45,13 @@ MainWindow::MainWindow(QWidget* parent)
     setCentralWidget(viewport_);
     setAcceptDrops(true);
 
-    connect(editor_, &SceneEditor::documentChanged, this,
-            [this] { session_->requestUpdate(editor_->document()); });
+    // The viewport posts the document to the session itself, seen through its view camera.
+    connect(viewport_, &Viewport::statusMessage, this, [this](const QString& text) {
+        if (text.isEmpty())
+            statusBar()->clearMessage();
+        else
+            statusBar()->showMessage(text);
+    });
     connect(editor_->undoStack(), &QUndoStack::cleanChanged, this,
             [this](bool clean) { setWindowModified(!clean); });
     connect(editor_, &SceneEditor::filePathChanged, this, &MainWindow::updateTitle);
@@ -137,6 +144,15 @@ void MainWindow::createMenus() {
     edit->addAction(deleteAct_);
     edit->addAction(duplicateAct_);
     edit->addSeparator();
+    // Blender's modal transforms; while one runs the viewport takes every key.
+    const std::pair<QString, TransformKind> gestures[] = {{tr("&Move"), TransformKind::Move},
+                                                          {tr("R&otate"), TransformKind::Rotate},
+                                                          {tr("&Scale"), TransformKind::Scale}};
+    const Qt::Key gestureKeys[] = {Qt::Key_G, Qt::Key_R, Qt::Key_S};
+    for (int i = 0; i < 3; ++i)
+        edit->addAction(gestures[i].first, QKeySequence(gestureKeys[i]), viewport_,
+                        [this, kind = gestures[i].second] { viewport_->beginTransform(kind); });
+    edit->addSeparator();
     edit->addAction(tr("&Preferences..."), QKeySequence::Preferences, this, &MainWindow::showPreferences);
 
     QMenu* add = menuBar()->addMenu(tr("&Add"));
@@ -146,6 +162,23 @@ void MainWindow::createMenus() {
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Frame Selection"), QKeySequence(Qt::Key_F), viewport_, &Viewport::frameSelection);
+    view->addSeparator();
+    // Navigation moves the view camera only; these two are the bridges to the scene camera
+    // (Blender's Numpad 0 and Ctrl+Alt+Numpad 0).
+    view->addAction(tr("&Through Scene Camera"), QKeySequence(Qt::Key_0), viewport_,
+                    &Viewport::viewThroughSceneCamera);
+    view->addAction(tr("Scene Camera from &View"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_0),
+                    viewport_, &Viewport::sceneCameraFromView);
+    QMenu* axes = view->addMenu(tr("&Axis Views"));
+    const std::tuple<QString, AxisView, QKeySequence> axisViews[] = {
+        {tr("&Front"), AxisView::Front, QKeySequence(Qt::Key_1)},
+        {tr("&Back"), AxisView::Back, QKeySequence(Qt::CTRL | Qt::Key_1)},
+        {tr("&Right"), AxisView::Right, QKeySequence(Qt::Key_3)},
+        {tr("&Left"), AxisView::Left, QKeySequence(Qt::CTRL | Qt::Key_3)},
+        {tr("&Top"), AxisView::Top, QKeySequence(Qt::Key_7)},
+        {tr("B&ottom"), AxisView::Bottom, QKeySequence(Qt::CTRL | Qt::Key_7)}};
+    for (const auto& [text, axis, keys] : axisViews)
+        axes->addAction(text, keys, viewport_, [this, a = axis] { viewport_->setAxisView(a); });
     view->addSeparator();
     auto* modes = new QActionGroup(this);
     const std::pair<QString, ViewMode> entries[] = {

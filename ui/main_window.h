@@ -7,6 +7,7 @@
 
 #include <QMainWindow>
 
+#include <functional>
 #include <memory>
 
 class QAction;
@@ -84,6 +85,8 @@ private:
     void updateRecentFileActions();
     void updateTitle();
     void onPassFinished(const rs::PassInfo& info);
+    /// Runs `add` on `doc` with the view camera standing in for the scene camera.
+    ObjectId inFrontOfView(SceneDocument& doc, const std::function<ObjectId()>& add) const;
     void addShapeAction(ShapeKind kind);
     void addLightAction(LightType type);
     void deleteSelection();

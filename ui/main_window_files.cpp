@@ -130,7 +130,8 @@ void MainWindow::importMesh(const QString& path) {
             return;
         }
         SceneDocument doc = editor_->document();
-        const ObjectId id = addMesh(doc, QFileInfo(path).absoluteFilePath().toStdString(), r.mesh);
+        const ObjectId id = inFrontOfView(
+            doc, [&] { return addMesh(doc, QFileInfo(path).absoluteFilePath().toStdString(), r.mesh); });
         editor_->edit(tr("Import mesh"), std::move(doc));
         editor_->setSelection(id);
     });
@@ -209,9 +210,19 @@ void MainWindow::dropEvent(QDropEvent* event) {
     event->acceptProposedAction();
 }
 
+ObjectId MainWindow::inFrontOfView(SceneDocument& doc, const std::function<ObjectId()>& add) const {
+    // New things appear in front of the camera the user is looking through, which is the
+    // view camera, not the scene camera; the document keeps its own.
+    const Camera scene = doc.camera;
+    doc.camera = viewport_->viewCamera();
+    const ObjectId id = add();
+    doc.camera = scene;
+    return id;
+}
+
 void MainWindow::addShapeAction(ShapeKind kind) {
     SceneDocument doc = editor_->document();
-    const ObjectId id = addShape(doc, kind);
+    const ObjectId id = inFrontOfView(doc, [&] { return addShape(doc, kind); });
     const QString text = tr("Add %1").arg(QString::fromStdString(doc.findObject(id)->name));
     editor_->edit(text, std::move(doc));
     editor_->setSelection(id);
@@ -219,7 +230,7 @@ void MainWindow::addShapeAction(ShapeKind kind) {
 
 void MainWindow::addLightAction(LightType type) {
     SceneDocument doc = editor_->document();
-    const ObjectId id = addLight(doc, type);
+    const ObjectId id = inFrontOfView(doc, [&] { return addLight(doc, type); });
     const QString text = tr("Add %1").arg(QString::fromStdString(doc.findLight(id)->name));
     editor_->edit(text, std::move(doc));
     editor_->setSelection(id);

@@ -1,11 +1,11 @@
-// Viewport input: id-buffer picking, image-plane drags with axis locks, camera navigation.
+// Viewport input: id-buffer and light-glyph picking, image-plane drags with axis locks, and
+// the routing of mouse and keys to view navigation and G/R/S gestures.
 #include "viewport.h"
 
 #include "camera_navigation.h"
 #include "scene_edits.h"
 #include "scene_editor.h"
 #include "session_controller.h"
-#include "snapshot/camera_model.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -29,16 +29,20 @@ Vec3 closestOnAxis(const Vec3& a, const Vec3& axis, const Vec3& o, const Vec3& d
 }  // namespace
 
 Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* parent)
-    : QWidget(parent), editor_(editor), session_(session), view_(createFrameView(this)) {
+    : QWidget(parent), editor_(editor), session_(session), view_(createFrameView(this)),
+      overlay_(new LightOverlay(this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(view_->widget());
     view_->widget()->setAttribute(Qt::WA_TransparentForMouseEvents);
+    overlay_->raise();
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setMinimumSize(320, 180);
     connect(session_, &SessionController::frameUpdated, this, &Viewport::refresh);
     connect(editor_, &SceneEditor::selectionChanged, this, &Viewport::redraw);
+    connect(editor_, &SceneEditor::documentReset, this, &Viewport::onDocumentReset);
+    connect(editor_, &SceneEditor::documentChanged, this, &Viewport::onDocumentChanged);
 }
 
 void Viewport::setViewMode(ViewMode mode) {
@@ -56,6 +60,22 @@ void Viewport::redraw() {
                              ? kNoObject
                              : editor_->selection();
     view_->showFrame(frame_, mode_, sel);
+    overlay_->setGlyphs(ui::lightGlyphs(editor_->document(), projection()), sel);
+}
+
+void Viewport::resizeEvent(QResizeEvent* e) {
+    QWidget::resizeEvent(e);
+    overlay_->setGeometry(rect());
+    redraw();
+}
+
+ViewProjection Viewport::projection() const {
+    // Before the first frame arrives, the frame will have the document's render size.
+    const QSize frameSize = frame_ && !frame_->empty()
+                                ? QSize(frame_->width, frame_->height)
+                                : QSize(editor_->document().render.width,
+                                        editor_->document().render.height);
+    return ViewProjection(viewCamera_, frameSize, fitRect(size(), frameSize));
 }
 
 std::optional<QPoint> Viewport::pixelAt(const QPoint& p) const {
@@ -74,18 +94,37 @@ QPoint Viewport::widgetPointOf(int x, int y) const {
                   r.y() + int((y + 0.5) * r.height() / frame_->height));
 }
 
+bool Viewport::event(QEvent* e) {
+    // During a gesture every key is the gesture's: digits are typed values, not the numpad
+    // views' shortcuts, and G/R/S switch the gesture instead of starting another.
+    if (e->type() == QEvent::ShortcutOverride && gesture_) {
+        e->accept();
+        return true;
+    }
+    return QWidget::event(e);
+}
+
 void Viewport::mousePressEvent(QMouseEvent* e) {
     setFocus();
+    if (gesture_) {
+        finishGesture(e->button() != Qt::LeftButton);
+        return;
+    }
     editor_->closeMerge();
     pressPos_ = lastPos_ = e->position().toPoint();
     if (e->button() == Qt::RightButton ||
         (e->button() == Qt::LeftButton && (e->modifiers() & Qt::AltModifier))) {
         drag_ = Drag::Orbit;
+        orbitPivot_ = orbitPivot(pressPos_);
     } else if (e->button() == Qt::MiddleButton) {
         drag_ = Drag::Pan;
     } else if (e->button() == Qt::LeftButton) {
-        const auto px = pixelAt(pressPos_);
-        const ObjectId id = px ? frame_->idAt(px->x(), px->y()) : kNoObject;
+        // A light's glyph is drawn in front of everything, so it is picked first.
+        ObjectId id = pickLight(overlay_->glyphs(), e->position());
+        if (id == kNoObject) {
+            const auto px = pixelAt(pressPos_);
+            id = px ? frame_->idAt(px->x(), px->y()) : kNoObject;
+        }
         editor_->setSelection(id);
         if (id != kNoObject) {
             drag_ = Drag::PendingObject;
@@ -100,33 +139,56 @@ void Viewport::mouseMoveEvent(QMouseEvent* e) {
     const QPoint pos = e->position().toPoint();
     const QPoint delta = pos - lastPos_;
     lastPos_ = pos;
+    if (gesture_) {
+        gesture_->setCursor(e->position(), e->modifiers() & Qt::ControlModifier);
+        updateGesture();
+        return;
+    }
     if (drag_ == Drag::PendingObject &&
         (pos - pressPos_).manhattanLength() >= kDragThresholdPx)
         startObjectDrag();
     if (drag_ == Drag::Object) {
         updateObjectDrag(pos);
     } else if (drag_ == Drag::Orbit || drag_ == Drag::Pan) {
-        SceneDocument doc = editor_->document();
+        Camera c = viewCamera_;
         if (drag_ == Drag::Orbit)
-            orbit(doc.camera, delta.x() * 0.4f, delta.y() * 0.4f);
+            orbitAround(c, orbitPivot_, worldUp_, delta.x() * 0.4f, delta.y() * 0.4f);
         else
-            pan(doc.camera, float(delta.x()) / std::max(1, height()),
-                float(delta.y()) / std::max(1, height()));
-        editor_->edit(tr("Move camera"), std::move(doc), MergeKind::Camera, QStringLiteral("camera"));
+            pan(c, float(delta.x()) / std::max(1, height()), float(delta.y()) / std::max(1, height()));
+        setView(c);
     }
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent*) {
-    finishDrag(false);
+    if (!gesture_) finishDrag(false);
 }
 
 void Viewport::wheelEvent(QWheelEvent* e) {
-    SceneDocument doc = editor_->document();
-    dolly(doc.camera, e->angleDelta().y() / 120.0f * 0.1f);
-    editor_->edit(tr("Dolly camera"), std::move(doc), MergeKind::Camera, QStringLiteral("camera"));
+    Camera c = viewCamera_;
+    dolly(c, e->angleDelta().y() / 120.0f * 0.1f);
+    setView(c);
 }
 
 void Viewport::keyPressEvent(QKeyEvent* e) {
+    if (gesture_) {
+        switch (gesture_->keyPress(e->key(), e->text())) {
+            case ModalTransform::KeyResult::Confirm:
+                finishGesture(false);
+                return;
+            case ModalTransform::KeyResult::Cancel:
+                finishGesture(true);
+                return;
+            case ModalTransform::KeyResult::Updated:
+                updateGesture();
+                return;
+            case ModalTransform::KeyResult::Unhandled:
+                if (e->key() == Qt::Key_Control) {
+                    gesture_->setSnap(true);
+                    updateGesture();
+                }
+                return;  // Nothing else happens mid-gesture.
+        }
+    }
     if (drag_ == Drag::Object) {
         const int axis = e->key() == Qt::Key_X ? 0 : e->key() == Qt::Key_Y ? 1 : e->key() == Qt::Key_Z ? 2 : -1;
         if (axis >= 0) {
@@ -142,6 +204,22 @@ void Viewport::keyPressEvent(QKeyEvent* e) {
     QWidget::keyPressEvent(e);
 }
 
+void Viewport::keyReleaseEvent(QKeyEvent* e) {
+    if (gesture_ && e->key() == Qt::Key_Control) {
+        gesture_->setSnap(false);
+        updateGesture();
+        return;
+    }
+    QWidget::keyReleaseEvent(e);
+}
+
+void Viewport::focusOutEvent(QFocusEvent* e) {
+    // A gesture the viewport no longer hears the keys of would never end (a menu opening
+    // over it is no such loss).
+    if (gesture_ && e->reason() != Qt::PopupFocusReason) finishGesture(true);
+    QWidget::focusOutEvent(e);
+}
+
 void Viewport::startObjectDrag() {
     // The frame may have changed size since the press (a resize, a new render size): when the
     // press point no longer lies on the image there is nothing to grab, and the press stays
@@ -154,34 +232,35 @@ void Viewport::startObjectDrag() {
     drag_ = Drag::Object;
     axisLock_ = -1;
     dragStartDoc_ = editor_->document();
-    const auto snapshot = session_->session().snapshot();
-    const Aabb bounds = snapshot ? snapshot->objectBounds(dragId_) : Aabb{};
-    const std::size_t i = std::size_t(px->y()) * frame_->width + px->x();
-    const CameraModel cam(dragStartDoc_.camera, frame_->width, frame_->height);
-    const Ray ray = cam.generateRay(px->x() + 0.5f, px->y() + 0.5f);
-    const float depth = i < frame_->depth.size() ? frame_->depth[i] : kInfinity;
-    const Vec3 hit = ray.at(std::isfinite(depth) ? depth : 1.0f);
-    // Planes are unbounded: drag them through the point that was clicked.
-    anchor_ = bounds.empty() ? hit : bounds.center();
+    if (const Light* l = dragStartDoc_.findLight(dragId_)) {
+        anchor_ = l->position;
+    } else {
+        const auto snapshot = session_->session().snapshot();
+        const Aabb bounds = snapshot ? snapshot->objectBounds(dragId_) : Aabb{};
+        const std::size_t i = std::size_t(px->y()) * frame_->width + px->x();
+        const CameraModel cam(viewCamera_, frame_->width, frame_->height);
+        const Ray ray = cam.generateRay(px->x() + 0.5f, px->y() + 0.5f);
+        const float depth = i < frame_->depth.size() ? frame_->depth[i] : kInfinity;
+        const Vec3 hit = ray.at(std::isfinite(depth) ? depth : 1.0f);
+        // Planes are unbounded: drag them through the point that was clicked.
+        anchor_ = bounds.empty() ? hit : bounds.center();
+    }
     grabOffset_ = Vec3(0.0f);
     grabOffset_ = dragPoint(pressPos_) - anchor_;
     session_->beginInteraction(dragId_);
 }
 
 Vec3 Viewport::dragPoint(const QPoint& pos) const {
-    const QRect r = fitRect(size(), QSize(frame_->width, frame_->height));
-    const float px = float(pos.x() - r.x()) * frame_->width / std::max(1, r.width());
-    const float py = float(pos.y() - r.y()) * frame_->height / std::max(1, r.height());
-    // The current camera, not the one at press: the user may dolly during the drag.
-    const CameraModel cam(editor_->document().camera, frame_->width, frame_->height);
-    const Ray ray = cam.generateRay(px, py);
+    // The current view, not the one at press: the user may dolly during the drag.
+    const ViewProjection view = projection();
+    const Ray ray = view.rayThrough(QPointF(pos));
     if (axisLock_ >= 0) {
         Vec3 axis(0.0f);
         axis[axisLock_] = 1.0f;
         return closestOnAxis(anchor_, axis, ray.origin, ray.dir) + grabOffset_;
     }
     // Plane parallel to the image through the anchor.
-    const Vec3 n = cam.forward();
+    const Vec3 n = view.camera().forward();
     const float denom = glm::dot(ray.dir, n);
     if (std::abs(denom) < 1e-6f) return anchor_ + grabOffset_;
     const float t = glm::dot(anchor_ + grabOffset_ - ray.origin, n) / denom;
@@ -195,8 +274,8 @@ void Viewport::updateObjectDrag(const QPoint& pos) {
         delta = Vec3(0.0f);
         delta[axisLock_] = d;
     }
-    // Everything but the dragged object comes from the current document, so a camera dolly
-    // (or any other edit) made during the drag survives the next step.
+    // Everything but the dragged object comes from the current document, so any other edit
+    // made during the drag survives the next step.
     SceneDocument doc = editor_->document();
     restoreEntity(doc, dragStartDoc_, dragId_);
     moveBy(doc, dragId_, delta);
@@ -214,24 +293,6 @@ void Viewport::finishDrag(bool cancel) {
     }
     if (was == Drag::Object || was == Drag::Orbit || was == Drag::Pan) session_->endInteraction();
     editor_->closeMerge();
-}
-
-void Viewport::frameSelection() {
-    const ObjectId id = editor_->selection();
-    SceneDocument doc = editor_->document();
-    Vec3 center;
-    float radius = 1.0f;
-    if (const Light* l = doc.findLight(id)) {
-        center = l->position;
-    } else {
-        const auto snapshot = session_->session().snapshot();
-        const Aabb b = snapshot ? snapshot->objectBounds(id) : Aabb{};
-        if (b.empty()) return;
-        center = b.center();
-        radius = 0.5f * glm::length(b.extent());
-    }
-    ui::frame(doc.camera, center, radius);
-    editor_->edit(tr("Frame selection"), std::move(doc));
 }
 
 }  // namespace rs::ui

@@ -1,10 +1,13 @@
-// The viewport: shows the session's frame and turns mouse and keys into selection, object
-// drags and camera moves on the document.
+// The viewport: shows the session's frame through a view camera of its own and turns mouse
+// and keys into selection, object drags, G/R/S gestures and view navigation.
 #pragma once
 
 #include "display_frame.h"
 #include "frame_view.h"
+#include "light_overlay.h"
+#include "modal_transform.h"
 #include "scene/document.h"
+#include "view_projection.h"
 
 #include <QPoint>
 #include <QWidget>
@@ -16,6 +19,9 @@ namespace rs::ui {
 
 class SceneEditor;
 class SessionController;
+
+/// Blender's numpad views (1, 3, 7; with Ctrl the opposite side).
+enum class AxisView { Front, Back, Right, Left, Top, Bottom };
 
 /// Central widget of the main window.
 class Viewport : public QWidget {
@@ -35,15 +41,46 @@ public:
     QPoint widgetPointOf(int x, int y) const;
     /// Copies the session's frame and redraws.
     void refresh();
-    /// Aims the camera at the selection.
+
+    // View camera: navigation moves it, never the document (Blender's model).
+    /// The camera the viewport looks through.
+    const Camera& viewCamera() const { return viewCamera_; }
+    /// True while the view is the scene camera and follows its edits (the default on open).
+    bool throughSceneCamera() const { return throughScene_; }
+    /// The document as the session renders it: the open document seen through the view camera.
+    SceneDocument viewDocument() const;
+    /// View -> Through Scene Camera.
+    void viewThroughSceneCamera();
+    /// View -> Scene Camera from View: one undoable edit of the document's camera.
+    void sceneCameraFromView();
+    /// Looks at the view's target along a world axis.
+    void setAxisView(AxisView view);
+    /// Aims the view at the selection from the current side, no further than the first
+    /// surface behind the view (so it stays inside a room).
     void frameSelection();
 
+    /// Starts a G / R / S gesture on the selection; false when nothing movable is selected.
+    bool beginTransform(TransformKind kind);
+    bool transforming() const { return gesture_.has_value(); }
+    /// The light glyphs as drawn now.
+    const std::vector<LightGlyph>& lightGlyphs() const { return overlay_->glyphs(); }
+    /// The mapping from widget points to view rays for the frame shown now.
+    ViewProjection projection() const;
+
+Q_SIGNALS:
+    /// A line for the status bar (the gesture's state), empty to clear it.
+    void statusMessage(const QString& text);
+
 protected:
+    bool event(QEvent* e) override;
     void mousePressEvent(QMouseEvent* e) override;
     void mouseMoveEvent(QMouseEvent* e) override;
     void mouseReleaseEvent(QMouseEvent* e) override;
     void wheelEvent(QWheelEvent* e) override;
     void keyPressEvent(QKeyEvent* e) override;
+    void keyReleaseEvent(QKeyEvent* e) override;
+    void resizeEvent(QResizeEvent* e) override;
+    void focusOutEvent(QFocusEvent* e) override;
 
 private:
     enum class Drag { None, PendingObject, Object, Orbit, Pan };
@@ -53,11 +90,29 @@ private:
     Vec3 dragPoint(const QPoint& pos) const;
     void redraw();
 
+    // viewport_navigation.cpp
+    void onDocumentReset();
+    void onDocumentChanged();
+    void setView(const Camera& camera);
+    void postView();
+    Vec3 orbitPivot(const QPoint& pos) const;
+
+    // viewport_gesture.cpp
+    void updateGesture();
+    void finishGesture(bool cancel);
+    std::vector<ObjectId> selectedIds() const;
+
     SceneEditor* editor_;
     SessionController* session_;
     FrameView* view_;
+    LightOverlay* overlay_;
     std::shared_ptr<const DisplayFrame> frame_;
     ViewMode mode_ = ViewMode::Color;
+
+    Camera viewCamera_;
+    bool throughScene_ = true;
+    Vec3 worldUp_{0.0f, 1.0f, 0.0f};
+    Vec3 orbitPivot_{0.0f};
 
     Drag drag_ = Drag::None;
     QPoint pressPos_, lastPos_;
@@ -66,6 +121,8 @@ private:
     Vec3 anchor_{0.0f};       ///< Centre of the dragged object at press.
     Vec3 grabOffset_{0.0f};   ///< Press point on the drag plane minus the anchor.
     int axisLock_ = -1;       ///< -1 free, else 0/1/2 for X/Y/Z.
+
+    std::optional<ModalTransform> gesture_;
 };
 
 }  // namespace rs::ui

@@ -219,7 +219,8 @@ void DesignerInputTest::wheelDuringObjectDrag_KeepsTheDolly() {
     Viewport* v = window_->viewport();
     const auto [x, y] = pixelOf(*v->frame(), blue);
     const QPoint start = v->widgetPointOf(x, y);
-    const Camera cameraBefore = window_->editor()->document().camera;
+    const Camera cameraBefore = v->viewCamera();
+    const Camera sceneCamera = window_->editor()->document().camera;
     const Vec3 ballBefore = window_->editor()->document().findObject(blue)->transform.translate;
 
     QTest::mousePress(v, Qt::LeftButton, {}, start);
@@ -228,13 +229,14 @@ void DesignerInputTest::wheelDuringObjectDrag_KeepsTheDolly() {
     QWheelEvent wheel(at, v->mapToGlobal(at), QPoint(), QPoint(0, 240), Qt::LeftButton, Qt::NoModifier,
                       Qt::NoScrollPhase, false);
     QApplication::sendEvent(v, &wheel);
-    const Camera dollied = window_->editor()->document().camera;
+    const Camera dollied = v->viewCamera();
     QVERIFY(!(dollied == cameraBefore));
     for (int i = 4; i <= 8; ++i) QTest::mouseMove(v, start + QPoint(4 * i, 0));
     QTest::mouseRelease(v, Qt::LeftButton, {}, start + QPoint(32, 0));
 
     const SceneDocument& after = window_->editor()->document();
-    QVERIFY(after.camera == dollied);  // The drag steps after the wheel kept it.
+    QVERIFY(v->viewCamera() == dollied);  // The drag steps after the wheel kept it.
+    QVERIFY(after.camera == sceneCamera);  // A dolly moves the view, never the document.
     QVERIFY(after.findObject(blue)->transform.translate.x > ballBefore.x + 0.05f);
 }
 

@@ -1,0 +1,390 @@
+// Editing like a 3D tool, with real events: a view camera apart from the scene camera,
+// G / R / S gestures with axis locks and typed values, and lights as pickable glyphs.
+#include "gui_test_support.h"
+
+#include "outliner_model.h"
+#include "outliner_view.h"
+#include "transform_edits.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QWheelEvent>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace rs;
+using namespace rs::ui;
+using namespace rs::ui::test;
+
+namespace {
+
+QAction* actionNamed(const QWidget& window, const QString& text) {
+    for (QAction* a : window.findChildren<QAction*>())
+        if (a->iconText() == text) return a;
+    return nullptr;
+}
+
+bool near(const Vec3& a, const Vec3& b, float tol = 1e-4f) { return glm::length(a - b) <= tol; }
+
+QString str(const Vec3& v) { return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z); }
+
+/// True when `p` lies inside every plane of `doc` (the room's walls face inwards).
+bool insideWalls(const SceneDocument& doc, const Vec3& p, QString* which) {
+    for (const Object& o : doc.objects) {
+        const auto* plane = std::get_if<PlaneGeometry>(&o.geometry);
+        if (plane && glm::dot(p - plane->point, plane->normal) <= 0.0f) {
+            *which = QString::fromStdString(o.name);
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+class EditingTest : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup();
+
+    void orbitPanDolly_MoveTheViewOnly_DocumentUnmodifiedAndUndoEmpty();
+    void orbit_TurnsAboutTheSelectionsCentre();
+    void sceneCameraFromView_IsOneUndoStep_AndThroughSceneCameraFollowsIt();
+    void axisViews_LookAlongTheWorldAxes();
+    void frameSelection_InTheReferenceRoom_KeepsTheViewInsideTheWalls();
+    void rotateZ45Enter_RotatesByFortyFiveDegrees_InOneUndoStep();
+    void scale2Enter_DoublesTheScale_InPlace();
+    void moveX1Enter_MovesByOneAlongX();
+    void escape_RestoresTheSelection_AndLeavesNoUndoStep();
+    void ctrlWhileMoving_SnapsToTheGrid();
+    void lightGlyph_IsPickedByClicking_AndMovesWithG();
+    void lightSelectedInOutliner_IsHighlighted();
+
+private:
+    Viewport* viewport() { return window_->viewport(); }
+    const SceneDocument& doc() { return window_->editor()->document(); }
+    /// Clicks `name` in the viewport (a real press and release on its pixels).
+    void clickObject(const std::string& name);
+
+    std::unique_ptr<MainWindow> window_;
+};
+
+void EditingTest::init() {
+    window_ = std::make_unique<MainWindow>();
+    window_->resize(1000, 700);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    window_->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+    QVERIFY(window_->openFile(scenePath("reference-room.scene.json")));
+    window_->setRenderSize(160, 90);
+    QVERIFY(settle(*window_));
+    viewport()->setFocus();
+}
+
+void EditingTest::cleanup() {
+    if (!window_) return;
+    window_->editor()->undoStack()->setClean();  // No save prompt on close.
+    window_.reset();
+}
+
+void EditingTest::clickObject(const std::string& name) {
+    const ObjectId id = idOf(*window_, name);
+    const auto [x, y] = pixelOf(*viewport()->frame(), id);
+    QVERIFY2(x >= 0, name.c_str());
+    QTest::mouseClick(viewport(), Qt::LeftButton, {}, viewport()->widgetPointOf(x, y));
+    QCOMPARE(window_->editor()->selection(), id);
+}
+
+void EditingTest::orbitPanDolly_MoveTheViewOnly_DocumentUnmodifiedAndUndoEmpty() {
+    Viewport* v = viewport();
+    const SceneDocument before = doc();
+    QVERIFY(v->throughSceneCamera());
+    QVERIFY(v->viewCamera() == before.camera);
+    const QPoint c = v->rect().center();
+
+    QTest::mousePress(v, Qt::RightButton, {}, c);  // Orbit.
+    for (int i = 1; i <= 5; ++i) QTest::mouseMove(v, c + QPoint(6 * i, 2 * i));
+    QTest::mouseRelease(v, Qt::RightButton, {}, c + QPoint(30, 10));
+    const Camera orbited = v->viewCamera();
+    QVERIFY(!(orbited == before.camera));
+
+    QTest::mousePress(v, Qt::MiddleButton, {}, c);  // Pan.
+    for (int i = 1; i <= 5; ++i) QTest::mouseMove(v, c + QPoint(-5 * i, 3 * i));
+    QTest::mouseRelease(v, Qt::MiddleButton, {}, c + QPoint(-25, 15));
+    const Camera panned = v->viewCamera();
+    QVERIFY(!(panned == orbited));
+
+    QWheelEvent wheel(c, v->mapToGlobal(c), QPoint(), QPoint(0, 240), Qt::NoButton, Qt::NoModifier,
+                      Qt::NoScrollPhase, false);
+    QApplication::sendEvent(v, &wheel);  // Dolly.
+    QVERIFY(!(v->viewCamera() == panned));
+    QVERIFY(!v->throughSceneCamera());
+
+    QVERIFY(doc().sameContent(before));
+    QVERIFY(doc().camera == before.camera);
+    QCOMPARE(window_->editor()->undoStack()->count(), 0);
+    QVERIFY(window_->editor()->undoStack()->isClean());
+    QVERIFY(!window_->isWindowModified());
+
+    // The session renders through the view camera.
+    QVERIFY(settle(*window_));
+    const auto snapshot = window_->session()->session().snapshot();
+    QVERIFY(near(snapshot->camera().origin(), v->viewCamera().position));
+}
+
+void EditingTest::orbit_TurnsAboutTheSelectionsCentre() {
+    clickObject("blue ball");
+    const Vec3 centre = *entityCentre(doc(), idOf(*window_, "blue ball"));
+    Viewport* v = viewport();
+    const auto distanceTo = [&](const Vec3& p) { return glm::length(v->viewCamera().position - p); };
+    const float before = distanceTo(centre);
+    const QPoint c = v->rect().center();
+    QTest::mousePress(v, Qt::RightButton, {}, c);
+    for (int i = 1; i <= 10; ++i) QTest::mouseMove(v, c + QPoint(10 * i, 3 * i));
+    QTest::mouseRelease(v, Qt::RightButton, {}, c + QPoint(100, 30));
+    // A rigid turn about the ball: the view keeps its distance to it, not to a point 8.5 away.
+    QVERIFY2(std::abs(distanceTo(centre) - before) < 1e-3f,
+             qPrintable(QStringLiteral("%1 -> %2").arg(before).arg(distanceTo(centre))));
+    QVERIFY(glm::length(v->viewCamera().position - doc().camera.position) > 0.5f);
+}
+
+void EditingTest::sceneCameraFromView_IsOneUndoStep_AndThroughSceneCameraFollowsIt() {
+    Viewport* v = viewport();
+    const Camera scene = doc().camera;
+    const QPoint c = v->rect().center();
+    QTest::mousePress(v, Qt::RightButton, {}, c);
+    for (int i = 1; i <= 5; ++i) QTest::mouseMove(v, c + QPoint(8 * i, 0));
+    QTest::mouseRelease(v, Qt::RightButton, {}, c + QPoint(40, 0));
+    const Camera view = v->viewCamera();
+
+    QAction* fromView = actionNamed(*window_, QStringLiteral("Scene Camera from View"));
+    QVERIFY(fromView);
+    fromView->trigger();
+    QCOMPARE(window_->editor()->undoStack()->count(), 1);
+    QVERIFY(near(doc().camera.position, view.position));
+    QVERIFY(near(doc().camera.target, view.target));
+    QVERIFY(window_->isWindowModified());
+    QVERIFY(v->throughSceneCamera());
+
+    window_->editor()->undoStack()->undo();
+    QVERIFY(doc().camera == scene);
+    QVERIFY(v->viewCamera() == scene);  // Looking through it, the view follows the undo.
+
+    // Key 0 (Numpad 0): back through the scene camera after navigating away.
+    QTest::mousePress(v, Qt::RightButton, {}, c);
+    QTest::mouseMove(v, c + QPoint(0, 20));
+    QTest::mouseRelease(v, Qt::RightButton, {}, c + QPoint(0, 20));
+    QVERIFY(!(v->viewCamera() == scene));
+    QTest::keyClick(v, Qt::Key_0);
+    QVERIFY(v->viewCamera() == scene);
+    QVERIFY(v->throughSceneCamera());
+}
+
+void EditingTest::axisViews_LookAlongTheWorldAxes() {
+    Viewport* v = viewport();
+    const struct {
+        Qt::Key key;
+        Qt::KeyboardModifiers mods;
+        Vec3 forward;
+    } views[] = {{Qt::Key_1, {}, {0, 0, -1}}, {Qt::Key_1, Qt::ControlModifier, {0, 0, 1}},
+                 {Qt::Key_3, {}, {-1, 0, 0}}, {Qt::Key_3, Qt::ControlModifier, {1, 0, 0}},
+                 {Qt::Key_7, {}, {0, -1, 0}}, {Qt::Key_7, Qt::ControlModifier, {0, 1, 0}}};
+    const float distance = glm::length(doc().camera.target - doc().camera.position);
+    for (const auto& view : views) {
+        QTest::keyClick(v, view.key, view.mods);
+        const Camera& c = v->viewCamera();
+        QVERIFY2(near(glm::normalize(c.target - c.position), view.forward),
+                 qPrintable(str(c.position)));
+        QVERIFY(std::abs(glm::length(c.target - c.position) - distance) < 1e-3f);
+    }
+    // Top view: X to the right, as in Blender.
+    QTest::keyClick(v, Qt::Key_7);
+    const CameraModel top(v->viewCamera(), 160, 90);
+    QVERIFY(near(top.right(), Vec3(1, 0, 0)));
+    QCOMPARE(window_->editor()->undoStack()->count(), 0);
+}
+
+void EditingTest::frameSelection_InTheReferenceRoom_KeepsTheViewInsideTheWalls() {
+    // Framed from behind, from a side or from below, these balls sit closer to a wall than
+    // the framing distance: unclipped, the view would stand outside the room.
+    const struct {
+        const char* ball;
+        Qt::Key key;
+        Qt::KeyboardModifiers mods;
+    } cases[] = {{"green ball", Qt::Key_1, Qt::ControlModifier},
+                 {"green ball", Qt::Key_3, {}},
+                 {"mirror ball", Qt::Key_3, Qt::ControlModifier},
+                 {"mirror ball", Qt::Key_1, Qt::ControlModifier},
+                 {"mirror ball", Qt::Key_7, Qt::ControlModifier}};
+    const SceneDocument before = doc();
+    Viewport* v = viewport();
+    for (const auto& k : cases) {
+        const ObjectId id = idOf(*window_, k.ball);
+        window_->editor()->setSelection(id);
+        QTest::keyClick(v, k.key, k.mods);
+        QTest::keyClick(v, Qt::Key_F);
+        const Camera& c = v->viewCamera();
+        const Vec3 centre = *entityCentre(doc(), id);
+        QVERIFY(near(c.target, centre));
+        const float radius = std::get<SphereGeometry>(doc().findObject(id)->geometry).radius;
+        const float unclipped = radius / std::sin(glm::radians(c.fovY) * 0.5f) * 1.2f;
+        QString wall;
+        QVERIFY2(insideWalls(doc(), c.position, &wall),
+                 qPrintable(QString::fromLatin1(k.ball) + " view at " + str(c.position) +
+                            " is behind " + wall));
+        QVERIFY2(glm::length(c.position - centre) < unclipped, k.ball);  // It was clipped.
+    }
+    QVERIFY(doc().sameContent(before));
+    QCOMPARE(window_->editor()->undoStack()->count(), 0);
+}
+
+void EditingTest::rotateZ45Enter_RotatesByFortyFiveDegrees_InOneUndoStep() {
+    clickObject("blue ball");
+    const ObjectId id = idOf(*window_, "blue ball");
+    const SceneDocument before = doc();
+    QTest::keyClicks(viewport(), QStringLiteral("rz45"));
+    QVERIFY(viewport()->transforming());
+    QTest::keyClick(viewport(), Qt::Key_Return);
+    QVERIFY(!viewport()->transforming());
+    const Transform& t = doc().findObject(id)->transform;
+    QVERIFY2(near(t.rotate, Vec3(0, 0, 45)), qPrintable(str(t.rotate)));
+    // About the ball's own centre: it stays where it was.
+    QVERIFY(near(*entityCentre(doc(), id), *entityCentre(before, id)));
+    QCOMPARE(window_->editor()->undoStack()->count(), 1);
+    window_->editor()->undoStack()->undo();
+    QVERIFY(doc().sameContent(before));
+}
+
+void EditingTest::scale2Enter_DoublesTheScale_InPlace() {
+    clickObject("glass ball");
+    const ObjectId id = idOf(*window_, "glass ball");
+    const Vec3 centre = *entityCentre(doc(), id);
+    QTest::keyClicks(viewport(), QStringLiteral("s2"));
+    QTest::keyClick(viewport(), Qt::Key_Enter);
+    QVERIFY(near(doc().findObject(id)->transform.scale, Vec3(2.0f)));
+    QVERIFY(near(*entityCentre(doc(), id), centre));
+    QCOMPARE(window_->editor()->undoStack()->count(), 1);
+    // The session sees the bigger ball.
+    QVERIFY(settle(*window_));
+    const Aabb b = window_->session()->session().snapshot()->objectBounds(id);
+    QVERIFY(std::abs(b.extent().x - 4.0f) < 1e-3f);
+}
+
+void EditingTest::moveX1Enter_MovesByOneAlongX() {
+    clickObject("blue ball");
+    const ObjectId id = idOf(*window_, "blue ball");
+    const Vec3 before = doc().findObject(id)->transform.translate;
+    QTest::keyClicks(viewport(), QStringLiteral("gx1"));
+    QTest::keyClick(viewport(), Qt::Key_Return);
+    QVERIFY(near(doc().findObject(id)->transform.translate, before + Vec3(1, 0, 0)));
+    QCOMPARE(window_->editor()->undoStack()->count(), 1);
+
+    // Typed values can be negative and fractional, and Backspace takes back a digit.
+    QTest::keyClicks(viewport(), QStringLiteral("gy-0.59"));
+    QTest::keyClick(viewport(), Qt::Key_Backspace);
+    QTest::keyClick(viewport(), Qt::Key_Return);
+    QVERIFY2(near(doc().findObject(id)->transform.translate, before + Vec3(1, -0.5f, 0)),
+             qPrintable(str(doc().findObject(id)->transform.translate)));
+    QCOMPARE(window_->editor()->undoStack()->count(), 2);
+}
+
+void EditingTest::escape_RestoresTheSelection_AndLeavesNoUndoStep() {
+    clickObject("blue ball");
+    const SceneDocument before = doc();
+    Viewport* v = viewport();
+    const QPoint c = v->rect().center();
+    QTest::mouseMove(v, c);
+    QTest::keyClick(v, Qt::Key_G);
+    QVERIFY(v->transforming());
+    for (int i = 1; i <= 5; ++i) QTest::mouseMove(v, c + QPoint(10 * i, -4 * i));
+    QVERIFY(!doc().sameContent(before));  // The gesture shows as it goes.
+    QTest::keyClick(v, Qt::Key_Escape);
+    QVERIFY(!v->transforming());
+    QVERIFY(doc().sameContent(before));
+    QVERIFY(!window_->editor()->undoStack()->canUndo());
+
+    // The same for typed rotation and scale.
+    QTest::keyClicks(v, QStringLiteral("rx30"));
+    QTest::keyClick(v, Qt::Key_Escape);
+    QTest::keyClicks(v, QStringLiteral("s3"));
+    QTest::keyClick(v, Qt::Key_Escape);
+    QVERIFY(doc().sameContent(before));
+    QVERIFY(!window_->editor()->undoStack()->canUndo());
+}
+
+void EditingTest::ctrlWhileMoving_SnapsToTheGrid() {
+    clickObject("blue ball");
+    const ObjectId id = idOf(*window_, "blue ball");
+    const Vec3 before = doc().findObject(id)->transform.translate;
+    Viewport* v = viewport();
+    const QPoint c = v->rect().center();
+    QTest::mouseMove(v, c);
+    QTest::keyClicks(v, QStringLiteral("gx"));
+    for (int i = 1; i <= 6; ++i) QTest::mouseMove(v, c + QPoint(13 * i, 0));
+    const QPointF end(c + QPoint(83, 0));
+    QMouseEvent move(QEvent::MouseMove, end, v->mapToGlobal(end), Qt::NoButton, Qt::NoButton,
+                     Qt::ControlModifier);
+    QApplication::sendEvent(v, &move);
+    QTest::mouseClick(v, Qt::LeftButton, {}, end.toPoint());  // A click confirms.
+    QVERIFY(!v->transforming());
+    const Vec3 delta = doc().findObject(id)->transform.translate - before;
+    const float steps = delta.x / ModalTransform::kGridStep;
+    QVERIFY2(std::abs(delta.x) > 0.2f && std::abs(steps - std::round(steps)) < 1e-3f,
+             qPrintable(str(delta)));
+    QCOMPARE(delta.y, 0.0f);
+    QCOMPARE(delta.z, 0.0f);
+    QCOMPARE(window_->editor()->undoStack()->count(), 1);
+}
+
+void EditingTest::lightGlyph_IsPickedByClicking_AndMovesWithG() {
+    const Light& light = doc().lights.front();
+    const ObjectId id = light.id;
+    const Vec3 before = light.position;
+    const auto glyphs = viewport()->lightGlyphs();
+    QCOMPARE(int(glyphs.size()), 1);
+    const QPoint at = glyphs.front().centre.toPoint();
+    // The ceiling is behind the glyph in the id buffer; the light wins.
+    QVERIFY(viewport()->pixelAt(at));
+    QTest::mouseClick(viewport(), Qt::LeftButton, {}, at);
+    QCOMPARE(window_->editor()->selection(), id);
+    QTest::keyClicks(viewport(), QStringLiteral("gx1"));
+    QTest::keyClick(viewport(), Qt::Key_Return);
+    QVERIFY(near(doc().findLight(id)->position, before + Vec3(1, 0, 0)));
+    QCOMPARE(window_->editor()->undoStack()->count(), 1);
+    // The glyph followed it to the right.
+    QVERIFY(viewport()->lightGlyphs().front().centre.x() > at.x() + 5);
+
+    // The existing mouse drag moves it too.
+    const QPoint from = viewport()->lightGlyphs().front().centre.toPoint();
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, from);
+    for (int i = 1; i <= 5; ++i) QTest::mouseMove(viewport(), from + QPoint(0, 6 * i));
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, from + QPoint(0, 30));
+    QVERIFY(doc().findLight(id)->position.y < before.y - 0.1f);
+    QCOMPARE(window_->editor()->undoStack()->count(), 2);
+}
+
+void EditingTest::lightSelectedInOutliner_IsHighlighted() {
+    const ObjectId id = doc().lights.front().id;
+    const auto highlighted = [&] {
+        const QImage shown = viewport()->grab().toImage().convertToFormat(QImage::Format_RGB888);
+        const QPoint c = viewport()->lightGlyphs().front().centre.toPoint();
+        for (int y = c.y() - 10; y <= c.y() + 10; ++y)
+            for (int x = c.x() - 10; x <= c.x() + 10; ++x)
+                if (shown.pixelColor(x, y) ==
+                    QColor(kOutlineRgb[0], kOutlineRgb[1], kOutlineRgb[2]))
+                    return true;
+        return false;
+    };
+    QVERIFY(!highlighted());
+    OutlinerModel* model = window_->outliner()->outlinerModel();
+    window_->outliner()->setCurrentIndex(model->indexOf(id));
+    QCOMPARE(window_->editor()->selection(), id);
+    QVERIFY(highlighted());
+}
+
+QTEST_MAIN(EditingTest)
+#include "editing_test.moc"

@@ -1,0 +1,81 @@
+// Light glyphs: lights are not geometry in a Whitted render, so the viewport draws and picks
+// them itself, in front of whatever surface lies behind.
+#include "light_overlay.h"
+
+#include "display_frame.h"
+
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rs::ui {
+
+namespace {
+constexpr float kPointGlyphPx = 6.0f;
+/// Small glyphs are easier to hit with a margin.
+constexpr float kMinPickPx = 9.0f;
+}  // namespace
+
+std::vector<LightGlyph> lightGlyphs(const SceneDocument& doc, const ViewProjection& view) {
+    std::vector<LightGlyph> glyphs;
+    if (!view.valid()) return glyphs;
+    for (const Light& l : doc.lights) {
+        const auto at = view.project(l.position);
+        if (!at) continue;
+        LightGlyph g;
+        g.id = l.id;
+        g.centre = *at;
+        g.radius = l.type == LightType::Sphere
+                       ? std::max(kPointGlyphPx * 0.5f, view.projectedLength(l.position, l.radius))
+                       : kPointGlyphPx;
+        const Color c = glm::clamp(l.color, Color(0.0f), Color(1.0f));
+        g.color = QColor::fromRgbF(c.x, c.y, c.z);
+        glyphs.push_back(g);
+    }
+    return glyphs;
+}
+
+ObjectId pickLight(const std::vector<LightGlyph>& glyphs, const QPointF& p) {
+    ObjectId best = kNoObject;
+    double bestDist = 0.0;
+    for (const LightGlyph& g : glyphs) {
+        const double d = std::hypot(p.x() - g.centre.x(), p.y() - g.centre.y());
+        if (d <= std::max(g.radius, kMinPickPx) && (best == kNoObject || d < bestDist))
+            best = g.id, bestDist = d;
+    }
+    return best;
+}
+
+LightOverlay::LightOverlay(QWidget* parent) : QWidget(parent) {
+    setAttribute(Qt::WA_TransparentForMouseEvents);
+    setAttribute(Qt::WA_NoSystemBackground);
+}
+
+void LightOverlay::setGlyphs(std::vector<LightGlyph> glyphs, ObjectId selected) {
+    glyphs_ = std::move(glyphs);
+    selected_ = selected;
+    update();
+}
+
+void LightOverlay::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QColor highlight(kOutlineRgb[0], kOutlineRgb[1], kOutlineRgb[2]);
+    for (const LightGlyph& g : glyphs_) {
+        const bool selected = g.id == selected_;
+        const double r = g.radius;
+        if (r > kPointGlyphPx) {
+            // A sphere light: its outline, so the surfaces it lights stay visible through it.
+            p.setBrush(Qt::NoBrush);
+            p.setPen(QPen(selected ? highlight : g.color, selected ? 2.5 : 1.5, Qt::DashLine));
+            p.drawEllipse(g.centre, r, r);
+        }
+        const double dot = std::min(r, double(kPointGlyphPx));
+        p.setPen(QPen(selected ? highlight : QColor(20, 20, 20), selected ? 2.5 : 1.0));
+        p.setBrush(g.color);
+        p.drawEllipse(g.centre, dot, dot);
+    }
+}
+
+}  // namespace rs::ui

@@ -1,0 +1,64 @@
+// One G / R / S gesture (Blender's modal transforms): axis locks, typed values, snapping.
+#pragma once
+
+#include "scene/document.h"
+#include "view_projection.h"
+
+#include <QPointF>
+#include <QString>
+
+#include <vector>
+
+namespace rs::ui {
+
+/// What a gesture does to the selection.
+enum class TransformKind { Move, Rotate, Scale };
+
+/// The state of a gesture; result() is the document it shows for the input so far.
+class ModalTransform {
+public:
+    /// Ctrl while moving snaps to these steps.
+    static constexpr float kGridStep = 0.25f;
+    static constexpr float kAngleStepDeg = 15.0f;
+    static constexpr float kScaleStep = 0.1f;
+
+    /// What a key press meant.
+    enum class KeyResult { Updated, Confirm, Cancel, Unhandled };
+
+    ModalTransform(TransformKind kind, SceneDocument start, std::vector<ObjectId> ids,
+                   const QPointF& cursor);
+
+    /// X/Y/Z lock (again: unlock), G/R/S switch, digits . - Backspace type a value,
+    /// Enter confirms, Esc cancels.
+    KeyResult keyPress(int key, const QString& text);
+    /// The cursor moved; `snap` while Ctrl is held.
+    void setCursor(const QPointF& cursor, bool snap);
+    void setSnap(bool snap) { snap_ = snap; }
+    /// The start document with the gesture applied, as seen through `view`.
+    SceneDocument result(const ViewProjection& view) const;
+    /// A status line: "Rotate Z 45" and the like.
+    QString describe() const;
+
+    TransformKind kind() const { return kind_; }
+    const SceneDocument& start() const { return start_; }
+    const std::vector<ObjectId>& ids() const { return ids_; }
+    const QPointF& cursor() const { return cursor_; }
+
+private:
+    Vec3 axisVector() const;
+    bool typedValue(float& value) const;
+    Vec3 moveDelta(const ViewProjection& view) const;
+    float rotateDegrees(const ViewProjection& view, Vec3& axis) const;
+    Vec3 scaleFactors(const ViewProjection& view) const;
+
+    TransformKind kind_;
+    SceneDocument start_;
+    std::vector<ObjectId> ids_;
+    Vec3 pivot_;
+    QPointF startCursor_, cursor_;
+    bool snap_ = false;
+    int axis_ = -1;  ///< -1 free, else 0/1/2 for X/Y/Z.
+    QString typed_;
+};
+
+}  // namespace rs::ui

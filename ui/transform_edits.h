@@ -1,0 +1,28 @@
+// Move, rotate and scale of objects and lights about a pivot: the document side of G, R, S.
+#pragma once
+
+#include "scene/document.h"
+
+#include <optional>
+#include <vector>
+
+namespace rs::ui {
+
+/// World centre of an object (its shape's centre through its transform; a plane's point) or
+/// a light's position; nullopt when `id` is neither.
+std::optional<Vec3> entityCentre(const SceneDocument& doc, ObjectId id);
+/// The point gestures act about: the mean of the entities' centres.
+Vec3 pivotOf(const SceneDocument& doc, const std::vector<ObjectId>& ids);
+/// Moves every entity by `delta`.
+void translateAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3& delta);
+/// Rotates every entity by `degrees` about the line through `pivot` along unit `axis`.
+void rotateAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3& pivot,
+               const Vec3& axis, float degrees);
+/// Scales every entity by `factors` (world axes) about `pivot`; sphere lights scale their
+/// radius by the largest factor; planes only move.
+void scaleAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3& pivot,
+              const Vec3& factors);
+/// Euler angles in degrees (X, then Y, then Z, as Transform::rotate) of rotation matrix `r`.
+Vec3 eulerDegreesOf(const Mat4& r);
+
+}  // namespace rs::ui

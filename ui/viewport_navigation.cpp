@@ -1,0 +1,144 @@
+// Viewport view camera: navigation moves it and never the document; the session renders the
+// document through it (a camera edit to the session, no undo step, no modified flag).
+#include "viewport.h"
+
+#include "camera_navigation.h"
+#include "scene_editor.h"
+#include "session_controller.h"
+#include "snapshot/compiled_scene.h"
+#include "transform_edits.h"
+
+#include <algorithm>
+
+namespace rs::ui {
+
+namespace {
+/// How far short of the first surface behind the view F stops, as a share of its distance.
+constexpr float kWallClearance = 0.9f;
+/// Surfaces of the selection itself a framing ray passes through before it finds a wall.
+constexpr int kMaxSelfHits = 8;
+}  // namespace
+
+SceneDocument Viewport::viewDocument() const {
+    SceneDocument doc = editor_->document();
+    doc.camera = viewCamera_;
+    return doc;
+}
+
+void Viewport::onDocumentReset() {
+    viewCamera_ = editor_->document().camera;
+    throughScene_ = true;
+    const float len = glm::length(viewCamera_.up);
+    worldUp_ = len > 1e-6f ? viewCamera_.up / len : Vec3(0.0f, 1.0f, 0.0f);
+}
+
+void Viewport::onDocumentChanged() {
+    // Looking through the scene camera, its edits (property panel, undo) move the view too.
+    if (throughScene_) viewCamera_ = editor_->document().camera;
+    postView();
+}
+
+void Viewport::setView(const Camera& camera) {
+    viewCamera_ = camera;
+    throughScene_ = false;
+    postView();
+}
+
+void Viewport::postView() {
+    session_->requestUpdate(viewDocument());
+    redraw();
+}
+
+void Viewport::viewThroughSceneCamera() {
+    viewCamera_ = editor_->document().camera;
+    throughScene_ = true;
+    postView();
+}
+
+void Viewport::sceneCameraFromView() {
+    SceneDocument doc = editor_->document();
+    if (doc.camera == viewCamera_) {
+        throughScene_ = true;
+        return;
+    }
+    // Only the pose: lens and extras stay the scene camera's.
+    doc.camera.position = viewCamera_.position;
+    doc.camera.target = viewCamera_.target;
+    doc.camera.up = viewCamera_.up;
+    throughScene_ = true;
+    editor_->closeMerge();
+    editor_->edit(tr("Scene camera from view"), std::move(doc));
+    editor_->closeMerge();
+}
+
+void Viewport::setAxisView(AxisView v) {
+    static const Vec3 kDirs[] = {{0, 0, -1}, {0, 0, 1},  {-1, 0, 0},
+                                 {1, 0, 0},  {0, -1, 0}, {0, 1, 0}};
+    static const Vec3 kUps[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    Camera c = viewCamera_;
+    alignView(c, kDirs[int(v)], kUps[int(v)]);
+    setView(c);
+}
+
+Vec3 Viewport::orbitPivot(const QPoint& pos) const {
+    // The selection's centre; else the surface under the cursor; else the view's target.
+    const ObjectId sel = editor_->selection();
+    const SceneDocument& doc = editor_->document();
+    const Object* o = doc.findObject(sel);
+    const bool unbounded = o && std::holds_alternative<PlaneGeometry>(o->geometry);
+    if (!unbounded)
+        if (const auto c = entityCentre(doc, sel)) return *c;
+    if (const auto px = pixelAt(pos)) {
+        const std::size_t i = std::size_t(px->y()) * frame_->width + px->x();
+        const float depth = i < frame_->depth.size() ? frame_->depth[i] : kInfinity;
+        if (std::isfinite(depth)) {
+            const CameraModel cam(viewCamera_, frame_->width, frame_->height);
+            return cam.generateRay(px->x() + 0.5f, px->y() + 0.5f).at(depth);
+        }
+    }
+    return viewCamera_.target;
+}
+
+void Viewport::frameSelection() {
+    const ObjectId id = editor_->selection();
+    const SceneDocument& doc = editor_->document();
+    // The session's snapshot must hold the latest edits: its bounds and walls are used.
+    session_->flushUpdate();
+    const auto snapshot = session_->session().snapshot();
+    Vec3 center;
+    float radius = 1.0f;
+    if (const Light* l = doc.findLight(id)) {
+        center = l->position;
+        if (l->type == LightType::Sphere) radius = std::max(radius, l->radius);
+    } else {
+        const Aabb b = snapshot ? snapshot->objectBounds(id) : Aabb{};
+        if (b.empty()) return;
+        center = b.center();
+        radius = 0.5f * glm::length(b.extent());
+    }
+    // Cast from the centre towards where the view will stand: the first surface that is not
+    // the selection itself (a wall of the room) limits the distance.
+    float maxDistance = kInfinity;
+    const Vec3 back = viewCamera_.position - viewCamera_.target;
+    if (snapshot && glm::length(back) > 1e-6f) {
+        const Vec3 dir = glm::normalize(back);
+        Vec3 origin = center;
+        float travelled = 0.0f;
+        for (int i = 0; i < kMaxSelfHits; ++i) {
+            SurfaceHit hit;
+            if (!snapshot->intersect(Ray::make(origin, dir), kInfinity, hit)) break;
+            if (hit.id != id) {
+                maxDistance = (travelled + hit.t) * kWallClearance;
+                break;
+            }
+            const float step = hit.t + snapshot->epsilon();
+            origin += dir * step;
+            travelled += step;
+        }
+    }
+    Camera c = viewCamera_;
+    ui::frame(c, center, radius, maxDistance);
+    setView(c);
+}
+
+}  // namespace rs::ui
