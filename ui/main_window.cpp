@@ -41,6 +41,7 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), editor_(new SceneEditor(this)), prefs_(loadPreferences()) {
     session_ = std::make_unique<SessionController>(prefs_.threads);
     session_->session().setPolicy(prefs_.policy);
+    session_->session().setEngine(prefs_.engine);
     viewport_ = new Viewport(editor_, session_.get(), this);
     setCentralWidget(viewport_);
     setAcceptDrops(true);
@@ -300,8 +301,14 @@ PreferencesDialog* MainWindow::showPreferences() {
 
 void MainWindow::applyPreferences(const Preferences& prefs) {
     if (prefs.threads != prefs_.threads) session_->session().setThreads(prefs.threads);
+    const bool engineChanged = prefs.engine != prefs_.engine;
     prefs_ = prefs;
     session_->session().setPolicy(prefs.policy);
+    if (engineChanged) {
+        // The next update rebuilds the snapshot with the other engine; post one now.
+        session_->session().setEngine(prefs.engine);
+        session_->requestUpdate(viewport_->viewDocument());
+    }
     savePreferences(prefs);
 }
 

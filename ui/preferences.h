@@ -2,6 +2,7 @@
 // the dialog that edits them live.
 #pragma once
 
+#include "accel/ray_engine.h"
 #include "session/interaction_policy.h"
 
 #include <QDialog>
@@ -12,6 +13,7 @@ namespace rs::ui {
 struct Preferences {
     InteractionPolicy policy;
     int threads = 0;  ///< 0: all cores.
+    EngineKind engine = EngineKind::Embree;  ///< Who answers the viewport's ray queries.
 };
 
 /// Reads preferences from QSettings (defaults where absent or unreadable).
@@ -19,7 +21,7 @@ Preferences loadPreferences();
 /// Writes preferences to QSettings (the policy as policyToJson text).
 void savePreferences(const Preferences& prefs);
 
-/// One control per interaction policy setting plus the thread count; every change is
+/// One control per interaction policy setting plus the thread count and the ray engine; every change is
 /// announced at once through changed() so the session follows live.
 class PreferencesDialog : public QDialog {
     Q_OBJECT

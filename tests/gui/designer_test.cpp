@@ -34,6 +34,7 @@ private Q_SLOTS:
     void outOfRangeProperty_IsRejectedWithMessage();
     void saveAndReopen_GiveTheSameScene();
     void preferences_ChangeSessionPolicy();
+    void preferences_RayEngine_RebuildsTheViewportWithIt();
     void badSceneFile_ShowsErrorAndKeepsDocument();
     void addSphereLight_UndoRedo();
     void debugViews_ProduceImages();
@@ -205,6 +206,23 @@ void DesignerTest::preferences_ChangeSessionPolicy() {
     QCOMPARE(loadPreferences().policy, p);  // Stored for the next start.
     dialog->close();
     window_->applyPreferences(Preferences{});
+}
+
+void DesignerTest::preferences_RayEngine_RebuildsTheViewportWithIt() {
+    QCOMPARE(window_->session()->session().snapshot()->engineKind(), EngineKind::Embree);
+    PreferencesDialog* dialog = window_->showPreferences();
+    auto* engine = dialog->findChild<QComboBox*>(QStringLiteral("engine"));
+    QVERIFY(engine);
+    engine->setCurrentIndex(int(EngineKind::Builtin));
+    window_->session()->flushUpdate();
+    QVERIFY(window_->session()->session().waitUntilComplete(std::chrono::seconds(60)));
+    QCOMPARE(window_->session()->session().snapshot()->engineKind(), EngineKind::Builtin);
+    QCOMPARE(loadPreferences().engine, EngineKind::Builtin);  // Stored for the next start.
+    dialog->close();
+    window_->applyPreferences(Preferences{});
+    window_->session()->flushUpdate();
+    QVERIFY(window_->session()->session().waitUntilComplete(std::chrono::seconds(60)));
+    QCOMPARE(window_->session()->session().snapshot()->engineKind(), EngineKind::Embree);
 }
 
 void DesignerTest::badSceneFile_ShowsErrorAndKeepsDocument() {
