@@ -135,6 +135,14 @@ void Viewport::frameSelection() {
             origin += dir * step;
             travelled += step;
         }
+        // Walls and floors also limit it when the selection touches one: stepping out of the
+        // selection there can land behind the plane, where the cast above sees nothing.
+        for (const PlanePrimitive& p : snapshot->planes()) {
+            const float denom = glm::dot(dir, p.shape.normal);
+            if (denom == 0.0f) continue;
+            const float t = glm::dot(p.shape.point - center, p.shape.normal) / denom;
+            if (t > 0.0f) maxDistance = std::min(maxDistance, t * kWallClearance);
+        }
     }
     Camera c = viewCamera_;
     ui::frame(c, center, radius, maxDistance);
