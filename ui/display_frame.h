@@ -29,6 +29,8 @@ struct DisplayFrame {
     std::vector<uint8_t> flags;
     ToneMap tonemap = ToneMap::Clamp;
     float exposure = 0.0f;
+    uint64_t generation = 0;  ///< Newest edit whose traced pixels this frame holds.
+    uint64_t serial = 0;      ///< Bumped whenever the content changes.
 
     bool empty() const { return width <= 0 || height <= 0; }
     ObjectId idAt(int x, int y) const {

@@ -1,6 +1,7 @@
 // GlFrameView: texture upload of the deep frame and the full-screen draw.
 #include "gl_frame_view.h"
 
+#include <QElapsedTimer>
 #include <QFile>
 
 static void initRayStudioResources() { Q_INIT_RESOURCE(raystudio); }
@@ -17,6 +18,10 @@ QString shaderSource(const char* path) {
 
 GlFrameView::GlFrameView(QWidget* parent) : QOpenGLWidget(parent) {
     initRayStudioResources();
+    connect(this, &QOpenGLWidget::frameSwapped, this, [this] {
+        painted_.composeMs = paintEnd_.nsecsElapsed() / 1e6;
+        notifyPresented(painted_);
+    });
 }
 
 GlFrameView::~GlFrameView() {
@@ -81,6 +86,9 @@ void GlFrameView::upload() {
 }
 
 void GlFrameView::paintGL() {
+    QElapsedTimer timer;
+    timer.start();
+    painted_ = {};
     glClearColor(48 / 255.0f, 48 / 255.0f, 48 / 255.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     if (!ready_ || !frame_ || frame_->empty()) return;
@@ -111,6 +119,8 @@ void GlFrameView::paintGL() {
     vao_.release();
     program_.release();
     glActiveTexture(GL_TEXTURE0);
+    painted_ = {frame_->serial, frame_->generation, timer.nsecsElapsed() / 1e6, 0.0};
+    paintEnd_.start();
 }
 
 }  // namespace rs::ui

@@ -4,6 +4,7 @@
 
 #include "frame_view.h"
 
+#include <QElapsedTimer>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
@@ -39,6 +40,8 @@ private:
     GLuint colorTex_ = 0;
     GLuint idTex_ = 0;
     bool ready_ = false;
+    PresentedFrame painted_;  ///< What the last paintGL drew, reported once it is swapped.
+    QElapsedTimer paintEnd_;
 };
 
 }  // namespace rs::ui

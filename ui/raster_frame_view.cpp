@@ -5,6 +5,7 @@
 
 #include <QGuiApplication>
 #include <QOffscreenSurface>
+#include <QElapsedTimer>
 #include <QOpenGLContext>
 #include <QPainter>
 
@@ -37,7 +38,11 @@ RasterFrameView::RasterFrameView(QWidget* parent) : QWidget(parent) {
 
 void RasterFrameView::showFrame(std::shared_ptr<const DisplayFrame> frame, ViewMode mode,
                                 ObjectId selected) {
+    QElapsedTimer timer;
+    timer.start();
     image_ = frame ? viewportImage(*frame, mode, selected) : QImage();
+    shown_ = frame ? PresentedFrame{frame->serial, frame->generation, 0.0} : PresentedFrame{};
+    shown_.paintMs = timer.nsecsElapsed() / 1e6;  // The CPU shading is this view's upload.
     update();
 }
 
@@ -49,6 +54,7 @@ void RasterFrameView::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.fillRect(rect(), QColor(48, 48, 48));
     if (!image_.isNull()) p.drawImage(fitRect(size(), image_.size()), image_);
+    notifyPresented(shown_);
 }
 
 }  // namespace rs::ui

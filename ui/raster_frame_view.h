@@ -23,6 +23,7 @@ protected:
 
 private:
     QImage image_;
+    PresentedFrame shown_;  ///< The frame image_ comes from.
 };
 
 }  // namespace rs::ui

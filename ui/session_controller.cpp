@@ -3,6 +3,9 @@
 
 #include <QMetaObject>
 
+#include <algorithm>
+#include <chrono>
+
 namespace rs::ui {
 
 namespace {
@@ -35,6 +38,7 @@ SessionController::~SessionController() {
 
 void SessionController::requestUpdate(const SceneDocument& doc) {
     pendingDoc_ = doc;
+    ++requestSerial_;
     if (!updateTimer_.isActive()) {
         // The first change after a quiet spell goes out at once; later ones wait for the tick.
         onUpdateTimer();
@@ -44,9 +48,10 @@ void SessionController::requestUpdate(const SceneDocument& doc) {
 
 void SessionController::onUpdateTimer() {
     if (!pendingDoc_) return;
-    session_->update(*pendingDoc_);
+    const uint64_t generation = session_->update(*pendingDoc_);
     pendingDoc_.reset();
     ++updatesThisSecond_;
+    Q_EMIT documentPosted(requestSerial_, generation);
 }
 
 void SessionController::flushUpdate() {
@@ -63,7 +68,24 @@ void SessionController::endInteraction() {
     session_->endInteraction();
 }
 
-void SessionController::tileDone(int, int, int, int, uint64_t) {
+std::shared_ptr<const DisplayFrame> SessionController::displayFrame() {
+    const auto start = std::chrono::steady_clock::now();
+    const uint64_t generation = committedGeneration_.load();
+    auto frame = std::make_shared<DisplayFrame>(DisplayFrame::fromSession(*session_));
+    frame->generation = generation;
+    frame->serial = ++frameSerial_;
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ++handover_.count;
+    handover_.totalMs += ms;
+    handover_.maxMs = std::max(handover_.maxMs, ms);
+    return frame;
+}
+
+void SessionController::tileDone(int, int, int, int, uint64_t generation) {
+    uint64_t seen = committedGeneration_.load();
+    while (seen < generation && !committedGeneration_.compare_exchange_weak(seen, generation)) {
+    }
     if (framePending_.exchange(true)) return;
     QMetaObject::invokeMethod(
         this, [this] { if (!repaintTimer_.isActive()) repaintTimer_.start(); },

@@ -2,6 +2,7 @@
 // document updates are throttled to the display rate.
 #pragma once
 
+#include "display_frame.h"
 #include "session/render_session.h"
 
 #include <QObject>
@@ -37,6 +38,18 @@ public:
     /// Updates per second over the last second.
     double updatesPerSecond() const { return updatesPerSecond_; }
 
+    /// The frame to show now, copied from the session (GUI thread).
+    std::shared_ptr<const DisplayFrame> displayFrame();
+    /// Cost of handing frames to the display, for the designer's measurement.
+    struct HandoverStats {
+        int count = 0;
+        double totalMs = 0.0;
+        double maxMs = 0.0;
+    };
+    const HandoverStats& handoverStats() const { return handover_; }
+    /// Counts requestUpdate calls; documentPosted says which generation carried them.
+    uint64_t requestSerial() const { return requestSerial_; }
+
     // SessionObserver (worker threads).
     void tileDone(int x0, int y0, int x1, int y1, uint64_t generation) override;
     void passDone(const PassInfo& info) override;
@@ -49,6 +62,8 @@ Q_SIGNALS:
     void passFinished(const rs::PassInfo& info);
     /// Every pixel is final for `generation` (GUI thread).
     void frameCompleted(quint64 generation);
+    /// The document of requests up to `requestSerial` went to the session as `generation`.
+    void documentPosted(quint64 requestSerial, quint64 generation);
 
 private:
     void onRepaintTimer();
@@ -59,6 +74,11 @@ private:
     QTimer repaintTimer_;
     QTimer updateTimer_;
     std::optional<SceneDocument> pendingDoc_;
+    uint64_t requestSerial_ = 0;
+    /// Highest generation of a committed tile: a copy taken after reading it shows that edit.
+    std::atomic<uint64_t> committedGeneration_{0};
+    uint64_t frameSerial_ = 0;
+    HandoverStats handover_;
     int updatesThisSecond_ = 0;
     double updatesPerSecond_ = 0.0;
     QTimer rateTimer_;

@@ -1,5 +1,6 @@
 // raystudio: the designer. Opens the scene given on the command line, or the bundled
 // reference room found next to the build tree or the installed data.
+#include "drag_measurement.h"
 #include "main_window.h"
 
 #include <QApplication>
@@ -45,7 +46,9 @@ int main(int argc, char* argv[]) {
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file to open."));
+    rs::ui::addMeasurementOptions(parser);
     parser.process(app);
+    if (const int rc = rs::ui::runRequestedMeasurement(parser); rc >= 0) return rc;
 
     rs::ui::MainWindow window;
     window.show();

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Measures the designer end to end in a real window: Xvfb + openbox, Mesa's OpenGL, a
+# 1600x1000 main window on the reference room; drags the blue ball, then orbits the camera,
+# and prints what `raystudio --measure-drag/--measure-orbit` reports.
+#
+#   bash tests/bench/measure-designer.sh [--frames N] [--json] [--build DIR]
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+build=$root/build/release
+args=()
+while (($#)); do
+    case $1 in
+        --build) build=$2; shift 2 ;;
+        --frames) args+=(--frames "$2"); shift 2 ;;
+        --json) args+=(--json); shift ;;
+        *) echo "usage: $0 [--frames N] [--json] [--build DIR]" >&2; exit 2 ;;
+    esac
+done
+exe=$build/app/raystudio
+scene=$root/scenes/reference-room.scene.json
+[[ -x $exe ]] || { echo "$exe not built (cmake --build --preset release --target raystudio)" >&2; exit 2; }
+for tool in Xvfb openbox; do
+    command -v $tool >/dev/null || { echo "$tool not found (apt-get install xvfb openbox)" >&2; exit 2; }
+done
+
+# Xvfb picks a free display and writes its number to fd 3.
+tmp=$(mktemp -d)
+Xvfb -displayfd 3 -screen 0 1920x1200x24 -nolisten tcp 3>"$tmp/display" 2>"$tmp/xvfb.log" &
+xvfb=$!
+wm=
+cleanup() {
+    [[ -n $wm ]] && kill "$wm" 2>/dev/null || true
+    kill "$xvfb" 2>/dev/null || true
+    rm -rf "$tmp"
+}
+trap cleanup EXIT
+for _ in $(seq 100); do [[ -s $tmp/display ]] && break; sleep 0.1; done
+[[ -s $tmp/display ]] || { echo "Xvfb did not start: $(cat "$tmp/xvfb.log")" >&2; exit 1; }
+export DISPLAY=:$(cat "$tmp/display")
+openbox >/dev/null 2>&1 &
+wm=$!
+sleep 1
+
+export QT_QPA_PLATFORM=xcb LIBGL_ALWAYS_SOFTWARE=1
+"$exe" --measure-drag "$scene" --object "blue ball" "${args[@]}"
+"$exe" --measure-orbit "$scene" "${args[@]}"
