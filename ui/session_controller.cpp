@@ -10,6 +10,8 @@ namespace rs::ui {
 
 namespace {
 constexpr int kDisplayIntervalMs = 16;
+/// More committed tiles than this between two looks: copy the frame whole instead.
+constexpr std::size_t kMaxListedTiles = 16384;
 }
 
 SessionController::SessionController(int threads, QObject* parent)
@@ -70,21 +72,52 @@ void SessionController::endInteraction() {
 
 std::shared_ptr<const DisplayFrame> SessionController::displayFrame() {
     const auto start = std::chrono::steady_clock::now();
-    const uint64_t generation = committedGeneration_.load();
-    auto frame = std::make_shared<DisplayFrame>(DisplayFrame::fromSession(*session_));
-    frame->generation = generation;
-    frame->serial = ++frameSerial_;
+    std::vector<QRect> tiles;
+    bool everything = false;
+    uint64_t committed = 0;
+    {
+        // Every tile announced so far is copied below, so the copy holds their generation.
+        std::lock_guard lock(tilesMutex_);
+        tiles.swap(committedTiles_);
+        everything = tilesOverflowed_;
+        tilesOverflowed_ = false;
+        committed = committedGeneration_;
+    }
+    DisplayFrame& d = *frame_;
+    session_->withFrame([&](const DeepFrame& f, const std::shared_ptr<const CompiledScene>&) {
+        const auto locked = std::chrono::steady_clock::now();
+        if (everything) tiles.assign(1, QRect(0, 0, f.width, f.height));
+        // Edits clear the previous edit's re-traced overlay outside any tile: the flags follow
+        // whole when the generation moved (a byte a pixel).
+        const uint64_t generation = session_->generation();
+        d.refresh(f, mergeRects(std::move(tiles), QSize(f.width, f.height)),
+                  generation != frameSessionGeneration_);
+        frameSessionGeneration_ = generation;
+        handover_.copyMs += std::chrono::duration<double, std::milli>(
+                                std::chrono::steady_clock::now() - locked)
+                                .count();
+    });
+    if (const auto snapshot = session_->snapshot()) {
+        d.tonemap = snapshot->settings().tonemap;
+        d.exposure = snapshot->settings().exposure;
+    }
+    d.generation = std::max(d.generation, committed);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++handover_.count;
     handover_.totalMs += ms;
     handover_.maxMs = std::max(handover_.maxMs, ms);
-    return frame;
+    return frame_;
 }
 
-void SessionController::tileDone(int, int, int, int, uint64_t generation) {
-    uint64_t seen = committedGeneration_.load();
-    while (seen < generation && !committedGeneration_.compare_exchange_weak(seen, generation)) {
+void SessionController::tileDone(int x0, int y0, int x1, int y1, uint64_t generation) {
+    {
+        std::lock_guard lock(tilesMutex_);
+        if (committedTiles_.size() < kMaxListedTiles)
+            committedTiles_.emplace_back(QPoint(x0, y0), QPoint(x1 - 1, y1 - 1));
+        else
+            tilesOverflowed_ = true;
+        committedGeneration_ = std::max(committedGeneration_, generation);
     }
     if (framePending_.exchange(true)) return;
     QMetaObject::invokeMethod(

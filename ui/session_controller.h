@@ -6,11 +6,14 @@
 #include "session/render_session.h"
 
 #include <QObject>
+#include <QRect>
 #include <QTimer>
 
 #include <atomic>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <vector>
 
 Q_DECLARE_METATYPE(rs::PassInfo)
 
@@ -38,13 +41,15 @@ public:
     /// Updates per second over the last second.
     double updatesPerSecond() const { return updatesPerSecond_; }
 
-    /// The frame to show now, copied from the session (GUI thread).
+    /// The frame to show now (GUI thread). One frame, refreshed in place: only the tiles
+    /// committed since the last call are copied, under a short lock.
     std::shared_ptr<const DisplayFrame> displayFrame();
     /// Cost of handing frames to the display, for the designer's measurement.
     struct HandoverStats {
         int count = 0;
         double totalMs = 0.0;
         double maxMs = 0.0;
+        double copyMs = 0.0;  ///< Of totalMs, the part spent copying (the rest waits for the lock).
     };
     const HandoverStats& handoverStats() const { return handover_; }
     /// Counts requestUpdate calls; documentPosted says which generation carried them.
@@ -75,9 +80,14 @@ private:
     QTimer updateTimer_;
     std::optional<SceneDocument> pendingDoc_;
     uint64_t requestSerial_ = 0;
-    /// Highest generation of a committed tile: a copy taken after reading it shows that edit.
-    std::atomic<uint64_t> committedGeneration_{0};
-    uint64_t frameSerial_ = 0;
+    /// Tiles committed since displayFrame() last looked (worker threads add, GUI drains), and
+    /// the highest generation of any tile announced.
+    std::mutex tilesMutex_;
+    std::vector<QRect> committedTiles_;
+    uint64_t committedGeneration_ = 0;
+    bool tilesOverflowed_ = false;  ///< Too many to list: copy everything.
+    std::shared_ptr<DisplayFrame> frame_ = std::make_shared<DisplayFrame>();
+    uint64_t frameSessionGeneration_ = 0;  ///< Session generation at the last refresh.
     HandoverStats handover_;
     int updatesThisSecond_ = 0;
     double updatesPerSecond_ = 0.0;
