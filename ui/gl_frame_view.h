@@ -1,5 +1,6 @@
 // The OpenGL frame view: HDR and id textures on a full-screen quad; tone mapping and the
-// selection outline in the fragment shader (thesis 3.3).
+// selection outline in the fragment shader (thesis 3.3). Textures are kept between frames and
+// only the rectangles the frame reports as changed are uploaded.
 #pragma once
 
 #include "frame_view.h"
@@ -29,16 +30,31 @@ protected:
     void paintGL() override;
 
 private:
+    /// What one texture holds: the frame and serial it was last brought up to date with.
+    struct Uploaded {
+        const DisplayFrame* frame = nullptr;
+        uint64_t serial = 0;
+        ViewMode mode = ViewMode::Color;
+    };
     void upload();
+    void allocate(int width, int height);
+    /// The rectangles of `frame_` that `texture` lacks (all of it when it cannot tell).
+    std::vector<QRect> stale(const Uploaded& texture) const;
+    void uploadColor();
+    void uploadIds();
+    void uploadDebug();
 
     std::shared_ptr<const DisplayFrame> frame_;
     ViewMode mode_ = ViewMode::Color;
     ObjectId selected_ = kNoObject;
-    bool dirty_ = false;
     QOpenGLShaderProgram program_;
     QOpenGLVertexArrayObject vao_;
-    GLuint colorTex_ = 0;
-    GLuint idTex_ = 0;
+    GLuint colorTex_ = 0;  ///< Linear HDR colour as RGB16F: half precision is far below a display step.
+    GLuint idTex_ = 0;     ///< Object ids (R32UI), read only for the selection outline.
+    GLuint debugTex_ = 0;  ///< A debug view as 8-bit RGBA, made on the CPU while shown.
+    QSize texSize_;
+    Uploaded color_, ids_, debug_;
+    std::vector<uint16_t> half_;  ///< Staging for colour rectangles (qfloat16 bits).
     bool ready_ = false;
     PresentedFrame painted_;  ///< What the last paintGL drew, reported once it is swapped.
     QElapsedTimer paintEnd_;
