@@ -49,7 +49,8 @@ struct DisplayFrame {
         return x >= 0 && y >= 0 && x < width && y < height ? id[std::size_t(y) * width + x]
                                                             : kNoObject;
     }
-    /// Copies the session's current frame (the whole frame under its lock: tests compare with it).
+    /// Copies the session's current frame (the whole frame under its lock: tests compare with
+    /// it). Tone map and exposure are the snapshot's, which edits that trace nothing may keep.
     static DisplayFrame fromSession(const RenderSession& session);
 
     /// Copies `rects` of `f` into this frame (all of it when the sizes differ) and records them

@@ -51,9 +51,15 @@ void SessionController::requestUpdate(const SceneDocument& doc) {
 void SessionController::onUpdateTimer() {
     if (!pendingDoc_) return;
     const uint64_t generation = session_->update(*pendingDoc_);
+    // Tone mapping and exposure trace nothing, so no tile will announce them: repaint here.
+    const bool displayChanged = pendingDoc_->render.tonemap != postedTonemap_ ||
+                                pendingDoc_->render.exposure != postedExposure_;
+    postedTonemap_ = pendingDoc_->render.tonemap;
+    postedExposure_ = pendingDoc_->render.exposure;
     pendingDoc_.reset();
     ++updatesThisSecond_;
     Q_EMIT documentPosted(requestSerial_, generation);
+    if (displayChanged) Q_EMIT frameUpdated();
 }
 
 void SessionController::flushUpdate() {
@@ -97,9 +103,10 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame() {
                                 std::chrono::steady_clock::now() - locked)
                                 .count();
     });
-    if (const auto snapshot = session_->snapshot()) {
-        d.tonemap = snapshot->settings().tonemap;
-        d.exposure = snapshot->settings().exposure;
+    if (d.tonemap != postedTonemap_ || d.exposure != postedExposure_) {
+        d.tonemap = postedTonemap_;
+        d.exposure = postedExposure_;
+        ++d.serial;
     }
     d.generation = std::max(d.generation, committed);
     const double ms =

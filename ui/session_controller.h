@@ -42,7 +42,8 @@ public:
     double updatesPerSecond() const { return updatesPerSecond_; }
 
     /// The frame to show now (GUI thread). One frame, refreshed in place: only the tiles
-    /// committed since the last call are copied, under a short lock.
+    /// committed since the last call are copied, under a short lock. Exposure and tone
+    /// mapping are those of the document posted last, which edits that trace nothing change.
     std::shared_ptr<const DisplayFrame> displayFrame();
     /// Cost of handing frames to the display, for the designer's measurement.
     struct HandoverStats {
@@ -88,6 +89,9 @@ private:
     bool tilesOverflowed_ = false;  ///< Too many to list: copy everything.
     std::shared_ptr<DisplayFrame> frame_ = std::make_shared<DisplayFrame>();
     uint64_t frameSessionGeneration_ = 0;  ///< Session generation at the last refresh.
+    /// Display settings of the document posted last.
+    ToneMap postedTonemap_ = ToneMap::Clamp;
+    float postedExposure_ = 0.0f;
     HandoverStats handover_;
     int updatesThisSecond_ = 0;
     double updatesPerSecond_ = 0.0;
