@@ -33,8 +33,12 @@ DisplayFrame DisplayFrame::fromSession(const RenderSession& session) {
 
 namespace {
 
-/// Refreshes this many serials back can still be told apart; older views redo everything.
-constexpr std::size_t kDamageKept = 64;
+/// Rectangles remembered: enough for several refreshes of scattered tiles (a 1280x720 frame
+/// has 920); a view that fell further behind redoes everything.
+constexpr std::size_t kDamageKept = 4096;
+
+/// Edge of the blocks a tile is split into to find what really changed.
+constexpr int kDamageBlock = 8;
 
 template <class T>
 void copyRect(std::vector<T>& dst, const std::vector<T>& src, int width, const QRect& r) {
@@ -42,6 +46,16 @@ void copyRect(std::vector<T>& dst, const std::vector<T>& src, int width, const Q
         const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(r.left());
         std::memcpy(dst.data() + i, src.data() + i, sizeof(T) * std::size_t(r.width()));
     }
+}
+
+template <class T>
+bool differs(const std::vector<T>& a, const std::vector<T>& b, int width, const QRect& r) {
+    for (int y = r.top(); y <= r.bottom(); ++y) {
+        const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(r.left());
+        if (std::memcmp(a.data() + i, b.data() + i, sizeof(T) * std::size_t(r.width())) != 0)
+            return true;
+    }
+    return false;
 }
 
 }  // namespace
@@ -63,19 +77,40 @@ void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, 
         return;
     }
     if (rects.empty() && !allFlags) return;
-    ++serial;
+    // A tile is announced whole though an edit may re-trace a few of its pixels: only blocks
+    // whose values differ are copied and reported, so views re-shade and upload just those.
+    std::vector<QRect> changed;
+    bool flagsChanged = allFlags;  // Only the debug views show flags: a new serial, no damage.
     for (const QRect& raw : rects) {
         const QRect r = raw & all;
         if (r.isEmpty()) continue;
-        copyRect(color, f.color, width, r);
-        copyRect(id, f.id, width, r);
-        copyRect(normal, f.normal, width, r);
-        copyRect(depth, f.depth, width, r);
-        copyRect(cost, f.cost, width, r);
-        if (!allFlags) copyRect(flags, f.flags, width, r);
-        damage.push_back({serial, r});
+        if (!allFlags && differs(flags, f.flags, width, r)) {
+            copyRect(flags, f.flags, width, r);
+            flagsChanged = true;
+        }
+        const int bx0 = r.left() / kDamageBlock * kDamageBlock;
+        const int by0 = r.top() / kDamageBlock * kDamageBlock;
+        for (int by = by0; by <= r.bottom(); by += kDamageBlock) {
+            for (int bx = bx0; bx <= r.right(); bx += kDamageBlock) {
+                const QRect b = QRect(bx, by, kDamageBlock, kDamageBlock) & r;
+                if (!differs(color, f.color, width, b) && !differs(id, f.id, width, b) &&
+                    !differs(depth, f.depth, width, b) && !differs(normal, f.normal, width, b) &&
+                    !differs(cost, f.cost, width, b))
+                    continue;
+                copyRect(color, f.color, width, b);
+                copyRect(id, f.id, width, b);
+                copyRect(normal, f.normal, width, b);
+                copyRect(depth, f.depth, width, b);
+                copyRect(cost, f.cost, width, b);
+                changed.push_back(b);
+            }
+        }
     }
     if (allFlags) std::memcpy(flags.data(), f.flags.data(), flags.size());
+    if (changed.empty() && !flagsChanged) return;
+    ++serial;
+    for (const QRect& r : mergeRects(std::move(changed), QSize(width, height)))
+        damage.push_back({serial, r});
     if (damage.size() > kDamageKept) {
         const std::size_t n = damage.size() - kDamageKept;
         damageFloor = std::max(damageFloor, damage[n - 1].serial);
