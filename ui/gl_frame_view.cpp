@@ -3,6 +3,7 @@
 
 #include <QElapsedTimer>
 #include <QFile>
+#include <QWidget>
 #include <QtCore/qfloat16.h>
 
 static void initRayStudioResources() { Q_INIT_RESOURCE(raystudio); }
@@ -17,9 +18,11 @@ QString shaderSource(const char* path) {
 }
 }  // namespace
 
-GlFrameView::GlFrameView(QWidget* parent) : QOpenGLWidget(parent) {
+GlFrameView::GlFrameView(QWidget* parent) : QOpenGLWindow(QOpenGLWindow::NoPartialUpdate) {
     initRayStudioResources();
-    connect(this, &QOpenGLWidget::frameSwapped, this, [this] {
+    setFlag(Qt::WindowTransparentForInput);
+    container_ = QWidget::createWindowContainer(this, parent);
+    connect(this, &QOpenGLWindow::frameSwapped, this, [this] {
         painted_.composeMs = paintEnd_.nsecsElapsed() / 1e6;
         notifyPresented(painted_);
     });

@@ -1,6 +1,8 @@
 // The OpenGL frame view: HDR and id textures on a full-screen quad; tone mapping and the
 // selection outline in the fragment shader (thesis 3.3). Textures are kept between frames and
-// only the rectangles the frame reports as changed are uploaded.
+// only the rectangles the frame reports as changed are uploaded. It is a native child window
+// that swaps by itself: a QOpenGLWidget would make every repaint compose the whole main
+// window through OpenGL, which with software GL cost more than the rest of the frame.
 #pragma once
 
 #include "frame_view.h"
@@ -9,17 +11,19 @@
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
-#include <QOpenGLWidget>
+#include <QOpenGLWindow>
 
 namespace rs::ui {
 
-/// Uploads the frame as textures and lets the shader do the per-pixel display work.
-class GlFrameView : public QOpenGLWidget, public FrameView, protected QOpenGLExtraFunctions {
+/// Uploads the frame as textures and lets the shader do the per-pixel display work. Input
+/// passes through the window to the widgets under it (the viewport).
+class GlFrameView : public QOpenGLWindow, public FrameView, protected QOpenGLExtraFunctions {
     Q_OBJECT
 public:
-    explicit GlFrameView(QWidget* parent = nullptr);
+    /// Makes the window and its container, a child of `parent` that owns the window.
+    explicit GlFrameView(QWidget* parent);
     ~GlFrameView() override;
-    QWidget* widget() override { return this; }
+    QWidget* widget() override { return container_; }
     void showFrame(std::shared_ptr<const DisplayFrame> frame, ViewMode mode,
                    ObjectId selected) override;
     QImage grabImage() override { return grabFramebuffer(); }
@@ -44,6 +48,7 @@ private:
     void uploadIds();
     void uploadDebug();
 
+    QWidget* container_ = nullptr;
     std::shared_ptr<const DisplayFrame> frame_;
     ViewMode mode_ = ViewMode::Color;
     ObjectId selected_ = kNoObject;
