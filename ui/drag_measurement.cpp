@@ -267,6 +267,15 @@ int Measurement::run() {
             break;
         }
     const double renderMs = renderImageMs();
+    // What a repaint costs with the session idle, to tell display cost from CPU contention.
+    std::vector<double> idlePaint, idleCompose;
+    for (int k = 0; k < 10; ++k) {
+        const std::size_t seen = presents_.size();
+        window_.viewport()->refresh();
+        if (!waitUntil([&] { return presents_.size() > seen; }, 5000)) break;
+        idlePaint.push_back(presents_.back().frame.paintMs);
+        idleCompose.push_back(presents_.back().frame.composeMs);
+    }
 
     const auto frame = window_.viewport()->frame();
     QPoint start = window_.viewport()->rect().center();
@@ -345,6 +354,8 @@ int Measurement::run() {
     o[QStringLiteral("viewport_full_frame_ms")] = fullPassMs;
     o[QStringLiteral("open_to_final_shown_ms")] = msBetween(openStart, openShown);
     o[QStringLiteral("render_image_ms")] = renderMs;
+    o[QStringLiteral("idle_paint_median_ms")] = quantile(idlePaint, 0.5);
+    o[QStringLiteral("idle_compose_median_ms")] = quantile(idleCompose, 0.5);
     window_.editor()->undoStack()->setClean();  // No save prompt.
 
     if (request_.json) {
@@ -371,6 +382,8 @@ int Measurement::run() {
                 num("input_handling_median_ms"), num("input_handling_max_ms"));
     std::printf("  paint                median %6.2f ms   max %6.2f ms   then %.2f ms to the swap\n",
                 num("paint_median_ms"), num("paint_max_ms"), num("compose_median_ms"));
+    std::printf("  idle repaint         paint %6.2f ms   then %.2f ms to the swap\n",
+                num("idle_paint_median_ms"), num("idle_compose_median_ms"));
     std::printf("  GUI thread stalls    longest %5.1f ms   p99 %5.1f ms   %3.0f %% of the time in blocks over 16 ms\n",
                 num("gui_stall_max_ms"), num("gui_stall_p99_ms"), 100.0 * num("gui_blocked_share"));
     std::printf("  release to final     %6.1f ms\n", num("release_to_final_shown_ms"));
