@@ -2,14 +2,6 @@
 // posted to the viewport at 60 Hz, and timestamps from the event queue to the swapped frame.
 #include "drag_measurement.h"
 
-#include "error_reporter.h"
-#include "integrator/renderer.h"
-#include "main_window.h"
-#include "preferences.h"
-#include "scene_editor.h"
-#include "session_controller.h"
-#include "viewport.h"
-
 #include <QCommandLineParser>
 #include <QEventLoop>
 #include <QJsonDocument>
@@ -17,13 +9,20 @@
 #include <QMouseEvent>
 #include <QStandardPaths>
 #include <QTimer>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
 #include <vector>
+
+#include "error_reporter.h"
+#include "integrator/renderer.h"
+#include "main_window.h"
+#include "preferences.h"
+#include "scene_editor.h"
+#include "session_controller.h"
+#include "viewport.h"
 
 namespace rs::ui {
 
@@ -189,8 +188,9 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
     int neverShown = 0;
     for (std::size_t i = 1; i < inputs_.size(); ++i) {
         if (inputs_[i].request <= inputs_[i - 1].request) continue;  // No edit.
-        const auto post = std::find_if(posted_.begin(), posted_.end(),
-                                       [&](const auto& p) { return p.first >= inputs_[i].request; });
+        const auto post = std::find_if(posted_.begin(), posted_.end(), [&](const auto& p) {
+            return p.first >= inputs_[i].request;
+        });
         const auto shown =
             post == posted_.end()
                 ? presents_.end()
@@ -240,8 +240,9 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
 int Measurement::run() {
     SessionController* controller = window_.session();
     FrameView* view = window_.viewport()->frameView();
-    view->setPresentedHandler(
-        [this](const PresentedFrame& f) { presents_.push_back({Clock::now(), f}); });
+    view->setPresentedHandler([this](const PresentedFrame& f) {
+        presents_.push_back({Clock::now(), f});
+    });
     QObject::connect(controller, &SessionController::documentPosted, &window_,
                      [this](quint64 r, quint64 g) { posted_.emplace_back(r, g); });
     QObject::connect(controller, &SessionController::passFinished, &window_,
@@ -326,14 +327,15 @@ int Measurement::run() {
     window_.viewport()->installEventFilter(&recorder);
     driver.start();
     probe.start();
-    const bool handled = waitUntil(
-        [&] { return inputs_.back().handled != Clock::time_point{}; }, 60000 + request_.frames * 100);
+    const bool handled = waitUntil([&] { return inputs_.back().handled != Clock::time_point{}; },
+                                   60000 + request_.frames * 100);
     probe.stop();
     driver.stop();
     window_.viewport()->removeEventFilter(&recorder);
     Clock::time_point finalShown;
     if (!handled || !waitFinalShown(&finalShown)) {
-        std::fprintf(stderr, "raystudio: the %s did not finish\n", request_.orbit ? "orbit" : "drag");
+        std::fprintf(stderr, "raystudio: the %s did not finish\n",
+                     request_.orbit ? "orbit" : "drag");
         return 1;
     }
 
@@ -345,11 +347,14 @@ int Measurement::run() {
     o[QStringLiteral("object")] = request_.object;
     o[QStringLiteral("moves")] = request_.frames;
     o[QStringLiteral("opengl")] = view->usesOpenGL();
-    o[QStringLiteral("viewport")] = QStringLiteral("%1x%2").arg(window_.viewport()->width()).arg(window_.viewport()->height());
+    o[QStringLiteral("viewport")] =
+        QStringLiteral("%1x%2").arg(window_.viewport()->width()).arg(window_.viewport()->height());
     o[QStringLiteral("frame")] = QStringLiteral("%1x%2").arg(frame->width).arg(frame->height);
-    o[QStringLiteral("handover_mean_ms")] = handovers > 0 ? (handover.totalMs - handover0.totalMs) / handovers : 0.0;
+    o[QStringLiteral("handover_mean_ms")] =
+        handovers > 0 ? (handover.totalMs - handover0.totalMs) / handovers : 0.0;
     o[QStringLiteral("handover_max_ms")] = handover.maxMs;
-    o[QStringLiteral("handover_copy_mean_ms")] = handovers > 0 ? (handover.copyMs - handover0.copyMs) / handovers : 0.0;
+    o[QStringLiteral("handover_copy_mean_ms")] =
+        handovers > 0 ? (handover.copyMs - handover0.copyMs) / handovers : 0.0;
     o[QStringLiteral("release_to_final_shown_ms")] = msBetween(inputs_.back().due, finalShown);
     o[QStringLiteral("viewport_full_frame_ms")] = fullPassMs;
     o[QStringLiteral("open_to_final_shown_ms")] = msBetween(openStart, openShown);
@@ -367,28 +372,36 @@ int Measurement::run() {
                 qPrintable(o[QStringLiteral("kind")].toString()), qPrintable(request_.scene),
                 request_.orbit ? "" : qPrintable(QStringLiteral(" \"%1\"").arg(request_.object)),
                 request_.frames, qPrintable(o[QStringLiteral("viewport")].toString()),
-                view->usesOpenGL() ? "OpenGL" : "raster", qPrintable(o[QStringLiteral("frame")].toString()));
+                view->usesOpenGL() ? "OpenGL" : "raster",
+                qPrintable(o[QStringLiteral("frame")].toString()));
     std::printf("  frames shown          %6.1f /s distinct, %.1f /s with a newer edit\n",
                 num("frames_per_s"), num("generations_per_s"));
-    std::printf("  input to display     median %6.1f ms   p90 %6.1f ms   (%d edits, %d never shown)\n",
-                num("latency_median_ms"), num("latency_p90_ms"), o[QStringLiteral("edits")].toInt(),
-                o[QStringLiteral("edits_never_shown")].toInt());
+    std::printf(
+        "  input to display     median %6.1f ms   p90 %6.1f ms   (%d edits, %d never shown)\n",
+        num("latency_median_ms"), num("latency_p90_ms"), o[QStringLiteral("edits")].toInt(),
+        o[QStringLiteral("edits_never_shown")].toInt());
     std::printf("  interactive pass     median %6.1f ms   (%d passes, %d cancelled)\n",
                 num("interactive_pass_median_ms"), o[QStringLiteral("interactive_passes")].toInt(),
                 o[QStringLiteral("interactive_passes_cancelled")].toInt());
-    std::printf("  frame hand-over      mean   %6.2f ms   max %6.2f ms   (copying %.2f ms of the mean)\n",
-                num("handover_mean_ms"), num("handover_max_ms"), num("handover_copy_mean_ms"));
+    std::printf(
+        "  frame hand-over      mean   %6.2f ms   max %6.2f ms   (copying %.2f ms of the mean)\n",
+        num("handover_mean_ms"), num("handover_max_ms"), num("handover_copy_mean_ms"));
     std::printf("  mouse event handling median %6.2f ms   max %6.2f ms\n",
                 num("input_handling_median_ms"), num("input_handling_max_ms"));
-    std::printf("  paint                median %6.2f ms   max %6.2f ms   then %.2f ms to the swap\n",
-                num("paint_median_ms"), num("paint_max_ms"), num("compose_median_ms"));
+    std::printf(
+        "  paint                median %6.2f ms   max %6.2f ms   then %.2f ms to the swap\n",
+        num("paint_median_ms"), num("paint_max_ms"), num("compose_median_ms"));
     std::printf("  idle repaint         paint %6.2f ms   then %.2f ms to the swap\n",
                 num("idle_paint_median_ms"), num("idle_compose_median_ms"));
-    std::printf("  GUI thread stalls    longest %5.1f ms   p99 %5.1f ms   %3.0f %% of the time in blocks over 16 ms\n",
-                num("gui_stall_max_ms"), num("gui_stall_p99_ms"), 100.0 * num("gui_blocked_share"));
+    std::printf(
+        "  GUI thread stalls    longest %5.1f ms   p99 %5.1f ms   %3.0f %% of the time in blocks "
+        "over 16 ms\n",
+        num("gui_stall_max_ms"), num("gui_stall_p99_ms"), 100.0 * num("gui_blocked_share"));
     std::printf("  release to final     %6.1f ms\n", num("release_to_final_shown_ms"));
-    std::printf("  full frame           viewport pass %.1f ms (open to shown %.1f ms), renderImage %.1f ms\n",
-                num("viewport_full_frame_ms"), num("open_to_final_shown_ms"), num("render_image_ms"));
+    std::printf(
+        "  full frame           viewport pass %.1f ms (open to shown %.1f ms), renderImage %.1f "
+        "ms\n",
+        num("viewport_full_frame_ms"), num("open_to_final_shown_ms"), num("render_image_ms"));
     return 0;
 }
 
@@ -401,23 +414,27 @@ void addMeasurementOptions(QCommandLineParser& parser) {
     parser.addOption({QStringLiteral("measure-orbit"),
                       QStringLiteral("Measure orbiting the camera in SCENE, then exit."),
                       QStringLiteral("SCENE")});
-    parser.addOption({QStringLiteral("object"), QStringLiteral("Object to drag."), QStringLiteral("NAME")});
+    parser.addOption(
+        {QStringLiteral("object"), QStringLiteral("Object to drag."), QStringLiteral("NAME")});
     parser.addOption({QStringLiteral("frames"), QStringLiteral("Mouse moves (60 per second)."),
                       QStringLiteral("N"), QStringLiteral("240")});
-    parser.addOption({QStringLiteral("json"), QStringLiteral("Print the measurement as one JSON line.")});
+    parser.addOption(
+        {QStringLiteral("json"), QStringLiteral("Print the measurement as one JSON line.")});
 }
 
 int runRequestedMeasurement(const QCommandLineParser& parser) {
     Request r;
     r.orbit = parser.isSet(QStringLiteral("measure-orbit"));
     if (!r.orbit && !parser.isSet(QStringLiteral("measure-drag"))) return -1;
-    r.scene = parser.value(r.orbit ? QStringLiteral("measure-orbit") : QStringLiteral("measure-drag"));
+    r.scene =
+        parser.value(r.orbit ? QStringLiteral("measure-orbit") : QStringLiteral("measure-drag"));
     r.object = parser.value(QStringLiteral("object"));
     bool ok = false;
     r.frames = parser.value(QStringLiteral("frames")).toInt(&ok);
     r.json = parser.isSet(QStringLiteral("json"));
     if (!ok || r.frames < 2 || (!r.orbit && r.object.isEmpty())) {
-        std::fprintf(stderr, "raystudio: --measure-drag needs --object NAME; --frames needs N >= 2\n");
+        std::fprintf(stderr,
+                     "raystudio: --measure-drag needs --object NAME; --frames needs N >= 2\n");
         return 2;
     }
     QStandardPaths::setTestModeEnabled(true);  // Default preferences, not the user's.

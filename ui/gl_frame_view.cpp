@@ -99,8 +99,9 @@ void GlFrameView::uploadColor() {
         const std::size_t row = 3 * std::size_t(r.width());
         half_.resize(row * std::size_t(r.height()));
         for (int y = r.top(); y <= r.bottom(); ++y)
-            qFloatToFloat16(reinterpret_cast<qfloat16*>(half_.data()) + row * std::size_t(y - r.top()),
-                            &f.color[std::size_t(y) * f.width + r.left()][0], qsizetype(row));
+            qFloatToFloat16(
+                reinterpret_cast<qfloat16*>(half_.data()) + row * std::size_t(y - r.top()),
+                &f.color[std::size_t(y) * f.width + r.left()][0], qsizetype(row));
         glTexSubImage2D(GL_TEXTURE_2D, 0, r.x(), r.y(), r.width(), r.height(), GL_RGB,
                         GL_HALF_FLOAT, half_.data());
     }

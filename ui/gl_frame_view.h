@@ -54,7 +54,8 @@ private:
     ObjectId selected_ = kNoObject;
     QOpenGLShaderProgram program_;
     QOpenGLVertexArrayObject vao_;
-    GLuint colorTex_ = 0;  ///< Linear HDR colour as RGB16F: half precision is far below a display step.
+    /// Linear HDR colour as RGB16F: half precision is far below an 8-bit display step.
+    GLuint colorTex_ = 0;
     GLuint idTex_ = 0;     ///< Object ids (R32UI), read only for the selection outline.
     GLuint debugTex_ = 0;  ///< A debug view as 8-bit RGBA, made on the CPU while shown.
     QSize texSize_;

@@ -99,9 +99,9 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame() {
         d.refresh(f, mergeRects(std::move(tiles), QSize(f.width, f.height)),
                   generation != frameSessionGeneration_);
         frameSessionGeneration_ = generation;
-        handover_.copyMs += std::chrono::duration<double, std::milli>(
-                                std::chrono::steady_clock::now() - locked)
-                                .count();
+        handover_.copyMs +=
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - locked)
+                .count();
     });
     if (d.tonemap != postedTonemap_ || d.exposure != postedExposure_) {
         d.tonemap = postedTonemap_;

@@ -1,14 +1,12 @@
 // The display path under QT_QPA_PLATFORM=offscreen (raster viewport): the frame handed over
 // tile by tile ends equal to the session's, and exposure edits reach the viewport and export.
-#include "gui_test_support.h"
-
-#include "raster_frame_view.h"
-#include "scene_edits.h"
-
 #include <QTemporaryDir>
 #include <QtTest>
-
 #include <cstring>
+
+#include "gui_test_support.h"
+#include "raster_frame_view.h"
+#include "scene_edits.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -67,7 +65,8 @@ static int maxDifference(const QImage& a, const QImage& b) {
     int worst = 0;
     for (int y = 0; y < a.height(); ++y)
         for (int x = 0; x < 3 * a.width(); ++x)
-            worst = std::max(worst, std::abs(int(a.constScanLine(y)[x]) - int(b.constScanLine(y)[x])));
+            worst =
+                std::max(worst, std::abs(int(a.constScanLine(y)[x]) - int(b.constScanLine(y)[x])));
     return worst;
 }
 
@@ -81,13 +80,15 @@ void DisplayTest::mergeRects_CoversTheSamePixels() {
     std::vector<QRect> tiles;
     for (int y = 0; y < 100; y += 32)
         for (int x = 0; x < 200; x += 32)
-            if ((x / 32 + y / 32) % 3 != 0) tiles.push_back(QRect(x, y, 32, 32) & QRect(QPoint(), frame));
+            if ((x / 32 + y / 32) % 3 != 0)
+                tiles.push_back(QRect(x, y, 32, 32) & QRect(QPoint(), frame));
     tiles.push_back(tiles.front());  // A tile committed twice.
     auto cover = [&](const std::vector<QRect>& rects) {
         std::vector<uint8_t> c(std::size_t(frame.width() * frame.height()), 0);
         for (const QRect& r : rects)
             for (int y = r.top(); y <= r.bottom(); ++y)
-                for (int x = r.left(); x <= r.right(); ++x) c[std::size_t(y * frame.width() + x)] = 1;
+                for (int x = r.left(); x <= r.right(); ++x)
+                    c[std::size_t(y * frame.width() + x)] = 1;
         return c;
     };
     const std::vector<QRect> merged = mergeRects(tiles, frame);
@@ -143,7 +144,9 @@ void DisplayTest::exposureEdit_ChangesShownImageAndExport_UndoRestoresThem() {
     // The session's pixels shaded with the document's exposure.
     DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
     full.exposure = w.editor()->document().render.exposure;
-    QCOMPARE(brighter, viewportImage(full, ViewMode::Color, kNoObject).convertToFormat(QImage::Format_RGB888));
+    QCOMPARE(
+        brighter,
+        viewportImage(full, ViewMode::Color, kNoObject).convertToFormat(QImage::Format_RGB888));
     const QImage exportedBrighter = exported(QStringLiteral("brighter.png"));
     QVERIFY(exportedBrighter != exportedBefore);
     QVERIFY(maxDifference(exportedBefore, before) <= 1);  // The file writer rounds its own way.

@@ -26,7 +26,8 @@ namespace {
 /// levels (the outline where `selected` is set must match exactly).
 int differingPixels(MainWindow& w, const DisplayFrame& frame, ObjectId selected) {
     const QImage expected = viewportImage(frame, ViewMode::Color, selected);
-    const QImage shown = w.viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
+    const QImage shown =
+        w.viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
     int bad = 0;
     for (int y = 0; y < frame.height; ++y)
         for (int x = 0; x < frame.width; ++x) {
