@@ -4,6 +4,22 @@
 # and prints what `raystudio --measure-drag/--measure-orbit` reports.
 #
 #   bash tests/bench/measure-designer.sh [--frames N] [--json] [--build DIR]
+#
+# Issue 10, on the 2-core shared VM (Mesa llvmpipe, viewport 992x930, frame 1280x720, load
+# 3-6 from other builds: noisy). Medians of interleaved runs of the binary before the
+# display work (d79abcf) and after it, 6 drags / 4 orbits each, 240 moves at 60 Hz:
+#
+#                          drag before   drag after   orbit before   orbit after
+#   frames shown /s            4.1           5.3           4.1           6.5
+#   input to display median  666 ms        401 ms        586 ms        400 ms
+#   input to display p90     977 ms        578 ms        727 ms        523 ms
+#   hand-over per repaint     29 ms         19 ms         36 ms         32 ms
+#   paint end to swap        127 ms         92 ms        126 ms         49 ms
+#   longest GUI stall        357 ms        191 ms        303 ms        157 ms
+#
+# The best single drag after: 11 frames/s, 190 ms median latency. What is left is mostly
+# software GL's swap (20-35 ms even with the session idle, about twice that while the
+# render threads run) and the wait for the session's frame lock in the hand-over.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
