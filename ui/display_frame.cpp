@@ -2,10 +2,13 @@
 #include "display_frame.h"
 
 #include "image/tonemap.h"
+#include "session/deep_frame.h"
 #include "session/render_session.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <tuple>
 
 namespace rs::ui {
 
@@ -26,6 +29,137 @@ DisplayFrame DisplayFrame::fromSession(const RenderSession& session) {
         }
     });
     return d;
+}
+
+namespace {
+
+/// Rectangles remembered: enough for several refreshes of scattered tiles (a 1280x720 frame
+/// has 920); a view that fell further behind redoes everything.
+constexpr std::size_t kDamageKept = 4096;
+
+/// Edge of the blocks a tile is split into to find what really changed.
+constexpr int kDamageBlock = 8;
+
+template <class T>
+void copyRect(std::vector<T>& dst, const std::vector<T>& src, int width, const QRect& r) {
+    for (int y = r.top(); y <= r.bottom(); ++y) {
+        const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(r.left());
+        std::memcpy(dst.data() + i, src.data() + i, sizeof(T) * std::size_t(r.width()));
+    }
+}
+
+template <class T>
+bool differs(const std::vector<T>& a, const std::vector<T>& b, int width, const QRect& r) {
+    for (int y = r.top(); y <= r.bottom(); ++y) {
+        const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(r.left());
+        if (std::memcmp(a.data() + i, b.data() + i, sizeof(T) * std::size_t(r.width())) != 0)
+            return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, bool allFlags) {
+    const QRect all(0, 0, f.width, f.height);
+    if (f.width != width || f.height != height || color.size() != f.color.size()) {
+        width = f.width;
+        height = f.height;
+        color = f.color;
+        id = f.id;
+        normal = f.normal;
+        depth = f.depth;
+        cost = f.cost;
+        flags = f.flags;
+        ++serial;
+        damage.clear();
+        damageFloor = serial;
+        return;
+    }
+    if (rects.empty() && !allFlags) return;
+    // A tile is announced whole though an edit may re-trace a few of its pixels: only blocks
+    // whose values differ are copied and reported, so views re-shade and upload just those.
+    std::vector<QRect> changed;
+    bool flagsChanged = allFlags;  // Only the debug views show flags: a new serial, no damage.
+    for (const QRect& raw : rects) {
+        const QRect r = raw & all;
+        if (r.isEmpty()) continue;
+        if (!allFlags && differs(flags, f.flags, width, r)) {
+            copyRect(flags, f.flags, width, r);
+            flagsChanged = true;
+        }
+        const int bx0 = r.left() / kDamageBlock * kDamageBlock;
+        const int by0 = r.top() / kDamageBlock * kDamageBlock;
+        for (int by = by0; by <= r.bottom(); by += kDamageBlock) {
+            for (int bx = bx0; bx <= r.right(); bx += kDamageBlock) {
+                const QRect b = QRect(bx, by, kDamageBlock, kDamageBlock) & r;
+                if (!differs(color, f.color, width, b) && !differs(id, f.id, width, b) &&
+                    !differs(depth, f.depth, width, b) && !differs(normal, f.normal, width, b) &&
+                    !differs(cost, f.cost, width, b))
+                    continue;
+                copyRect(color, f.color, width, b);
+                copyRect(id, f.id, width, b);
+                copyRect(normal, f.normal, width, b);
+                copyRect(depth, f.depth, width, b);
+                copyRect(cost, f.cost, width, b);
+                changed.push_back(b);
+            }
+        }
+    }
+    if (allFlags) std::memcpy(flags.data(), f.flags.data(), flags.size());
+    if (changed.empty() && !flagsChanged) return;
+    ++serial;
+    for (const QRect& r : mergeRects(std::move(changed), QSize(width, height)))
+        damage.push_back({serial, r});
+    if (damage.size() > kDamageKept) {
+        const std::size_t n = damage.size() - kDamageKept;
+        damageFloor = std::max(damageFloor, damage[n - 1].serial);
+        damage.erase(damage.begin(), damage.begin() + std::ptrdiff_t(n));
+    }
+}
+
+bool DisplayFrame::changedSince(uint64_t seen, std::vector<QRect>& rects) const {
+    rects.clear();
+    if (seen < damageFloor) return false;
+    for (const Damage& d : damage)
+        if (d.serial > seen) rects.push_back(d.rect);
+    return true;
+}
+
+std::vector<QRect> mergeRects(std::vector<QRect> rects, const QSize& frame) {
+    if (rects.size() < 2) return rects;
+    // Rows first: tiles of one tile row side by side become one band.
+    std::sort(rects.begin(), rects.end(), [](const QRect& a, const QRect& b) {
+        return std::make_tuple(a.top(), a.bottom(), a.left()) <
+               std::make_tuple(b.top(), b.bottom(), b.left());
+    });
+    std::vector<QRect> rows;
+    for (const QRect& r : rects) {
+        if (!rows.empty() && rows.back().top() == r.top() && rows.back().bottom() == r.bottom() &&
+            r.left() <= rows.back().right() + 1)
+            rows.back() = rows.back().united(r);
+        else
+            rows.push_back(r);
+    }
+    // Then bands of equal span stacked on each other.
+    std::sort(rows.begin(), rows.end(), [](const QRect& a, const QRect& b) {
+        return std::make_tuple(a.left(), a.right(), a.top()) <
+               std::make_tuple(b.left(), b.right(), b.top());
+    });
+    std::vector<QRect> out;
+    long long area = 0;
+    for (const QRect& r : rows) {
+        if (!out.empty() && out.back().left() == r.left() && out.back().right() == r.right() &&
+            r.top() <= out.back().bottom() + 1)
+            out.back() = out.back().united(r);
+        else
+            out.push_back(r);
+    }
+    for (const QRect& r : out) area += (long long)r.width() * r.height();
+    // Many scattered pieces that cover most of the frame: one copy is cheaper than many.
+    if (out.size() > 64 && area * 2 > (long long)frame.width() * frame.height())
+        return {QRect(QPoint(0, 0), frame)};
+    return out;
 }
 
 void idColor(ObjectId id, uint8_t rgb[3]) {

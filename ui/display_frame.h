@@ -4,12 +4,14 @@
 #include "scene/document.h"
 
 #include <QImage>
+#include <QRect>
 
 #include <cstdint>
 #include <vector>
 
 namespace rs {
 class RenderSession;
+struct DeepFrame;
 }
 
 namespace rs::ui {
@@ -17,7 +19,8 @@ namespace rs::ui {
 /// What the viewport shows of the deep frame.
 enum class ViewMode { Color, ObjectIds, Normals, Depth, Cost, Retraced };
 
-/// The buffers the viewport needs, copied out under the frame lock.
+/// The buffers the viewport needs, copied out under the frame lock. The controller keeps one
+/// and refreshes it in place, rectangle by rectangle; `damage` tells views what changed.
 struct DisplayFrame {
     int width = 0;
     int height = 0;
@@ -29,15 +32,37 @@ struct DisplayFrame {
     std::vector<uint8_t> flags;
     ToneMap tonemap = ToneMap::Clamp;
     float exposure = 0.0f;
+    uint64_t generation = 0;  ///< Newest edit whose traced pixels this frame holds.
+    uint64_t serial = 0;      ///< Bumped whenever the content changes.
+
+    /// Pixels a refresh changed, tagged with the serial it gave the frame.
+    struct Damage {
+        uint64_t serial = 0;
+        QRect rect;
+    };
+    std::vector<Damage> damage;  ///< Recent refreshes' rectangles, oldest first.
+    /// A view that last looked at a serial below this one must re-read everything.
+    uint64_t damageFloor = 0;
 
     bool empty() const { return width <= 0 || height <= 0; }
     ObjectId idAt(int x, int y) const {
         return x >= 0 && y >= 0 && x < width && y < height ? id[std::size_t(y) * width + x]
                                                             : kNoObject;
     }
-    /// Copies the session's current frame (short critical section).
+    /// Copies the session's current frame (the whole frame under its lock: tests compare with
+    /// it). Tone map and exposure are the snapshot's, which edits that trace nothing may keep.
     static DisplayFrame fromSession(const RenderSession& session);
+
+    /// Copies `rects` of `f` into this frame (all of it when the sizes differ) and records them
+    /// as damage of a new serial; `flags` (1 byte a pixel, changed by edits outside any tile) is
+    /// copied whole when `allFlags`. Call with the frame lock held.
+    void refresh(const DeepFrame& f, const std::vector<QRect>& rects, bool allFlags);
+    /// The rectangles that changed after `seen`, or false when that serial is too old to say.
+    bool changedSince(uint64_t seen, std::vector<QRect>& rects) const;
 };
+
+/// Merges tile rectangles into fewer, larger ones covering the same pixels (or more).
+std::vector<QRect> mergeRects(std::vector<QRect> rects, const QSize& frame);
 
 /// Debug views other than Color as 8-bit sRGB-ready RGB (row-major, 3 bytes a pixel).
 QImage debugImage(const DisplayFrame& frame, ViewMode mode);

@@ -7,15 +7,27 @@
 #include <QImage>
 #include <QRect>
 
+#include <cstdint>
+#include <functional>
 #include <memory>
 
 class QWidget;
 
 namespace rs::ui {
 
+/// A frame that has just been put on screen.
+struct PresentedFrame {
+    uint64_t serial = 0;      ///< DisplayFrame::serial of what was drawn.
+    uint64_t generation = 0;  ///< DisplayFrame::generation of what was drawn.
+    double paintMs = 0.0;     ///< Time spent drawing it (uploads included).
+    double composeMs = 0.0;   ///< From the end of drawing to the swap (window composition).
+};
+
 /// Draws the session's frame, letterboxed to the widget, with the selection outline.
 class FrameView {
 public:
+    using PresentedHandler = std::function<void(const PresentedFrame&)>;
+
     virtual ~FrameView() = default;
     /// The widget that draws (owned by its Qt parent).
     virtual QWidget* widget() = 0;
@@ -26,6 +38,16 @@ public:
     virtual QImage grabImage() = 0;
     /// True for the OpenGL implementation.
     virtual bool usesOpenGL() const = 0;
+    /// Called after each frame reaches the screen (the designer measures latency with it).
+    void setPresentedHandler(PresentedHandler handler) { presented_ = std::move(handler); }
+
+protected:
+    void notifyPresented(const PresentedFrame& frame) {
+        if (presented_) presented_(frame);
+    }
+
+private:
+    PresentedHandler presented_;
 };
 
 /// Where a frame of `frame` pixels is drawn inside a widget of `area` (aspect kept, centred).

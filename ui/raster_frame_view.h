@@ -1,4 +1,5 @@
-// The QPainter frame view: CPU tone mapping and outline, for platforms without OpenGL.
+// The QPainter frame view: CPU tone mapping and outline, for platforms without OpenGL. The
+// shaded image is kept and only the rectangles the frame reports as changed are shaded again.
 #pragma once
 
 #include "frame_view.h"
@@ -17,12 +18,27 @@ public:
                    ObjectId selected) override;
     QImage grabImage() override;
     bool usesOpenGL() const override { return false; }
+    /// The shaded frame at frame resolution (what is drawn, before scaling).
+    QImage frameImage() const { return image_; }
 
 protected:
     void paintEvent(QPaintEvent* event) override;
 
 private:
+    /// True when image_ can be brought up to date by re-shading `rects` alone.
+    bool canShadeRects(const DisplayFrame& frame, ViewMode mode, ObjectId selected,
+                       std::vector<QRect>& rects) const;
+    void shadeRect(const DisplayFrame& frame, ObjectId selected, const QRect& rect);
+
     QImage image_;
+    PresentedFrame shown_;  ///< The frame image_ comes from.
+    /// What image_ was shaded from.
+    const DisplayFrame* shadedFrame_ = nullptr;
+    uint64_t shadedSerial_ = 0;
+    ViewMode shadedMode_ = ViewMode::Color;
+    ObjectId shadedSelected_ = kNoObject;
+    ToneMap shadedTonemap_ = ToneMap::Clamp;
+    float shadedExposure_ = 0.0f;
 };
 
 }  // namespace rs::ui

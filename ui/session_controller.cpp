@@ -3,10 +3,15 @@
 
 #include <QMetaObject>
 
+#include <algorithm>
+#include <chrono>
+
 namespace rs::ui {
 
 namespace {
 constexpr int kDisplayIntervalMs = 16;
+/// More committed tiles than this between two looks: copy the frame whole instead.
+constexpr std::size_t kMaxListedTiles = 16384;
 }
 
 SessionController::SessionController(int threads, QObject* parent)
@@ -35,6 +40,7 @@ SessionController::~SessionController() {
 
 void SessionController::requestUpdate(const SceneDocument& doc) {
     pendingDoc_ = doc;
+    ++requestSerial_;
     if (!updateTimer_.isActive()) {
         // The first change after a quiet spell goes out at once; later ones wait for the tick.
         onUpdateTimer();
@@ -44,9 +50,16 @@ void SessionController::requestUpdate(const SceneDocument& doc) {
 
 void SessionController::onUpdateTimer() {
     if (!pendingDoc_) return;
-    session_->update(*pendingDoc_);
+    const uint64_t generation = session_->update(*pendingDoc_);
+    // Tone mapping and exposure trace nothing, so no tile will announce them: repaint here.
+    const bool displayChanged = pendingDoc_->render.tonemap != postedTonemap_ ||
+                                pendingDoc_->render.exposure != postedExposure_;
+    postedTonemap_ = pendingDoc_->render.tonemap;
+    postedExposure_ = pendingDoc_->render.exposure;
     pendingDoc_.reset();
     ++updatesThisSecond_;
+    Q_EMIT documentPosted(requestSerial_, generation);
+    if (displayChanged) Q_EMIT frameUpdated();
 }
 
 void SessionController::flushUpdate() {
@@ -63,7 +76,56 @@ void SessionController::endInteraction() {
     session_->endInteraction();
 }
 
-void SessionController::tileDone(int, int, int, int, uint64_t) {
+std::shared_ptr<const DisplayFrame> SessionController::displayFrame() {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<QRect> tiles;
+    bool everything = false;
+    uint64_t committed = 0;
+    {
+        // Every tile announced so far is copied below, so the copy holds their generation.
+        std::lock_guard lock(tilesMutex_);
+        tiles.swap(committedTiles_);
+        everything = tilesOverflowed_;
+        tilesOverflowed_ = false;
+        committed = committedGeneration_;
+    }
+    DisplayFrame& d = *frame_;
+    session_->withFrame([&](const DeepFrame& f, const std::shared_ptr<const CompiledScene>&) {
+        const auto locked = std::chrono::steady_clock::now();
+        if (everything) tiles.assign(1, QRect(0, 0, f.width, f.height));
+        // Edits clear the previous edit's re-traced overlay outside any tile: the flags follow
+        // whole when the generation moved (a byte a pixel).
+        const uint64_t generation = session_->generation();
+        d.refresh(f, mergeRects(std::move(tiles), QSize(f.width, f.height)),
+                  generation != frameSessionGeneration_);
+        frameSessionGeneration_ = generation;
+        handover_.copyMs +=
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - locked)
+                .count();
+    });
+    if (d.tonemap != postedTonemap_ || d.exposure != postedExposure_) {
+        d.tonemap = postedTonemap_;
+        d.exposure = postedExposure_;
+        ++d.serial;
+    }
+    d.generation = std::max(d.generation, committed);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ++handover_.count;
+    handover_.totalMs += ms;
+    handover_.maxMs = std::max(handover_.maxMs, ms);
+    return frame_;
+}
+
+void SessionController::tileDone(int x0, int y0, int x1, int y1, uint64_t generation) {
+    {
+        std::lock_guard lock(tilesMutex_);
+        if (committedTiles_.size() < kMaxListedTiles)
+            committedTiles_.emplace_back(QPoint(x0, y0), QPoint(x1 - 1, y1 - 1));
+        else
+            tilesOverflowed_ = true;
+        committedGeneration_ = std::max(committedGeneration_, generation);
+    }
     if (framePending_.exchange(true)) return;
     QMetaObject::invokeMethod(
         this, [this] { if (!repaintTimer_.isActive()) repaintTimer_.start(); },

@@ -2,14 +2,18 @@
 // document updates are throttled to the display rate.
 #pragma once
 
+#include "display_frame.h"
 #include "session/render_session.h"
 
 #include <QObject>
+#include <QRect>
 #include <QTimer>
 
 #include <atomic>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <vector>
 
 Q_DECLARE_METATYPE(rs::PassInfo)
 
@@ -37,6 +41,21 @@ public:
     /// Updates per second over the last second.
     double updatesPerSecond() const { return updatesPerSecond_; }
 
+    /// The frame to show now (GUI thread). One frame, refreshed in place: only the tiles
+    /// committed since the last call are copied, under a short lock. Exposure and tone
+    /// mapping are those of the document posted last, which edits that trace nothing change.
+    std::shared_ptr<const DisplayFrame> displayFrame();
+    /// Cost of handing frames to the display, for the designer's measurement.
+    struct HandoverStats {
+        int count = 0;
+        double totalMs = 0.0;
+        double maxMs = 0.0;
+        double copyMs = 0.0;  ///< Of totalMs, the part spent copying (the rest waits for the lock).
+    };
+    const HandoverStats& handoverStats() const { return handover_; }
+    /// Counts requestUpdate calls; documentPosted says which generation carried them.
+    uint64_t requestSerial() const { return requestSerial_; }
+
     // SessionObserver (worker threads).
     void tileDone(int x0, int y0, int x1, int y1, uint64_t generation) override;
     void passDone(const PassInfo& info) override;
@@ -49,6 +68,8 @@ Q_SIGNALS:
     void passFinished(const rs::PassInfo& info);
     /// Every pixel is final for `generation` (GUI thread).
     void frameCompleted(quint64 generation);
+    /// The document of requests up to `requestSerial` went to the session as `generation`.
+    void documentPosted(quint64 requestSerial, quint64 generation);
 
 private:
     void onRepaintTimer();
@@ -59,6 +80,19 @@ private:
     QTimer repaintTimer_;
     QTimer updateTimer_;
     std::optional<SceneDocument> pendingDoc_;
+    uint64_t requestSerial_ = 0;
+    /// Tiles committed since displayFrame() last looked (worker threads add, GUI drains), and
+    /// the highest generation of any tile announced.
+    std::mutex tilesMutex_;
+    std::vector<QRect> committedTiles_;
+    uint64_t committedGeneration_ = 0;
+    bool tilesOverflowed_ = false;  ///< Too many to list: copy everything.
+    std::shared_ptr<DisplayFrame> frame_ = std::make_shared<DisplayFrame>();
+    uint64_t frameSessionGeneration_ = 0;  ///< Session generation at the last refresh.
+    /// Display settings of the document posted last.
+    ToneMap postedTonemap_ = ToneMap::Clamp;
+    float postedExposure_ = 0.0f;
+    HandoverStats handover_;
     int updatesThisSecond_ = 0;
     double updatesPerSecond_ = 0.0;
     QTimer rateTimer_;

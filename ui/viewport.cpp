@@ -51,7 +51,7 @@ void Viewport::setViewMode(ViewMode mode) {
 }
 
 void Viewport::refresh() {
-    frame_ = std::make_shared<const DisplayFrame>(DisplayFrame::fromSession(session_->session()));
+    frame_ = session_->displayFrame();
     redraw();
 }
 

@@ -1,6 +1,7 @@
 // raystudio: the designer. Opens the scene given on the command line, or the bundled
 // reference room found next to the build tree or the installed data.
 #include "default_scene.h"
+#include "drag_measurement.h"
 #include "main_window.h"
 
 #include <QApplication>
@@ -23,7 +24,9 @@ int main(int argc, char* argv[]) {
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file to open."));
+    rs::ui::addMeasurementOptions(parser);
     parser.process(app);
+    if (const int rc = rs::ui::runRequestedMeasurement(parser); rc >= 0) return rc;
 
     rs::ui::MainWindow window;
     window.show();

@@ -33,10 +33,11 @@ float srgb(float c) {
 }
 
 void main() {
-    ivec2 size = textureSize(idTex, 0);
+    ivec2 size = textureSize(colorTex, 0);
     ivec2 p = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
-    uint id = texelFetch(idTex, p, 0).r;
+    // Ids are uploaded only while something is selected: read them only then.
     if (selected != 0u) {
+        uint id = texelFetch(idTex, p, 0).r;
         ivec2 offs[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
         for (int k = 0; k < 4; ++k) {
             ivec2 q = p + offs[k];

@@ -2,6 +2,8 @@
 // as the CPU tone mapping gives it, and draw the selection outline.
 #include "gui_test_support.h"
 
+#include "scene_edits.h"
+
 #include <QGuiApplication>
 #include <QSurfaceFormat>
 #include <QtTest>
@@ -15,7 +17,29 @@ class GlViewportTest : public QObject {
 private Q_SLOTS:
     void initTestCase();
     void openGLViewport_ShowsTheToneMappedFrame();
+    void openGLViewport_AfterEditsUploadedByRectangles_ShowsTheSessionFrame();
 };
+
+namespace {
+
+/// Pixels of the viewport's grab that differ from the CPU shading of `frame` by more than 3
+/// levels (the outline where `selected` is set must match exactly).
+int differingPixels(MainWindow& w, const DisplayFrame& frame, ObjectId selected) {
+    const QImage expected = viewportImage(frame, ViewMode::Color, selected);
+    const QImage shown =
+        w.viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
+    int bad = 0;
+    for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x) {
+            const QColor a = shown.pixelColor(w.viewport()->widgetPointOf(x, y)),
+                         b = expected.pixelColor(x, y);
+            bad += std::max({std::abs(a.red() - b.red()), std::abs(a.green() - b.green()),
+                             std::abs(a.blue() - b.blue())}) > 3;
+        }
+    return bad;
+}
+
+}  // namespace
 
 void GlViewportTest::initTestCase() {
     isolateSettings();
@@ -62,6 +86,34 @@ void GlViewportTest::openGLViewport_ShowsTheToneMappedFrame() {
                 outlinePixels += outlined.pixelColor(w.viewport()->widgetPointOf(x, y)) ==
                                  QColor(kOutlineRgb[0], kOutlineRgb[1], kOutlineRgb[2]);
     QVERIFY(outlinePixels > 10);
+    w.editor()->undoStack()->setClean();
+}
+
+void GlViewportTest::openGLViewport_AfterEditsUploadedByRectangles_ShowsTheSessionFrame() {
+    MainWindow w;
+    w.resize(1000, 700);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(scenePath("reference-room.scene.json")));
+    w.setRenderSize(320, 180);
+    QVERIFY(settle(w));
+    const ObjectId blue = idOf(w, "blue ball");
+    w.editor()->setSelection(blue);
+    QTest::qWait(50);
+    // Steps of a drag with repaints between them: colour and ids go up by rectangles.
+    w.session()->beginInteraction(blue);
+    for (int k = 0; k < 8; ++k) {
+        SceneDocument doc = w.editor()->document();
+        moveBy(doc, blue, Vec3(0.1f, 0.03f, 0.0f));
+        w.editor()->edit(QStringLiteral("Move object"), std::move(doc), MergeKind::Drag,
+                         QString::number(blue));
+        QTest::qWait(20);
+    }
+    w.session()->endInteraction();
+    QVERIFY(settle(w));
+    QTest::qWait(50);
+    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    QCOMPARE(differingPixels(w, full, blue), 0);
     w.editor()->undoStack()->setClean();
 }
 

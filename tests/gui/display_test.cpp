@@ -1,0 +1,176 @@
+// The display path under QT_QPA_PLATFORM=offscreen (raster viewport): the frame handed over
+// tile by tile ends equal to the session's, and exposure edits reach the viewport and export.
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cstring>
+
+#include "gui_test_support.h"
+#include "raster_frame_view.h"
+#include "scene_edits.h"
+
+using namespace rs;
+using namespace rs::ui;
+using namespace rs::ui::test;
+
+class DisplayTest : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup();
+
+    void mergeRects_CoversTheSamePixels();
+    void incrementalHandover_EqualsFullCopyAfterThePass();
+    void exposureEdit_ChangesShownImageAndExport_UndoRestoresThem();
+    void toneMapEdit_ChangesShownImage_UndoRestoresIt();
+
+private:
+    QImage shownImage() const;
+    QImage exported(const QString& name);
+
+    std::unique_ptr<MainWindow> window_;
+    QTemporaryDir dir_;
+};
+
+void DisplayTest::init() {
+    window_ = std::make_unique<MainWindow>();
+    window_->resize(1000, 700);
+    window_->show();
+    QVERIFY(window_->openFile(scenePath("reference-room.scene.json")));
+    window_->setRenderSize(320, 180);  // 10 x 6 tiles of 32.
+    QVERIFY(settle(*window_));
+}
+
+void DisplayTest::cleanup() {
+    window_->editor()->undoStack()->setClean();  // No save prompt on close.
+    window_.reset();
+}
+
+/// The CPU-shaded image the raster viewport draws.
+QImage DisplayTest::shownImage() const {
+    auto* view = dynamic_cast<RasterFrameView*>(window_->viewport()->frameView());
+    return view ? view->frameImage().convertToFormat(QImage::Format_RGB888) : QImage();
+}
+
+/// File → Export of the current frame, read back.
+QImage DisplayTest::exported(const QString& name) {
+    const QString path = dir_.filePath(name);
+    if (!window_->exportFrame(path)) return {};
+    return QImage(path).convertToFormat(QImage::Format_RGB888);
+}
+
+/// The largest difference of any channel of two equally sized RGB888 images (256 if not).
+static int maxDifference(const QImage& a, const QImage& b) {
+    if (a.size() != b.size() || a.isNull()) return 256;
+    int worst = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < 3 * a.width(); ++x)
+            worst =
+                std::max(worst, std::abs(int(a.constScanLine(y)[x]) - int(b.constScanLine(y)[x])));
+    return worst;
+}
+
+template <class T>
+static bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(T) * a.size()) == 0;
+}
+
+void DisplayTest::mergeRects_CoversTheSamePixels() {
+    const QSize frame(200, 100);
+    std::vector<QRect> tiles;
+    for (int y = 0; y < 100; y += 32)
+        for (int x = 0; x < 200; x += 32)
+            if ((x / 32 + y / 32) % 3 != 0)
+                tiles.push_back(QRect(x, y, 32, 32) & QRect(QPoint(), frame));
+    tiles.push_back(tiles.front());  // A tile committed twice.
+    auto cover = [&](const std::vector<QRect>& rects) {
+        std::vector<uint8_t> c(std::size_t(frame.width() * frame.height()), 0);
+        for (const QRect& r : rects)
+            for (int y = r.top(); y <= r.bottom(); ++y)
+                for (int x = r.left(); x <= r.right(); ++x)
+                    c[std::size_t(y * frame.width() + x)] = 1;
+        return c;
+    };
+    const std::vector<QRect> merged = mergeRects(tiles, frame);
+    QVERIFY(merged.size() < tiles.size());
+    QVERIFY(cover(merged) == cover(tiles));
+}
+
+void DisplayTest::incrementalHandover_EqualsFullCopyAfterThePass() {
+    MainWindow& w = *window_;
+    const ObjectId blue = idOf(w, "blue ball");
+    w.editor()->setSelection(blue);
+    // A drag whose steps arrive while passes run, so the viewport copies partial passes.
+    w.session()->beginInteraction(blue);
+    for (int k = 0; k < 12; ++k) {
+        SceneDocument doc = w.editor()->document();
+        moveBy(doc, blue, Vec3(0.08f, 0.02f, 0.0f));
+        w.editor()->edit(QStringLiteral("Move object"), std::move(doc), MergeKind::Drag,
+                         QString::number(blue));
+        QTest::qWait(7);
+    }
+    w.session()->endInteraction();
+    QVERIFY(settle(w));
+
+    const auto shown = w.viewport()->frame();
+    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    QCOMPARE(shown->width, full.width);
+    QCOMPARE(shown->height, full.height);
+    QVERIFY(sameBits(shown->color, full.color));
+    QVERIFY(sameBits(shown->id, full.id));
+    QVERIFY(sameBits(shown->depth, full.depth));
+    QVERIFY(sameBits(shown->normal, full.normal));
+    QVERIFY(sameBits(shown->cost, full.cost));
+    QVERIFY(sameBits(shown->flags, full.flags));
+    // The raster view re-shaded only what changed; it must still equal shading it all.
+    const QImage expected = viewportImage(full, ViewMode::Color, blue);
+    QCOMPARE(shownImage(), expected.convertToFormat(QImage::Format_RGB888));
+}
+
+void DisplayTest::exposureEdit_ChangesShownImageAndExport_UndoRestoresThem() {
+    MainWindow& w = *window_;
+    const QImage before = shownImage();
+    const QImage exportedBefore = exported(QStringLiteral("before.png"));
+    QVERIFY(!before.isNull() && !exportedBefore.isNull());
+    const float exposure = w.editor()->document().render.exposure;
+
+    SceneDocument doc = w.editor()->document();
+    doc.render.exposure = exposure + 1.0f;
+    w.editor()->edit(QStringLiteral("Exposure"), std::move(doc));
+    // Nothing is re-traced: no tile will announce the change, yet the viewport must follow.
+    QTRY_COMPARE(w.viewport()->frame()->exposure, exposure + 1.0f);
+    const QImage brighter = shownImage();
+    QVERIFY(brighter != before);
+    // The session's pixels shaded with the document's exposure.
+    DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    full.exposure = w.editor()->document().render.exposure;
+    QCOMPARE(
+        brighter,
+        viewportImage(full, ViewMode::Color, kNoObject).convertToFormat(QImage::Format_RGB888));
+    const QImage exportedBrighter = exported(QStringLiteral("brighter.png"));
+    QVERIFY(exportedBrighter != exportedBefore);
+    QVERIFY(maxDifference(exportedBefore, before) <= 1);  // The file writer rounds its own way.
+    QVERIFY(maxDifference(exportedBrighter, brighter) <= 1);
+
+    w.editor()->undoStack()->undo();
+    QTRY_COMPARE(w.viewport()->frame()->exposure, exposure);
+    QCOMPARE(shownImage(), before);
+    QCOMPARE(exported(QStringLiteral("undone.png")), exportedBefore);
+}
+
+void DisplayTest::toneMapEdit_ChangesShownImage_UndoRestoresIt() {
+    MainWindow& w = *window_;
+    const QImage before = shownImage();
+    SceneDocument doc = w.editor()->document();
+    QCOMPARE(doc.render.tonemap, ToneMap::Clamp);
+    doc.render.tonemap = ToneMap::Reinhard;
+    w.editor()->edit(QStringLiteral("Tone map"), std::move(doc));
+    QTRY_COMPARE(w.viewport()->frame()->tonemap, ToneMap::Reinhard);
+    QVERIFY(shownImage() != before);
+    w.editor()->undoStack()->undo();
+    QTRY_COMPARE(w.viewport()->frame()->tonemap, ToneMap::Clamp);
+    QCOMPARE(shownImage(), before);
+}
+
+QTEST_MAIN(DisplayTest)
+#include "display_test.moc"

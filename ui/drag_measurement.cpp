@@ -1,0 +1,448 @@
+// Measures what the user feels while dragging or orbiting: the real window, mouse events
+// posted to the viewport at 60 Hz, and timestamps from the event queue to the swapped frame.
+#include "drag_measurement.h"
+
+#include <QCommandLineParser>
+#include <QEventLoop>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QMouseEvent>
+#include <QStandardPaths>
+#include <QTimer>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <vector>
+
+#include "error_reporter.h"
+#include "integrator/renderer.h"
+#include "main_window.h"
+#include "preferences.h"
+#include "scene_editor.h"
+#include "session_controller.h"
+#include "viewport.h"
+
+namespace rs::ui {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msBetween(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+/// The q-quantile (0..1) of `v` (nearest rank), 0 when empty.
+double quantile(std::vector<double> v, double q) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, std::size_t(q * double(v.size() - 1) + 0.5))];
+}
+
+struct Request {
+    bool orbit = false;
+    QString scene;
+    QString object;
+    int frames = 240;
+    bool json = false;
+};
+
+/// One posted mouse event: when it was due (its event time), when the viewport had handled
+/// it, and the controller's request serial after it (an edit when it went up).
+struct Input {
+    Clock::time_point due, dispatched, handled;
+    uint64_t request = 0;
+};
+
+/// Notes when each mouse event reaches the viewport, to time its handling.
+class DispatchRecorder : public QObject {
+public:
+    explicit DispatchRecorder(std::vector<Input>& inputs) : inputs_(inputs) {}
+    bool eventFilter(QObject*, QEvent* e) override {
+        const auto t = e->type();
+        if ((t == QEvent::MouseButtonPress || t == QEvent::MouseMove ||
+             t == QEvent::MouseButtonRelease) &&
+            next_ < inputs_.size())
+            inputs_[next_++].dispatched = Clock::now();
+        return false;
+    }
+
+private:
+    std::vector<Input>& inputs_;
+    std::size_t next_ = 0;
+};
+
+struct Present {
+    Clock::time_point time;
+    PresentedFrame frame;
+};
+
+class Measurement {
+public:
+    explicit Measurement(const Request& request) : request_(request) {}
+    int run();
+
+private:
+    bool waitUntil(const std::function<bool()>& done, int timeoutMs);
+    bool waitFinalShown(Clock::time_point* shownAt);
+    QPoint pathPoint(QPoint start, int i) const;
+    void post(int i, QPoint start);
+    QJsonObject analyse(Clock::time_point begin, Clock::time_point end) const;
+    double renderImageMs() const;
+
+    Request request_;
+    MainWindow window_;
+    std::vector<Present> presents_;
+    std::vector<std::pair<uint64_t, uint64_t>> posted_;  ///< (request serial, generation).
+    std::vector<std::pair<Clock::time_point, PassInfo>> passes_;
+    uint64_t completed_ = 0;
+    std::vector<Input> inputs_;
+    std::vector<double> probeGaps_;
+};
+
+bool Measurement::waitUntil(const std::function<bool()>& done, int timeoutMs) {
+    const auto deadline = Clock::now() + std::chrono::milliseconds(timeoutMs);
+    QEventLoop loop;
+    QTimer poll;
+    poll.setInterval(5);
+    QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
+        if (done() || Clock::now() > deadline) loop.quit();
+    });
+    poll.start();
+    if (!done()) loop.exec();
+    return done();
+}
+
+/// Waits until the session's current generation is final and a paint has shown it.
+bool Measurement::waitFinalShown(Clock::time_point* shownAt) {
+    SessionController* c = window_.session();
+    if (!waitUntil([&] { return completed_ >= c->session().generation(); }, 120000)) return false;
+    const uint64_t serial = window_.viewport()->frame() ? window_.viewport()->frame()->serial : 0;
+    window_.viewport()->frameView()->widget()->update();
+    const bool ok = waitUntil(
+        [&] { return !presents_.empty() && presents_.back().frame.serial >= serial; }, 10000);
+    if (ok && shownAt) *shownAt = presents_.back().time;
+    return ok;
+}
+
+/// A figure of eight around `start`, one turn every two seconds at 60 Hz.
+QPoint Measurement::pathPoint(QPoint start, int i) const {
+    const QSize s = window_.viewport()->size();
+    const double a = 0.15 * std::min(s.width(), s.height());
+    const double phase = 2.0 * M_PI * i / 120.0;
+    return start + QPoint(int(std::lround(a * std::sin(phase))),
+                          int(std::lround(0.4 * a * std::sin(2.0 * phase))));
+}
+
+void Measurement::post(int i, QPoint start) {
+    const int last = int(inputs_.size()) - 1;
+    const QEvent::Type type = i == 0      ? QEvent::MouseButtonPress
+                              : i == last ? QEvent::MouseButtonRelease
+                                          : QEvent::MouseMove;
+    const Qt::MouseButton button = request_.orbit ? Qt::RightButton : Qt::LeftButton;
+    QWidget* vp = window_.viewport();
+    const QPoint p = i == 0 ? start : pathPoint(start, std::min(i, last - 1));
+    QCoreApplication::postEvent(
+        vp, new QMouseEvent(type, QPointF(p), QPointF(vp->mapToGlobal(p)),
+                            type == QEvent::MouseMove ? Qt::NoButton : button,
+                            type == QEvent::MouseButtonRelease ? Qt::NoButton : button,
+                            Qt::NoModifier));
+    // Posted events are delivered in order: this runs right after the viewport handled it.
+    QMetaObject::invokeMethod(
+        vp,
+        [this, i] {
+            inputs_[std::size_t(i)].handled = Clock::now();
+            inputs_[std::size_t(i)].request = window_.session()->requestSerial();
+        },
+        Qt::QueuedConnection);
+}
+
+double Measurement::renderImageMs() const {
+    const CompiledScene scene(window_.editor()->document());
+    RenderOptions options;
+    options.threads = loadPreferences().threads;
+    std::vector<double> ms;
+    for (int k = 0; k < 3; ++k) ms.push_back(renderImage(scene, options).ms);
+    return quantile(ms, 0.5);
+}
+
+QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end) const {
+    const double seconds = msBetween(begin, end) / 1000.0;
+    int frames = 0, generations = 0;
+    uint64_t lastSerial = 0, lastGeneration = 0;
+    std::vector<double> paint, compose;
+    for (const Present& p : presents_) {
+        if (p.time > end) break;
+        if (p.time >= begin) {
+            paint.push_back(p.frame.paintMs);
+            compose.push_back(p.frame.composeMs);
+            frames += p.frame.serial != lastSerial;
+            generations += p.frame.generation > lastGeneration;
+        }
+        lastSerial = p.frame.serial;
+        lastGeneration = std::max(lastGeneration, p.frame.generation);
+    }
+    std::vector<double> latency;
+    int neverShown = 0;
+    for (std::size_t i = 1; i < inputs_.size(); ++i) {
+        if (inputs_[i].request <= inputs_[i - 1].request) continue;  // No edit.
+        const auto post = std::find_if(posted_.begin(), posted_.end(), [&](const auto& p) {
+            return p.first >= inputs_[i].request;
+        });
+        const auto shown =
+            post == posted_.end()
+                ? presents_.end()
+                : std::find_if(presents_.begin(), presents_.end(), [&](const Present& p) {
+                      return p.time >= inputs_[i].handled && p.frame.generation >= post->second;
+                  });
+        if (shown == presents_.end())
+            ++neverShown;
+        else
+            latency.push_back(msBetween(inputs_[i].due, shown->time));
+    }
+    std::vector<double> handling;
+    for (const Input& in : inputs_) handling.push_back(msBetween(in.dispatched, in.handled));
+    std::vector<double> passMs;
+    int cancelled = 0;
+    for (const auto& [t, info] : passes_) {
+        if (t < begin || t > end || info.kind != PassKind::Interactive) continue;
+        if (info.cancelled)
+            ++cancelled;
+        else
+            passMs.push_back(info.ms);
+    }
+    QJsonObject o;
+    o[QStringLiteral("seconds")] = seconds;
+    o[QStringLiteral("frames_per_s")] = frames / seconds;
+    o[QStringLiteral("generations_per_s")] = generations / seconds;
+    o[QStringLiteral("latency_median_ms")] = quantile(latency, 0.5);
+    o[QStringLiteral("latency_p90_ms")] = quantile(latency, 0.9);
+    o[QStringLiteral("edits")] = int(latency.size()) + neverShown;
+    o[QStringLiteral("edits_never_shown")] = neverShown;
+    o[QStringLiteral("interactive_pass_median_ms")] = quantile(passMs, 0.5);
+    o[QStringLiteral("interactive_passes")] = int(passMs.size());
+    o[QStringLiteral("interactive_passes_cancelled")] = cancelled;
+    o[QStringLiteral("input_handling_median_ms")] = quantile(handling, 0.5);
+    o[QStringLiteral("input_handling_max_ms")] = quantile(handling, 1.0);
+    o[QStringLiteral("paint_median_ms")] = quantile(paint, 0.5);
+    o[QStringLiteral("paint_max_ms")] = quantile(paint, 1.0);
+    o[QStringLiteral("compose_median_ms")] = quantile(compose, 0.5);
+    o[QStringLiteral("gui_stall_max_ms")] = std::max(0.0, quantile(probeGaps_, 1.0) - 1.0);
+    o[QStringLiteral("gui_stall_p99_ms")] = std::max(0.0, quantile(probeGaps_, 0.99) - 1.0);
+    double blocked = 0.0, probed = 0.0;
+    for (double g : probeGaps_) blocked += g > 16.0 ? g : 0.0, probed += g;
+    o[QStringLiteral("gui_blocked_share")] = probed > 0.0 ? blocked / probed : 0.0;
+    return o;
+}
+
+int Measurement::run() {
+    SessionController* controller = window_.session();
+    FrameView* view = window_.viewport()->frameView();
+    view->setPresentedHandler([this](const PresentedFrame& f) {
+        presents_.push_back({Clock::now(), f});
+    });
+    QObject::connect(controller, &SessionController::documentPosted, &window_,
+                     [this](quint64 r, quint64 g) { posted_.emplace_back(r, g); });
+    QObject::connect(controller, &SessionController::passFinished, &window_,
+                     [this](const PassInfo& p) { passes_.emplace_back(Clock::now(), p); });
+    QObject::connect(controller, &SessionController::frameCompleted, &window_,
+                     [this](quint64 g) { completed_ = std::max<uint64_t>(completed_, g); });
+
+    window_.resize(1600, 1000);
+    window_.show();
+    waitUntil([&] { return window_.isVisible() && window_.viewport()->isVisible(); }, 5000);
+    waitUntil([] { return false; }, 300);  // Let the window manager settle the geometry.
+    const auto openStart = Clock::now();
+    if (!window_.openFile(request_.scene)) return 2;
+    Clock::time_point openShown;
+    if (!waitFinalShown(&openShown)) {
+        std::fprintf(stderr, "raystudio: the opened scene never completed\n");
+        return 1;
+    }
+    double fullPassMs = 0.0;
+    for (const auto& [t, p] : passes_)
+        if (!p.cancelled && p.kind == PassKind::Base && p.tracedPixels == p.totalPixels) {
+            fullPassMs = p.ms;
+            break;
+        }
+    const double renderMs = renderImageMs();
+    // What a repaint costs with the session idle, to tell display cost from CPU contention.
+    std::vector<double> idlePaint, idleCompose;
+    for (int k = 0; k < 10; ++k) {
+        const std::size_t seen = presents_.size();
+        window_.viewport()->refresh();
+        if (!waitUntil([&] { return presents_.size() > seen; }, 5000)) break;
+        idlePaint.push_back(presents_.back().frame.paintMs);
+        idleCompose.push_back(presents_.back().frame.composeMs);
+    }
+
+    const auto frame = window_.viewport()->frame();
+    QPoint start = window_.viewport()->rect().center();
+    ObjectId id = kNoObject;
+    if (!request_.orbit) {
+        for (const Object& o : window_.editor()->document().objects)
+            if (QString::fromStdString(o.name) == request_.object) id = o.id;
+        long sx = 0, sy = 0, n = 0;
+        for (int y = 0; id != kNoObject && y < frame->height; ++y)
+            for (int x = 0; x < frame->width; ++x)
+                if (frame->idAt(x, y) == id) sx += x, sy += y, ++n;
+        if (n == 0) {
+            std::fprintf(stderr, "raystudio: no visible object named \"%s\"\n",
+                         qPrintable(request_.object));
+            return 2;
+        }
+        start = window_.viewport()->widgetPointOf(int(sx / n), int(sy / n));
+        if (frame->idAt(int(sx / n), int(sy / n)) != id) {
+            std::fprintf(stderr, "raystudio: the centre of \"%s\" shows another object\n",
+                         qPrintable(request_.object));
+            return 2;
+        }
+    }
+
+    const auto handover0 = controller->handoverStats();
+    inputs_.assign(std::size_t(request_.frames) + 2, Input{});
+    const auto t0 = Clock::now() + std::chrono::milliseconds(50);
+    for (std::size_t i = 0; i < inputs_.size(); ++i)
+        inputs_[i].due = t0 + std::chrono::microseconds(int64_t(i * 1000000 / 60));
+    std::size_t next = 0;
+    QTimer driver, probe;
+    driver.setTimerType(Qt::PreciseTimer);
+    driver.setInterval(2);
+    QObject::connect(&driver, &QTimer::timeout, [&] {
+        // Events due while the GUI thread was blocked are posted late but keep their due time,
+        // as a window system would queue them.
+        while (next < inputs_.size() && Clock::now() >= inputs_[next].due) post(int(next++), start);
+    });
+    probe.setTimerType(Qt::PreciseTimer);
+    probe.setInterval(1);
+    auto lastProbe = Clock::now();
+    QObject::connect(&probe, &QTimer::timeout, [&] {
+        const auto now = Clock::now();
+        probeGaps_.push_back(msBetween(lastProbe, now));
+        lastProbe = now;
+    });
+    DispatchRecorder recorder(inputs_);
+    window_.viewport()->installEventFilter(&recorder);
+    driver.start();
+    probe.start();
+    const bool handled = waitUntil([&] { return inputs_.back().handled != Clock::time_point{}; },
+                                   60000 + request_.frames * 100);
+    probe.stop();
+    driver.stop();
+    window_.viewport()->removeEventFilter(&recorder);
+    Clock::time_point finalShown;
+    if (!handled || !waitFinalShown(&finalShown)) {
+        std::fprintf(stderr, "raystudio: the %s did not finish\n",
+                     request_.orbit ? "orbit" : "drag");
+        return 1;
+    }
+
+    QJsonObject o = analyse(inputs_.front().due, inputs_.back().due);
+    const auto& handover = controller->handoverStats();
+    const int handovers = handover.count - handover0.count;
+    o[QStringLiteral("kind")] = request_.orbit ? QStringLiteral("orbit") : QStringLiteral("drag");
+    o[QStringLiteral("scene")] = request_.scene;
+    o[QStringLiteral("object")] = request_.object;
+    o[QStringLiteral("moves")] = request_.frames;
+    o[QStringLiteral("opengl")] = view->usesOpenGL();
+    o[QStringLiteral("viewport")] =
+        QStringLiteral("%1x%2").arg(window_.viewport()->width()).arg(window_.viewport()->height());
+    o[QStringLiteral("frame")] = QStringLiteral("%1x%2").arg(frame->width).arg(frame->height);
+    o[QStringLiteral("handover_mean_ms")] =
+        handovers > 0 ? (handover.totalMs - handover0.totalMs) / handovers : 0.0;
+    o[QStringLiteral("handover_max_ms")] = handover.maxMs;
+    o[QStringLiteral("handover_copy_mean_ms")] =
+        handovers > 0 ? (handover.copyMs - handover0.copyMs) / handovers : 0.0;
+    o[QStringLiteral("release_to_final_shown_ms")] = msBetween(inputs_.back().due, finalShown);
+    o[QStringLiteral("viewport_full_frame_ms")] = fullPassMs;
+    o[QStringLiteral("open_to_final_shown_ms")] = msBetween(openStart, openShown);
+    o[QStringLiteral("render_image_ms")] = renderMs;
+    o[QStringLiteral("idle_paint_median_ms")] = quantile(idlePaint, 0.5);
+    o[QStringLiteral("idle_compose_median_ms")] = quantile(idleCompose, 0.5);
+    window_.editor()->undoStack()->setClean();  // No save prompt.
+
+    if (request_.json) {
+        std::printf("%s\n", QJsonDocument(o).toJson(QJsonDocument::Compact).constData());
+        return 0;
+    }
+    auto num = [&](const char* key) { return o[QLatin1String(key)].toDouble(); };
+    std::printf("%s %s%s: %d moves at 60 Hz, viewport %s (%s), frame %s\n",
+                qPrintable(o[QStringLiteral("kind")].toString()), qPrintable(request_.scene),
+                request_.orbit ? "" : qPrintable(QStringLiteral(" \"%1\"").arg(request_.object)),
+                request_.frames, qPrintable(o[QStringLiteral("viewport")].toString()),
+                view->usesOpenGL() ? "OpenGL" : "raster",
+                qPrintable(o[QStringLiteral("frame")].toString()));
+    std::printf("  frames shown          %6.1f /s distinct, %.1f /s with a newer edit\n",
+                num("frames_per_s"), num("generations_per_s"));
+    std::printf(
+        "  input to display     median %6.1f ms   p90 %6.1f ms   (%d edits, %d never shown)\n",
+        num("latency_median_ms"), num("latency_p90_ms"), o[QStringLiteral("edits")].toInt(),
+        o[QStringLiteral("edits_never_shown")].toInt());
+    std::printf("  interactive pass     median %6.1f ms   (%d passes, %d cancelled)\n",
+                num("interactive_pass_median_ms"), o[QStringLiteral("interactive_passes")].toInt(),
+                o[QStringLiteral("interactive_passes_cancelled")].toInt());
+    std::printf(
+        "  frame hand-over      mean   %6.2f ms   max %6.2f ms   (copying %.2f ms of the mean)\n",
+        num("handover_mean_ms"), num("handover_max_ms"), num("handover_copy_mean_ms"));
+    std::printf("  mouse event handling median %6.2f ms   max %6.2f ms\n",
+                num("input_handling_median_ms"), num("input_handling_max_ms"));
+    std::printf(
+        "  paint                median %6.2f ms   max %6.2f ms   then %.2f ms to the swap\n",
+        num("paint_median_ms"), num("paint_max_ms"), num("compose_median_ms"));
+    std::printf("  idle repaint         paint %6.2f ms   then %.2f ms to the swap\n",
+                num("idle_paint_median_ms"), num("idle_compose_median_ms"));
+    std::printf(
+        "  GUI thread stalls    longest %5.1f ms   p99 %5.1f ms   %3.0f %% of the time in blocks "
+        "over 16 ms\n",
+        num("gui_stall_max_ms"), num("gui_stall_p99_ms"), 100.0 * num("gui_blocked_share"));
+    std::printf("  release to final     %6.1f ms\n", num("release_to_final_shown_ms"));
+    std::printf(
+        "  full frame           viewport pass %.1f ms (open to shown %.1f ms), renderImage %.1f "
+        "ms\n",
+        num("viewport_full_frame_ms"), num("open_to_final_shown_ms"), num("render_image_ms"));
+    return 0;
+}
+
+}  // namespace
+
+void addMeasurementOptions(QCommandLineParser& parser) {
+    parser.addOption({QStringLiteral("measure-drag"),
+                      QStringLiteral("Measure dragging --object in SCENE, then exit."),
+                      QStringLiteral("SCENE")});
+    parser.addOption({QStringLiteral("measure-orbit"),
+                      QStringLiteral("Measure orbiting the camera in SCENE, then exit."),
+                      QStringLiteral("SCENE")});
+    parser.addOption(
+        {QStringLiteral("object"), QStringLiteral("Object to drag."), QStringLiteral("NAME")});
+    parser.addOption({QStringLiteral("frames"), QStringLiteral("Mouse moves (60 per second)."),
+                      QStringLiteral("N"), QStringLiteral("240")});
+    parser.addOption(
+        {QStringLiteral("json"), QStringLiteral("Print the measurement as one JSON line.")});
+}
+
+int runRequestedMeasurement(const QCommandLineParser& parser) {
+    Request r;
+    r.orbit = parser.isSet(QStringLiteral("measure-orbit"));
+    if (!r.orbit && !parser.isSet(QStringLiteral("measure-drag"))) return -1;
+    r.scene =
+        parser.value(r.orbit ? QStringLiteral("measure-orbit") : QStringLiteral("measure-drag"));
+    r.object = parser.value(QStringLiteral("object"));
+    bool ok = false;
+    r.frames = parser.value(QStringLiteral("frames")).toInt(&ok);
+    r.json = parser.isSet(QStringLiteral("json"));
+    if (!ok || r.frames < 2 || (!r.orbit && r.object.isEmpty())) {
+        std::fprintf(stderr,
+                     "raystudio: --measure-drag needs --object NAME; --frames needs N >= 2\n");
+        return 2;
+    }
+    QStandardPaths::setTestModeEnabled(true);  // Default preferences, not the user's.
+    setErrorHandler([](const QString& title, const QString& text) {
+        std::fprintf(stderr, "raystudio: %s: %s\n", qPrintable(title), qPrintable(text));
+    });
+    Measurement m(r);
+    return m.run();
+}
+
+}  // namespace rs::ui
