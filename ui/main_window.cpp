@@ -1,6 +1,7 @@
 // MainWindow construction: actions, menus, toolbar, docks, status bar and settings.
 #include "main_window.h"
 
+#include "autosave.h"
 #include "background_jobs.h"
 #include "command_shortcut_filter.h"
 #include "outliner_view.h"
@@ -36,7 +37,11 @@ QList<QKeySequence> standardOr(QKeySequence::StandardKey key, const QKeySequence
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), editor_(new SceneEditor(this)), prefs_(loadPreferences()) {
+    : QMainWindow(parent),
+      editor_(new SceneEditor(this)),
+      autosave_(new Autosave(editor_, this)),
+      prefs_(loadPreferences()) {
+    autosave_->setIntervalMs(prefs_.autosaveSeconds * 1000);
     session_ = std::make_unique<SessionController>(prefs_.threads);
     session_->session().setPolicy(prefs_.policy);
     viewport_ = new Viewport(editor_, session_.get(), this);
@@ -49,6 +54,9 @@ MainWindow::MainWindow(QWidget* parent)
             [this](bool clean) { setWindowModified(!clean); });
     connect(editor_, &SceneEditor::filePathChanged, this, &MainWindow::updateTitle);
     connect(session_.get(), &SessionController::passFinished, this, &MainWindow::onPassFinished);
+    connect(autosave_, &Autosave::failed, this, [this](const QString& error) {
+        statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 10000);
+    });
 
     createActions();
     createDocks();
@@ -224,6 +232,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
         writeSettings();
         // A render still running would keep the process alive after the window is gone.
         cancelJobs(this);
+        autosave_->discard();  // A clean exit: nothing to recover next time.
         event->accept();
     } else {
         event->ignore();
@@ -267,6 +276,8 @@ PreferencesDialog* MainWindow::showPreferences() {
 
 void MainWindow::applyPreferences(const Preferences& prefs) {
     if (prefs.threads != prefs_.threads) session_->session().setThreads(prefs.threads);
+    if (prefs.autosaveSeconds != prefs_.autosaveSeconds)
+        autosave_->setIntervalMs(prefs.autosaveSeconds * 1000);
     prefs_ = prefs;
     session_->session().setPolicy(prefs.policy);
     savePreferences(prefs);

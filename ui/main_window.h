@@ -20,6 +20,7 @@ struct PassInfo;
 
 namespace rs::ui {
 
+class Autosave;
 class OutlinerView;
 class PropertyPanel;
 class SceneEditor;
@@ -52,6 +53,16 @@ public:
     QDialog* showShortcuts();
     /// Applies preferences to the session and stores them.
     void applyPreferences(const Preferences& prefs);
+
+    /// How offerRecovery() answers: ask the user, or (tests, --recover) decide up front.
+    enum class RecoveryAnswer { Ask, Recover, Discard };
+    /// Offers the newest autosave a crashed session left (Recover, Discard or Not now);
+    /// true when it replaced the document.
+    bool offerRecovery(RecoveryAnswer answer = RecoveryAnswer::Ask);
+    /// Overrides Preferences' autosave interval for this session (0: off).
+    void setAutosaveIntervalMs(int ms);
+    /// This session's autosave (its file exists only while there are unsaved changes).
+    Autosave* autosave() const { return autosave_; }
 
     SceneEditor* editor() const { return editor_; }
     SessionController* session() const { return session_.get(); }
@@ -90,6 +101,7 @@ private:
     void duplicateSelection();
 
     SceneEditor* editor_;
+    Autosave* autosave_;
     std::unique_ptr<SessionController> session_;
     Viewport* viewport_;
     OutlinerView* outliner_ = nullptr;

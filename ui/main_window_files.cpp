@@ -1,12 +1,14 @@
 // MainWindow file handling (new, open, save, recent, drop, import, export) and scene edits.
 #include "main_window.h"
 
+#include "autosave.h"
 #include "background_jobs.h"
 #include "display_frame.h"
 #include "error_reporter.h"
 #include "image/image_io.h"
 #include "io/scene_io.h"
 #include "outliner_view.h"
+#include "scene_file_writer.h"
 #include "scene_editor.h"
 #include "session_controller.h"
 #include "viewport.h"
@@ -21,7 +23,6 @@
 #include <QFormLayout>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QSaveFile>
 #include <QSpinBox>
 #include <QStatusBar>
 
@@ -96,15 +97,13 @@ bool MainWindow::saveAs() {
 
 bool MainWindow::saveFile(const QString& path) {
     const QFileInfo info(path);
-    const std::string text = serializeScene(editor_->document(), info.absolutePath().toStdString());
-    // QSaveFile writes a temporary file and renames it on commit: never a truncated scene.
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), qint64(text.size())) != qint64(text.size()) ||
-        !file.commit()) {
-        reportError(this, tr("Cannot save scene"), tr("%1 could not be written:\n%2").arg(path, file.errorString()));
+    QString error;
+    if (!writeSceneFile(path, editor_->document(), error)) {
+        reportError(this, tr("Cannot save scene"), tr("%1 could not be written:\n%2").arg(path, error));
         return false;
     }
     editor_->undoStack()->setClean();
+    autosave_->discard();  // The file holds every change now.
     editor_->setFilePath(info.absoluteFilePath());
     addRecentFile(info.absoluteFilePath());
     statusBar()->showMessage(tr("Saved %1").arg(path), 3000);

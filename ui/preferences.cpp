@@ -1,6 +1,8 @@
 // Preferences storage and the dialog, one control per InteractionPolicy member.
 #include "preferences.h"
 
+#include <algorithm>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -19,6 +21,7 @@ Preferences loadPreferences() {
     std::string error;
     if (!json.isEmpty() && !policyFromJson(json.toStdString(), p.policy, error)) p.policy = {};
     p.threads = s.value(QStringLiteral("session/threads"), 0).toInt();
+    p.autosaveSeconds = std::max(0, s.value(QStringLiteral("autosave/seconds"), p.autosaveSeconds).toInt());
     return p;
 }
 
@@ -26,6 +29,7 @@ void savePreferences(const Preferences& p) {
     QSettings s;
     s.setValue(QStringLiteral("session/policy"), QString::fromStdString(policyToJson(p.policy)));
     s.setValue(QStringLiteral("session/threads"), p.threads);
+    s.setValue(QStringLiteral("autosave/seconds"), p.autosaveSeconds);
 }
 
 namespace {
@@ -126,6 +130,15 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     threads->setValue(prefs_.threads);
     connect(threads, &QSpinBox::valueChanged, this, [=, this](int v) { prefs_.threads = v; notify(); });
     form->addRow(tr("Render threads"), threads);
+
+    auto* autosave = new QSpinBox(this);
+    autosave->setObjectName(QStringLiteral("autosaveSeconds"));
+    autosave->setRange(0, 24 * 3600);
+    autosave->setSuffix(tr(" s"));
+    autosave->setSpecialValueText(tr("Off"));
+    autosave->setValue(prefs_.autosaveSeconds);
+    connect(autosave, &QSpinBox::valueChanged, this, [=, this](int v) { prefs_.autosaveSeconds = v; notify(); });
+    form->addRow(tr("Autosave every"), autosave);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::accept);
