@@ -8,6 +8,7 @@
 #include "property_panel.h"
 #include "scene_editor.h"
 #include "session_controller.h"
+#include "session_error_relay.h"
 #include "shortcuts_dialog.h"
 #include "viewport.h"
 
@@ -44,6 +45,9 @@ MainWindow::MainWindow(QWidget* parent)
     autosave_->setIntervalMs(prefs_.autosaveSeconds * 1000);
     session_ = std::make_unique<SessionController>(prefs_.threads);
     session_->session().setPolicy(prefs_.policy);
+    sessionErrors_ = std::make_unique<SessionErrorRelay>(
+        session_.get(), this, [this](const QString& message) { onSessionError(message); });
+    session_->session().setObserver(sessionErrors_.get());
     viewport_ = new Viewport(editor_, session_.get(), this);
     setCentralWidget(viewport_);
     setAcceptDrops(true);
@@ -213,6 +217,16 @@ void MainWindow::onPassFinished(const PassInfo& info) {
                                                info.cancelled ? tr(" (cut short)") : QString()));
     const double mrays = info.ms > 0.0 ? double(info.rays) / info.ms / 1000.0 : 0.0;
     statusRays_->setText(tr("%1 Mrays/s").arg(mrays, 0, 'f', 2));
+}
+
+void MainWindow::onSessionError(const QString& message) {
+    // The status bar, not a dialog: a failure while dragging must not grab the mouse. The
+    // session keeps the document and tries again at the next edit.
+    statusPass_->setText(tr("pass: failed"));
+    statusBar()->showMessage(
+        tr("The viewport could not render: %1. The scene is unchanged; edit it (e.g. a smaller "
+           "render size) to try again.")
+            .arg(message));
 }
 
 void MainWindow::readSettings() {

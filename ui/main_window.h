@@ -25,6 +25,7 @@ class OutlinerView;
 class PropertyPanel;
 class SceneEditor;
 class SessionController;
+class SessionErrorRelay;
 class Viewport;
 
 /// Top-level window of RayStudio.
@@ -95,6 +96,7 @@ private:
     void updateRecentFileActions();
     void updateTitle();
     void onPassFinished(const rs::PassInfo& info);
+    void onSessionError(const QString& message);
     void addShapeAction(ShapeKind kind);
     void addLightAction(LightType type);
     void deleteSelection();
@@ -102,6 +104,7 @@ private:
 
     SceneEditor* editor_;
     Autosave* autosave_;
+    std::unique_ptr<SessionErrorRelay> sessionErrors_;  ///< Outlives session_'s threads.
     std::unique_ptr<SessionController> session_;
     Viewport* viewport_;
     OutlinerView* outliner_ = nullptr;
