@@ -44,8 +44,10 @@ public:
     /// Exports the current viewport frame to an image file.
     bool exportFrame(const QString& path);
     /// Renders the document at full quality at width x height into `path` in the background
-    /// (Render -> Render Image without its dialogs); closing the window cancels it.
-    void renderImage(const QString& path, int width, int height);
+    /// (Render -> Render Image without its size and file dialogs); closing the window cancels
+    /// it. A render estimated over the cost budget (integrator/cost_estimate.h) starts only if
+    /// the user confirms; false when it did not start.
+    bool renderImage(const QString& path, int width, int height);
     /// Overrides the render size of the open document without an undo step (tests).
     void setRenderSize(int width, int height);
     /// Opens the (non-modal) preferences dialog and returns it.

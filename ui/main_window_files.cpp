@@ -6,11 +6,13 @@
 #include "display_frame.h"
 #include "error_reporter.h"
 #include "image/image_io.h"
+#include "integrator/cost_estimate.h"
 #include "io/scene_io.h"
 #include "outliner_view.h"
 #include "scene_file_writer.h"
 #include "scene_editor.h"
 #include "session_controller.h"
+#include "user_confirmation.h"
 #include "viewport.h"
 
 #include <algorithm>
@@ -177,10 +179,19 @@ void MainWindow::renderImageDialog() {
     renderImage(path, width->value(), height->value());
 }
 
-void MainWindow::renderImage(const QString& path, int width, int height) {
+bool MainWindow::renderImage(const QString& path, int width, int height) {
     SceneDocument doc = editor_->document();
     doc.render.width = width;
     doc.render.height = height;
+    if (const std::string over = budgetExceeded(estimateCost(doc)); !over.empty()) {
+        const QString text =
+            tr("Over the cost budget: %1.\n\nIt may take hours or exhaust memory. Render anyway?")
+                .arg(QString::fromStdString(over));
+        if (!confirm(this, tr("Render over the cost budget"), text)) {
+            statusBar()->showMessage(tr("Render not started: over the cost budget"), 5000);
+            return false;
+        }
+    }
     renderToFileAsync(this, doc, path, prefs_.threads, [this, path](bool ok, const QString& error) {
         if (ok)
             statusBar()->showMessage(tr("Rendered %1").arg(path), 5000);
@@ -189,6 +200,7 @@ void MainWindow::renderImage(const QString& path, int width, int height) {
         else
             statusBar()->showMessage(tr("Render cancelled"), 3000);
     });
+    return true;
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
