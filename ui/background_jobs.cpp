@@ -11,13 +11,30 @@
 #include <QThread>
 
 #include <atomic>
+#include <exception>
 #include <memory>
+#include <new>
+#include <string>
 
 namespace rs::ui {
 
 namespace {
 
 const QString kJobDialogName = QStringLiteral("backgroundJob");
+
+/// What a worker's exception says to the user. A job's thread must never let one escape:
+/// QThread would call std::terminate and take the unsaved document with it.
+std::string describeFailure(std::exception_ptr failure) {
+    try {
+        std::rethrow_exception(failure);
+    } catch (const std::bad_alloc&) {
+        return "out of memory";
+    } catch (const std::exception& e) {
+        return e.what();
+    } catch (...) {
+        return "unknown error";
+    }
+}
 
 QProgressDialog* makeProgress(QWidget* parent, const QString& text, int maximum) {
     auto* dialog = new QProgressDialog(text, QObject::tr("Cancel"), 0, maximum, parent);
@@ -57,7 +74,12 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
     QObject::connect(dialog, &QProgressDialog::canceled, dialog, [cancelled] { *cancelled = true; });
     QObject* receiver = parent ? static_cast<QObject*>(parent) : dialog.data();
     startWorker(dialog, cancelled, [=, file = path.toStdString()] {
-        MeshLoadResult result = loadMesh(file, smoothNormals);
+        MeshLoadResult result;
+        try {
+            result = loadMesh(file, smoothNormals);
+        } catch (...) {
+            result = {nullptr, file + ": " + describeFailure(std::current_exception())};
+        }
         QMetaObject::invokeMethod(receiver, [=] {
             if (dialog) dialog->deleteLater();
             if (!*cancelled) done(result);
@@ -76,21 +98,28 @@ void renderToFileAsync(QWidget* parent, const SceneDocument& doc, const QString&
     QObject::connect(dialog, &QProgressDialog::canceled, dialog, [cancel] { *cancel = true; });
     QObject* receiver = parent ? static_cast<QObject*>(parent) : dialog.data();
     startWorker(dialog, cancel, [=, file = path.toStdString()] {
-        const CompiledScene scene(doc);
-        RenderOptions options;
-        options.threads = threads;
-        options.cancel = cancel.get();
-        options.progress = [receiver, dialog](int doneTiles, int total) {
-            QMetaObject::invokeMethod(receiver, [=] {
-                if (!dialog) return;
-                dialog->setMaximum(total);
-                dialog->setValue(doneTiles);
-            }, Qt::QueuedConnection);
-        };
-        const RenderResult result = renderImage(scene, options);
-        std::string error;
-        const bool ok = !result.cancelled &&
-                        writeImage(file, result.image, doc.render.tonemap, doc.render.exposure, error);
+        std::string error = imageSizeError(doc.render.width, doc.render.height);
+        bool ok = false;
+        if (error.empty()) {
+            try {
+                const CompiledScene scene(doc);
+                RenderOptions options;
+                options.threads = threads;
+                options.cancel = cancel.get();
+                options.progress = [receiver, dialog](int doneTiles, int total) {
+                    QMetaObject::invokeMethod(receiver, [=] {
+                        if (!dialog) return;
+                        dialog->setMaximum(total);
+                        dialog->setValue(doneTiles);
+                    }, Qt::QueuedConnection);
+                };
+                const RenderResult result = renderImage(scene, options);
+                ok = !result.cancelled &&
+                     writeImage(file, result.image, doc.render.tonemap, doc.render.exposure, error);
+            } catch (...) {
+                error = "rendering " + file + " failed: " + describeFailure(std::current_exception());
+            }
+        }
         QMetaObject::invokeMethod(receiver, [=] {
             if (dialog) dialog->deleteLater();
             done(ok, QString::fromStdString(error));

@@ -1,12 +1,14 @@
 // MainWindow construction: actions, menus, toolbar, docks, status bar and settings.
 #include "main_window.h"
 
+#include "autosave.h"
 #include "background_jobs.h"
 #include "command_shortcut_filter.h"
 #include "outliner_view.h"
 #include "property_panel.h"
 #include "scene_editor.h"
 #include "session_controller.h"
+#include "session_error_relay.h"
 #include "shortcuts_dialog.h"
 #include "viewport.h"
 
@@ -38,10 +40,17 @@ QList<QKeySequence> standardOr(QKeySequence::StandardKey key, const QKeySequence
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), editor_(new SceneEditor(this)), prefs_(loadPreferences()) {
+    : QMainWindow(parent),
+      editor_(new SceneEditor(this)),
+      autosave_(new Autosave(editor_, this)),
+      prefs_(loadPreferences()) {
+    autosave_->setIntervalMs(prefs_.autosaveSeconds * 1000);
     session_ = std::make_unique<SessionController>(prefs_.threads);
     session_->session().setPolicy(prefs_.policy);
     session_->session().setEngine(prefs_.engine);
+    sessionErrors_ = std::make_unique<SessionErrorRelay>(
+        session_.get(), this, [this](const QString& message) { onSessionError(message); });
+    session_->session().setObserver(sessionErrors_.get());
     viewport_ = new Viewport(editor_, session_.get(), this);
     setCentralWidget(viewport_);
     setAcceptDrops(true);
@@ -57,6 +66,9 @@ MainWindow::MainWindow(QWidget* parent)
             [this](bool clean) { setWindowModified(!clean); });
     connect(editor_, &SceneEditor::filePathChanged, this, &MainWindow::updateTitle);
     connect(session_.get(), &SessionController::passFinished, this, &MainWindow::onPassFinished);
+    connect(autosave_, &Autosave::failed, this, [this](const QString& error) {
+        statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 10000);
+    });
 
     createActions();
     createDocks();
@@ -241,6 +253,16 @@ void MainWindow::onPassFinished(const PassInfo& info) {
     statusRays_->setText(tr("%1 Mrays/s").arg(mrays, 0, 'f', 2));
 }
 
+void MainWindow::onSessionError(const QString& message) {
+    // The status bar, not a dialog: a failure while dragging must not grab the mouse. The
+    // session keeps the document and tries again at the next edit.
+    statusPass_->setText(tr("pass: failed"));
+    statusBar()->showMessage(
+        tr("The viewport could not render: %1. The scene is unchanged; edit it (e.g. a smaller "
+           "render size) to try again.")
+            .arg(message));
+}
+
 void MainWindow::readSettings() {
     QSettings s;
     if (!restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray())) resize(1400, 850);
@@ -258,6 +280,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
         writeSettings();
         // A render still running would keep the process alive after the window is gone.
         cancelJobs(this);
+        autosave_->discard();  // A clean exit: nothing to recover next time.
         event->accept();
     } else {
         event->ignore();
@@ -302,6 +325,8 @@ PreferencesDialog* MainWindow::showPreferences() {
 void MainWindow::applyPreferences(const Preferences& prefs) {
     if (prefs.threads != prefs_.threads) session_->session().setThreads(prefs.threads);
     const bool engineChanged = prefs.engine != prefs_.engine;
+    if (prefs.autosaveSeconds != prefs_.autosaveSeconds)
+        autosave_->setIntervalMs(prefs.autosaveSeconds * 1000);
     prefs_ = prefs;
     session_->session().setPolicy(prefs.policy);
     if (engineChanged) {

@@ -21,10 +21,12 @@ struct PassInfo;
 
 namespace rs::ui {
 
+class Autosave;
 class OutlinerView;
 class PropertyPanel;
 class SceneEditor;
 class SessionController;
+class SessionErrorRelay;
 class Viewport;
 
 /// Top-level window of RayStudio.
@@ -43,8 +45,10 @@ public:
     /// Exports the current viewport frame to an image file.
     bool exportFrame(const QString& path);
     /// Renders the document at full quality at width x height into `path` in the background
-    /// (Render -> Render Image without its dialogs); closing the window cancels it.
-    void renderImage(const QString& path, int width, int height);
+    /// (Render -> Render Image without its size and file dialogs); closing the window cancels
+    /// it. A render estimated over the cost budget (integrator/cost_estimate.h) starts only if
+    /// the user confirms; false when it did not start.
+    bool renderImage(const QString& path, int width, int height);
     /// Overrides the render size of the open document without an undo step (tests).
     void setRenderSize(int width, int height);
     /// Opens the (non-modal) preferences dialog and returns it.
@@ -53,6 +57,16 @@ public:
     QDialog* showShortcuts();
     /// Applies preferences to the session and stores them.
     void applyPreferences(const Preferences& prefs);
+
+    /// How offerRecovery() answers: ask the user, or (tests, --recover) decide up front.
+    enum class RecoveryAnswer { Ask, Recover, Discard };
+    /// Offers the newest autosave a crashed session left (Recover, Discard or Not now);
+    /// true when it replaced the document.
+    bool offerRecovery(RecoveryAnswer answer = RecoveryAnswer::Ask);
+    /// Overrides Preferences' autosave interval for this session (0: off).
+    void setAutosaveIntervalMs(int ms);
+    /// This session's autosave (its file exists only while there are unsaved changes).
+    Autosave* autosave() const { return autosave_; }
 
     SceneEditor* editor() const { return editor_; }
     SessionController* session() const { return session_.get(); }
@@ -87,12 +101,15 @@ private:
     void onPassFinished(const rs::PassInfo& info);
     /// Runs `add` on `doc` with the view camera standing in for the scene camera.
     ObjectId inFrontOfView(SceneDocument& doc, const std::function<ObjectId()>& add) const;
+    void onSessionError(const QString& message);
     void addShapeAction(ShapeKind kind);
     void addLightAction(LightType type);
     void deleteSelection();
     void duplicateSelection();
 
     SceneEditor* editor_;
+    Autosave* autosave_;
+    std::unique_ptr<SessionErrorRelay> sessionErrors_;  ///< Outlives session_'s threads.
     std::unique_ptr<SessionController> session_;
     Viewport* viewport_;
     OutlinerView* outliner_ = nullptr;

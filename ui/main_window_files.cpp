@@ -1,14 +1,18 @@
 // MainWindow file handling (new, open, save, recent, drop, import, export) and scene edits.
 #include "main_window.h"
 
+#include "autosave.h"
 #include "background_jobs.h"
 #include "display_frame.h"
 #include "error_reporter.h"
 #include "image/image_io.h"
+#include "integrator/cost_estimate.h"
 #include "io/scene_io.h"
 #include "outliner_view.h"
+#include "scene_file_writer.h"
 #include "scene_editor.h"
 #include "session_controller.h"
+#include "user_confirmation.h"
 #include "viewport.h"
 
 #include <algorithm>
@@ -21,7 +25,6 @@
 #include <QFormLayout>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QSaveFile>
 #include <QSpinBox>
 #include <QStatusBar>
 
@@ -96,15 +99,13 @@ bool MainWindow::saveAs() {
 
 bool MainWindow::saveFile(const QString& path) {
     const QFileInfo info(path);
-    const std::string text = serializeScene(editor_->document(), info.absolutePath().toStdString());
-    // QSaveFile writes a temporary file and renames it on commit: never a truncated scene.
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), qint64(text.size())) != qint64(text.size()) ||
-        !file.commit()) {
-        reportError(this, tr("Cannot save scene"), tr("%1 could not be written:\n%2").arg(path, file.errorString()));
+    QString error;
+    if (!writeSceneFile(path, editor_->document(), error)) {
+        reportError(this, tr("Cannot save scene"), tr("%1 could not be written:\n%2").arg(path, error));
         return false;
     }
     editor_->undoStack()->setClean();
+    autosave_->discard();  // The file holds every change now.
     editor_->setFilePath(info.absoluteFilePath());
     addRecentFile(info.absoluteFilePath());
     statusBar()->showMessage(tr("Saved %1").arg(path), 3000);
@@ -179,10 +180,19 @@ void MainWindow::renderImageDialog() {
     renderImage(path, width->value(), height->value());
 }
 
-void MainWindow::renderImage(const QString& path, int width, int height) {
+bool MainWindow::renderImage(const QString& path, int width, int height) {
     SceneDocument doc = editor_->document();
     doc.render.width = width;
     doc.render.height = height;
+    if (const std::string over = budgetExceeded(estimateCost(doc)); !over.empty()) {
+        const QString text =
+            tr("Over the cost budget: %1.\n\nIt may take hours or exhaust memory. Render anyway?")
+                .arg(QString::fromStdString(over));
+        if (!confirm(this, tr("Render over the cost budget"), text)) {
+            statusBar()->showMessage(tr("Render not started: over the cost budget"), 5000);
+            return false;
+        }
+    }
     renderToFileAsync(this, doc, path, prefs_.threads, [this, path](bool ok, const QString& error) {
         if (ok)
             statusBar()->showMessage(tr("Rendered %1").arg(path), 5000);
@@ -191,6 +201,7 @@ void MainWindow::renderImage(const QString& path, int width, int height) {
         else
             statusBar()->showMessage(tr("Render cancelled"), 3000);
     });
+    return true;
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {

@@ -1,6 +1,8 @@
 // Preferences storage and the dialog, one control per InteractionPolicy member.
 #include "preferences.h"
 
+#include <algorithm>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -24,6 +26,7 @@ Preferences loadPreferences() {
                              .toStdString(),
                          p.engine))
         p.engine = EngineKind::Embree;
+    p.autosaveSeconds = std::max(0, s.value(QStringLiteral("autosave/seconds"), p.autosaveSeconds).toInt());
     return p;
 }
 
@@ -32,6 +35,7 @@ void savePreferences(const Preferences& p) {
     s.setValue(QStringLiteral("session/policy"), QString::fromStdString(policyToJson(p.policy)));
     s.setValue(QStringLiteral("session/threads"), p.threads);
     s.setValue(QStringLiteral("session/engine"), QString::fromLatin1(engineName(p.engine)));
+    s.setValue(QStringLiteral("autosave/seconds"), p.autosaveSeconds);
 }
 
 namespace {
@@ -141,6 +145,14 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
         notify();
     });
     form->addRow(tr("Ray engine"), engine);
+    auto* autosave = new QSpinBox(this);
+    autosave->setObjectName(QStringLiteral("autosaveSeconds"));
+    autosave->setRange(0, 24 * 3600);
+    autosave->setSuffix(tr(" s"));
+    autosave->setSpecialValueText(tr("Off"));
+    autosave->setValue(prefs_.autosaveSeconds);
+    connect(autosave, &QSpinBox::valueChanged, this, [=, this](int v) { prefs_.autosaveSeconds = v; notify(); });
+    form->addRow(tr("Autosave every"), autosave);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::accept);

@@ -1,5 +1,5 @@
-// Preferences: the session's interaction policy and thread count, stored in QSettings, and
-// the dialog that edits them live.
+// Preferences: the session's interaction policy, thread count and autosave interval, stored in
+// QSettings, and the dialog that edits them live.
 #pragma once
 
 #include "accel/ray_engine.h"
@@ -14,6 +14,7 @@ struct Preferences {
     InteractionPolicy policy;
     int threads = 0;  ///< 0: all cores.
     EngineKind engine = EngineKind::Embree;  ///< Who answers the viewport's ray queries.
+    int autosaveSeconds = 60;  ///< Autosave interval while the document is modified; 0: off.
 };
 
 /// Reads preferences from QSettings (defaults where absent or unreadable).

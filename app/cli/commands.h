@@ -23,7 +23,4 @@ void applyRenderOverrides(const Arguments& args, RenderSettings& settings);
 /// The ray engine `--engine embree|builtin` names (Embree when absent); UsageError otherwise.
 EngineKind engineOption(const Arguments& args);
 
-/// Largest accepted image side; larger images are refused before any allocation.
-inline constexpr int kMaxImageSide = 16384;
-
 }  // namespace rs::cli

@@ -4,6 +4,7 @@
 #include "progress_bar.h"
 
 #include "image/image_io.h"
+#include "integrator/cost_estimate.h"
 #include "integrator/renderer.h"
 
 #include <cstdio>
@@ -15,7 +16,7 @@ int runRender(int argc, char** argv) {
     OptionSpec spec;
     spec.valued = {"--output",     "--width",          "--height",        "--max-depth",
                    "--min-weight", "--shadow-samples", "--supersampling", "--threads", "--engine"};
-    spec.flags = {"--stats"};
+    spec.flags = {"--stats", "--force"};
     spec.aliases = {{"-o", "--output"}};
     Arguments args(argc, argv, 2, spec);
     if (args.positional().size() != 1)
@@ -29,6 +30,13 @@ int runRender(int argc, char** argv) {
     SceneDocument doc;
     if (!loadSceneOrReport(args.positional()[0], doc)) return 2;
     applyRenderOverrides(args, doc.render);
+    // Before compiling or allocating anything: a typo'd depth or sample count should cost a
+    // message, not an afternoon.
+    if (const std::string over = budgetExceeded(estimateCost(doc)); !over.empty() && !args.has("--force")) {
+        std::fprintf(stderr, "raystudio-cli render: %s; pass --force to render it anyway\n",
+                     over.c_str());
+        return 2;
+    }
 
     const CompiledScene scene(doc, nullptr, engineOption(args));
     ProgressBar bar;

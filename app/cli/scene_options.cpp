@@ -19,6 +19,8 @@ bool loadSceneOrReport(const std::string& path, SceneDocument& doc) {
 void applyRenderOverrides(const Arguments& args, RenderSettings& settings) {
     if (auto v = args.intValue("--width", 1, kMaxImageSide)) settings.width = *v;
     if (auto v = args.intValue("--height", 1, kMaxImageSide)) settings.height = *v;
+    if (std::string area = imageSizeError(settings.width, settings.height); !area.empty())
+        throw UsageError{area};
     if (auto v = args.intValue("--max-depth", 0, kMaxDepthLimit)) settings.maxDepth = *v;
     if (auto v = args.numberValue("--min-weight")) {
         // The scene file's rule for min_weight, applied to the float that is stored.

@@ -8,6 +8,15 @@
 #include <QCommandLineParser>
 #include <QSurfaceFormat>
 
+#include <cstdio>
+
+namespace {
+int usageError(const char* message) {
+    std::fprintf(stderr, "raystudio: %s\n", message);
+    return 2;
+}
+}  // namespace
+
 int main(int argc, char* argv[]) {
     QSurfaceFormat format;
     format.setVersion(3, 3);
@@ -25,15 +34,43 @@ int main(int argc, char* argv[]) {
     parser.addVersionOption();
     parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file to open."));
     rs::ui::addMeasurementOptions(parser);
+    // Both exist for scripted runs (the recovery tests, kiosks): a short interval and no dialog.
+    const QCommandLineOption autosaveOption(
+        QStringLiteral("autosave-seconds"),
+        QStringLiteral("Autosave interval for this run, overriding Preferences (0: off)."),
+        QStringLiteral("seconds"));
+    const QCommandLineOption recoverOption(
+        QStringLiteral("recover"),
+        QStringLiteral("What to do with a crashed session's autosave: ask (default), yes or no."),
+        QStringLiteral("ask|yes|no"), QStringLiteral("ask"));
+    parser.addOption(autosaveOption);
+    parser.addOption(recoverOption);
     parser.process(app);
     if (const int rc = rs::ui::runRequestedMeasurement(parser); rc >= 0) return rc;
 
+    using Answer = rs::ui::MainWindow::RecoveryAnswer;
+    const QString recover = parser.value(recoverOption);
+    if (recover != QLatin1String("ask") && recover != QLatin1String("yes") &&
+        recover != QLatin1String("no"))
+        return usageError("--recover must be ask, yes or no");
+    const Answer answer = recover == QLatin1String("yes")  ? Answer::Recover
+                          : recover == QLatin1String("no") ? Answer::Discard
+                                                           : Answer::Ask;
+
     rs::ui::MainWindow window;
+    if (parser.isSet(autosaveOption)) {
+        bool ok = false;
+        const double seconds = parser.value(autosaveOption).toDouble(&ok);
+        if (!ok || seconds < 0.0 || seconds > 86400.0)
+            return usageError("--autosave-seconds must be in [0, 86400]");
+        window.setAutosaveIntervalMs(int(seconds * 1000.0 + 0.5));
+    }
     window.show();
     const QStringList args = parser.positionalArguments();
     const QString scene = args.isEmpty()
                               ? rs::ui::defaultScenePath(QCoreApplication::applicationDirPath())
                               : args.first();
     if (!scene.isEmpty()) window.openFile(scene);
+    window.offerRecovery(answer);
     return app.exec();
 }

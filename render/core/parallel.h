@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
+#include <mutex>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -21,18 +23,29 @@ namespace rs {
 #if defined(__SANITIZE_THREAD__)
 
 namespace detail {
-/// Runs `work(k)` for k in [0, count) on a few threads, each taking the next k.
+/// Runs `work(k)` for k in [0, count) on a few threads, each taking the next k. The first
+/// exception stops the others and is rethrown here, as oneTBB does (a std::thread that lets
+/// one escape would terminate the process).
 template <class Work>
 void forkJoin(std::size_t count, const Work& work) {
     std::atomic<std::size_t> next{0};
+    std::mutex failedMutex;
+    std::exception_ptr failed;
     auto worker = [&] {
-        for (std::size_t k; (k = next.fetch_add(1)) < count;) work(k);
+        try {
+            for (std::size_t k; (k = next.fetch_add(1)) < count;) work(k);
+        } catch (...) {
+            next.store(count);
+            std::lock_guard lock(failedMutex);
+            if (!failed) failed = std::current_exception();
+        }
     };
     const unsigned n = std::max(2u, std::min(4u, std::thread::hardware_concurrency()));
     std::vector<std::thread> threads;
     for (unsigned t = 1; t < n; ++t) threads.emplace_back(worker);
     worker();
     for (std::thread& t : threads) t.join();
+    if (failed) std::rethrow_exception(failed);
 }
 }  // namespace detail
 

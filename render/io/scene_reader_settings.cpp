@@ -7,10 +7,6 @@
 namespace rs {
 
 namespace {
-// Images beyond this would need gigabytes of frame buffer; refuse them at load time
-// instead of failing an allocation deep inside a render.
-constexpr int kMaxImageSide = 16384;
-
 glm::dvec3 toDouble(const Vec3& v) {
     return glm::dvec3(v.x, v.y, v.z);
 }
@@ -71,8 +67,12 @@ void readCamera(SceneErrorSink& sink, const Json& json, Camera& camera) {
 void readRenderSettings(SceneErrorSink& sink, const Json& json, RenderSettings& settings) {
     if (!expectObject(sink, json, "/render")) return;
     EntryReader r(sink, json, "/render");
+    // Images beyond kMaxImageSide or kMaxImagePixels would need gigabytes of frame buffer;
+    // refuse them at load time instead of failing an allocation deep inside a render.
     readImageSide(r, "width", settings.width);
     readImageSide(r, "height", settings.height);
+    if (std::string area = imageSizeError(settings.width, settings.height); !area.empty())
+        sink.atValue("/render", area);
     // Upper limits the format leaves open: beyond them a render overflows the stack or never ends.
     r.integer("max_depth", settings.maxDepth, 0, kMaxDepthLimit);
     r.number("min_weight", settings.minWeight, NumberRange::fractionBelowOne());

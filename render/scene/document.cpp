@@ -1,4 +1,4 @@
-// Document bookkeeping: id assignment, look-ups and content comparison.
+// Document bookkeeping: id assignment, look-ups, content comparison and the image size limits.
 #include "scene/document.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -73,6 +73,21 @@ bool SceneDocument::sameContent(const SceneDocument& o) const {
 const char* geometryTypeName(const Geometry& g) {
     static const char* const names[] = {"sphere", "plane", "rectangle", "box", "mesh"};
     return names[g.index()];
+}
+
+std::string imageSizeError(int width, int height) {
+    if (width < 1 || height < 1)
+        return "image size " + std::to_string(width) + " x " + std::to_string(height) +
+               " must be at least 1 x 1";
+    if (width > kMaxImageSide || height > kMaxImageSide)
+        return "image size " + std::to_string(width) + " x " + std::to_string(height) +
+               " is too large (each side at most " + std::to_string(kMaxImageSide) + " pixels)";
+    const long long area = (long long)width * height;
+    if (area > kMaxImagePixels)
+        return "image size " + std::to_string(width) + " x " + std::to_string(height) + " (" +
+               std::to_string(area / (1024 * 1024)) + " Mpixels) is too large (at most " +
+               std::to_string(kMaxImagePixels / (1024 * 1024)) + " Mpixels)";
+    return {};
 }
 
 }  // namespace rs

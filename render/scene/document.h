@@ -40,6 +40,15 @@ struct Camera {
 inline constexpr int kMaxDepthLimit = 1000;
 /// Largest accepted shadow_samples and supersampling (per-pixel sample counts are 16-bit).
 inline constexpr int kMaxSampleCount = 4096;
+/// Largest accepted image width or height, in pixels.
+inline constexpr int kMaxImageSide = 16384;
+/// Largest accepted image area: the interactive session's deep frame holds about 100 bytes a
+/// pixel, so 64 Mpixels is already some 6 GiB. Bounding each side alone would still let
+/// 16384 x 16384 (268 Mpixels, 27 GiB) through to fail an allocation deep inside a render.
+inline constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;
+/// Empty when a width x height image is within kMaxImageSide and kMaxImagePixels, else the
+/// message that refuses it (naming the limit).
+std::string imageSizeError(int width, int height);
 
 /// Render settings (scene-format.md, "render").
 struct RenderSettings {

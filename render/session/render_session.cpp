@@ -14,6 +14,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
+#include <stdexcept>
+#include <string>
 
 namespace rs {
 
@@ -252,10 +255,52 @@ bool RenderSession::hasWorkLocked() const {
 
 void RenderSession::run() {
     std::unique_lock lock(mutex_);
+    for (;;) {
+        try {
+            runPasses(lock);
+            return;
+        } catch (...) {
+            // A worker's or the planner's exception (bad_alloc of a huge frame, ...) must not
+            // terminate the designer: report it, keep the document, wait for the next edit
+            // (the same work would fail the same way).
+            std::string message = "rendering failed";
+            try {
+                throw;
+            } catch (const std::bad_alloc&) {
+                message = "rendering failed: out of memory";
+            } catch (const std::exception& e) {
+                message = std::string("rendering failed: ") + e.what();
+            } catch (...) {
+            }
+            if (!lock.owns_lock()) lock.lock();
+            running_ = false;
+            if (pendingResize_) {
+                // A resize that threw leaves sides and buffers disagreeing: readers must see an
+                // empty frame instead (the next update sizes it again).
+                std::unique_lock frameLock(frameMutex_);
+                frame_ = DeepFrame{};
+            }
+            const uint64_t failed = generation_.load();
+            SessionObserver* observer = observer_;
+            lock.unlock();
+            done_.notify_all();
+            if (observer) observer->error(message);
+            lock.lock();
+            wake_.wait(lock, [&] { return stop_ || generation_.load() != failed; });
+            if (stop_) return;
+        }
+    }
+}
+
+void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
     Plan plan;
     for (;;) {
         wake_.wait(lock, [&] { return stop_ || hasWorkLocked(); });
         if (stop_) return;
+        if (pendingResize_) {
+            const std::string tooLarge = imageSizeError(doc_.render.width, doc_.render.height);
+            if (!tooLarge.empty()) throw std::length_error(tooLarge);
+        }
         plan.reset();
         const auto planStart = std::chrono::steady_clock::now();
         if (!planLocked(plan)) continue;

@@ -86,6 +86,7 @@ public:
 
 private:
     void run();
+    void runPasses(std::unique_lock<std::mutex>& lock);
     bool hasWorkLocked() const;
     bool planLocked(Plan& plan);
     void execute(Plan& plan, PassInfo& info);

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace rs {
 
@@ -40,6 +41,9 @@ public:
     virtual void passDone(const PassInfo& info) { (void)info; }
     /// Every pixel is final for this generation: the frame equals a full render.
     virtual void frameComplete(uint64_t generation) { (void)generation; }
+    /// Work failed (an allocation, an exception in a worker): the session keeps its document
+    /// and waits for the next update instead of terminating the process.
+    virtual void error(const std::string& message) { (void)message; }
 };
 
 }  // namespace rs

@@ -305,3 +305,42 @@ TEST_F(CliTest, DeepRecursionBetweenMirrors_IsRefusedNotACrash) {
 }
 
 }  // namespace
+
+namespace {
+
+// The cost budget: a render estimated over it is refused before anything is compiled, with
+// a message naming the budget, unless --force.
+TEST_F(CliTest, Render_OverTheCostBudget_Exit2NamingTheBudget) {
+    CliRun r = cli("render " + kRoom + " -o " + path("deep.png") + " --max-depth 1000 --min-weight 0");
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("ray budget of 1e+11 rays"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_FALSE(fs::exists(path("deep.png")));
+}
+
+TEST_F(CliTest, Render_OverTheCostBudgetWithForce_Renders) {
+    // Glass the camera never sees: the estimate (a depth-1000 glass tree) is far over the
+    // budget, the render itself one ray a pixel.
+    const std::string scene = path("behind.scene.json");
+    std::ofstream(scene) << R"({
+  "format": "raystudio-scene", "version": 1,
+  "camera": { "position": [0, 0, 0], "target": [0, 0, -1] },
+  "render": { "width": 4, "height": 4, "max_depth": 1000, "min_weight": 0 },
+  "materials": [ { "name": "glass", "transparency": 0.9 } ],
+  "objects": [ { "name": "ball", "type": "sphere", "center": [0, 0, 10], "radius": 1, "material": "glass" } ]
+})";
+    CliRun r = cli("render " + scene + " -o " + path("behind.png"));
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    r = cli("render " + scene + " -o " + path("behind.png") + " --force");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(path("behind.png")));
+}
+
+TEST_F(CliTest, Render_OverTheAreaLimit_Exit2NamingTheLimit) {
+    CliRun r = cli("render " + kRoom + " -o " + path("huge.png") + " --width 16384 --height 16384 --force");
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("at most 64 Mpixels"), std::string::npos) << r.err;
+}
+
+}  // namespace

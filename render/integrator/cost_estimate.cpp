@@ -1,0 +1,84 @@
+// Upper estimates of a render's rays and frame memory, and the check against the budget.
+#include "integrator/cost_estimate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace rs {
+
+namespace {
+
+/// Bytes a pixel costs the session's deep frame (deep_frame.h: colour, base and sample sum,
+/// count, id, depth, normal, cost, state, flags, hit bound, record and segment indices).
+constexpr uint64_t kSessionBytesPerPixel = 3 * 12 + 2 + 4 + 4 + 12 + 4 + 1 + 1 + 16 + 5 + 5;
+
+std::string format(const char* pattern, double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
+}
+
+std::string gib(uint64_t bytes) {
+    return format("%.1f GiB", double(bytes) / double(1u << 30));
+}
+
+/// Rays of one camera sample's tree, from the kinds of surface it can meet.
+double treeRays(const SceneDocument& doc) {
+    bool mirror = false, glass = false;
+    for (const Object& o : doc.objects) {
+        if (!o.visible) continue;
+        const Material* m = doc.findMaterial(o.material);
+        if (!m) continue;  // The built-in grey diffuse.
+        mirror = mirror || m->reflectivity > 0.0f;
+        glass = glass || m->transparency > 0.0f;
+    }
+    const double depth = doc.render.maxDepth;
+    if (glass) {
+        // Nodes of a full binary tree of this depth, capped by the min_weight bound per level.
+        const double full = std::exp2(depth + 1.0) - 1.0;  // Finite up to kMaxDepthLimit.
+        const float w = doc.render.minWeight;
+        return w > 0.0f ? std::min(full, 1.0 + depth / double(w)) : full;
+    }
+    // A mirror reflects once per hit (glass's Fresnel split is what makes trees).
+    return mirror ? 1.0 + depth : 1.0;
+}
+
+}  // namespace
+
+CostEstimate estimateCost(const SceneDocument& doc) {
+    const RenderSettings& s = doc.render;
+    CostEstimate e;
+    e.pixels = double(s.width) * double(s.height);
+    e.samplesPerPixel = double(std::max(1, s.supersampling));
+    e.treeRays = treeRays(doc);
+    for (const Light& l : doc.lights)
+        e.shadowRaysPerHit +=
+            l.type == LightType::Point ? std::min(1, s.shadowSamples) : double(s.shadowSamples);
+    e.rays = e.pixels * e.samplesPerPixel * e.treeRays * (1.0 + e.shadowRaysPerHit);
+    const uint64_t pixels = uint64_t(s.width) * uint64_t(s.height);
+    // Linear colour and ids, normals for adaptive supersampling, and the converted image
+    // (up to float RGB for EXR and HDR) while it is written.
+    const uint64_t perPixel = 12 + 4 + (s.adaptiveSupersampling ? 12 : 0) + 12;
+    e.frameBytes = pixels * perPixel;
+    e.sessionFrameBytes = pixels * kSessionBytesPerPixel;
+    return e;
+}
+
+std::string budgetExceeded(const CostEstimate& e, const CostBudget& budget) {
+    std::string text;
+    if (!(e.rays <= budget.rays))
+        text = "the render is estimated at " + format("%.3g", e.rays) +
+               " rays, over the ray budget of " + format("%.3g", budget.rays) + " rays (" +
+               format("%.0f", e.pixels) + " pixels x " + format("%.0f", e.samplesPerPixel) +
+               " samples x " + format("%.4g", e.treeRays) + " rays per ray tree x (1 + " +
+               format("%.0f", e.shadowRaysPerHit) + " shadow rays))";
+    if (e.frameBytes > budget.bytes) {
+        if (!text.empty()) text += "; ";
+        text += "its frame buffers are estimated at " + gib(e.frameBytes) +
+                ", over the memory budget of " + gib(budget.bytes);
+    }
+    return text;
+}
+
+}  // namespace rs

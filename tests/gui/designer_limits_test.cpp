@@ -1,0 +1,133 @@
+// Nothing hangs, nothing terminates, in the designer: Render Image asks before a render over
+// the cost budget, and an allocation that fails (in the viewport's session or a Render Image
+// job) is reported while the document stays as it was.
+#include "gui_test_support.h"
+
+#include "error_reporter.h"
+#include "user_confirmation.h"
+
+#include <QProgressDialog>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <sys/resource.h>
+
+#include <fstream>
+
+using namespace rs;
+using namespace rs::ui;
+using namespace rs::ui::test;
+
+class DesignerLimitsTest : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup();
+
+    void renderImageOverBudget_AsksFirst_AndDeclineStartsNothing();
+    void renderImageOverAreaLimit_IsRefusedWithMessage();
+    void outOfMemory_IsReported_AndDocumentKept();
+
+private:
+    std::unique_ptr<MainWindow> window_;
+    QStringList errors_;
+    QStringList questions_;
+    bool answer_ = false;
+    QTemporaryDir dir_;
+};
+
+void DesignerLimitsTest::init() {
+    errors_.clear();
+    questions_.clear();
+    setErrorHandler(
+        [this](const QString& title, const QString& text) { errors_ << title + ": " + text; });
+    setConfirmationHandler([this](const QString&, const QString& text) {
+        questions_ << text;
+        return answer_;
+    });
+    window_ = std::make_unique<MainWindow>();
+    window_->resize(1000, 700);
+    window_->show();
+    QVERIFY(window_->openFile(scenePath("reference-room.scene.json")));
+    window_->setRenderSize(160, 90);
+    QVERIFY(settle(*window_));
+}
+
+void DesignerLimitsTest::cleanup() {
+    window_->editor()->undoStack()->setClean();  // No save prompt on close.
+    window_.reset();
+    setErrorHandler({});
+    setConfirmationHandler({});
+}
+
+void DesignerLimitsTest::renderImageOverBudget_AsksFirst_AndDeclineStartsNothing() {
+    SceneDocument doc = window_->editor()->document();
+    doc.render.maxDepth = 44;  // The room's glass and mirrors: about 1e4 rays a sample.
+    window_->editor()->edit(QStringLiteral("Deep"), doc);
+    const SceneDocument before = window_->editor()->document();
+    answer_ = false;
+    QVERIFY(!window_->renderImage(dir_.filePath(QStringLiteral("deep.png")), 8000, 8000));
+    QCOMPARE(questions_.size(), 1);
+    QVERIFY2(questions_.first().contains(QStringLiteral("ray budget")),
+             qPrintable(questions_.first()));
+    QVERIFY(window_->findChildren<QProgressDialog*>().isEmpty());  // No job was started.
+    QVERIFY(window_->editor()->document().sameContent(before));
+    // Within the budget nothing is asked.
+    QVERIFY(window_->renderImage(dir_.filePath(QStringLiteral("small.png")), 32, 18));
+    QCOMPARE(questions_.size(), 1);
+    QTRY_VERIFY_WITH_TIMEOUT(QFileInfo::exists(dir_.filePath(QStringLiteral("small.png"))), 30000);
+}
+
+void DesignerLimitsTest::renderImageOverAreaLimit_IsRefusedWithMessage() {
+    answer_ = true;  // Even when the user insists, the area limit holds.
+    QVERIFY(window_->renderImage(dir_.filePath(QStringLiteral("huge.png")), 16384, 16384));
+    QTRY_COMPARE_WITH_TIMEOUT(errors_.size(), 1, 30000);
+    QVERIFY2(errors_.first().contains(QStringLiteral("at most 64 Mpixels")),
+             qPrintable(errors_.first()));
+    QVERIFY(!QFileInfo::exists(dir_.filePath(QStringLiteral("huge.png"))));
+}
+
+void DesignerLimitsTest::outOfMemory_IsReported_AndDocumentKept() {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    QSKIP("sanitizers reserve more address space than the limit allows");
+#else
+    const SceneDocument before = window_->editor()->document();
+    const int undoSteps = window_->editor()->undoStack()->count();
+    // Half a GiB more address space than the process has now: an 8000 x 8000 frame (64
+    // Mpixels, within the area limit) needs gigabytes, so its allocation throws bad_alloc.
+    rlimit old{};
+    QCOMPARE(getrlimit(RLIMIT_AS, &old), 0);
+    long pages = 0;
+    std::ifstream("/proc/self/statm") >> pages;
+    const rlimit tight{rlim_t(pages) * 4096 + (rlim_t(1) << 29), old.rlim_max};
+    QCOMPARE(setrlimit(RLIMIT_AS, &tight), 0);
+    window_->setRenderSize(8000, 8000);  // The viewport's session: its deep frame.
+    window_->session()->flushUpdate();
+    QVERIFY(window_->renderImage(dir_.filePath(QStringLiteral("big.exr")), 8000, 8000));
+    const bool reported = QTest::qWaitFor(
+        [&] {
+            return !errors_.isEmpty() &&
+                   window_->statusBar()->currentMessage().contains(QStringLiteral("out of memory"));
+        },
+        60000);
+    setrlimit(RLIMIT_AS, &old);
+    QVERIFY2(reported,
+             qPrintable(errors_.join('\n') + " | " + window_->statusBar()->currentMessage()));
+    QVERIFY2(errors_.first().contains(QStringLiteral("out of memory")),
+             qPrintable(errors_.first()));
+    // The document is as it was (but for the size this test set), and so is its history.
+    SceneDocument expected = before;
+    expected.render.width = expected.render.height = 8000;
+    QVERIFY(window_->editor()->document().sameContent(expected));
+    QCOMPARE(window_->editor()->undoStack()->count(), undoSteps);
+    // And the viewport renders again after the next edit.
+    window_->setRenderSize(160, 90);
+    QVERIFY(settle(*window_));
+    QCOMPARE(window_->viewport()->frame()->width, 160);
+#endif
+}
+
+QTEST_MAIN(DesignerLimitsTest)
+#include "designer_limits_test.moc"
