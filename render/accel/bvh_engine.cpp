@@ -140,30 +140,36 @@ bool BvhEngine::closest(const Ray& ray, float tmax, EngineHit& hit) const {
     return found;
 }
 
-bool BvhEngine::closestFlat(const Ray& ray, float& tmax, EngineHit& hit) const {
-    // The sphere normal is only worked out for the winner, once, after all tests.
-    const SphereBlock* best = nullptr;
-    int bestLane = 0;
+template <class OnHit>
+bool BvhEngine::forEachFlatHit(const Ray& ray, float& tmax, OnHit&& onHit) const {
     const float a = glm::dot(ray.dir, ray.dir);
     for (const SphereBlock& b : sphereBlocks_) {
         const SpherePrelude p = spherePrelude(b, ray, a);
         for (int k = 0; k < 4; ++k) {
             float t, offset;
             if (p.disc[k] >= 0.0f &&
-                solveRecentredSphere(a, p.tProj[k], p.bHalf[k], p.c[k], 0.0f, tmax, t, offset)) {
-                tmax = t;
-                best = &b;
-                bestLane = k;
-            }
+                solveRecentredSphere(a, p.tProj[k], p.bHalf[k], p.c[k], 0.0f, tmax, t, offset) &&
+                onHit(t, b.prim[k]))
+                return true;
         }
     }
-    if (!best) return false;
+    return false;
+}
+
+bool BvhEngine::closestFlat(const Ray& ray, float& tmax, EngineHit& hit) const {
+    // The sphere normal is only worked out for the winner, once, after all tests.
+    uint32_t best = kNoSlot;
+    forEachFlatHit(ray, tmax, [&](float t, uint32_t prim) {
+        tmax = t;
+        best = prim;
+        return false;  // keep looking for a nearer one
+    });
+    if (best == kNoSlot) return false;
     // The winner again with intersect(SphereShape) itself: the same t, and its normal.
-    const uint32_t index = best->prim[bestLane];
     ShapeHit sh;
-    const SphereShape& s = std::get<SphereShape>((*geometry_.primitives)[index].shape);
+    const SphereShape& s = std::get<SphereShape>((*geometry_.primitives)[best].shape);
     if (!rs::intersect(s, ray, 0.0f, kInfinity, sh)) return false;
-    hit = {tmax, sh.n, index};
+    hit = {tmax, sh.n, best};
     return true;
 }
 
@@ -183,17 +189,7 @@ bool BvhEngine::occluded(const Ray& ray, float tmax) const {
 }
 
 bool BvhEngine::occludedFlat(const Ray& ray, float tmax) const {
-    const float a = glm::dot(ray.dir, ray.dir);
-    for (const SphereBlock& b : sphereBlocks_) {
-        const SpherePrelude p = spherePrelude(b, ray, a);
-        for (int k = 0; k < 4; ++k) {
-            float t, offset;
-            if (p.disc[k] >= 0.0f &&
-                solveRecentredSphere(a, p.tProj[k], p.bHalf[k], p.c[k], 0.0f, tmax, t, offset))
-                return true;
-        }
-    }
-    return false;
+    return forEachFlatHit(ray, tmax, [](float, uint32_t) { return true; });
 }
 
 bool BvhEngine::occludedToLight(uint32_t light, const Ray& ray, float tmax) const {

@@ -39,6 +39,9 @@ private:
     bool closest(const Ray& ray, float tmax, EngineHit& hit) const;
     bool occluded(const Ray& ray, float tmax) const;
     bool occludedToLight(uint32_t light, const Ray& ray, float tmax) const;
+    /// Calls onHit(t, prim) for each flat sphere hit within (0, tmax) until it returns true.
+    template <class OnHit>
+    bool forEachFlatHit(const Ray& ray, float& tmax, OnHit&& onHit) const;
     bool closestFlat(const Ray& ray, float& tmax, EngineHit& hit) const;
     bool occludedFlat(const Ray& ray, float tmax) const;
     /// The flat blocks and light buffers from the primitives; after any change to them.

@@ -169,13 +169,9 @@ TEST(Renderer, SameImageForAnyThreadCount_EachEngine_MeshesBoxesAndASphereLight)
         Object mesh;
         mesh.name = "mesh";
         mesh.material = "glass";
-        auto data = std::make_shared<MeshData>();
-        data->positions = {Vec3(0, 0.5f, 0), Vec3(-0.4f, -0.3f, 0.3f), Vec3(0.4f, -0.3f, 0.3f),
-                           Vec3(0, -0.3f, -0.4f)};
-        data->indices = {0, 1, 2, 0, 2, 3, 0, 3, 1, 1, 3, 2};
         MeshGeometry g;
         g.file = "tetrahedron.obj";
-        g.data = data;
+        g.data = test::tetrahedron();
         mesh.geometry = g;
         mesh.transform.translate = Vec3(0.9f, -1.2f, -3.3f);
         mesh.transform.scale = Vec3(1.5f);

@@ -35,15 +35,6 @@ float maxDiffToFullRender(RenderSession& session, const SceneDocument& doc) {
     return worst;
 }
 
-/// A small tetrahedron mesh built in code (no file), shared by the documents that use it.
-std::shared_ptr<const MeshData> tetrahedron() {
-    auto mesh = std::make_shared<MeshData>();
-    mesh->positions = {Vec3(0, 0.5f, 0), Vec3(-0.4f, -0.3f, 0.3f), Vec3(0.4f, -0.3f, 0.3f),
-                       Vec3(0, -0.3f, -0.4f)};
-    mesh->indices = {0, 1, 2, 0, 2, 3, 0, 3, 1, 1, 3, 2};
-    return mesh;
-}
-
 /// testRoom plus one object of every other kind: a rotated box, a rectangle, a mesh.
 SceneDocument mixedRoom(bool orthographic) {
     SceneDocument doc = test::smallRoom(64, 48);
@@ -65,7 +56,7 @@ SceneDocument mixedRoom(bool orthographic) {
     mesh.material = "white";
     MeshGeometry g;
     g.file = "tetrahedron.obj";
-    g.data = tetrahedron();
+    g.data = test::tetrahedron();
     g.smoothNormals = false;
     mesh.geometry = g;
     mesh.transform.translate = Vec3(0.8f, -1.5f, -3.2f);

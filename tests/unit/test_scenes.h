@@ -2,6 +2,9 @@
 #pragma once
 
 #include "scene/document.h"
+#include "scene/mesh_data.h"
+
+#include <memory>
 
 namespace rs::test {
 
@@ -66,6 +69,15 @@ inline SceneDocument smallRoom(int width = 64, int height = 48) {
     addSphere(doc, "glass ball", Vec3(1.2f, -1.4f, -4), 0.6f, "glass");
     addPointLight(doc, "key", Vec3(0, 3, -3));
     return doc;
+}
+
+/// A small tetrahedron mesh built in code (no file), shared by the documents that use it.
+inline std::shared_ptr<const MeshData> tetrahedron() {
+    auto mesh = std::make_shared<MeshData>();
+    mesh->positions = {Vec3(0, 0.5f, 0), Vec3(-0.4f, -0.3f, 0.3f), Vec3(0.4f, -0.3f, 0.3f),
+                       Vec3(0, -0.3f, -0.4f)};
+    mesh->indices = {0, 1, 2, 0, 2, 3, 0, 3, 1, 1, 3, 2};
+    return mesh;
 }
 
 }  // namespace rs::test
