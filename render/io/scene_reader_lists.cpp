@@ -46,15 +46,11 @@ void readLight(EntryReader& r, Light& light) {
 
 void UniqueNames::add(SceneErrorSink& sink, const std::string& name,
                       const std::string& entryPointer) {
-    for (const auto& [seenName, seenPointer] : seen_) {
-        if (seenName == name) {
-            sink.atValue(appendPointer(entryPointer, "name"),
-                         std::string("duplicate ") + kind_ + " name \"" + name + "\" (also at " +
-                             seenPointer + ")");
-            return;
-        }
-    }
-    seen_.emplace_back(name, entryPointer);
+    const auto [it, inserted] = seen_.try_emplace(name, entryPointer);
+    if (!inserted)
+        sink.atValue(appendPointer(entryPointer, "name"),
+                     std::string("duplicate ") + kind_ + " name \"" + name + "\" (also at " +
+                         it->second + ")");
 }
 
 void readMaterials(SceneErrorSink& sink, const Json& json, SceneDocument& doc) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <unordered_map>
 
 #include "io/scene_entry_reader.h"
 #include "scene/document.h"
@@ -35,7 +36,9 @@ public:
 
 private:
     const char* kind_;
-    std::vector<std::pair<std::string, std::string>> seen_;  // name, entry pointer
+    /// Name -> entry pointer of its first use: a hash map, so 100,000 objects load in linear
+    /// time (a list scan made that 38 s).
+    std::unordered_map<std::string, std::string> seen_;
 };
 
 }  // namespace rs
