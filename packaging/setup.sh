@@ -6,7 +6,7 @@ readonly DEFAULT_SCENE="scenes/reference-room.scene.json"
 
 # Everything the build, the tests and the designer need, as Debian 12 names them.
 readonly REQUIRED_PACKAGES=(
-    build-essential cmake ninja-build pkg-config git
+    build-essential cmake ninja-build pkg-config git file
     qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libgl-dev
     libglm-dev libopenimageio-dev openimageio-tools libassimp-dev libtbb-dev libembree-dev
     nlohmann-json3-dev libgtest-dev googletest
@@ -26,6 +26,8 @@ on later runs), then:
                 SCENE defaults to ${DEFAULT_SCENE}.
   test          run the session tests under ThreadSanitizer (build/tsan), then the whole
                 test suite (ctest), and exit with the status.
+  package       build the Debian package build/release/raystudio_<version>_<arch>.deb
+                with CPack (install it with: sudo apt install ./build/release/raystudio_*.deb).
   -h, --help    show this help.
 
 Works from any folder. Run as root, or as a user who may use sudo for apt-get.
@@ -112,6 +114,16 @@ run_tests() {
     return "${status}"
 }
 
+# The Debian package from the install rules (packaging/cpack.cmake); dpkg-shlibdeps, from
+# dpkg-dev (part of build-essential), fills in the run-time dependencies.
+build_package() {
+    say "Building the Debian package with CPack."
+    (cd build/release && cpack -G DEB)
+    local deb
+    deb="$(ls -t build/release/raystudio_*.deb | head -n 1)"
+    say "Package written to ${PWD}/${deb}"
+}
+
 run_scene() {
     local scene="$1"
     [[ -f "${scene}" ]] || die "scene file not found: ${scene}"
@@ -160,6 +172,9 @@ main() {
         test)
             (($# == 0)) || die "test takes no arguments (see --help)"
             ;;
+        package)
+            (($# == 0)) || die "package takes no arguments (see --help)"
+            ;;
         *)
             usage >&2
             die "unknown command '${command}'"
@@ -186,6 +201,7 @@ main() {
     case "${command}" in
         run) run_scene "${scene}" ;;
         test) run_tests ;;
+        package) build_package ;;
     esac
 }
 

@@ -1,6 +1,7 @@
 // raystudio-cli entry point: dispatches to the sub-commands and maps failures to exit codes.
 #include "arguments.h"
 #include "commands.h"
+#include "raystudio_version.h"
 
 #include <cstdio>
 #include <cstring>
@@ -12,6 +13,8 @@ namespace {
 
 const char* const kUsage =
     "usage: raystudio-cli <command> [options]\n"
+    "\n"
+    "       raystudio-cli --version\n"
     "\n"
     "commands:\n"
     "  render SCENE -o OUT [--width W] [--height H] [--max-depth D] [--min-weight W]\n"
@@ -46,6 +49,10 @@ int main(int argc, char** argv) {
         if (command == "validate") return rs::cli::runValidate(argc, argv);
         if (command == "bench") return rs::cli::runBench(argc, argv);
         if (command == "drag") return rs::cli::runDrag(argc, argv);
+        if (command == "--version") {
+            std::puts("raystudio-cli " RAYSTUDIO_VERSION_STRING);
+            return 0;
+        }
         if (command == "--help" || command == "-h" || command == "help") {
             std::fputs(kUsage, stdout);
             return 0;

@@ -3,12 +3,14 @@
 #include "default_scene.h"
 #include "drag_measurement.h"
 #include "main_window.h"
+#include "raystudio_version.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QSurfaceFormat>
 
 #include <cstdio>
+#include <cstring>
 
 namespace {
 int usageError(const char* message) {
@@ -18,6 +20,13 @@ int usageError(const char* message) {
 }  // namespace
 
 int main(int argc, char* argv[]) {
+    // Before QApplication, which needs a display: --version works on a headless machine too.
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--version") == 0) {
+            std::puts("raystudio " RAYSTUDIO_VERSION_STRING);
+            return 0;
+        }
+    }
     QSurfaceFormat format;
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
@@ -26,7 +35,7 @@ int main(int argc, char* argv[]) {
     QApplication app(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("RayStudio"));
     QCoreApplication::setApplicationName(QStringLiteral("RayStudio"));
-    QCoreApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(RAYSTUDIO_VERSION_STRING));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Interactive Whitted ray-traced scene designer"));
