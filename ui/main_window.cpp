@@ -330,6 +330,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
         writeSettings();
         // A render still running would keep the process alive after the window is gone.
         renders_->cancelAll();
+        renderWindow_->close();  // A window of this one, not a reason to stay open.
         cancelJobs(this);
         autosave_->discard();  // A clean exit: nothing to recover next time.
         event->accept();

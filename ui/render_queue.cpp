@@ -10,6 +10,7 @@ namespace rs::ui {
 RenderQueue::RenderQueue(QObject* parent) : QObject(parent) {}
 
 RenderQueue::~RenderQueue() {
+    blockSignals(true);  // Whoever listens may be half torn down with the window.
     cancelAll();
 }
 
@@ -30,6 +31,7 @@ void RenderQueue::cancelAll() {
     const QPointer<QThread> thread = running_->thread;
     running_.reset();
     if (thread) thread->wait();
+    Q_EMIT idle();
 }
 
 void RenderQueue::startNext() {

@@ -33,7 +33,7 @@ public:
     /// Stops the running render (nothing is written); the next queued one then starts.
     void cancelCurrent();
     /// Drops the queued renders, stops the running one and waits until its thread is gone
-    /// (within a tile): a closing window. No finished() is emitted for any of them.
+    /// (within a tile): a closing window. No finished() is emitted for any of them, only idle().
     void cancelAll();
 
     bool busy() const { return running_ != nullptr; }

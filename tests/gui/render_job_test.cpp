@@ -135,6 +135,7 @@ void RenderJobTest::dragWhileRendering_IsAppliedAndUndoable_AndTheViewportRender
     QVERIFY(window_->renderQueue()->busy());
     window_->renderQueue()->cancelAll();
     QVERIFY(!QFileInfo::exists(path));
+    QVERIFY(!window_->renderStatus()->isVisible());
     QVERIFY(errors_.isEmpty());
 }
 
