@@ -262,7 +262,8 @@ void MainWindow::createRenderQueue() {
         renderWindow_->begin(path, w, h);
         if (!renderWindow_->isVisible()) {
             renderWindow_->resize(renderWindow_->sizeHint());
-            renderWindow_->show();
+            renderWindow_->show();  // Without activating it (RenderWindow), but on top.
+            renderWindow_->raise();
         }
     });
     connect(renders_, &RenderQueue::tileReady, renderWindow_, &RenderWindow::putTile);

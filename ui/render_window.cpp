@@ -10,6 +10,8 @@ RenderWindow::RenderWindow(QWidget* parent) : QWidget(parent, Qt::Window) {
     setObjectName(QStringLiteral("renderWindow"));
     setWindowTitle(tr("Render"));
     setAttribute(Qt::WA_OpaquePaintEvent);
+    // A queued render that starts must not take the keyboard from a field being edited.
+    setAttribute(Qt::WA_ShowWithoutActivating);
 }
 
 void RenderWindow::begin(const QString& path, int width, int height) {
