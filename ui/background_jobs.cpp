@@ -2,6 +2,7 @@
 #include "background_jobs.h"
 
 #include "image/image_io.h"
+#include "image/tonemap.h"
 #include "integrator/renderer.h"
 #include "snapshot/compiled_scene.h"
 
@@ -51,8 +52,8 @@ QProgressDialog* makeProgress(QWidget* parent, const QString& text, int maximum)
 /// (its window closes) the thread must be gone before the objects `work` reports to are:
 /// `cancel` is set first so the wait ends at the work's next check, not when it completes.
 /// Quitting the application sets it too, before any window is torn down.
-void startWorker(QObject* owner, std::shared_ptr<std::atomic<bool>> cancel,
-                 std::function<void()> work) {
+QThread* startWorker(QObject* owner, std::shared_ptr<std::atomic<bool>> cancel,
+                     std::function<void()> work) {
     QThread* thread = QThread::create(std::move(work));
     QObject::connect(thread, &QThread::finished, thread, &QObject::deleteLater);
     QObject::connect(owner, &QObject::destroyed, thread, [thread, cancel] {
@@ -62,6 +63,20 @@ void startWorker(QObject* owner, std::shared_ptr<std::atomic<bool>> cancel,
     if (QCoreApplication* app = QCoreApplication::instance())
         QObject::connect(app, &QCoreApplication::aboutToQuit, thread, [cancel] { *cancel = true; });
     thread->start();
+    return thread;
+}
+
+/// Tile [x0, x1) x [y0, y1) of `image` as the display shows it (tone-mapped 8-bit sRGB).
+QImage displayTile(const ImageRgb& image, int x0, int y0, int x1, int y1, ToneMap op,
+                   float exposure) {
+    QImage tile(x1 - x0, y1 - y0, QImage::Format_RGB888);
+    for (int y = y0; y < y1; ++y) {
+        uchar* line = tile.scanLine(y - y0);
+        for (int x = x0; x < x1; ++x)
+            toDisplay8(image.pixels[std::size_t(y) * std::size_t(image.width) + std::size_t(x)], op,
+                       exposure, line + 3 * (x - x0));
+    }
+    return tile;
 }
 
 }  // namespace
@@ -87,17 +102,10 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
     });
 }
 
-void renderToFileAsync(QWidget* parent, const SceneDocument& doc, const QString& path,
-                       int threads, std::function<void(bool ok, const QString& error)> done) {
-    QPointer<QProgressDialog> dialog = makeProgress(parent, QObject::tr("Rendering %1 ...").arg(path), 1);
-    // Not window-modal: Qt refuses the window manager's close of a window a modal dialog
-    // blocks, so the main window could not be closed during a render. The render works on
-    // its own copy of the document, so editing meanwhile is harmless.
-    dialog->setWindowModality(Qt::NonModal);
-    auto cancel = std::make_shared<std::atomic<bool>>(false);
-    QObject::connect(dialog, &QProgressDialog::canceled, dialog, [cancel] { *cancel = true; });
-    QObject* receiver = parent ? static_cast<QObject*>(parent) : dialog.data();
-    startWorker(dialog, cancel, [=, file = path.toStdString()] {
+QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QString& path,
+                           int threads, std::shared_ptr<std::atomic<bool>> cancel,
+                           RenderReport report) {
+    return startWorker(receiver, cancel, [=, file = path.toStdString()] {
         std::string error = imageSizeError(doc.render.width, doc.render.height);
         bool ok = false;
         if (error.empty()) {
@@ -106,23 +114,32 @@ void renderToFileAsync(QWidget* parent, const SceneDocument& doc, const QString&
                 RenderOptions options;
                 options.threads = threads;
                 options.cancel = cancel.get();
-                options.progress = [receiver, dialog](int doneTiles, int total) {
-                    QMetaObject::invokeMethod(receiver, [=] {
-                        if (!dialog) return;
-                        dialog->setMaximum(total);
-                        dialog->setValue(doneTiles);
-                    }, Qt::QueuedConnection);
-                };
+                options.ids = false;  // Only the image is written.
+                if (report.progress)
+                    options.progress = [receiver, progress = report.progress](int d, int total) {
+                        QMetaObject::invokeMethod(receiver, [=] { progress(d, total); },
+                                                  Qt::QueuedConnection);
+                    };
+                if (report.tile)
+                    options.tileDone = [receiver, tile = report.tile, op = doc.render.tonemap,
+                                        exposure = doc.render.exposure](
+                                           const ImageRgb& image, int x0, int y0, int x1, int y1) {
+                        // Tone-mapped here, on the worker: the GUI thread only blits.
+                        const QImage pixels = displayTile(image, x0, y0, x1, y1, op, exposure);
+                        const QRect where(x0, y0, x1 - x0, y1 - y0);
+                        QMetaObject::invokeMethod(receiver, [=] { tile(pixels, where); },
+                                                  Qt::QueuedConnection);
+                    };
                 const RenderResult result = renderImage(scene, options);
-                ok = !result.cancelled &&
+                // Checked once more so a cancel that lands after the last tile writes nothing.
+                ok = !result.cancelled && !*cancel &&
                      writeImage(file, result.image, doc.render.tonemap, doc.render.exposure, error);
             } catch (...) {
                 error = "rendering " + file + " failed: " + describeFailure(std::current_exception());
             }
         }
-        QMetaObject::invokeMethod(receiver, [=] {
-            if (dialog) dialog->deleteLater();
-            done(ok, QString::fromStdString(error));
+        QMetaObject::invokeMethod(receiver, [=, done = report.done] {
+            if (done) done(ok, QString::fromStdString(error));
         }, Qt::QueuedConnection);
     });
 }

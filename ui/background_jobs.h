@@ -1,14 +1,20 @@
-// Long jobs off the GUI thread: mesh import and the final-quality render, each behind a
-// progress dialog, reporting back on the GUI thread.
+// Long jobs off the GUI thread, reporting back on the GUI thread: mesh import behind a
+// progress dialog, and the final-quality render (RenderQueue shows its progress).
 #pragma once
 
 #include "io/mesh_io.h"
 #include "scene/document.h"
 
+#include <QImage>
+#include <QRect>
 #include <QString>
 
+#include <atomic>
 #include <functional>
+#include <memory>
 
+class QObject;
+class QThread;
 class QWidget;
 
 namespace rs::ui {
@@ -18,10 +24,22 @@ namespace rs::ui {
 void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
                      std::function<void(const MeshLoadResult&)> done);
 
-/// Renders `doc` at full quality in a worker thread with a progress bar and Cancel, then
-/// writes it to `path`; `done(ok, error)` runs on the GUI thread (error empty on cancel).
-void renderToFileAsync(QWidget* parent, const SceneDocument& doc, const QString& path,
-                       int threads, std::function<void(bool ok, const QString& error)> done);
+/// What a render reports, each call on the receiver's thread (queued, never blocking the
+/// worker). Any may be empty.
+struct RenderReport {
+    std::function<void(int done, int total)> progress;  ///< Tiles of the current pass.
+    /// A tile of the first pass, tone-mapped to 8-bit sRGB, and where it goes in the image.
+    std::function<void(const QImage& tile, const QRect& where)> tile;
+    /// ok: written to the file; !ok with an empty error: cancelled (nothing written).
+    std::function<void(bool ok, const QString& error)> done;
+};
+
+/// Renders `doc` at full quality in a worker thread, then writes it to `path` unless `cancel`
+/// was set first. Reports go to `receiver`'s thread; when it is destroyed the render is
+/// cancelled and waited for. Returns the worker (it deletes itself when done).
+QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QString& path,
+                           int threads, std::shared_ptr<std::atomic<bool>> cancel,
+                           RenderReport report);
 
 /// Cancels every job started with `parent` and waits until their threads have stopped (a
 /// closing window): no result is delivered. Returns within a tile of a render.

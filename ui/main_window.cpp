@@ -4,12 +4,17 @@
 #include "autosave.h"
 #include "background_jobs.h"
 #include "command_shortcut_filter.h"
+#include "error_reporter.h"
 #include "outliner_view.h"
 #include "property_panel.h"
+#include "render_queue.h"
+#include "render_status.h"
+#include "render_window.h"
 #include "scene_editor.h"
 #include "session_controller.h"
 #include "session_error_relay.h"
 #include "shortcuts_dialog.h"
+#include "user_confirmation.h"
 #include "viewport.h"
 
 #include <QActionGroup>
@@ -70,6 +75,7 @@ MainWindow::MainWindow(QWidget* parent)
         statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 10000);
     });
 
+    createRenderQueue();
     createActions();
     createDocks();
     createMenus();
@@ -82,6 +88,7 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow() {
     // Before the session and the widgets a job reports to go.
+    renders_->cancelAll();
     cancelJobs(this);
 }
 
@@ -211,6 +218,10 @@ void MainWindow::createMenus() {
     QMenu* render = menuBar()->addMenu(tr("&Render"));
     render->addAction(tr("&Render Image..."), QKeySequence(Qt::Key_F12), this, &MainWindow::renderImageDialog);
     render->addAction(tr("&Export Current Frame..."), this, &MainWindow::exportImageDialog);
+    render->addAction(tr("Show Render &Window"), this, [this] {
+        renderWindow_->show();
+        renderWindow_->raise();
+    });
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts)
@@ -238,7 +249,47 @@ void MainWindow::createStatusBar() {
     statusRetraced_ = label(tr("Share of the frame's pixels the last pass re-traced"));
     statusPass_ = label(tr("Kind of the last pass (interactive, base, supersampling)"));
     statusRays_ = label(tr("Rays per second in the last pass"));
+    // Leftmost of the permanent widgets: a running render is what the user looks for first.
+    renderStatus_ = new RenderStatus(renders_, this);
+    statusBar()->insertPermanentWidget(0, renderStatus_);
     statusBar()->showMessage(tr("Ready"), 2000);
+}
+
+void MainWindow::createRenderQueue() {
+    renders_ = new RenderQueue(this);
+    renderWindow_ = new RenderWindow(this);
+    connect(renders_, &RenderQueue::started, this, [this](const QString& path, int w, int h) {
+        renderWindow_->begin(path, w, h);
+        if (!renderWindow_->isVisible()) {
+            renderWindow_->resize(renderWindow_->sizeHint());
+            renderWindow_->show();  // Without activating it (RenderWindow), but on top.
+            renderWindow_->raise();
+        }
+    });
+    connect(renders_, &RenderQueue::tileReady, renderWindow_, &RenderWindow::putTile);
+    connect(renders_, &RenderQueue::finished, this,
+            [this](const QString& path, bool ok, const QString& error) {
+                if (ok) {
+                    renderWindow_->end(tr("done"));
+                    statusBar()->showMessage(tr("Rendered %1").arg(path), 5000);
+                } else if (!error.isEmpty()) {
+                    renderWindow_->end(tr("failed"));
+                    reportError(this, tr("Cannot render image"), error);
+                } else {
+                    renderWindow_->end(tr("cancelled"));
+                    statusBar()->showMessage(tr("Render cancelled"), 3000);
+                }
+            });
+}
+
+bool MainWindow::maybeCancelRenders() {
+    if (!renders_->busy()) return true;
+    const int queued = renders_->queued();
+    const QString text =
+        queued ? tr("A render is running and %1 more are queued. Cancel them and close?")
+                     .arg(queued)
+               : tr("A render is running. Cancel it and close?");
+    return confirm(this, tr("Render running"), text);
 }
 
 void MainWindow::onPassFinished(const PassInfo& info) {
@@ -276,9 +327,11 @@ void MainWindow::writeSettings() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (maybeSave()) {
+    if (maybeCancelRenders() && maybeSave()) {
         writeSettings();
         // A render still running would keep the process alive after the window is gone.
+        renders_->cancelAll();
+        renderWindow_->close();  // A window of this one, not a reason to stay open.
         cancelJobs(this);
         autosave_->discard();  // A clean exit: nothing to recover next time.
         event->accept();

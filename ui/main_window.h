@@ -24,6 +24,9 @@ namespace rs::ui {
 class Autosave;
 class OutlinerView;
 class PropertyPanel;
+class RenderQueue;
+class RenderStatus;
+class RenderWindow;
 class SceneEditor;
 class SessionController;
 class SessionErrorRelay;
@@ -44,10 +47,11 @@ public:
     void importMesh(const QString& path);
     /// Exports the current viewport frame to an image file.
     bool exportFrame(const QString& path);
-    /// Renders the document at full quality at width x height into `path` in the background
-    /// (Render -> Render Image without its size and file dialogs); closing the window cancels
-    /// it. A render estimated over the cost budget (integrator/cost_estimate.h) starts only if
-    /// the user confirms; false when it did not start.
+    /// Queues a full-quality render of the document as it is now at width x height into
+    /// `path` (Render -> Render Image without its size and file dialogs): it runs in the
+    /// background, one at a time, shown in the Render window with progress and Cancel in the
+    /// status bar; closing the window cancels it. A render estimated over the cost budget
+    /// (integrator/cost_estimate.h) is queued only if the user confirms; false when it is not.
     bool renderImage(const QString& path, int width, int height);
     /// Overrides the render size of the open document without an undo step (tests).
     void setRenderSize(int width, int height);
@@ -73,6 +77,9 @@ public:
     Viewport* viewport() const { return viewport_; }
     OutlinerView* outliner() const { return outliner_; }
     PropertyPanel* propertyPanel() const { return properties_; }
+    RenderQueue* renderQueue() const { return renders_; }
+    RenderWindow* renderWindow() const { return renderWindow_; }
+    RenderStatus* renderStatus() const { return renderStatus_; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -84,6 +91,9 @@ private:
     void createMenus();
     void createDocks();
     void createStatusBar();
+    void createRenderQueue();
+    /// Asks before a close cancels running renders; true when none runs or the user agrees.
+    bool maybeCancelRenders();
     void readSettings();
     void writeSettings();
     bool maybeSave();
@@ -114,6 +124,9 @@ private:
     Viewport* viewport_;
     OutlinerView* outliner_ = nullptr;
     PropertyPanel* properties_ = nullptr;
+    RenderQueue* renders_ = nullptr;
+    RenderWindow* renderWindow_ = nullptr;
+    RenderStatus* renderStatus_ = nullptr;
     Preferences prefs_;
 
     QAction* deleteAct_ = nullptr;

@@ -9,6 +9,7 @@
 #include "integrator/cost_estimate.h"
 #include "io/scene_io.h"
 #include "outliner_view.h"
+#include "render_queue.h"
 #include "scene_file_writer.h"
 #include "scene_editor.h"
 #include "session_controller.h"
@@ -193,14 +194,11 @@ bool MainWindow::renderImage(const QString& path, int width, int height) {
             return false;
         }
     }
-    renderToFileAsync(this, doc, path, prefs_.threads, [this, path](bool ok, const QString& error) {
-        if (ok)
-            statusBar()->showMessage(tr("Rendered %1").arg(path), 5000);
-        else if (!error.isEmpty())
-            reportError(this, tr("Cannot render image"), error);
-        else
-            statusBar()->showMessage(tr("Render cancelled"), 3000);
-    });
+    renders_->enqueue(doc, path, prefs_.threads);
+    if (renders_->queued() > 0)
+        statusBar()->showMessage(
+            tr("Render of %1 queued behind %2 more render(s)").arg(path).arg(renders_->queued()),
+            3000);
     return true;
 }
 

@@ -218,6 +218,7 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
                     if (!ids.empty()) ids[i] = infos[k].id;
                     if (adaptive) normals[i] = infos[k].normal;
                 }
+                if (options.tileDone) options.tileDone(result.image, x0, y0, x1, y1);
             });
         if (!adaptive || result.cancelled) {
             if (options.ids) result.ids = std::move(ids);

@@ -24,6 +24,10 @@ struct RenderOptions {
     bool ids = true;
     /// Called (serialised) after each tile with tiles done and total; may be empty.
     std::function<void(int done, int total)> progress;
+    /// Called from the worker that traced it (concurrently, not serialised) after the first
+    /// pass wrote tile [x0, x1) x [y0, y1) of `image`, so a viewer can show the image filling
+    /// in; other tiles of `image` are being written meanwhile. May be empty.
+    std::function<void(const ImageRgb& image, int x0, int y0, int x1, int y1)> tileDone;
 };
 
 /// A finished (or cancelled) render.

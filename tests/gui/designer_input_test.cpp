@@ -4,6 +4,7 @@
 #include "gui_test_support.h"
 
 #include "property_panel.h"
+#include "user_confirmation.h"
 
 #include <QAbstractSpinBox>
 #include <QAction>
@@ -252,11 +253,20 @@ void DesignerInputTest::closingDuringRenderImage_CancelsItAndReturnsWithinASecon
     window_->renderImage(path, 3840, 2160);
     QTest::qWait(500);  // Well into the render.
 
+    // Closing asks first while a render runs (render_job_test.cpp says No too); say Yes.
+    int questions = 0;
+    setConfirmationHandler([&questions](const QString&, const QString&) {
+        ++questions;
+        return true;
+    });
     QElapsedTimer timer;
     timer.start();
     window_->editor()->undoStack()->setClean();
-    QVERIFY(window_->close());
+    const bool closed = window_->close();
     window_.reset();
+    setConfirmationHandler({});
+    QVERIFY(closed);
+    QCOMPARE(questions, 1);
     const qint64 ms = timer.elapsed();
     QVERIFY2(ms < 1000, qPrintable(QStringLiteral("closing took %1 ms").arg(ms)));
     QVERIFY(!QFile::exists(path));  // Cancelled, not finished.

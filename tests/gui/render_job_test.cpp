@@ -1,0 +1,253 @@
+// Render -> Render Image as a background job (issue 16), offscreen with real input events:
+// the designer stays editable while a render runs, renders queue and all finish, Cancel in
+// the status bar stops one at once, the Render window fills in tile by tile, and closing
+// asks before it cancels.
+#include "gui_test_support.h"
+
+#include "error_reporter.h"
+#include "render_queue.h"
+#include "render_status.h"
+#include "render_window.h"
+#include "user_confirmation.h"
+
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QImage>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace rs;
+using namespace rs::ui;
+using namespace rs::ui::test;
+
+namespace {
+
+/// Tiles (32 px, the renderer's default) of `image` with a non-black pixel, and all tiles.
+std::pair<int, int> litTiles(const QImage& image) {
+    int lit = 0, total = 0;
+    for (int ty = 0; ty < image.height(); ty += 32) {
+        for (int tx = 0; tx < image.width(); tx += 32, ++total) {
+            bool any = false;
+            for (int y = ty; y < std::min(image.height(), ty + 32) && !any; ++y)
+                for (int x = tx; x < std::min(image.width(), tx + 32) && !any; ++x)
+                    any = (image.pixel(x, y) & 0xffffff) != 0;
+            lit += any;
+        }
+    }
+    return {lit, total};
+}
+
+}  // namespace
+
+class RenderJobTest : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup();
+
+    void dragWhileRendering_IsAppliedAndUndoable_AndTheViewportRenders();
+    void twoQueuedRenders_BothFinishAndWriteTheirFiles();
+    void cancelFromStatusBar_StopsWithinASecond_AndWritesNothing();
+    void renderWindow_ShowsThePartialImageTileByTile();
+    void closingDuringARender_AsksFirst_ThenCancelsWithinASecond();
+
+private:
+    /// Makes the document's full renders take many seconds (64 samples a pixel everywhere),
+    /// so only a cancel ends one at 3840x2160 quickly; the viewport stays at 160x90.
+    void makeRendersSlow();
+
+    std::unique_ptr<MainWindow> window_;
+    QStringList errors_;
+    QStringList questions_;
+    bool answer_ = true;
+    QTemporaryDir dir_;
+};
+
+void RenderJobTest::init() {
+    errors_.clear();
+    questions_.clear();
+    answer_ = true;
+    setErrorHandler(
+        [this](const QString& title, const QString& text) { errors_ << title + ": " + text; });
+    setConfirmationHandler([this](const QString&, const QString& text) {
+        questions_ << text;
+        return answer_;
+    });
+    window_ = std::make_unique<MainWindow>();
+    window_->resize(1000, 700);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    window_->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+    QVERIFY(window_->openFile(scenePath("reference-room.scene.json")));
+    window_->setRenderSize(160, 90);
+    QVERIFY(settle(*window_));
+}
+
+void RenderJobTest::cleanup() {
+    if (window_) {
+        window_->editor()->undoStack()->setClean();  // No save prompt on close.
+        window_.reset();
+    }
+    setErrorHandler({});
+    setConfirmationHandler({});
+}
+
+void RenderJobTest::makeRendersSlow() {
+    SceneDocument doc = window_->editor()->document();
+    doc.render.supersampling = 64;
+    doc.render.adaptiveSupersampling = false;  // Every sample in the first pass, tile by tile.
+    window_->editor()->replaceDocument(doc);
+}
+
+void RenderJobTest::dragWhileRendering_IsAppliedAndUndoable_AndTheViewportRenders() {
+    makeRendersSlow();
+    QVERIFY(settle(*window_));
+    const QString path = dir_.filePath(QStringLiteral("during-drag.png"));
+    QVERIFY(window_->renderImage(path, 3840, 2160));
+    QVERIFY(window_->renderQueue()->busy());
+
+    // A drag of the blue ball with real mouse events, while the render runs.
+    const ObjectId blue = idOf(*window_, "blue ball");
+    Viewport* v = window_->viewport();
+    const auto [x, y] = pixelOf(*v->frame(), blue);
+    QVERIFY(x >= 0);
+    const QPoint start = v->widgetPointOf(x, y);
+    const Vec3 before = window_->editor()->document().findObject(blue)->transform.translate;
+    const int steps = window_->editor()->undoStack()->count();
+    QTest::mousePress(v, Qt::LeftButton, {}, start);
+    for (int i = 1; i <= 8; ++i) QTest::mouseMove(v, start + QPoint(4 * i, 0));
+    QTest::mouseRelease(v, Qt::LeftButton, {}, start + QPoint(32, 0));
+
+    const Vec3 moved = window_->editor()->document().findObject(blue)->transform.translate;
+    QVERIFY2(moved.x > before.x + 0.05f, qPrintable(QString::number(moved.x - before.x)));
+    QCOMPARE(window_->editor()->undoStack()->count(), steps + 1);  // One undo step.
+    // The viewport follows the edit to a final frame while the render still runs.
+    QVERIFY(settle(*window_));
+    QVERIFY(window_->renderQueue()->busy());
+
+    window_->editor()->undoStack()->undo();
+    QVERIFY(window_->editor()->document().findObject(blue)->transform.translate == before);
+    QVERIFY(window_->renderQueue()->busy());
+    window_->renderQueue()->cancelAll();
+    QVERIFY(!QFileInfo::exists(path));
+    QVERIFY(!window_->renderStatus()->isVisible());
+    QVERIFY(errors_.isEmpty());
+}
+
+void RenderJobTest::twoQueuedRenders_BothFinishAndWriteTheirFiles() {
+    QSignalSpy finished(window_->renderQueue(), &RenderQueue::finished);
+    const QString first = dir_.filePath(QStringLiteral("first.png"));
+    const QString second = dir_.filePath(QStringLiteral("second.png"));
+    QVERIFY(window_->renderImage(first, 64, 36));
+    QVERIFY(window_->renderImage(second, 48, 30));
+    QCOMPARE(window_->renderQueue()->queued(), 1);  // The second waits for the first.
+
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 30000);
+    QCOMPARE(finished.at(0).at(0).toString(), first);
+    QCOMPARE(finished.at(1).at(0).toString(), second);
+    QVERIFY(finished.at(0).at(1).toBool());
+    QVERIFY(finished.at(1).at(1).toBool());
+    QCOMPARE(QImage(first).size(), QSize(64, 36));
+    QCOMPARE(QImage(second).size(), QSize(48, 30));
+    QVERIFY(!window_->renderQueue()->busy());
+    QTRY_VERIFY(!window_->renderStatus()->isVisible());
+    QVERIFY(errors_.isEmpty());
+}
+
+void RenderJobTest::cancelFromStatusBar_StopsWithinASecond_AndWritesNothing() {
+    makeRendersSlow();
+    const QString path = dir_.filePath(QStringLiteral("cancelled.png"));
+    QSignalSpy progressed(window_->renderQueue(), &RenderQueue::progressed);
+    QSignalSpy finished(window_->renderQueue(), &RenderQueue::finished);
+    QVERIFY(window_->renderImage(path, 3840, 2160));
+    QTRY_VERIFY_WITH_TIMEOUT(progressed.count() >= 2, 20000);
+
+    RenderStatus* status = window_->renderStatus();
+    QVERIFY(status->isVisible());
+    QVERIFY(window_->statusBar()->isAncestorOf(status));
+    QVERIFY2(status->text().contains(QStringLiteral("cancelled.png")) &&
+                 status->text().contains(QStringLiteral("left")),
+             qPrintable(status->text()));
+    QPushButton* cancel = status->cancelButton();
+    QVERIFY(cancel->isVisible());
+
+    QElapsedTimer timer;
+    timer.start();
+    QTest::mouseClick(cancel, Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, 1000);
+    const qint64 ms = timer.elapsed();
+    QVERIFY2(ms < 1000, qPrintable(QStringLiteral("cancel took %1 ms").arg(ms)));
+    QVERIFY(!finished.first().at(1).toBool());             // Not ok,
+    QVERIFY(finished.first().at(2).toString().isEmpty());  // and no error: cancelled.
+    QVERIFY(!window_->renderQueue()->busy());
+    QTest::qWait(200);
+    QVERIFY(!QFileInfo::exists(path));
+    QVERIFY(!status->isVisible());
+    QVERIFY(errors_.isEmpty());
+}
+
+void RenderJobTest::renderWindow_ShowsThePartialImageTileByTile() {
+    makeRendersSlow();
+    RenderQueue* queue = window_->renderQueue();
+    RenderWindow* view = window_->renderWindow();
+    // Looked at when the tenth tile arrives: the window has drawn it (it is connected first).
+    QImage shown, grabbed;
+    bool stillRunning = false;
+    int tiles = 0;
+    connect(queue, &RenderQueue::tileReady, this, [&] {
+        if (++tiles != 10) return;
+        stillRunning = queue->busy();
+        shown = view->image().copy();
+        grabbed = view->grab().toImage();
+    });
+    const QString path = dir_.filePath(QStringLiteral("partial.png"));
+    QVERIFY(window_->renderImage(path, 1280, 720));
+    QVERIFY(view->isVisible());
+    QTRY_VERIFY_WITH_TIMEOUT(tiles >= 10, 30000);
+
+    QVERIFY(stillRunning);
+    QCOMPARE(shown.size(), QSize(1280, 720));
+    const auto [lit, total] = litTiles(shown);
+    QVERIFY2(lit >= 5 && lit < total, qPrintable(QStringLiteral("%1 of %2").arg(lit).arg(total)));
+    // On screen too: the window paints some rendered pixels and some still black.
+    const auto [litOnScreen, _] = litTiles(grabbed);
+    QVERIFY(litOnScreen > 0);
+    window_->renderQueue()->cancelAll();
+    QVERIFY(!QFileInfo::exists(path));
+}
+
+void RenderJobTest::closingDuringARender_AsksFirst_ThenCancelsWithinASecond() {
+    makeRendersSlow();
+    window_->editor()->undoStack()->setClean();
+    const QString path = dir_.filePath(QStringLiteral("closed.png"));
+    QVERIFY(window_->renderImage(path, 3840, 2160));
+    QVERIFY(window_->renderImage(dir_.filePath(QStringLiteral("queued.png")), 3840, 2160));
+    QTest::qWait(300);
+
+    answer_ = false;  // "No": the window stays and so does the render.
+    QVERIFY(!window_->close());
+    QCOMPARE(questions_.size(), 1);
+    QVERIFY2(questions_.first().contains(QStringLiteral("1 more are queued")),
+             qPrintable(questions_.first()));
+    QVERIFY(window_->renderQueue()->busy());
+
+    answer_ = true;
+    QElapsedTimer timer;
+    timer.start();
+    QVERIFY(window_->close());
+    window_.reset();
+    const qint64 ms = timer.elapsed();
+    QVERIFY2(ms < 1000, qPrintable(QStringLiteral("closing took %1 ms").arg(ms)));
+    QCOMPARE(questions_.size(), 2);
+    QTest::qWait(200);
+    QVERIFY(!QFileInfo::exists(path));
+    QVERIFY(!QFileInfo::exists(dir_.filePath(QStringLiteral("queued.png"))));
+}
+
+QTEST_MAIN(RenderJobTest)
+#include "render_job_test.moc"

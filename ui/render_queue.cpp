@@ -1,0 +1,77 @@
+// One worker at a time: the renders share the cores with the viewport's session already.
+#include "render_queue.h"
+
+#include "background_jobs.h"
+
+#include <QThread>
+
+namespace rs::ui {
+
+RenderQueue::RenderQueue(QObject* parent) : QObject(parent) {}
+
+RenderQueue::~RenderQueue() {
+    blockSignals(true);  // Whoever listens may be half torn down with the window.
+    cancelAll();
+}
+
+void RenderQueue::enqueue(const SceneDocument& doc, const QString& path, int threads) {
+    waiting_.push_back({doc, path, threads});
+    if (!running_) startNext();
+}
+
+void RenderQueue::cancelCurrent() {
+    if (running_) *running_->cancel = true;
+}
+
+void RenderQueue::cancelAll() {
+    waiting_.clear();
+    if (!running_) return;
+    *running_->cancel = true;
+    // Its reports still queued find no current render and are dropped (isCurrent).
+    const QPointer<QThread> thread = running_->thread;
+    running_.reset();
+    if (thread) thread->wait();
+    Q_EMIT idle();
+}
+
+void RenderQueue::startNext() {
+    if (waiting_.empty()) {
+        Q_EMIT idle();
+        return;
+    }
+    const Job job = std::move(waiting_.front());
+    waiting_.pop_front();
+    running_ = std::make_unique<Running>();
+    running_->serial = ++serials_;
+    running_->path = job.path;
+    running_->cancel = std::make_shared<std::atomic<bool>>(false);
+    running_->clock.start();
+    const quint64 self = running_->serial;
+    Q_EMIT started(job.path, job.doc.render.width, job.doc.render.height);
+
+    RenderReport report;
+    report.progress = [this, self](int done, int total) {
+        if (!isCurrent(self)) return;  // A cancelled render's late report.
+        // Linear in tiles: tiles of one image cost alike on average, and the estimate
+        // settles as more of them are done.
+        const double seconds = double(running_->clock.elapsed()) / 1000.0;
+        const double left = done > 0 ? seconds * double(total - done) / double(done) : -1.0;
+        Q_EMIT progressed(done, total, left);
+    };
+    report.tile = [this, self](const QImage& tile, const QRect& where) {
+        if (isCurrent(self)) Q_EMIT tileReady(tile, where);
+    };
+    report.done = [this, self](bool ok, const QString& error) { onDone(self, ok, error); };
+    running_->thread = renderToFileAsync(this, job.doc, job.path, job.threads, running_->cancel,
+                                         std::move(report));
+}
+
+void RenderQueue::onDone(quint64 serial, bool ok, const QString& error) {
+    if (!isCurrent(serial)) return;  // Dropped by cancelAll().
+    const QString path = running_->path;
+    running_.reset();
+    Q_EMIT finished(path, ok, error);
+    startNext();
+}
+
+}  // namespace rs::ui
