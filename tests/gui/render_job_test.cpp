@@ -5,6 +5,8 @@
 #include "gui_test_support.h"
 
 #include "error_reporter.h"
+#include "image/image_io.h"
+#include "integrator/renderer.h"
 #include "render_queue.h"
 #include "render_status.h"
 #include "render_window.h"
@@ -50,6 +52,7 @@ private Q_SLOTS:
     void cleanup();
 
     void dragWhileRendering_IsAppliedAndUndoable_AndTheViewportRenders();
+    void editsWhileRendering_RenderShowsTheDocumentAsItWasWhenStarted();
     void twoQueuedRenders_BothFinishAndWriteTheirFiles();
     void cancelFromStatusBar_StopsWithinASecond_AndWritesNothing();
     void renderWindow_ShowsThePartialImageTileByTile();
@@ -137,6 +140,46 @@ void RenderJobTest::dragWhileRendering_IsAppliedAndUndoable_AndTheViewportRender
     QVERIFY(!QFileInfo::exists(path));
     QVERIFY(!window_->renderStatus()->isVisible());
     QVERIFY(errors_.isEmpty());
+}
+
+void RenderJobTest::editsWhileRendering_RenderShowsTheDocumentAsItWasWhenStarted() {
+    makeRendersSlow();
+    QVERIFY(settle(*window_));
+    SceneDocument asStarted = window_->editor()->document();
+    const QString path = dir_.filePath(QStringLiteral("as-started.exr"));
+    QVERIFY(window_->renderImage(path, 96, 54));
+    QVERIFY(window_->renderQueue()->busy());
+    // Drag the blue ball with real mouse events while the render runs.
+    const ObjectId blue = idOf(*window_, "blue ball");
+    Viewport* v = window_->viewport();
+    const auto [x, y] = pixelOf(*v->frame(), blue);
+    QVERIFY(x >= 0);
+    const QPoint start = v->widgetPointOf(x, y);
+    QTest::mousePress(v, Qt::LeftButton, {}, start);
+    for (int i = 1; i <= 8; ++i) QTest::mouseMove(v, start + QPoint(4 * i, 0));
+    QTest::mouseRelease(v, Qt::LeftButton, {}, start + QPoint(32, 0));
+    QVERIFY(!(window_->editor()->document().findObject(blue)->transform.translate ==
+              asStarted.findObject(blue)->transform.translate));
+    QTRY_VERIFY_WITH_TIMEOUT(!window_->renderQueue()->busy(), 120000);
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join(QStringLiteral("; "))));
+
+    // The file is what a command-line render of the document at the start gives.
+    asStarted.render.width = 96;
+    asStarted.render.height = 54;
+    RenderOptions options;
+    options.ids = false;
+    const RenderResult expected = renderImage(CompiledScene(asStarted), options);
+    ImageRgb written;
+    std::string error;
+    QVERIFY2(readImage(path.toStdString(), written, error), error.c_str());
+    QCOMPARE(written.width, 96);
+    QCOMPARE(written.height, 54);
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < written.pixels.size(); ++i) {
+        const Color d = glm::abs(written.pixels[i] - expected.image.pixels[i]);
+        worst = std::max(worst, std::max(d.x, std::max(d.y, d.z)));
+    }
+    QVERIFY2(worst <= 1e-5f, qPrintable(QString::number(worst)));
 }
 
 void RenderJobTest::twoQueuedRenders_BothFinishAndWriteTheirFiles() {
