@@ -103,14 +103,14 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
 }
 
 QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QString& path,
-                           int threads, std::shared_ptr<std::atomic<bool>> cancel,
+                           int threads, EngineKind engine, std::shared_ptr<std::atomic<bool>> cancel,
                            RenderReport report) {
     return startWorker(receiver, cancel, [=, file = path.toStdString()] {
         std::string error = imageSizeError(doc.render.width, doc.render.height);
         bool ok = false;
         if (error.empty()) {
             try {
-                const CompiledScene scene(doc);
+                const CompiledScene scene(doc, nullptr, engine);
                 RenderOptions options;
                 options.threads = threads;
                 options.cancel = cancel.get();

@@ -2,6 +2,7 @@
 // progress dialog, and the final-quality render (RenderQueue shows its progress).
 #pragma once
 
+#include "accel/ray_engine.h"
 #include "io/mesh_io.h"
 #include "scene/document.h"
 
@@ -38,7 +39,7 @@ struct RenderReport {
 /// was set first. Reports go to `receiver`'s thread; when it is destroyed the render is
 /// cancelled and waited for. Returns the worker (it deletes itself when done).
 QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QString& path,
-                           int threads, std::shared_ptr<std::atomic<bool>> cancel,
+                           int threads, EngineKind engine, std::shared_ptr<std::atomic<bool>> cancel,
                            RenderReport report);
 
 /// Cancels every job started with `parent` and waits until their threads have stopped (a

@@ -194,7 +194,8 @@ bool MainWindow::renderImage(const QString& path, int width, int height) {
             return false;
         }
     }
-    renders_->enqueue(doc, path, prefs_.threads);
+    // Its own thread count (Preferences): on few cores the viewport keeps what is left.
+    renders_->enqueue(doc, path, prefs_.renderThreads, prefs_.engine);
     if (renders_->queued() > 0)
         statusBar()->showMessage(
             tr("Render of %1 queued behind %2 more render(s)").arg(path).arg(renders_->queued()),

@@ -21,6 +21,7 @@ Preferences loadPreferences() {
     std::string error;
     if (!json.isEmpty() && !policyFromJson(json.toStdString(), p.policy, error)) p.policy = {};
     p.threads = s.value(QStringLiteral("session/threads"), 0).toInt();
+    p.renderThreads = std::max(0, s.value(QStringLiteral("render/threads"), 0).toInt());
     if (!parseEngineKind(s.value(QStringLiteral("session/engine"), QStringLiteral("embree"))
                              .toString()
                              .toStdString(),
@@ -34,6 +35,7 @@ void savePreferences(const Preferences& p) {
     QSettings s;
     s.setValue(QStringLiteral("session/policy"), QString::fromStdString(policyToJson(p.policy)));
     s.setValue(QStringLiteral("session/threads"), p.threads);
+    s.setValue(QStringLiteral("render/threads"), p.renderThreads);
     s.setValue(QStringLiteral("session/engine"), QString::fromLatin1(engineName(p.engine)));
     s.setValue(QStringLiteral("autosave/seconds"), p.autosaveSeconds);
 }
@@ -136,6 +138,18 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     threads->setValue(prefs_.threads);
     connect(threads, &QSpinBox::valueChanged, this, [=, this](int v) { prefs_.threads = v; notify(); });
     form->addRow(tr("Render threads"), threads);
+
+    // Render Image runs beside the viewport; fewer threads here leave the viewport its share.
+    auto* renderThreads = new QSpinBox(this);
+    renderThreads->setObjectName(QStringLiteral("renderThreads"));
+    renderThreads->setRange(0, std::max(64, QThread::idealThreadCount()));
+    renderThreads->setSpecialValueText(tr("All cores"));
+    renderThreads->setValue(prefs_.renderThreads);
+    connect(renderThreads, &QSpinBox::valueChanged, this, [=, this](int v) {
+        prefs_.renderThreads = v;
+        notify();
+    });
+    form->addRow(tr("Render Image threads"), renderThreads);
 
     // Same image either way (tested); Embree is faster on meshes and large scenes, the
     // built-in one is the thesis's own BVH with refit.

@@ -13,7 +13,8 @@ namespace rs::ui {
 struct Preferences {
     InteractionPolicy policy;
     int threads = 0;  ///< 0: all cores.
-    EngineKind engine = EngineKind::Embree;  ///< Who answers the viewport's ray queries.
+    EngineKind engine = EngineKind::Embree;  ///< Who answers the ray queries.
+    int renderThreads = 0;  ///< Render Image's threads, shared with the viewport; 0: all cores.
     int autosaveSeconds = 60;  ///< Autosave interval while the document is modified; 0: off.
 };
 

@@ -14,8 +14,9 @@ RenderQueue::~RenderQueue() {
     cancelAll();
 }
 
-void RenderQueue::enqueue(const SceneDocument& doc, const QString& path, int threads) {
-    waiting_.push_back({doc, path, threads});
+void RenderQueue::enqueue(const SceneDocument& doc, const QString& path, int threads,
+                          EngineKind engine) {
+    waiting_.push_back({doc, path, threads, engine});
     if (!running_) startNext();
 }
 
@@ -62,7 +63,7 @@ void RenderQueue::startNext() {
         if (isCurrent(self)) Q_EMIT tileReady(tile, where);
     };
     report.done = [this, self](bool ok, const QString& error) { onDone(self, ok, error); };
-    running_->thread = renderToFileAsync(this, job.doc, job.path, job.threads, running_->cancel,
+    running_->thread = renderToFileAsync(this, job.doc, job.path, job.threads, job.engine, running_->cancel,
                                          std::move(report));
 }
 

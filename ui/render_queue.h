@@ -2,6 +2,7 @@
 // background while the designer stays editable, with progress and an estimate of the time left.
 #pragma once
 
+#include "accel/ray_engine.h"
 #include "scene/document.h"
 
 #include <QElapsedTimer>
@@ -29,7 +30,8 @@ public:
 
     /// Queues a render of `doc` (copied now: later edits do not reach it) into `path`; it
     /// starts at once when nothing else runs.
-    void enqueue(const SceneDocument& doc, const QString& path, int threads);
+    void enqueue(const SceneDocument& doc, const QString& path, int threads,
+                 EngineKind engine = EngineKind::Embree);
     /// Stops the running render (nothing is written); the next queued one then starts.
     void cancelCurrent();
     /// Drops the queued renders, stops the running one and waits until its thread is gone
@@ -57,6 +59,7 @@ private:
         SceneDocument doc;
         QString path;
         int threads = 0;
+        EngineKind engine = EngineKind::Embree;
     };
     struct Running {
         quint64 serial = 0;  ///< Tells a late report of a cancelled render from the current one.

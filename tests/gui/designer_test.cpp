@@ -10,6 +10,7 @@
 #include "property_panel.h"
 
 #include <QComboBox>
+#include <QSpinBox>
 #include <QLabel>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -218,6 +219,10 @@ void DesignerTest::preferences_RayEngine_RebuildsTheViewportWithIt() {
     QVERIFY(window_->session()->session().waitUntilComplete(std::chrono::seconds(60)));
     QCOMPARE(window_->session()->session().snapshot()->engineKind(), EngineKind::Builtin);
     QCOMPARE(loadPreferences().engine, EngineKind::Builtin);  // Stored for the next start.
+    auto* renderThreads = dialog->findChild<QSpinBox*>(QStringLiteral("renderThreads"));
+    QVERIFY(renderThreads);
+    renderThreads->setValue(1);  // Render Image leaves the other core to the viewport.
+    QCOMPARE(loadPreferences().renderThreads, 1);
     dialog->close();
     window_->applyPreferences(Preferences{});
     window_->session()->flushUpdate();
