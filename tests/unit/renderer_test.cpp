@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <set>
+#include <thread>
 
 namespace rs {
 namespace {
@@ -252,6 +255,74 @@ TEST(Camera, OrthographicRaysAreParallelAndSpanOrthoHeight) {
     const Ray top = model.generateRay(5.0f, 0.0f), bottom = model.generateRay(5.0f, 10.0f);
     EXPECT_EQ(top.dir, bottom.dir);
     EXPECT_NEAR(top.origin.y - bottom.origin.y, 4.0f, 1e-5f);
+}
+
+}  // namespace
+}  // namespace rs
+
+namespace rs {
+namespace {
+
+/// Two facing glass spheres between two parallel mirrors: every glass hit splits into a
+/// reflected and a refracted ray and the mirrors send both back, so without min_weight the
+/// tree doubles per glass hit (issue 12: depth 1000 exhausted 24 GB).
+SceneDocument glassPair(int maxDepth, float minWeight) {
+    SceneDocument doc;
+    doc.render.width = 64;
+    doc.render.height = 36;
+    doc.render.maxDepth = maxDepth;
+    doc.render.minWeight = minWeight;
+    doc.render.background = Color(0.3f, 0.4f, 0.6f);
+    doc.camera.position = Vec3(0, 0, 4);
+    doc.camera.target = Vec3(0, 0, 0);
+    test::addMaterial(doc, "glass", Color(1.0f), 0.0f, 0.5f, 0.0f, 1.0f, 1.5f);
+    test::addMaterial(doc, "mirror", Color(0.9f), 0.1f, 0.0f, 0.9f);
+    test::addSphere(doc, "left", Vec3(-0.6f, 0, 0), 0.55f, "glass");
+    test::addSphere(doc, "right", Vec3(0.6f, 0, 0), 0.55f, "glass");
+    test::addPlane(doc, "west", Vec3(-2, 0, 0), Vec3(1, 0, 0), "mirror");
+    test::addPlane(doc, "east", Vec3(2, 0, 0), Vec3(-1, 0, 0), "mirror");
+    test::addPointLight(doc, "light", Vec3(0, 3, 3), 1.0f);
+    return doc;
+}
+
+TEST(Renderer, GlassPairAtDepth1000_MinWeightBoundsTheTree) {
+    // The default min_weight (1/255) keeps at most 255 rays per level per camera ray; in
+    // practice the trees die out within a few dozen levels.
+    for (EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
+        const RenderResult deep = renderImage(CompiledScene(glassPair(1000, 1.0f / 255.0f), nullptr, engine));
+        EXPECT_FALSE(deep.cancelled);
+        const uint64_t pixels = 64 * 36;
+        EXPECT_LT(deep.rays, pixels * 20000) << engineName(engine);
+        // And min_weight changes the picture only by what it cut: at depth 8 the cut rays
+        // weigh less than 1/255 each.
+        const RenderResult cut = renderImage(CompiledScene(glassPair(8, 1.0f / 255.0f), nullptr, engine));
+        const RenderResult all = renderImage(CompiledScene(glassPair(8, 0.0f), nullptr, engine));
+        EXPECT_LT(cut.rays, all.rays);
+        float worst = 0.0f;
+        for (std::size_t i = 0; i < all.image.pixels.size(); ++i) {
+            const Color d = glm::abs(all.image.pixels[i] - cut.image.pixels[i]);
+            worst = std::max(worst, std::max(d.x, std::max(d.y, d.z)));
+        }
+        EXPECT_GT(worst, 0.0f);
+        EXPECT_LT(worst, 0.05f);
+    }
+}
+
+TEST(Renderer, CancelStopsInsideADeepRayTree) {
+    // Trees that double per level (min_weight 0, depth 40) would take longer than the test's
+    // timeout to finish even one tile: the render returns only because cancellation is
+    // polled between the levels of a tree.
+    std::atomic<bool> cancel{false};
+    RenderOptions options;
+    options.cancel = &cancel;
+    std::thread canceller([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        cancel = true;
+    });
+    const RenderResult r = renderImage(CompiledScene(glassPair(40, 0.0f)), options);
+    canceller.join();
+    EXPECT_TRUE(r.cancelled);
+    EXPECT_EQ(r.image.pixels.size(), std::size_t(64 * 36));
 }
 
 }  // namespace
