@@ -14,11 +14,15 @@
 
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QAbstractButton>
+#include <QApplication>
 #include <QImage>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QtTest>
 
 using namespace rs;
@@ -57,6 +61,7 @@ private Q_SLOTS:
     void cancelFromStatusBar_StopsWithinASecond_AndWritesNothing();
     void renderWindow_ShowsThePartialImageTileByTile();
     void closingDuringARender_AsksFirst_ThenCancelsWithinASecond();
+    void unsavedChangesPrompt_IsAnswerableWhileRendering();
 
 private:
     /// Makes the document's full renders take many seconds (64 samples a pixel everywhere),
@@ -293,4 +298,41 @@ void RenderJobTest::closingDuringARender_AsksFirst_ThenCancelsWithinASecond() {
 }
 
 QTEST_MAIN(RenderJobTest)
+void RenderJobTest::unsavedChangesPrompt_IsAnswerableWhileRendering() {
+    makeRendersSlow();
+    QVERIFY(settle(*window_));
+    // An unsaved edit, made with the mouse.
+    const ObjectId blue = idOf(*window_, "blue ball");
+    Viewport* v = window_->viewport();
+    const auto [x, y] = pixelOf(*v->frame(), blue);
+    QVERIFY(x >= 0);
+    const QPoint start = v->widgetPointOf(x, y);
+    QTest::mousePress(v, Qt::LeftButton, {}, start);
+    for (int i = 1; i <= 6; ++i) QTest::mouseMove(v, start + QPoint(4 * i, 0));
+    QTest::mouseRelease(v, Qt::LeftButton, {}, start + QPoint(24, 0));
+    QVERIFY(!window_->editor()->undoStack()->isClean());
+    const QString path = dir_.filePath(QStringLiteral("unsaved.png"));
+    QVERIFY(window_->renderImage(path, 3840, 2160));
+    QVERIFY(window_->renderQueue()->busy());
+
+    // The save prompt comes up over the designer, not under a progress dialog, and a click
+    // on Discard answers it while the render still runs.
+    bool answered = false;
+    QTimer::singleShot(300, [&] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        QVERIFY(box);
+        QVERIFY(window_->renderQueue()->busy());
+        QAbstractButton* discard = box->button(QMessageBox::Discard);
+        QVERIFY(discard);
+        QTest::mouseClick(discard, Qt::LeftButton);
+        answered = true;
+    });
+    answer_ = true;  // and yes, stop the render
+    QVERIFY(window_->close());
+    QVERIFY(answered);
+    window_.reset();
+    QTest::qWait(200);
+    QVERIFY(!QFileInfo::exists(path));
+}
+
 #include "render_job_test.moc"
