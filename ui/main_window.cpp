@@ -395,9 +395,16 @@ QDialog* MainWindow::showShortcuts() {
 }
 
 void MainWindow::about() {
-    QMessageBox::about(this, tr("About RayStudio"),
-                       tr("<b>RayStudio</b> %1<br>An interactive Whitted ray-traced scene designer.")
-                           .arg(QApplication::applicationVersion()));
+    // The libraries RayStudio is built on, with the licence each is distributed under.
+    QMessageBox::about(
+        this, tr("About RayStudio"),
+        tr("<b>RayStudio</b> %1<br>An interactive Whitted ray-traced scene designer.<br>"
+           "Ray engine in use: %2<br><br>Built with:<ul>"
+           "<li>Qt %3 (LGPL 3)</li><li>Embree 3 (Apache 2.0)</li><li>oneTBB (Apache 2.0)</li>"
+           "<li>OpenImageIO (Apache 2.0)</li><li>Open Asset Import Library (BSD 3-clause)</li>"
+           "<li>GLM (MIT)</li><li>JSON for Modern C++ (MIT)</li></ul>")
+            .arg(QApplication::applicationVersion(),
+                 QString::fromLatin1(engineName(prefs_.engine)), QString::fromLatin1(qVersion())));
 }
 
 }  // namespace rs::ui

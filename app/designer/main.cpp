@@ -6,6 +6,7 @@
 #include "raystudio_version.h"
 
 #include <QApplication>
+#include <QIcon>
 #include <QCommandLineParser>
 #include <QSurfaceFormat>
 
@@ -36,6 +37,11 @@ int main(int argc, char* argv[]) {
     QCoreApplication::setOrganizationName(QStringLiteral("RayStudio"));
     QCoreApplication::setApplicationName(QStringLiteral("RayStudio"));
     QCoreApplication::setApplicationVersion(QStringLiteral(RAYSTUDIO_VERSION_STRING));
+    // The window icon, from the PNG renders of resources/icons/raystudio.svg.
+    QIcon icon;
+    for (const char* size : {"16x16", "32x32", "48x48", "256x256"})
+        icon.addFile(QStringLiteral(":/icons/%1/raystudio.png").arg(QLatin1String(size)));
+    QApplication::setWindowIcon(icon);
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Interactive Whitted ray-traced scene designer"));

@@ -9,7 +9,11 @@
 #include "preferences.h"
 #include "property_panel.h"
 
+#include <QAction>
 #include <QComboBox>
+#include <QApplication>
+#include <QTimer>
+#include <QMessageBox>
 #include <QSpinBox>
 #include <QLabel>
 #include <QTemporaryDir>
@@ -36,6 +40,7 @@ private Q_SLOTS:
     void saveAndReopen_GiveTheSameScene();
     void preferences_ChangeSessionPolicy();
     void preferences_RayEngine_RebuildsTheViewportWithIt();
+    void aboutDialog_NamesVersionEngineAndLibraryLicences();
     void badSceneFile_ShowsErrorAndKeepsDocument();
     void addSphereLight_UndoRedo();
     void debugViews_ProduceImages();
@@ -228,6 +233,25 @@ void DesignerTest::preferences_RayEngine_RebuildsTheViewportWithIt() {
     window_->session()->flushUpdate();
     QVERIFY(window_->session()->session().waitUntilComplete(std::chrono::seconds(60)));
     QCOMPARE(window_->session()->session().snapshot()->engineKind(), EngineKind::Embree);
+}
+
+void DesignerTest::aboutDialog_NamesVersionEngineAndLibraryLicences() {
+    QString text;
+    QTimer::singleShot(200, [&] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        QVERIFY(box);
+        text = box->text();
+        box->accept();
+    });
+    QAction* about = nullptr;
+    for (QAction* a : window_->findChildren<QAction*>())
+        if (a->text() == QStringLiteral("&About RayStudio")) about = a;
+    QVERIFY(about);
+    about->trigger();
+    QVERIFY2(text.contains(QApplication::applicationVersion()), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("embree")), qPrintable(text));
+    for (const char* licence : {"LGPL", "Apache 2.0", "BSD", "MIT"})
+        QVERIFY2(text.contains(QLatin1String(licence)), licence);
 }
 
 void DesignerTest::badSceneFile_ShowsErrorAndKeepsDocument() {
