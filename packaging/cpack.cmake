@@ -17,6 +17,8 @@ set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 # The run-time libraries (Qt 6, oneTBB, OpenImageIO, assimp, Embree) come from dpkg-shlibdeps.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# Loaded as a Qt plugin, so dpkg-shlibdeps cannot see it: the toolbar's SVG icons need it.
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6svg6")
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS OFF)
 # The extended description only: CPack puts the summary above it as the synopsis.
 set(CPACK_DEBIAN_PACKAGE_DESCRIPTION

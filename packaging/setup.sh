@@ -7,7 +7,7 @@ readonly DEFAULT_SCENE="scenes/reference-room.scene.json"
 # Everything the build, the tests and the designer need, as Debian 12 names them.
 readonly REQUIRED_PACKAGES=(
     build-essential cmake ninja-build pkg-config git file
-    qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libgl-dev
+    qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libgl-dev libqt6svg6
     libglm-dev libopenimageio-dev openimageio-tools libassimp-dev libtbb-dev libembree-dev
     nlohmann-json3-dev libgtest-dev googletest
     xvfb xauth mesa-utils libgl1-mesa-dri

@@ -1,6 +1,7 @@
 // MainWindow construction: actions, menus, toolbar, docks, status bar and settings.
 #include "main_window.h"
 
+#include "action_icons.h"
 #include "autosave.h"
 #include "background_jobs.h"
 #include "command_shortcut_filter.h"
@@ -93,7 +94,7 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::createActions() {
-    deleteAct_ = new QAction(tr("&Delete"), this);
+    deleteAct_ = new QAction(actionIcon("edit-delete", "edit-delete"), tr("&Delete"), this);
     deleteAct_->setShortcuts({QKeySequence::Delete, QKeySequence(Qt::Key_Backspace)});
     deleteAct_->setShortcutContext(Qt::WindowShortcut);
     connect(deleteAct_, &QAction::triggered, this, &MainWindow::deleteSelection);
@@ -101,26 +102,26 @@ void MainWindow::createActions() {
     duplicateAct_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
     connect(duplicateAct_, &QAction::triggered, this, &MainWindow::duplicateSelection);
 
-    auto shape = [this](const QString& text, ShapeKind kind) {
-        auto* a = new QAction(text, this);
+    auto shape = [this](const QString& text, ShapeKind kind, const char* icon) {
+        auto* a = new QAction(actionIcon(nullptr, icon), text, this);
         a->setStatusTip(tr("Add a %1 in front of the camera").arg(text.toLower()));
         connect(a, &QAction::triggered, this, [this, kind] { addShapeAction(kind); });
         addActions_.append(a);
     };
-    shape(tr("Sphere"), ShapeKind::Sphere);
-    shape(tr("Plane"), ShapeKind::Plane);
-    shape(tr("Rectangle"), ShapeKind::Rectangle);
-    shape(tr("Box"), ShapeKind::Box);
-    auto* mesh = new QAction(tr("Mesh..."), this);
+    shape(tr("Sphere"), ShapeKind::Sphere, "add-sphere");
+    shape(tr("Plane"), ShapeKind::Plane, "add-plane");
+    shape(tr("Rectangle"), ShapeKind::Rectangle, "add-rectangle");
+    shape(tr("Box"), ShapeKind::Box, "add-box");
+    auto* mesh = new QAction(actionIcon(nullptr, "add-mesh"), tr("Mesh..."), this);
     connect(mesh, &QAction::triggered, this, &MainWindow::importMeshDialog);
     addActions_.append(mesh);
-    auto light = [this](const QString& text, LightType type) {
-        auto* a = new QAction(text, this);
+    auto light = [this](const QString& text, LightType type, const char* icon) {
+        auto* a = new QAction(actionIcon(nullptr, icon), text, this);
         connect(a, &QAction::triggered, this, [this, type] { addLightAction(type); });
         addActions_.append(a);
     };
-    light(tr("Point light"), LightType::Point);
-    light(tr("Sphere light"), LightType::Sphere);
+    light(tr("Point light"), LightType::Point, "add-point-light");
+    light(tr("Sphere light"), LightType::Sphere, "add-sphere-light");
     for (QAction* a : addActions_) a->setObjectName(QStringLiteral("add ") + a->text());
 }
 
@@ -139,10 +140,13 @@ void MainWindow::createDocks() {
 
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newFile);
-    file->addAction(tr("&Open..."), QKeySequence::Open, this, &MainWindow::open);
+    file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newFile)
+        ->setIcon(actionIcon("document-new", "document-new"));
+    file->addAction(tr("&Open..."), QKeySequence::Open, this, &MainWindow::open)
+        ->setIcon(actionIcon("document-open", "document-open"));
     recentMenu_ = file->addMenu(tr("Open &Recent"));
-    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save)
+        ->setIcon(actionIcon("document-save", "document-save"));
     file->addAction(tr("Save &As..."), this, &MainWindow::saveAs)
         ->setShortcuts(standardOr(QKeySequence::SaveAs, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)));
     file->addSeparator();
@@ -156,8 +160,10 @@ void MainWindow::createMenus() {
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = editor_->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setShortcuts(QKeySequence::Undo);
+    undo->setIcon(actionIcon("edit-undo", "edit-undo"));
     QAction* redo = editor_->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setShortcuts(QKeySequence::Redo);
+    redo->setIcon(actionIcon("edit-redo", "edit-redo"));
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
@@ -216,7 +222,9 @@ void MainWindow::createMenus() {
     view->addSeparator();
 
     QMenu* render = menuBar()->addMenu(tr("&Render"));
-    render->addAction(tr("&Render Image..."), QKeySequence(Qt::Key_F12), this, &MainWindow::renderImageDialog);
+    QAction* renderAct =
+        render->addAction(tr("&Render Image..."), QKeySequence(Qt::Key_F12), this, &MainWindow::renderImageDialog);
+    renderAct->setIcon(actionIcon(nullptr, "render-image"));
     render->addAction(tr("&Export Current Frame..."), this, &MainWindow::exportImageDialog);
     render->addAction(tr("Show Render &Window"), this, [this] {
         renderWindow_->show();
@@ -231,7 +239,13 @@ void MainWindow::createMenus() {
 
     QToolBar* tools = addToolBar(tr("Add"));
     tools->setObjectName(QStringLiteral("addToolBar"));
+    // Icons with their names: a newcomer reads which shape each one adds.
+    tools->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     tools->addActions(addActions_);
+    tools->addSeparator();
+    tools->addAction(undo);
+    tools->addAction(redo);
+    tools->addAction(renderAct);
     for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
     view->addAction(tools->toggleViewAction());
 }
