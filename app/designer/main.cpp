@@ -6,8 +6,9 @@
 #include "raystudio_version.h"
 
 #include <QApplication>
-#include <QIcon>
 #include <QCommandLineParser>
+#include <QFileInfo>
+#include <QIcon>
 #include <QSurfaceFormat>
 
 #include <cstdio>
@@ -58,8 +59,14 @@ int main(int argc, char* argv[]) {
         QStringLiteral("recover"),
         QStringLiteral("What to do with a crashed session's autosave: ask (default), yes or no."),
         QStringLiteral("ask|yes|no"), QStringLiteral("ask"));
+    // For the packaging test and bug reports: opens the scene as a start would, prints the
+    // path it opened on stdout and exits (1 when nothing could be opened).
+    const QCommandLineOption openedOption(
+        QStringLiteral("print-opened-scene"),
+        QStringLiteral("Open the scene (or the default one), print its path and exit."));
     parser.addOption(autosaveOption);
     parser.addOption(recoverOption);
+    parser.addOption(openedOption);
     parser.process(app);
     if (const int rc = rs::ui::runRequestedMeasurement(parser); rc >= 0) return rc;
 
@@ -85,7 +92,12 @@ int main(int argc, char* argv[]) {
     const QString scene = args.isEmpty()
                               ? rs::ui::defaultScenePath(QCoreApplication::applicationDirPath())
                               : args.first();
-    if (!scene.isEmpty()) window.openFile(scene);
+    const bool opened = !scene.isEmpty() && window.openFile(scene);
+    if (parser.isSet(openedOption)) {
+        if (!opened) return 1;
+        std::printf("%s\n", qPrintable(QFileInfo(scene).canonicalFilePath()));
+        return 0;
+    }
     window.offerRecovery(answer);
     return app.exec();
 }

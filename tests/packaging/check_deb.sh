@@ -69,6 +69,13 @@ out="$("${root}/usr/bin/raystudio" --version)"
 echo "${out}"
 [[ "${out}" == "raystudio ${version}"* ]] || fail "raystudio --version printed '${out}'"
 scenes="${root}/usr/share/raystudio/scenes"
+# The installed designer, started with no argument from an unrelated folder, opens the
+# installed reference room (offscreen: no display needed).
+opened="$(cd "${tmp}" && QT_QPA_PLATFORM=offscreen "${root}/usr/bin/raystudio" --print-opened-scene)" ||
+    fail "the installed designer opened no scene"
+echo "designer opened ${opened}"
+[[ "${opened}" == "$(realpath "${scenes}/reference-room.scene.json")" ]] ||
+    fail "the installed designer opened '${opened}', not the installed reference room"
 "${root}/usr/bin/raystudio-cli" validate "${scenes}/mesh.scene.json"
 "${root}/usr/bin/raystudio-cli" render "${scenes}/reference-room.scene.json" \
     -o "${tmp}/room.png" --width 160 --height 90 --threads 1
