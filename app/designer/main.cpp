@@ -19,6 +19,32 @@ int usageError(const char* message) {
     std::fprintf(stderr, "raystudio: %s\n", message);
     return 2;
 }
+/// The designer's options (--help lists them; a headless machine can ask for it too).
+struct Options {
+    QCommandLineOption autosave{QStringLiteral("autosave-seconds"),
+                                QStringLiteral("Autosave interval for this run, overriding Preferences (0: off)."),
+                                QStringLiteral("seconds")};
+    QCommandLineOption recover{QStringLiteral("recover"),
+                               QStringLiteral("What to do with a crashed session's autosave: ask (default), yes or no."),
+                               QStringLiteral("ask|yes|no"), QStringLiteral("ask")};
+    // For the packaging test and bug reports: opens the scene as a start would, prints the
+    // path it opened on stdout and exits (1 when nothing could be opened).
+    QCommandLineOption opened{QStringLiteral("print-opened-scene"),
+                              QStringLiteral("Open the scene (or the default one), print its path and exit.")};
+};
+
+void describe(QCommandLineParser& parser, const Options& options) {
+    parser.setApplicationDescription(QStringLiteral("Interactive Whitted ray-traced scene designer"));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("scene"),
+                                 QStringLiteral("Scene file to open (default: the bundled reference room)."));
+    rs::ui::addMeasurementOptions(parser);
+    // Both exist for scripted runs (the recovery tests, kiosks): a short interval and no dialog.
+    parser.addOption(options.autosave);
+    parser.addOption(options.recover);
+    parser.addOption(options.opened);
+}
 }  // namespace
 
 int main(int argc, char* argv[]) {
@@ -26,6 +52,17 @@ int main(int argc, char* argv[]) {
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--version") == 0) {
             std::puts("raystudio " RAYSTUDIO_VERSION_STRING);
+            return 0;
+        }
+        if (std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "--help") == 0 ||
+            std::strcmp(argv[i], "--help-all") == 0) {
+            QCoreApplication core(argc, argv);  // no display needed to print the help
+            QCoreApplication::setApplicationName(QStringLiteral("raystudio"));
+            QCoreApplication::setApplicationVersion(QStringLiteral(RAYSTUDIO_VERSION_STRING));
+            QCommandLineParser parser;
+            const Options options;
+            describe(parser, options);
+            parser.process(core);  // prints the help and exits
             return 0;
         }
     }
@@ -45,33 +82,13 @@ int main(int argc, char* argv[]) {
     QApplication::setWindowIcon(icon);
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Interactive Whitted ray-traced scene designer"));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file to open."));
-    rs::ui::addMeasurementOptions(parser);
-    // Both exist for scripted runs (the recovery tests, kiosks): a short interval and no dialog.
-    const QCommandLineOption autosaveOption(
-        QStringLiteral("autosave-seconds"),
-        QStringLiteral("Autosave interval for this run, overriding Preferences (0: off)."),
-        QStringLiteral("seconds"));
-    const QCommandLineOption recoverOption(
-        QStringLiteral("recover"),
-        QStringLiteral("What to do with a crashed session's autosave: ask (default), yes or no."),
-        QStringLiteral("ask|yes|no"), QStringLiteral("ask"));
-    // For the packaging test and bug reports: opens the scene as a start would, prints the
-    // path it opened on stdout and exits (1 when nothing could be opened).
-    const QCommandLineOption openedOption(
-        QStringLiteral("print-opened-scene"),
-        QStringLiteral("Open the scene (or the default one), print its path and exit."));
-    parser.addOption(autosaveOption);
-    parser.addOption(recoverOption);
-    parser.addOption(openedOption);
+    const Options options;
+    describe(parser, options);
     parser.process(app);
     if (const int rc = rs::ui::runRequestedMeasurement(parser); rc >= 0) return rc;
 
     using Answer = rs::ui::MainWindow::RecoveryAnswer;
-    const QString recover = parser.value(recoverOption);
+    const QString recover = parser.value(options.recover);
     if (recover != QLatin1String("ask") && recover != QLatin1String("yes") &&
         recover != QLatin1String("no"))
         return usageError("--recover must be ask, yes or no");
@@ -80,9 +97,9 @@ int main(int argc, char* argv[]) {
                                                            : Answer::Ask;
 
     rs::ui::MainWindow window;
-    if (parser.isSet(autosaveOption)) {
+    if (parser.isSet(options.autosave)) {
         bool ok = false;
-        const double seconds = parser.value(autosaveOption).toDouble(&ok);
+        const double seconds = parser.value(options.autosave).toDouble(&ok);
         if (!ok || seconds < 0.0 || seconds > 86400.0)
             return usageError("--autosave-seconds must be in [0, 86400]");
         window.setAutosaveIntervalMs(int(seconds * 1000.0 + 0.5));
@@ -93,7 +110,7 @@ int main(int argc, char* argv[]) {
                               ? rs::ui::defaultScenePath(QCoreApplication::applicationDirPath())
                               : args.first();
     const bool opened = !scene.isEmpty() && window.openFile(scene);
-    if (parser.isSet(openedOption)) {
+    if (parser.isSet(options.opened)) {
         if (!opened) return 1;
         std::printf("%s\n", qPrintable(QFileInfo(scene).canonicalFilePath()));
         return 0;

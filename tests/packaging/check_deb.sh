@@ -68,6 +68,9 @@ echo "${out}"
 out="$("${root}/usr/bin/raystudio" --version)"
 echo "${out}"
 [[ "${out}" == "raystudio ${version}"* ]] || fail "raystudio --version printed '${out}'"
+help="$(env -u DISPLAY -u WAYLAND_DISPLAY "${root}/usr/bin/raystudio" --help)" ||
+    fail "raystudio --help failed without a display"
+[[ "${help}" == *"--print-opened-scene"* ]] || fail "raystudio --help printed '${help}'"
 scenes="${root}/usr/share/raystudio/scenes"
 # The installed designer, started with no argument from an unrelated folder, opens the
 # installed reference room (offscreen: no display needed).
