@@ -13,6 +13,8 @@
 
 class QWidget;
 
+class QPainter;
+
 namespace rs::ui {
 
 /// A frame that has just been put on screen.
@@ -38,6 +40,11 @@ public:
     virtual QImage grabImage() = 0;
     /// True for the OpenGL implementation.
     virtual bool usesOpenGL() const = 0;
+    /// What to paint over the frame with QPainter, in widget coordinates (the light glyphs).
+    /// A view whose window is native paints it itself: widgets cannot draw over it.
+    virtual void setOverlayPainter(std::function<void(QPainter&)> painter) { (void)painter; }
+    /// Paints again (the overlay changed).
+    virtual void repaintOverlay() {}
     /// Called after each frame reaches the screen (the designer measures latency with it).
     void setPresentedHandler(PresentedHandler handler) { presented_ = std::move(handler); }
 

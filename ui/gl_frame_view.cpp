@@ -3,6 +3,8 @@
 
 #include <QElapsedTimer>
 #include <QFile>
+#include <QOpenGLPaintDevice>
+#include <QPainter>
 #include <QWidget>
 #include <QtCore/qfloat16.h>
 
@@ -148,13 +150,28 @@ void GlFrameView::upload() {
     if (selected_ != kNoObject) uploadIds();
 }
 
+void GlFrameView::paintOverlay() {
+    if (!overlay_) return;
+    // QPainter's GL engine over the quad; it leaves its own state, which the next paintGL
+    // does not rely on (viewport, program, textures and VAO are set each time).
+    const qreal dpr = devicePixelRatioF();
+    glViewport(0, 0, int(width() * dpr), int(height() * dpr));
+    QOpenGLPaintDevice device(size() * dpr);
+    device.setDevicePixelRatio(dpr);
+    QPainter painter(&device);
+    overlay_(painter);
+}
+
 void GlFrameView::paintGL() {
     QElapsedTimer timer;
     timer.start();
     painted_ = {};
     glClearColor(48 / 255.0f, 48 / 255.0f, 48 / 255.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (!ready_ || !frame_ || frame_->empty()) return;
+    if (!ready_ || !frame_ || frame_->empty()) {
+        paintOverlay();
+        return;
+    }
     upload();
     const qreal dpr = devicePixelRatioF();
     const QRect r = fitRect(size() * dpr, QSize(frame_->width, frame_->height));
@@ -179,6 +196,7 @@ void GlFrameView::paintGL() {
     vao_.release();
     program_.release();
     glActiveTexture(GL_TEXTURE0);
+    paintOverlay();
     painted_ = {frame_->serial, frame_->generation, timer.nsecsElapsed() / 1e6, 0.0};
     paintEnd_.start();
 }

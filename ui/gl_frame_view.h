@@ -28,6 +28,10 @@ public:
                    ObjectId selected) override;
     QImage grabImage() override { return grabFramebuffer(); }
     bool usesOpenGL() const override { return true; }
+    void setOverlayPainter(std::function<void(QPainter&)> painter) override {
+        overlay_ = std::move(painter);
+    }
+    void repaintOverlay() override { update(); }
 
 protected:
     void initializeGL() override;
@@ -41,6 +45,8 @@ private:
         ViewMode mode = ViewMode::Color;
     };
     void upload();
+    /// The overlay painter's drawing (light glyphs) over whatever paintGL drew.
+    void paintOverlay();
     void allocate(int width, int height);
     /// The rectangles of `frame_` that `texture` lacks (all of it when it cannot tell).
     std::vector<QRect> stale(const Uploaded& texture) const;
@@ -64,6 +70,7 @@ private:
     bool ready_ = false;
     PresentedFrame painted_;  ///< What the last paintGL drew, reported once it is swapped.
     QElapsedTimer paintEnd_;
+    std::function<void(QPainter&)> overlay_;
 };
 
 }  // namespace rs::ui

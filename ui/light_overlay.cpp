@@ -60,19 +60,23 @@ void LightOverlay::setGlyphs(std::vector<LightGlyph> glyphs, ObjectId selected) 
 
 void LightOverlay::paintEvent(QPaintEvent*) {
     QPainter p(this);
+    paintLightGlyphs(p, glyphs_, selected_);
+}
+
+void paintLightGlyphs(QPainter& p, const std::vector<LightGlyph>& glyphs, ObjectId selected) {
     p.setRenderHint(QPainter::Antialiasing);
     const QColor highlight(kOutlineRgb[0], kOutlineRgb[1], kOutlineRgb[2]);
-    for (const LightGlyph& g : glyphs_) {
-        const bool selected = g.id == selected_;
+    for (const LightGlyph& g : glyphs) {
+        const bool chosen = g.id == selected;
         const double r = g.radius;
         if (r > kPointGlyphPx) {
             // A sphere light: its outline, so the surfaces it lights stay visible through it.
             p.setBrush(Qt::NoBrush);
-            p.setPen(QPen(selected ? highlight : g.color, selected ? 2.5 : 1.5, Qt::DashLine));
+            p.setPen(QPen(chosen ? highlight : g.color, chosen ? 2.5 : 1.5, Qt::DashLine));
             p.drawEllipse(g.centre, r, r);
         }
         const double dot = std::min(r, double(kPointGlyphPx));
-        p.setPen(QPen(selected ? highlight : QColor(20, 20, 20), selected ? 2.5 : 1.0));
+        p.setPen(QPen(chosen ? highlight : QColor(20, 20, 20), chosen ? 2.5 : 1.0));
         p.setBrush(g.color);
         p.drawEllipse(g.centre, dot, dot);
     }

@@ -10,6 +10,8 @@
 
 #include <vector>
 
+class QPainter;
+
 namespace rs::ui {
 
 /// Where a light is drawn: a small disc for a point light, its projected sphere otherwise.
@@ -25,6 +27,9 @@ std::vector<LightGlyph> lightGlyphs(const SceneDocument& doc, const ViewProjecti
 /// The light whose glyph is under widget point `p` (the nearest centre wins), or kNoObject.
 ObjectId pickLight(const std::vector<LightGlyph>& glyphs, const QPointF& p);
 
+/// Draws `glyphs` (the one of `selected` highlighted) with `p`, in widget coordinates.
+void paintLightGlyphs(QPainter& p, const std::vector<LightGlyph>& glyphs, ObjectId selected);
+
 /// Transparent widget over the frame view that draws the glyphs; mouse events pass through.
 class LightOverlay : public QWidget {
     Q_OBJECT
@@ -33,6 +38,7 @@ public:
     /// Shows `glyphs`, the one of `selected` highlighted.
     void setGlyphs(std::vector<LightGlyph> glyphs, ObjectId selected);
     const std::vector<LightGlyph>& glyphs() const { return glyphs_; }
+    ObjectId selected() const { return selected_; }
 
 protected:
     void paintEvent(QPaintEvent* event) override;

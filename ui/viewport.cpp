@@ -36,6 +36,14 @@ Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* par
     layout->addWidget(view_->widget());
     view_->widget()->setAttribute(Qt::WA_TransparentForMouseEvents);
     overlay_->raise();
+    if (view_->usesOpenGL()) {
+        // A native GL window covers sibling widgets: the GL view paints the glyphs itself
+        // (the overlay widget keeps them for picking).
+        overlay_->hide();
+        view_->setOverlayPainter([this](QPainter& p) {
+            paintLightGlyphs(p, overlay_->glyphs(), overlay_->selected());
+        });
+    }
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setMinimumSize(320, 180);
