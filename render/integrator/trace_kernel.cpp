@@ -113,23 +113,6 @@ struct TraceKernel::Workspace {
     }
 };
 
-namespace {
-
-/// Appends to a fixed-capacity per-camera-ray list, or sets its overflow flag when full.
-template <class T>
-void appendTo(T* base, int capacity, uint8_t* count, uint8_t* overflow, uint32_t owner,
-              const T& value) {
-    uint8_t& c = count[owner];
-    if (c < capacity) {
-        base[std::size_t(owner) * std::size_t(capacity) + c] = value;
-        ++c;
-    } else {
-        overflow[owner] = 1;
-    }
-}
-
-}  // namespace
-
 TraceKernel::TraceKernel(const CompiledScene& scene, const TraceOptions& options)
     : scene_(scene), options_(options), eps_(scene.epsilon()) {}
 
@@ -143,8 +126,8 @@ bool TraceKernel::trace(const CameraBatch& rays, const TraceOutput& out, TraceCo
             out.color[i] = Color(0.0f);
             if (out.primary) out.primary[i] = PrimaryInfo{};
             if (out.rays) out.rays[i] = 0;
-            if (out.recordCount) out.recordCount[i] = 0, out.recordOverflow[i] = 0;
-            if (out.segmentCount) out.segmentCount[i] = 0, out.segmentOverflow[i] = 0;
+            if (out.records) out.records.clear(i);
+            if (out.segments) out.segments.clear(i);
             ws.ping.push(rays.origin[i], rays.dir[i], 1.0f, rays.seed[i], uint32_t(i));
         }
         if (!traceLevels(ws, ws.ping, 0, out, counters, stale)) return false;
@@ -195,7 +178,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         const bool found = hits.slot[i] != kNoSlot;
         if (out.segments && depth > 0) {
             const TreeSegment s = found ? TreeSegment{o, o + d * hits.t[i], 0u} : TreeSegment{o, d, 1u};
-            appendTo(out.segments, out.segmentCapacity, out.segmentCount, out.segmentOverflow, owner, s);
+            out.segments.append(owner, s);
         }
         if (!found) {
             out.color[owner] += weight * settings.background;
@@ -300,10 +283,9 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                 out.color[pt.owner] += pt.weight * (m.localWeight * (ambient + direct));
                 // Shown unshadowed while moving; the record lets the shadows be added later.
                 if (deferred && out.records)
-                    appendTo(out.records, out.recordCapacity, out.recordCount, out.recordOverflow,
-                             pt.owner,
-                             ShadingRecord{pt.p, pt.n, pt.toViewer, pt.weight * m.localWeight,
-                                           pt.material, pt.seed});
+                    out.records.append(pt.owner, ShadingRecord{pt.p, pt.n, pt.toViewer,
+                                                               pt.weight * m.localWeight,
+                                                               pt.material, pt.seed});
             }
             if (pt.asDiffuse > 0.0f) {
                 CompiledMaterial lambert{};

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace rs {
 
@@ -20,22 +21,49 @@ struct CameraBatch {
     bool coherent = true;  ///< Neighbouring rays are neighbouring pixels.
 };
 
+/// Fixed-capacity lists, one per camera ray: list i is data[i * capacity ...], with its
+/// length and an overflow flag (more items than fit: the caller must not trust the list).
+template <class T>
+struct PerRayLists {
+    T* data = nullptr;
+    int capacity = 0;
+    uint8_t* count = nullptr;
+    uint8_t* overflow = nullptr;
+
+    explicit operator bool() const { return data != nullptr; }
+    void clear(std::size_t ray) const { count[ray] = 0, overflow[ray] = 0; }
+    void append(uint32_t ray, const T& value) const {
+        uint8_t& c = count[ray];
+        if (c < capacity)
+            data[std::size_t(ray) * std::size_t(capacity) + c++] = value;
+        else
+            overflow[ray] = 1;
+    }
+};
+
+/// Storage for PerRayLists of `capacity` items for n rays, reused between calls.
+template <class T>
+struct PerRayStorage {
+    std::vector<T> items;
+    std::vector<uint8_t> count, overflow;
+
+    PerRayLists<T> lists(std::size_t n, int capacity) {
+        items.resize(n * std::size_t(capacity));
+        count.resize(n), overflow.resize(n);
+        return {items.data(), capacity, count.data(), overflow.data()};
+    }
+    const T* of(std::size_t ray, int capacity) const { return items.data() + ray * std::size_t(capacity); }
+};
+
 /// Where the results of camera ray i go. Only `color` is required.
 struct TraceOutput {
     Color* color = nullptr;
     PrimaryInfo* primary = nullptr;  ///< First hit and whether the tree met a mirror or glass.
     uint32_t* rays = nullptr;        ///< Rays of the ray's tree, shadow rays included.
-    /// Shading records of Deferred shadows: recordCapacity per camera ray at records +
-    /// i * recordCapacity; count and overflow per ray (overflow: the pixel must be re-traced).
-    ShadingRecord* records = nullptr;
-    int recordCapacity = 0;
-    uint8_t* recordCount = nullptr;
-    uint8_t* recordOverflow = nullptr;
-    /// Secondary segments of the tree, as records are stored.
-    TreeSegment* segments = nullptr;
-    int segmentCapacity = 0;
-    uint8_t* segmentCount = nullptr;
-    uint8_t* segmentOverflow = nullptr;
+    /// Shading records of Deferred shadows (overflow: the pixel must be re-traced).
+    PerRayLists<ShadingRecord> records;
+    /// Secondary segments of the tree (overflow: the tree is not known whole).
+    PerRayLists<TreeSegment> segments;
 };
 
 /// Traces ray trees breadth first through the scene's engine. Each ray carries its camera

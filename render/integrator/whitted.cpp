@@ -27,18 +27,11 @@ Color WhittedIntegrator::traceCamera(const Ray& ray, uint32_t seed, TraceCounter
     TraceOutput out;
     out.color = &color;
     out.primary = &info;
-    if (sink && sink->capacity > 0) {
-        out.records = sink->data;
-        out.recordCapacity = std::min(sink->capacity, kSinkLimit);
-        out.recordCount = &recordCount;
-        out.recordOverflow = &recordOverflow;
-    }
-    if (segments && segments->capacity > 0) {
-        out.segments = segments->data;
-        out.segmentCapacity = std::min(segments->capacity, kSinkLimit);
-        out.segmentCount = &segmentCount;
-        out.segmentOverflow = &segmentOverflow;
-    }
+    if (sink && sink->capacity > 0)
+        out.records = {sink->data, std::min(sink->capacity, kSinkLimit), &recordCount, &recordOverflow};
+    if (segments && segments->capacity > 0)
+        out.segments = {segments->data, std::min(segments->capacity, kSinkLimit), &segmentCount,
+                        &segmentOverflow};
     kernel.trace(CameraBatch{&ray.origin, &ray.dir, &seed, 1, true}, out, counters);
     if (primary) *primary = info;
     if (sink) {

@@ -52,10 +52,8 @@ struct RayList {
     std::vector<Color> color;
     std::vector<PrimaryInfo> info;
     std::vector<uint32_t> rays;
-    std::vector<ShadingRecord> records;
-    std::vector<uint8_t> recordCount, recordOverflow;
-    std::vector<TreeSegment> segments;
-    std::vector<uint8_t> segmentCount, segmentOverflow;
+    PerRayStorage<ShadingRecord> records;
+    PerRayStorage<TreeSegment> segments;
 
     void clear() {
         origin.clear(), dir.clear(), seed.clear(), pixel.clear(), extra.clear();
@@ -78,22 +76,8 @@ struct RayList {
         out.color = color.data();
         out.primary = info.data();
         out.rays = rays.data();
-        if (withRecords) {
-            records.resize(n * kRecordsPerPixel);
-            recordCount.resize(n), recordOverflow.resize(n);
-            out.records = records.data();
-            out.recordCapacity = kRecordsPerPixel;
-            out.recordCount = recordCount.data();
-            out.recordOverflow = recordOverflow.data();
-        }
-        if (withSegments) {
-            segments.resize(n * kSegmentsPerPixel);
-            segmentCount.resize(n), segmentOverflow.resize(n);
-            out.segments = segments.data();
-            out.segmentCapacity = kSegmentsPerPixel;
-            out.segmentCount = segmentCount.data();
-            out.segmentOverflow = segmentOverflow.data();
-        }
+        if (withRecords) out.records = records.lists(n, kRecordsPerPixel);
+        if (withSegments) out.segments = segments.lists(n, kSegmentsPerPixel);
         return kernel.trace(CameraBatch{origin.data(), dir.data(), seed.data(), n, true}, out,
                             counters, stale);
     }
@@ -217,10 +201,10 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
     // Results as PixelOut entries.
     auto keepSegments = [&](PixelOut& o, const RayList& list, std::size_t k) {
         o.segmentOffset = uint32_t(segments.size());
-        o.segmentCount = list.segmentCount[k];
-        const TreeSegment* first = list.segments.data() + k * kSegmentsPerPixel;
-        segments.insert(segments.end(), first, first + list.segmentCount[k]);
-        if (list.segmentOverflow[k]) o.flags |= kTreeUnknown;
+        o.segmentCount = list.segments.count[k];
+        const TreeSegment* first = list.segments.of(k, kSegmentsPerPixel);
+        segments.insert(segments.end(), first, first + list.segments.count[k]);
+        if (list.segments.overflow[k]) o.flags |= kTreeUnknown;
     };
     const uint8_t doneState = plan.spp == 1 ? kFinal : kBase;
     for (std::size_t k = 0; k < full.size(); ++k) {
@@ -234,17 +218,17 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
     }
     for (std::size_t k = 0; k < moving.size(); ++k) {
         const PrimaryInfo& info = moving.info[k];
-        const bool complete = plan.deferredRecords && !moving.recordOverflow[k];
+        const bool complete = plan.deferredRecords && !moving.records.overflow[k];
         PixelOut o = primaryPixel(
             moving.pixel[k], moving.color[k], info, moving.rays[k], kInteractive,
             uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | moving.extra[k] |
                     (complete ? kDeferredValid : 0)));
         o.hitBound = pointBound(moving.origin[k], moving.dir[k], info);
         o.recordOffset = uint32_t(records.size());
-        o.recordCount = complete ? moving.recordCount[k] : 0;
+        o.recordCount = complete ? moving.records.count[k] : 0;
         if (complete) {
-            const ShadingRecord* first = moving.records.data() + k * kRecordsPerPixel;
-            records.insert(records.end(), first, first + moving.recordCount[k]);
+            const ShadingRecord* first = moving.records.of(k, kRecordsPerPixel);
+            records.insert(records.end(), first, first + moving.records.count[k]);
         }
         keepSegments(o, moving, k);
         out.push_back(o);
@@ -301,8 +285,8 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
             if (info.touchedSpecular) o.flags |= kTouchedSpecular;
             o.cost += samples.rays[q];
             // The pixel's segments of all its new samples, as one sink of kSegmentsPerPixel.
-            const TreeSegment* first = samples.segments.data() + q * kSegmentsPerPixel;
-            for (uint8_t s = 0; s < samples.segmentCount[q]; ++s) {
+            const TreeSegment* first = samples.segments.of(q, kSegmentsPerPixel);
+            for (uint8_t s = 0; s < samples.segments.count[q]; ++s) {
                 if (kept < kSegmentsPerPixel) {
                     segments.push_back(first[s]);
                     ++kept;
@@ -310,7 +294,7 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
                     o.flags |= kTreeUnknown;
                 }
             }
-            if (samples.segmentOverflow[q]) o.flags |= kTreeUnknown;
+            if (samples.segments.overflow[q]) o.flags |= kTreeUnknown;
             ++count;
         }
         o.segmentCount = uint8_t(kept);
