@@ -47,12 +47,7 @@ void DesignerLimitsTest::init() {
         questions_ << text;
         return answer_;
     });
-    window_ = std::make_unique<MainWindow>();
-    window_->resize(1000, 700);
-    window_->show();
-    QVERIFY(window_->openFile(scenePath("reference-room.scene.json")));
-    window_->setRenderSize(160, 90);
-    QVERIFY(settle(*window_));
+    QVERIFY(openRoomWindow(window_));
 }
 
 void DesignerLimitsTest::cleanup() {

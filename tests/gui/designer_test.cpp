@@ -55,12 +55,7 @@ private:
 void DesignerTest::init() {
     errors_.clear();
     setErrorHandler([this](const QString& title, const QString& text) { errors_ << title + ": " + text; });
-    window_ = std::make_unique<MainWindow>();
-    window_->resize(1000, 700);
-    window_->show();
-    QVERIFY(window_->openFile(scenePath("reference-room.scene.json")));
-    window_->setRenderSize(160, 90);
-    QVERIFY(settle(*window_));
+    QVERIFY(openRoomWindow(window_));
 }
 
 void DesignerTest::cleanup() {

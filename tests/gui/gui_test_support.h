@@ -10,8 +10,10 @@
 #include <QCoreApplication>
 #include <QStandardPaths>
 #include <QString>
+#include <QTest>
 
 #include <chrono>
+#include <memory>
 
 namespace rs::ui::test {
 
@@ -36,6 +38,20 @@ inline bool settle(MainWindow& w) {
 }
 
 /// The id of the object named `name` (kNoObject when absent).
+/// A shown, active main window on the reference room with a 160x90 frame, refined to final:
+/// the starting point of most designer tests.
+inline bool openRoomWindow(std::unique_ptr<MainWindow>& window) {
+    window = std::make_unique<MainWindow>();
+    window->resize(1000, 700);
+    window->show();
+    if (!QTest::qWaitForWindowExposed(window.get())) return false;
+    window->activateWindow();
+    if (!QTest::qWaitForWindowActive(window.get())) return false;
+    if (!window->openFile(scenePath("reference-room.scene.json"))) return false;
+    window->setRenderSize(160, 90);
+    return settle(*window);
+}
+
 inline ObjectId idOf(const MainWindow& w, const std::string& name) {
     for (const Object& o : w.editor()->document().objects)
         if (o.name == name) return o.id;

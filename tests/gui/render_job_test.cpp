@@ -85,15 +85,7 @@ void RenderJobTest::init() {
         questions_ << text;
         return answer_;
     });
-    window_ = std::make_unique<MainWindow>();
-    window_->resize(1000, 700);
-    window_->show();
-    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
-    window_->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(window_.get()));
-    QVERIFY(window_->openFile(scenePath("reference-room.scene.json")));
-    window_->setRenderSize(160, 90);
-    QVERIFY(settle(*window_));
+    QVERIFY(openRoomWindow(window_));
 }
 
 void RenderJobTest::cleanup() {
