@@ -67,6 +67,9 @@ private:
     /// Makes the document's full renders take many seconds (64 samples a pixel everywhere),
     /// so only a cancel ends one at 3840x2160 quickly; the viewport stays at 160x90.
     void makeRendersSlow();
+    /// Drags the blue ball `moves` x 4 pixels to the right with real mouse events; false when
+    /// it is not on screen.
+    bool dragBlueBall(int moves);
 
     std::unique_ptr<MainWindow> window_;
     QStringList errors_;
@@ -97,6 +100,17 @@ void RenderJobTest::cleanup() {
     setConfirmationHandler({});
 }
 
+bool RenderJobTest::dragBlueBall(int moves) {
+    Viewport* v = window_->viewport();
+    const auto [x, y] = pixelOf(*v->frame(), idOf(*window_, "blue ball"));
+    if (x < 0) return false;
+    const QPoint start = v->widgetPointOf(x, y);
+    QTest::mousePress(v, Qt::LeftButton, {}, start);
+    for (int i = 1; i <= moves; ++i) QTest::mouseMove(v, start + QPoint(4 * i, 0));
+    QTest::mouseRelease(v, Qt::LeftButton, {}, start + QPoint(4 * moves, 0));
+    return true;
+}
+
 void RenderJobTest::makeRendersSlow() {
     SceneDocument doc = window_->editor()->document();
     doc.render.supersampling = 64;
@@ -113,15 +127,9 @@ void RenderJobTest::dragWhileRendering_IsAppliedAndUndoable_AndTheViewportRender
 
     // A drag of the blue ball with real mouse events, while the render runs.
     const ObjectId blue = idOf(*window_, "blue ball");
-    Viewport* v = window_->viewport();
-    const auto [x, y] = pixelOf(*v->frame(), blue);
-    QVERIFY(x >= 0);
-    const QPoint start = v->widgetPointOf(x, y);
     const Vec3 before = window_->editor()->document().findObject(blue)->transform.translate;
     const int steps = window_->editor()->undoStack()->count();
-    QTest::mousePress(v, Qt::LeftButton, {}, start);
-    for (int i = 1; i <= 8; ++i) QTest::mouseMove(v, start + QPoint(4 * i, 0));
-    QTest::mouseRelease(v, Qt::LeftButton, {}, start + QPoint(32, 0));
+    QVERIFY(dragBlueBall(8));
 
     const Vec3 moved = window_->editor()->document().findObject(blue)->transform.translate;
     QVERIFY2(moved.x > before.x + 0.05f, qPrintable(QString::number(moved.x - before.x)));
@@ -148,13 +156,7 @@ void RenderJobTest::editsWhileRendering_RenderShowsTheDocumentAsItWasWhenStarted
     QVERIFY(window_->renderQueue()->busy());
     // Drag the blue ball with real mouse events while the render runs.
     const ObjectId blue = idOf(*window_, "blue ball");
-    Viewport* v = window_->viewport();
-    const auto [x, y] = pixelOf(*v->frame(), blue);
-    QVERIFY(x >= 0);
-    const QPoint start = v->widgetPointOf(x, y);
-    QTest::mousePress(v, Qt::LeftButton, {}, start);
-    for (int i = 1; i <= 8; ++i) QTest::mouseMove(v, start + QPoint(4 * i, 0));
-    QTest::mouseRelease(v, Qt::LeftButton, {}, start + QPoint(32, 0));
+    QVERIFY(dragBlueBall(8));
     QVERIFY(!(window_->editor()->document().findObject(blue)->transform.translate ==
               asStarted.findObject(blue)->transform.translate));
     QTRY_VERIFY_WITH_TIMEOUT(!window_->renderQueue()->busy(), 120000);
@@ -294,14 +296,7 @@ void RenderJobTest::unsavedChangesPrompt_IsAnswerableWhileRendering() {
     makeRendersSlow();
     QVERIFY(settle(*window_));
     // An unsaved edit, made with the mouse.
-    const ObjectId blue = idOf(*window_, "blue ball");
-    Viewport* v = window_->viewport();
-    const auto [x, y] = pixelOf(*v->frame(), blue);
-    QVERIFY(x >= 0);
-    const QPoint start = v->widgetPointOf(x, y);
-    QTest::mousePress(v, Qt::LeftButton, {}, start);
-    for (int i = 1; i <= 6; ++i) QTest::mouseMove(v, start + QPoint(4 * i, 0));
-    QTest::mouseRelease(v, Qt::LeftButton, {}, start + QPoint(24, 0));
+    QVERIFY(dragBlueBall(6));
     QVERIFY(!window_->editor()->undoStack()->isClean());
     const QString path = dir_.filePath(QStringLiteral("unsaved.png"));
     QVERIFY(window_->renderImage(path, 3840, 2160));
