@@ -177,6 +177,31 @@ inline void any8(const FlatView& v, const RayBatch& rays, std::size_t first, uin
     for (int k = 0; k < r.lanes; ++k) occluded[first + std::size_t(k)] = (blocked >> k) & 1u;
 }
 
+/// For rays [first, first + 8) and each other primitive o: bit k of masks[o] set when ray k
+/// may meet o's (slightly widened) world bounds within (0, tmax). A filter only, so it fails
+/// open: NaN slabs (a ray in a face's plane) leave the interval unconstrained.
+inline void boundsMasks(const FlatView& v, const RayBatch& rays, std::size_t first, const F8& tmax,
+                        uint8_t* masks) {
+    const Rays8 r = loadRays(rays, first);
+    const F8 one = splat(1.0f);
+    const F8 ix = one / r.dx, iy = one / r.dy, iz = one / r.dz;
+    for (int o = 0; o < v.others; ++o) {
+        const F8 x0 = (v.lox[o] - r.ox) * ix, x1 = (v.hix[o] - r.ox) * ix;
+        const F8 y0 = (v.loy[o] - r.oy) * iy, y1 = (v.hiy[o] - r.oy) * iy;
+        const F8 z0 = (v.loz[o] - r.oz) * iz, z1 = (v.hiz[o] - r.oz) * iz;
+        // Per axis near and far; a NaN axis (0 * inf) is skipped by the selects below.
+        const F8 nx = select(x0 < x1, x0, x1), fx = select(x0 < x1, x1, x0);
+        const F8 ny = select(y0 < y1, y0, y1), fy = select(y0 < y1, y1, y0);
+        const F8 nz = select(z0 < z1, z0, z1), fz = select(z0 < z1, z1, z0);
+        F8 enter = splat(-kInfinity), exit = splat(kInfinity);
+        enter = select(nx > enter, nx, enter), exit = select(fx < exit, fx, exit);
+        enter = select(ny > enter, ny, enter), exit = select(fy < exit, fy, exit);
+        enter = select(nz > enter, nz, enter), exit = select(fz < exit, fz, exit);
+        const I8 miss = (enter > exit) | (exit < 0.0f) | (enter > tmax);
+        masks[o] = uint8_t(~bits(miss) & ((1u << r.lanes) - 1u));
+    }
+}
+
 inline void closestAll(const FlatView& v, const RayBatch& rays, const HitBatch& hits) {
     for (std::size_t first = 0; first < rays.count; first += kLanes) closest8(v, rays, first, hits);
 }

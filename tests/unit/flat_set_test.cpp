@@ -46,8 +46,35 @@ SceneDocument randomRoom(std::mt19937& rng, int spheres, float lightRadius) {
     return doc;
 }
 
+/// A box, a rotated rectangle and a stretched sphere: primitives the flat set tests one ray
+/// at a time with intersectPrimitive.
+void addOthers(SceneDocument& doc) {
+    Object box;
+    box.name = "box";
+    box.material = "m";
+    box.geometry = BoxGeometry{Vec3(-0.5f), Vec3(0.5f)};
+    box.transform.rotate = Vec3(20, 35, 0);
+    box.transform.translate = Vec3(-1.5f, -2.0f, -1.0f);
+    doc.addObject(box);
+    Object rect;
+    rect.name = "rect";
+    rect.material = "m";
+    rect.geometry = RectangleGeometry{Vec3(1.0f, 0.5f, -2.0f), Vec3(0.8f, 0, 0), Vec3(0, 0.6f, 0.3f)};
+    doc.addObject(rect);
+    Object egg;
+    egg.name = "egg";
+    egg.material = "m";
+    egg.geometry = SphereGeometry{Vec3(0.0f), 0.5f};
+    egg.transform.scale = Vec3(1.0f, 2.0f, 1.0f);
+    egg.transform.translate = Vec3(0.5f, 0.0f, 1.0f);
+    doc.addObject(egg);
+}
+
+bool worldSphere(const Primitive& p) { return !p.hasFrame && std::holds_alternative<SphereShape>(p.shape); }
+
 /// The scalar answer the flat set must reproduce: planes in order with intersect(PlaneShape),
-/// then spheres in order with intersect(SphereShape), each taken when strictly nearer.
+/// then world spheres in order with intersect(SphereShape), then the other primitives in
+/// order with intersectPrimitive, each taken when strictly nearer.
 EngineHit scalarClosest(const CompiledScene& scene, const Ray& ray, float tmax) {
     EngineHit best;
     best.t = tmax;
@@ -55,8 +82,12 @@ EngineHit scalarClosest(const CompiledScene& scene, const Ray& ray, float tmax) 
     for (std::size_t j = 0; j < scene.planes().size(); ++j)
         if (intersect(scene.planes()[j].shape, ray, 0.0f, best.t, sh))
             best = {sh.t, sh.n, kPlaneSlot | uint32_t(j)};
-    for (std::size_t s = 0; s < scene.primitives().size(); ++s)
-        if (intersect(std::get<SphereShape>(scene.primitives()[s].shape), ray, 0.0f, best.t, sh))
+    const auto& prims = scene.primitives();
+    for (std::size_t s = 0; s < prims.size(); ++s)
+        if (worldSphere(prims[s]) && intersect(std::get<SphereShape>(prims[s].shape), ray, 0.0f, best.t, sh))
+            best = {sh.t, sh.n, uint32_t(s)};
+    for (std::size_t s = 0; s < prims.size(); ++s)
+        if (!worldSphere(prims[s]) && intersectPrimitive(prims[s], ray, 0.0f, best.t, sh))
             best = {sh.t, sh.n, uint32_t(s)};
     if (best.slot == kNoSlot) best = EngineHit{};
     return best;
@@ -67,7 +98,7 @@ bool scalarAny(const CompiledScene& scene, const Ray& ray, float tmax) {
     for (const PlanePrimitive& p : scene.planes())
         if (intersect(p.shape, ray, 0.0f, tmax, sh)) return true;
     for (const Primitive& p : scene.primitives())
-        if (intersect(std::get<SphereShape>(p.shape), ray, 0.0f, tmax, sh)) return true;
+        if (intersectPrimitive(p, ray, 0.0f, tmax, sh)) return true;
     return false;
 }
 
@@ -149,7 +180,8 @@ TEST(FlatSet, AnswersAreTheScalarTestsBits_BothMachineCodes_EveryBatchLength) {
     std::mt19937 rng(7);
     int sphereHits = 0, blocked = 0, total = 0;
     for (int s = 0; s < 30; ++s) {
-        const SceneDocument doc = randomRoom(rng, 1 + s % int(FlatSet::kMaxSpheres), 0.0f);
+        SceneDocument doc = randomRoom(rng, 1 + s % int(FlatSet::kMaxShapes - 3), 0.0f);
+        if (s % 3 == 0) addOthers(doc);
         const CompiledScene scene(doc, nullptr, EngineKind::Builtin);
         ASSERT_TRUE(FlatSet::suits(scene.primitives()));
         const FlatSet flat(scene.planes(), &scene.primitives());
@@ -198,20 +230,26 @@ TEST(FlatSet, RaysGrazingASphereGetTheScalarAnswer) {
     EXPECT_GT(blocked, 200);
 }
 
-TEST(FlatSet, OnlyAFewWorldSpheresAreFlat) {
+TEST(FlatSet, OnlyAFewObjectsAndNoMeshAreFlat) {
     std::mt19937 rng(3);
-    SceneDocument doc = randomRoom(rng, int(FlatSet::kMaxSpheres), 0.0f);
+    SceneDocument doc = randomRoom(rng, int(FlatSet::kMaxShapes) - 3, 0.0f);
+    addOthers(doc);
     EXPECT_TRUE(dynamic_cast<const BvhEngine&>(CompiledScene(doc, nullptr, EngineKind::Builtin).engine()).testsFlat());
     addSphere(doc, "one more", Vec3(0.0f), 0.1f, "m");
     EXPECT_FALSE(dynamic_cast<const BvhEngine&>(CompiledScene(doc, nullptr, EngineKind::Builtin).engine()).testsFlat());
-    SceneDocument scaled = randomRoom(rng, 2, 0.0f);
+    SceneDocument withMesh = randomRoom(rng, 2, 0.0f);
+    auto mesh = std::make_shared<MeshData>();
+    mesh->positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    mesh->indices = {0, 1, 2};
     Object o;
-    o.name = "scaled";
+    o.name = "triangle";
     o.material = "m";
-    o.geometry = SphereGeometry{Vec3(0.0f), 0.5f};
-    o.transform.scale = Vec3(1.0f, 2.0f, 1.0f);
-    scaled.addObject(o);
-    EXPECT_FALSE(FlatSet::suits(CompiledScene(scaled).primitives()));
+    MeshGeometry g;
+    g.file = "triangle.obj";
+    g.data = mesh;
+    o.geometry = g;
+    withMesh.addObject(o);
+    EXPECT_FALSE(FlatSet::suits(CompiledScene(withMesh).primitives()));
 }
 
 TEST(TileCulling, OrthographicCamerasTestEverything) {
