@@ -26,10 +26,11 @@ void sampleLights(const CompiledScene& scene, const Vec3& p, const Vec3& n, uint
             lightSeed = hashCombine(seed, uint32_t(li) + 17u);
         }
         LightSpan span{uint32_t(li), uint32_t(samples.size()), 0, uint32_t(count)};
+        const DiskStrata strata(count);
         for (int s = 0; s < count; ++s) {
             Vec3 q = light.position;
             if (sampled) {
-                const Vec3 d = stratifiedDiskSample(s, count, lightSeed);
+                const Vec3 d = strata.sample(s, lightSeed);
                 q += light.radius * (d.x * axisA + d.y * axisB);
             }
             Vec3 toLight = q - p;
