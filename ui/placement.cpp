@@ -1,6 +1,7 @@
 // Placement of new objects by a ray cast through the view camera; see placement.h.
 #include "placement.h"
 
+#include "scene/parameters.h"
 #include "scene_edits.h"
 #include "snapshot/compiled_scene.h"
 
@@ -109,7 +110,10 @@ float fitScale(const Aabb& bounds, const Camera& view, float distance) {
     if (!(size > 0.0f) || !(visible > 0.0f) || !std::isfinite(size / visible)) return 1.0f;
     const float share = size / visible;
     if (share >= kMinViewShare && share <= kMaxViewShare) return 1.0f;
-    return twoSignificantDigits(kFitViewShare / share);
+    // Within what the Transform's Scale field accepts, so the factor stays editable there.
+    const ParamDescriptor* range = findParameter(ParamKind::Transform, "scale");
+    const float factor = twoSignificantDigits(kFitViewShare / share);
+    return range ? std::clamp(factor, float(range->min), float(range->max)) : factor;
 }
 
 }  // namespace rs::ui

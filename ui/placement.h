@@ -44,7 +44,7 @@ bool snapToFloor(SceneDocument& doc, ObjectId id, const CompiledScene* scene, co
 /// The uniform scale that fits a mesh of object-space `bounds`, seen through `view` from
 /// `distance`, into the view: 1 when its size is already between kMinViewShare and
 /// kMaxViewShare of the visible height there, else the factor (two significant digits) that
-/// makes it kFitViewShare of it.
+/// makes it kFitViewShare of it, within the range Transform -> Scale accepts.
 float fitScale(const Aabb& bounds, const Camera& view, float distance);
 inline constexpr float kMinViewShare = 0.02f;
 inline constexpr float kMaxViewShare = 1.0f;

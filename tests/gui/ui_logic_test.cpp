@@ -1,6 +1,7 @@
 // The designer's Qt-free-ish logic without a window: names for duplicates, the default scene.
 #include "default_scene.h"
 #include "placement.h"
+#include "scene/parameters.h"
 #include "scene_edits.h"
 #include "snapshot/compiled_scene.h"
 
@@ -106,6 +107,8 @@ void UiLogicTest::fitScale_ScalesOnlyMeshesThatDoNotFitTheView() {
     const float share = big * glm::length(cube(150.0f).extent()) / visible;
     QVERIFY2(std::abs(share - kFitViewShare) < 0.02f, qPrintable(QString::number(share)));
     QVERIFY(fitScale(cube(0.001f), view, 10.0f) > 100.0f);
+    // A factor the Scale field could not show is clamped to its range.
+    QCOMPARE(fitScale(cube(1e9f), view, 10.0f), float(findParameter(ParamKind::Transform, "scale")->min));
 }
 
 void UiLogicTest::duplicate_CountsOnFromTheCopysNumber() {
