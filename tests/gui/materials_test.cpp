@@ -75,6 +75,7 @@ private Q_SLOTS:
     void newSphere_LandsOnTheSurfaceUnderTheViewCentre();
     void snapToFloor_NewBoxRestsOnTheFloorBelowTheViewCentre();
     void largeMeshImport_IsScaledToFitTheView_AndTheFactorIsEditable();
+    void meshImportedAtTheCursor_LandsOnTheSurfaceUnderIt_Unscaled();
     void newAndDuplicateMaterial_EachOneUndoStep();
     void renameMaterial_InPlace_RenamesItsUsers_AndRefusesTakenOrEmptyNames();
     void deleteMaterial_UsedIsRefusedWithTheReason_UnusedIsOneUndoStep();
@@ -261,6 +262,34 @@ void MaterialsTest::largeMeshImport_IsScaledToFitTheView_AndTheFactorIsEditable(
     QCOMPARE(undoCount(), 2);
     window_->editor()->undoStack()->undo();
     QCOMPARE(doc().findObject(id)->transform.scale.x, factor);
+}
+
+void MaterialsTest::meshImportedAtTheCursor_LandsOnTheSurfaceUnderIt_Unscaled() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("crate.obj"));
+    QVERIFY(writeCube(path, 0.6f));
+    // A floor pixel low in the frame, away from the view centre (the back wall).
+    const DisplayFrame& f = *window_->viewport()->frame();
+    const ObjectId floor = idOf(*window_, "floor");
+    const int x = f.width / 2 + f.width / 8, y = f.height - 4;
+    QCOMPARE(f.idAt(x, y), floor);
+    const QPoint at = window_->viewport()->widgetPointOf(x, y);
+    // What a drop on the viewport does: import onto the surface under the cursor.
+    window_->importMesh(path, at);
+    QTRY_VERIFY_WITH_TIMEOUT(idOf(*window_, "crate") != kNoObject, 20000);
+    const ObjectId id = idOf(*window_, "crate");
+    QVERIFY(doc().findObject(id)->transform.scale == Vec3(1.0f));  // It fits: not rescaled.
+    const Aabb b = worldBounds(doc(), id);
+    QVERIFY2(std::abs(b.min.y) < 1e-3f, qPrintable(str(b.min)));  // On the floor.
+    QVERIFY(settle(*window_));
+    const ViewProjection view = window_->viewport()->projection();
+    const auto shown = view.project(b.center());
+    QVERIFY(shown);
+    // Its centre appears above the drop point (it stands on the floor there).
+    QVERIFY2(std::abs(shown->x() - at.x()) < 0.05 * window_->viewport()->width(),
+             qPrintable(QStringLiteral("%1 vs %2").arg(shown->x()).arg(at.x())));
+    QVERIFY(shown->y() < at.y());
 }
 
 void MaterialsTest::newAndDuplicateMaterial_EachOneUndoStep() {
