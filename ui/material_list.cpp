@@ -11,6 +11,8 @@
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
+#include <unordered_map>
+
 namespace rs::ui {
 
 namespace {
@@ -92,23 +94,32 @@ void MaterialList::showMessage(const QString& text) {
 }
 
 void MaterialList::rebuild() {
-    const std::string keep = current();
     refused_.clear();
-    rebuilding_ = true;
+    // A drag edits the document many times a second without touching the list: keep it.
+    const SceneDocument& doc = editor_->document();
+    std::unordered_map<std::string, int> users;  // One pass: a scene may have many of both.
+    for (const Object& o : doc.objects) ++users[o.material];
+    QStringList shown;
+    for (const Material& m : doc.materials)
+        shown << QString::fromStdString(m.name) + QLatin1Char('/') + QString::number(users[m.name]);
+    if (shown == shown_) {
+        updateButtons();
+        return;
+    }
+    shown_ = shown;
+    const std::string keep = current();
     {
         const QSignalBlocker block(list_);
         list_->clear();
-        const SceneDocument& doc = editor_->document();
         for (const Material& m : doc.materials) {
             const QString name = QString::fromStdString(m.name);
             auto* item = new QListWidgetItem(name, list_);
             item->setData(kNameRole, name);
             item->setFlags(item->flags() | Qt::ItemIsEditable);
-            const int users = materialUsers(doc, m.name);
-            item->setToolTip(users ? tr("Used by %n object(s)", nullptr, users) : tr("Unused"));
+            const int n = users[m.name];
+            item->setToolTip(n ? tr("Used by %n object(s)", nullptr, n) : tr("Unused"));
         }
     }
-    rebuilding_ = false;
     if (!setCurrent(keep) && list_->count() > 0) list_->setCurrentRow(0);
     updateButtons();
 }
@@ -151,7 +162,6 @@ void MaterialList::renameMaterial() {
 }
 
 void MaterialList::onItemChanged(QListWidgetItem* item) {
-    if (rebuilding_) return;
     const std::string from = item->data(kNameRole).toString().toStdString();
     const std::string to = item->text().toStdString();
     if (from == to) return;
@@ -163,6 +173,7 @@ void MaterialList::applyRename(const std::string& from, const std::string& to) {
     SceneDocument doc = editor_->document();
     const std::string error = rs::ui::renameMaterial(doc, from, to);
     if (!error.empty()) {
+        shown_.clear();
         rebuild();  // Back to the names the document has.
         setCurrent(from);
         refused_ = tr("Cannot rename \"%1\": %2")

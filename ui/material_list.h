@@ -4,6 +4,7 @@
 
 #include "scene/document.h"
 
+#include <QStringList>
 #include <QWidget>
 
 #include <string>
@@ -59,8 +60,8 @@ private:
     QPushButton* delete_;
     QPushButton* assign_;
     QLabel* message_;
-    bool rebuilding_ = false;
     QString refused_;  ///< A refused rename's error, shown until the next change.
+    QStringList shown_;  ///< "name/users" of each material listed.
 };
 
 }  // namespace rs::ui
