@@ -4,6 +4,7 @@
 #include "scene/parameters.h"
 #include "scene_edits.h"
 #include "snapshot/compiled_scene.h"
+#include "transform_edits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,24 +15,6 @@ namespace {
 
 /// Share of the distance to the surface a new light stays short of it.
 constexpr float kLightClearance = 0.2f;
-
-/// The shape's own bounds, before its transform (empty for planes).
-Aabb localBounds(const Geometry& g) {
-    Aabb b;
-    if (const auto* s = std::get_if<SphereGeometry>(&g)) {
-        b.expand(s->center - Vec3(s->radius));
-        b.expand(s->center + Vec3(s->radius));
-    } else if (const auto* r = std::get_if<RectangleGeometry>(&g)) {
-        for (float su : {-1.0f, 1.0f})
-            for (float sv : {-1.0f, 1.0f}) b.expand(r->center + su * r->u + sv * r->v);
-    } else if (const auto* box = std::get_if<BoxGeometry>(&g)) {
-        b.expand(box->min);
-        b.expand(box->max);
-    } else if (const auto* m = std::get_if<MeshGeometry>(&g)) {
-        if (m->data) b = m->data->bounds();
-    }
-    return b;
-}
 
 /// Half the depth of `b` along unit `n`: how far its centre must stand off a surface.
 float halfDepth(const Aabb& b, const Vec3& n) {
@@ -66,13 +49,6 @@ Placement placeAlong(const CompiledScene* scene, const Ray& ray, float fallback)
 float fallbackDistance(const Camera& view) {
     const float d = glm::length(view.target - view.position);
     return d > 1e-6f ? std::min(d, kMaxFallbackDistance) : kMaxFallbackDistance;
-}
-
-Aabb worldBounds(const SceneDocument& doc, ObjectId id) {
-    const Object* o = doc.findObject(id);
-    if (!o) return {};
-    const Aabb local = localBounds(o->geometry);
-    return local.empty() ? local : local.transformed(o->transform.matrix());
 }
 
 void restOn(SceneDocument& doc, ObjectId id, const Placement& at) {

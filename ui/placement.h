@@ -29,9 +29,6 @@ Placement placeAlong(const CompiledScene* scene, const Ray& ray, float fallbackD
 float fallbackDistance(const Camera& view);
 inline constexpr float kMaxFallbackDistance = 5.0f;
 
-/// World bounds of object `id` (empty for planes, unknown ids and meshes without data).
-Aabb worldBounds(const SceneDocument& doc, ObjectId id);
-
 /// Moves object or light `id` to `at`: an object so that it touches the surface from the
 /// normal's side (its bounds' centre `at.normal` times its half depth off the point), a
 /// light a little short of the surface towards the viewer, a plane through the point.

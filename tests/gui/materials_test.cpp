@@ -8,6 +8,7 @@
 #include "placement.h"
 #include "property_panel.h"
 #include "snapshot/compiled_scene.h"
+#include "transform_edits.h"
 
 #include <QAction>
 #include <QApplication>

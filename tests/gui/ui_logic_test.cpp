@@ -4,6 +4,7 @@
 #include "scene/parameters.h"
 #include "scene_edits.h"
 #include "snapshot/compiled_scene.h"
+#include "transform_edits.h"
 
 #include <QDir>
 #include <QFile>
