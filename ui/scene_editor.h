@@ -8,6 +8,8 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <optional>
+
 namespace rs::ui {
 
 /// Merge keys group consecutive edits into one undo step (a drag, a slider sweep).
@@ -32,6 +34,11 @@ public:
     void closeMerge() { ++mergeSerial_; }
     /// Replaces the document without undo (used by undo commands themselves).
     void replaceDocument(SceneDocument doc);
+    /// Shows `doc` as the document, without an undo step, until endPreview() (a colour
+    /// dialog's live preview); the first call keeps the document to go back to.
+    void preview(SceneDocument doc);
+    /// Puts back the document from before preview(); nothing when no preview runs.
+    void endPreview();
     /// Loads a new document (Open/New): clears undo history, sets the file, clears selection.
     void resetDocument(SceneDocument doc, const QString& filePath);
 
@@ -62,6 +69,7 @@ private:
     QString filePath_;
     ObjectId selection_ = kNoObject;
     int mergeSerial_ = 0;
+    std::optional<SceneDocument> beforePreview_;
 };
 
 }  // namespace rs::ui
