@@ -51,6 +51,7 @@ void SessionController::requestUpdate(const SceneDocument& doc) {
 void SessionController::onUpdateTimer() {
     if (!pendingDoc_) return;
     const uint64_t generation = session_->update(*pendingDoc_);
+    postedGeneration_ = generation;
     // Tone mapping and exposure trace nothing, so no tile will announce them: repaint here.
     const bool displayChanged = pendingDoc_->render.tonemap != postedTonemap_ ||
                                 pendingDoc_->render.exposure != postedExposure_;
@@ -64,6 +65,12 @@ void SessionController::onUpdateTimer() {
 
 void SessionController::flushUpdate() {
     onUpdateTimer();
+}
+
+std::shared_ptr<const CompiledScene> SessionController::appliedSnapshot() {
+    flushUpdate();
+    if (postedGeneration_ > 0) session_->waitForUpdate(postedGeneration_, std::chrono::seconds(1));
+    return session_->snapshot();
 }
 
 void SessionController::beginInteraction(ObjectId moving) {

@@ -32,8 +32,13 @@ public:
     /// Queues `doc` to be shown; consecutive requests within one display interval collapse
     /// into one session update.
     void requestUpdate(const SceneDocument& doc);
-    /// Sends a pending update now (tests and drag release use it).
+    /// Sends a pending update now (tests and drag release use it). The session applies it on
+    /// its own thread: this returns at once.
     void flushUpdate();
+    /// Flushes, then waits (up to a second) until the session has applied the document
+    /// posted last, and returns its snapshot: for one-off actions that need the edits in the
+    /// scene (Frame Selection), never per event.
+    std::shared_ptr<const CompiledScene> appliedSnapshot();
     /// beginInteraction / endInteraction on the session, flushing pending updates first.
     void beginInteraction(ObjectId moving);
     void endInteraction();
@@ -81,6 +86,7 @@ private:
     QTimer updateTimer_;
     std::optional<SceneDocument> pendingDoc_;
     uint64_t requestSerial_ = 0;
+    uint64_t postedGeneration_ = 0;  ///< Generation of the document posted last.
     /// Tiles committed since displayFrame() last looked (worker threads add, GUI drains), and
     /// the highest generation of any tile announced.
     std::mutex tilesMutex_;

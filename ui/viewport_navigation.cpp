@@ -103,8 +103,7 @@ void Viewport::frameSelection() {
     const ObjectId id = editor_->selection();
     const SceneDocument& doc = editor_->document();
     // The session's snapshot must hold the latest edits: its bounds and walls are used.
-    session_->flushUpdate();
-    const auto snapshot = session_->session().snapshot();
+    const auto snapshot = session_->appliedSnapshot();
     Vec3 center;
     float radius = 1.0f;
     if (const Light* l = doc.findLight(id)) {

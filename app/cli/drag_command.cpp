@@ -136,6 +136,20 @@ int runDrag(int argc, char** argv) {
     session.waitUntilComplete(600s);
     const double cancelMs = session.stats().lastCancelLatencyMs;
 
+    // A whole session frame (a camera nudge re-traces every pixel) against renderImage of the
+    // same scene and size, interleaved so both see the same machine load; medians.
+    constexpr int kFrameRounds = 5;
+    std::vector<double> sessionFrames, imageFrames;
+    for (int k = 0; k < kFrameRounds; ++k) {
+        nudged.camera.target.x = doc.camera.target.x + (k % 2 ? -1e-3f : 1e-3f);
+        const auto frameStart = Clock::now();
+        session.update(nudged);
+        if (!session.waitUntilComplete(600s)) throw std::runtime_error("session frame timed out");
+        sessionFrames.push_back(msSince(frameStart));
+        imageFrames.push_back(renderImage(CompiledScene(nudged, nullptr, engine), options).ms);
+    }
+    const double sessionFrameMs = medianOf(sessionFrames), imageFrameMs = medianOf(imageFrames);
+
     const std::size_t total = std::size_t(doc.render.width) * std::size_t(doc.render.height);
     std::vector<double> times, fractions;
     for (const Step& s : log) {
@@ -150,8 +164,10 @@ int runDrag(int argc, char** argv) {
                         i ? ", " : "", log[i].ms, log[i].traced, total);
         std::printf("], \"step_ms_median\": %.3f, \"traced_fraction_median\": %.5f, "
                     "\"refine_ms\": %.3f, \"full_frame_ms\": %.3f, \"final_max_abs_diff\": %.3g, "
-                    "\"cancel_latency_ms\": %.3f}\n",
-                    stepMedian, fractionMedian, refineMs, full.ms, double(maxDiff), cancelMs);
+                    "\"cancel_latency_ms\": %.3f, \"session_frame_ms\": %.3f, "
+                    "\"render_image_ms\": %.3f}\n",
+                    stepMedian, fractionMedian, refineMs, full.ms, double(maxDiff), cancelMs,
+                    sessionFrameMs, imageFrameMs);
     } else {
         std::printf("dragged '%s' in %d steps (%dx%d)\n", objectName->c_str(), steps,
                     doc.render.width, doc.render.height);
@@ -161,6 +177,9 @@ int runDrag(int argc, char** argv) {
         std::printf("  full frame            %10.2f ms  (ratio step/full %.3f)\n", full.ms,
                     full.ms > 0 ? stepMedian / full.ms : 0.0);
         std::printf("  cancel latency        %10.2f ms\n", cancelMs);
+        std::printf("  session frame         %10.2f ms  (renderImage %.2f ms, ratio %.3f; medians of %d)\n",
+                    sessionFrameMs, imageFrameMs,
+                    imageFrameMs > 0 ? sessionFrameMs / imageFrameMs : 0.0, kFrameRounds);
         std::printf("  final max abs diff    %10.3g\n", double(maxDiff));
     }
     if (args.has("--verify") && maxDiff > 1e-5f) {

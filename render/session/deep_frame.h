@@ -35,7 +35,20 @@ struct TileSummary {
     bool anyUnknown = false;    ///< Some pixel's tree was not kept.
 };
 
+struct TileResult;
+
 /// Structure-of-arrays deep buffer (thesis 3.3), row-major, (0, 0) top left.
+///
+/// Who writes what: resize() allocates; tiles write only through commit(), under the session's
+/// shared frame lock, each tile its own pixels; edits (the session's dirty marking) change
+/// only `state` and `flags`, under the exclusive lock. commit() keeps these invariants:
+/// - a result of another generation than the live one writes nothing;
+/// - `base` holds the centre sample of pixels at kBase or above, `sampleSum`/`sampleCount`
+///   the supersamples added so far (zero below kBase);
+/// - a pixel's records are tileRecords[its tile][recordStart, +recordCount), valid only with
+///   kDeferredValid; its segments are tileSegments[its tile][segmentStart, +segmentCount),
+///   all of them unless kTreeUnknown;
+/// - the summaries of the blocks a commit wrote describe their pixels again.
 struct DeepFrame {
     int width = 0;
     int height = 0;
@@ -75,6 +88,12 @@ struct DeepFrame {
     int tileOf(int x, int y) const { return (y / tileSize) * tilesX() + x / tileSize; }
     int blocksX() const { return (width + kBlock - 1) / kBlock; }
     int blocksY() const { return (height + kBlock - 1) / kBlock; }
+    /// Writes a tile's results (tile_output.h): traced pixels get every buffer; blocks of an
+    /// undersampled pass every buffer but base and segments (cleared); resolved pixels their
+    /// colour, base, state and flags; finished ones state and colour (their base); sampled
+    /// ones colour, sums, state, flags, cost, bound and appended segments. False, writing
+    /// nothing, when `result` is of another generation than `liveGeneration`.
+    bool commit(const TileResult& result, uint64_t liveGeneration);
     /// Recomputes the block summaries inside tile `t` from its pixels.
     void summarizeTile(int t);
     /// Recomputes the summary of the block holding pixel (x, y).

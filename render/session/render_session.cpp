@@ -26,6 +26,22 @@ int arenaSize(int threads) { return threads > 0 ? threads : tbb::info::default_c
 bool anyBelow(const std::vector<uint8_t>& state, uint8_t target) {
     return std::any_of(state.begin(), state.end(), [target](uint8_t s) { return s < target; });
 }
+
+/// The observer's message for a failure of rendering or of applying a document.
+std::string failureMessage(std::exception_ptr failure) {
+    try {
+        std::rethrow_exception(failure);
+    } catch (const std::bad_alloc&) {
+        return "rendering failed: out of memory";
+    } catch (const std::exception& e) {
+        return std::string("rendering failed: ") + e.what();
+    } catch (...) {
+    }
+    return "rendering failed";
+}
+
+/// More regions than this are merged into their bounding box (a long, winding drag).
+constexpr std::size_t kMaxDeferredShadowRegions = 64;
 }  // namespace
 
 RenderSession::RenderSession(int threads)
@@ -82,96 +98,150 @@ SessionStats RenderSession::stats() const {
     return stats_;
 }
 
-namespace {
-/// More regions than this are merged into their bounding box (a long, winding drag).
-constexpr std::size_t kMaxDeferredShadowRegions = 64;
-}  // namespace
-
 uint64_t RenderSession::update(const SceneDocument& doc) {
-    std::lock_guard updating(updateMutex_);
-    const auto start = std::chrono::steady_clock::now();
-    // Only update() writes doc_ and snapshot_, and updates are serialised, so the diff and the
-    // (possibly slow) snapshot build run without holding the frame lock.
-    SceneUpdate u = updateScene(doc_, hasDocument_ ? snapshot_ : nullptr, doc, engine_.load());
-
-    std::unique_lock lock(mutex_);
-    std::unique_lock frameLock(frameMutex_);  // No tile commits while the generation moves.
-    doc_ = doc;
-    hasDocument_ = true;
-    if (!u.edit.traced()) {
-        snapshot_ = u.snapshot;  // Nothing traced changed (names, tone mapping, ...).
-        return generation_.load();
+    SceneDocument copy = doc;  // Outside the lock: the scheduler may be planning.
+    uint64_t gen;
+    {
+        std::lock_guard lock(mutex_);
+        // The bump alone stops running tiles; the old document's frame is out of date anyway.
+        // Tiles that commit before the scheduler applies this document are marked with the rest.
+        gen = ++generation_;
+        pendingDoc_ = std::move(copy);  // A document not yet applied is dropped: the latest wins.
+        pendingGeneration_ = gen;
+        editTime_ = std::chrono::steady_clock::now();
+        ++stats_.postedUpdates;
     }
-    const uint64_t gen = ++generation_;
-    editTime_ = start;
+    wake_.notify_all();
+    return gen;
+}
+
+void RenderSession::setSceneUpdater(SceneUpdater updater) {
+    std::lock_guard lock(mutex_);
+    updater_ = std::move(updater);
+}
+
+bool RenderSession::waitForUpdate(uint64_t generation, std::chrono::milliseconds timeout) {
+    std::unique_lock lock(mutex_);
+    done_.wait_for(lock, timeout, [&] {
+        return appliedGeneration_ >= generation || failedGeneration_ >= generation;
+    });
+    return appliedGeneration_ >= generation;
+}
+
+void RenderSession::applyPendingLocked(std::unique_lock<std::mutex>& lock) {
+    SceneDocument doc = std::move(*pendingDoc_);
+    pendingDoc_.reset();
+    const uint64_t gen = pendingGeneration_;
+    const auto start = std::chrono::steady_clock::now();
+    applying_ = true;
+    const std::shared_ptr<const CompiledScene> before = hasDocument_ ? snapshot_ : nullptr;
+    const EngineKind engine = engine_.load();
+    const SceneUpdater updater = updater_ ? updater_ : SceneUpdater(updateScene);
+    // Without the lock: update() may post the next document meanwhile. Only this thread
+    // writes doc_ and snapshot_.
+    lock.unlock();
+    SceneUpdate u;
+    std::exception_ptr failure;
+    try {
+        u = updater(doc_, before, doc, engine);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    lock.lock();
+    if (failure) {
+        // The document applied last stays; its work goes on. Reported before waiters learn
+        // of it.
+        SessionObserver* observer = observer_;
+        lock.unlock();
+        if (observer) observer->error(failureMessage(failure));
+        lock.lock();
+        applying_ = false;
+        failedGeneration_ = std::max(failedGeneration_, gen);
+        done_.notify_all();
+        return;
+    }
+    applying_ = false;
+
+    std::unique_lock frameLock(frameMutex_);  // Readers wait while pixels change state.
+    doc_ = std::move(doc);
+    hasDocument_ = true;
     snapshot_ = u.snapshot;
-    if (u.edit.resized || frame_.width != doc.render.width || frame_.height != doc.render.height)
+    appliedGeneration_ = gen;
+    ++stats_.appliedUpdates;
+    if (u.edit.resized || frame_.width != doc_.render.width || frame_.height != doc_.render.height)
         pendingResize_ = true;
 
     std::size_t marked = 0;
-    if (pendingResize_ || u.edit.everything || !policy_.dirtyRegions)
-        deferredShadowRegions_.clear();  // Every pixel is traced again anyway.
-    if (pendingResize_) {
-        marked = std::size_t(doc.render.width) * std::size_t(doc.render.height);
-    } else {
-        SceneEdit edit = u.edit;
-        if (!policy_.dirtyRegions) edit.everything = true;
-        // While dragging with shadows off or deferred, the moving object's shadow is not on
-        // screen: its pixels are marked once, on release, instead of on every step.
-        const bool deferShadows = interacting_ && !edit.everything &&
-                                  (policy_.shadows == MovingShadows::Off ||
-                                   policy_.shadows == MovingShadows::Deferred);
-        marked = markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, &touchedBlocks_,
-                                 deferShadows ? MarkScope::WithoutShadows : MarkScope::All);
-        if (deferShadows) {
-            deferredShadowRegions_.insert(deferredShadowRegions_.end(), edit.regions.begin(),
-                                          edit.regions.end());
-            if (deferredShadowRegions_.size() > kMaxDeferredShadowRegions) {
-                Aabb all;
-                for (const Aabb& b : deferredShadowRegions_) all.expand(b);
-                deferredShadowRegions_.assign(1, all);
+    if (u.edit.traced()) {  // Else nothing traced changed (names, tone mapping, ...).
+        marked = markEditLocked(u.edit);
+        if (u.edit.focus != kNoObject) {
+            const PixelRect r =
+                screenFootprint(snapshot_->camera(), snapshot_->objectBounds(u.edit.focus));
+            if (!r.empty()) {
+                focusX_ = 0.5f * float(r.x0 + r.x1);
+                focusY_ = 0.5f * float(r.y0 + r.y1);
             }
         }
-        // Only blocks this edit or the previous one touched can change flags: the previous
-        // edit's re-traced overlay is cleared, this edit's pixels go stale.
-        if (lastTouchedBlocks_.size() != touchedBlocks_.size())
-            lastTouchedBlocks_.assign(touchedBlocks_.size(), 1);
-        const int B = DeepFrame::kBlock;
-        for (std::size_t b = 0; b < touchedBlocks_.size(); ++b) {
-            if (!touchedBlocks_[b] && !lastTouchedBlocks_[b]) continue;
-            const int bx = int(b % std::size_t(frame_.blocksX())) * B;
-            const int by = int(b / std::size_t(frame_.blocksX())) * B;
-            for (int y = by; y < std::min(frame_.height, by + B); ++y) {
-                for (int x = bx; x < std::min(frame_.width, bx + B); ++x) {
-                    const std::size_t i = frame_.index(x, y);
-                    uint8_t f = uint8_t(frame_.flags[i] & ~kTracedLastUpdate);
-                    if (dirtyMask_[i]) {
-                        frame_.state[i] = kStale;
-                        f = uint8_t((f & ~kDeferredValid) | kTracedLastUpdate);
-                    }
-                    frame_.flags[i] = f;
-                }
-            }
-        }
-        lastTouchedBlocks_.swap(touchedBlocks_);
+        stats_.lastDirtyPixels = marked;
+        stats_.lastEditRefitted = u.edit.refitted;
+        stats_.lastUpdateMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
     }
-    if (u.edit.focus != kNoObject) {
-        const PixelRect r = screenFootprint(snapshot_->camera(), snapshot_->objectBounds(u.edit.focus));
-        if (!r.empty()) {
-            focusX_ = 0.5f * float(r.x0 + r.x1);
-            focusY_ = 0.5f * float(r.y0 + r.y1);
-        }
-    }
-    stats_.lastDirtyPixels = marked;
-    stats_.lastEditRefitted = u.edit.refitted;
-    stats_.lastUpdateMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (marked == 0) completedPassGeneration_ = gen;  // Nothing to trace: the frame is current.
+    // Nothing left to trace: the frame is current for this generation (no pass will say so).
+    if (marked == 0 && !pendingResize_ && !anyBelow(frame_.state, targetStateLocked()))
+        completedPassGeneration_ = std::max(completedPassGeneration_, gen);
     frameLock.unlock();
     lock.unlock();
-    wake_.notify_all();
     done_.notify_all();
-    return gen;
+    lock.lock();
+}
+
+std::size_t RenderSession::markEditLocked(const SceneEdit& traced) {
+    if (pendingResize_ || traced.everything || !policy_.dirtyRegions)
+        deferredShadowRegions_.clear();  // Every pixel is traced again anyway.
+    if (pendingResize_) return std::size_t(doc_.render.width) * std::size_t(doc_.render.height);
+    SceneEdit edit = traced;
+    if (!policy_.dirtyRegions) edit.everything = true;
+    // While dragging with shadows off or deferred, the moving object's shadow is not on
+    // screen: its pixels are marked once, on release, instead of on every step.
+    const bool deferShadows = interacting_ && !edit.everything &&
+                              (policy_.shadows == MovingShadows::Off ||
+                               policy_.shadows == MovingShadows::Deferred);
+    const std::size_t marked = markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, &touchedBlocks_,
+                                               deferShadows ? MarkScope::WithoutShadows : MarkScope::All);
+    if (deferShadows) {
+        deferredShadowRegions_.insert(deferredShadowRegions_.end(), edit.regions.begin(),
+                                      edit.regions.end());
+        if (deferredShadowRegions_.size() > kMaxDeferredShadowRegions) {
+            Aabb all;
+            for (const Aabb& b : deferredShadowRegions_) all.expand(b);
+            deferredShadowRegions_.assign(1, all);
+        }
+    }
+    // Only blocks this edit or the previous one touched can change flags: the previous
+    // edit's re-traced overlay is cleared, this edit's pixels go stale.
+    if (lastTouchedBlocks_.size() != touchedBlocks_.size())
+        lastTouchedBlocks_.assign(touchedBlocks_.size(), 1);
+    const int B = DeepFrame::kBlock;
+    for (std::size_t b = 0; b < touchedBlocks_.size(); ++b) {
+        if (!touchedBlocks_[b] && !lastTouchedBlocks_[b]) continue;
+        const int bx = int(b % std::size_t(frame_.blocksX())) * B;
+        const int by = int(b / std::size_t(frame_.blocksX())) * B;
+        for (int y = by; y < std::min(frame_.height, by + B); ++y) {
+            for (int x = bx; x < std::min(frame_.width, bx + B); ++x) {
+                const std::size_t i = frame_.index(x, y);
+                uint8_t f = uint8_t(frame_.flags[i] & ~kTracedLastUpdate);
+                if (dirtyMask_[i]) {
+                    frame_.state[i] = kStale;
+                    f = uint8_t((f & ~kDeferredValid) | kTracedLastUpdate);
+                }
+                frame_.flags[i] = f;
+            }
+        }
+    }
+    lastTouchedBlocks_.swap(touchedBlocks_);
+    return marked;
 }
 
 void RenderSession::beginInteraction(ObjectId moving) {
@@ -188,27 +258,30 @@ void RenderSession::endInteraction() {
         std::lock_guard lock(mutex_);
         interacting_ = false;
         moving_ = kNoObject;
-        if (!deferredShadowRegions_.empty() && snapshot_ && !pendingResize_) {
-            // The shadows the drag moved: pixels still showing an older shadow go back to
-            // stale. Pixels traced during the drag already wait for refinement (and keep
-            // their deferred records); tiles still in flight trace this same snapshot, so a
-            // commit landing after this is current too.
-            std::unique_lock frameLock(frameMutex_);
-            SceneEdit edit;
-            edit.regions.swap(deferredShadowRegions_);
-            if (markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, nullptr,
-                                MarkScope::ShadowsOnly) > 0) {
-                for (std::size_t i = 0; i < dirtyMask_.size(); ++i) {
-                    if (dirtyMask_[i] && frame_.state[i] >= kBase) {
-                        frame_.state[i] = kStale;
-                        frame_.flags[i] = uint8_t(frame_.flags[i] & ~kDeferredValid);
-                    }
+        releasePending_ = true;  // The scheduler marks the shadows the drag moved.
+    }
+    wake_.notify_all();
+}
+
+void RenderSession::markReleasedShadowsLocked() {
+    releasePending_ = false;
+    if (!deferredShadowRegions_.empty() && snapshot_ && !pendingResize_) {
+        // The shadows the drag moved: pixels still showing an older shadow go back to stale.
+        // Pixels traced during the drag already wait for refinement (and keep their deferred
+        // records). No pass runs now, so no tile commits meanwhile.
+        std::unique_lock frameLock(frameMutex_);
+        SceneEdit edit;
+        edit.regions.swap(deferredShadowRegions_);
+        if (markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, nullptr, MarkScope::ShadowsOnly) > 0) {
+            for (std::size_t i = 0; i < dirtyMask_.size(); ++i) {
+                if (dirtyMask_[i] && frame_.state[i] >= kBase) {
+                    frame_.state[i] = kStale;
+                    frame_.flags[i] = uint8_t(frame_.flags[i] & ~kDeferredValid);
                 }
             }
         }
-        deferredShadowRegions_.clear();
     }
-    wake_.notify_all();
+    deferredShadowRegions_.clear();
 }
 
 void RenderSession::setFocus(float px, float py) {
@@ -221,7 +294,8 @@ bool RenderSession::waitForPass(uint64_t generation, std::chrono::milliseconds t
                                 PassInfo* info) {
     std::unique_lock lock(mutex_);
     const bool ok = done_.wait_for(lock, timeout, [&] {
-        return completedPassGeneration_ >= generation || generation_.load() > generation;
+        return completedPassGeneration_ >= generation || generation_.load() > generation ||
+               failedGeneration_ >= generation;
     });
     if (info) *info = stats_.lastPass;
     return ok && completedPassGeneration_ >= generation;
@@ -230,7 +304,8 @@ bool RenderSession::waitForPass(uint64_t generation, std::chrono::milliseconds t
 bool RenderSession::waitUntilComplete(std::chrono::milliseconds timeout) {
     std::unique_lock lock(mutex_);
     return done_.wait_for(lock, timeout, [&] {
-        return hasDocument_ && !running_ && !pendingResize_ && !anyBelow(frame_.state, kFinal);
+        return hasDocument_ && !pendingDoc_ && !applying_ && !releasePending_ && !running_ &&
+               !pendingResize_ && !anyBelow(frame_.state, kFinal);
     });
 }
 
@@ -249,6 +324,7 @@ uint8_t RenderSession::targetStateLocked() const {
 }
 
 bool RenderSession::hasWorkLocked() const {
+    if (pendingDoc_ || releasePending_) return true;
     if (!hasDocument_) return false;
     return pendingResize_ || anyBelow(frame_.state, targetStateLocked());
 }
@@ -263,15 +339,7 @@ void RenderSession::run() {
             // A worker's or the planner's exception (bad_alloc of a huge frame, ...) must not
             // terminate the designer: report it, keep the document, wait for the next edit
             // (the same work would fail the same way).
-            std::string message = "rendering failed";
-            try {
-                throw;
-            } catch (const std::bad_alloc&) {
-                message = "rendering failed: out of memory";
-            } catch (const std::exception& e) {
-                message = std::string("rendering failed: ") + e.what();
-            } catch (...) {
-            }
+            const std::string message = failureMessage(std::current_exception());
             if (!lock.owns_lock()) lock.lock();
             running_ = false;
             if (pendingResize_) {
@@ -286,7 +354,7 @@ void RenderSession::run() {
             done_.notify_all();
             if (observer) observer->error(message);
             lock.lock();
-            wake_.wait(lock, [&] { return stop_ || generation_.load() != failed; });
+            wake_.wait(lock, [&] { return stop_ || pendingDoc_ || generation_.load() != failed; });
             if (stop_) return;
         }
     }
@@ -297,6 +365,16 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
     for (;;) {
         wake_.wait(lock, [&] { return stop_ || hasWorkLocked(); });
         if (stop_) return;
+        if (pendingDoc_) {
+            applyPendingLocked(lock);
+            continue;
+        }
+        if (releasePending_) {
+            markReleasedShadowsLocked();
+            done_.notify_all();  // Waiters for a complete frame may have waited on this alone.
+            continue;
+        }
+        if (!hasDocument_) continue;
         if (pendingResize_) {
             const std::string tooLarge = imageSizeError(doc_.render.width, doc_.render.height);
             if (!tooLarge.empty()) throw std::length_error(tooLarge);
@@ -329,7 +407,8 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         stats_.lastPass = info;
         if (plan.kind == PassKind::Interactive) stats_.lastInteractivePass = info;
         ++stats_.passes;
-        const bool complete = !info.cancelled && !pendingResize_ && !anyBelow(frame_.state, kFinal);
+        const bool complete = !info.cancelled && !pendingDoc_ && !releasePending_ && !pendingResize_ &&
+                              !anyBelow(frame_.state, kFinal);
         SessionObserver* observer = observer_;
         const uint64_t gen = generation_.load();
         lock.unlock();

@@ -14,8 +14,10 @@
 #include <tbb/task_arena.h>
 
 #include <condition_variable>
+#include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <shared_mutex>
 #include <thread>
 #include <vector>
@@ -33,10 +35,18 @@ struct SessionStats {
     std::size_t lastDirtyPixels = 0;   ///< Pixels the latest edit marked.
     bool lastEditRefitted = false;     ///< The latest edit refitted the BVH.
     double lastUpdateMs = 0.0;         ///< Diff, snapshot and dirty marking of the latest edit.
+    uint64_t postedUpdates = 0;        ///< update() calls.
+    uint64_t appliedUpdates = 0;       ///< Documents applied (posted ones coalesce).
 };
+
+/// Diffs two documents and builds the snapshot of the second (updateScene's signature).
+using SceneUpdater = std::function<SceneUpdate(const SceneDocument& before,
+                                               const std::shared_ptr<const CompiledScene>& beforeSnapshot,
+                                               const SceneDocument& after, EngineKind engine)>;
 
 /// Schedules tiles on a oneTBB arena from a scheduler thread. Every edit bumps a generation;
 /// workers drop stale tiles within one row, and a tile of an older generation is never written.
+/// Edits are applied on the scheduler thread: update() only posts the document.
 class RenderSession {
 public:
     /// `threads` = 0: all cores.
@@ -54,12 +64,21 @@ public:
     EngineKind engine() const;
     InteractionPolicy policy() const;
 
-    /// Shows `doc`: diffs it against the previous document, refits or rebuilds the snapshot,
-    /// marks the pixels the edit can change and restarts work. Returns the new generation.
+    /// Posts `doc` and returns its generation at once: running tiles stop, and the scheduler
+    /// thread diffs it against the document applied last, refits or rebuilds the snapshot and
+    /// marks the pixels the edit can change. Documents posted while one is being applied
+    /// coalesce: only the latest is applied. Failures (a bad scene, bad_alloc) go to the
+    /// observer's error(); the session keeps the document applied last.
     uint64_t update(const SceneDocument& doc);
+    /// Waits until the document of `generation` (or a later one) is applied: snapshot() and
+    /// stats() describe it. False on timeout or when applying it failed.
+    bool waitForUpdate(uint64_t generation, std::chrono::milliseconds timeout);
+    /// Replaces updateScene for the documents applied from now on (tests slow it down).
+    void setSceneUpdater(SceneUpdater updater);
     /// The user started dragging `moving` (kNoObject: e.g. a camera drag).
     void beginInteraction(ObjectId moving);
-    /// The user let go: refine to full quality.
+    /// The user let go: refine to full quality (the moved shadows are marked on the
+    /// scheduler thread).
     void endInteraction();
     /// Image point to render around first (the cursor).
     void setFocus(float px, float py);
@@ -87,6 +106,9 @@ public:
 private:
     void run();
     void runPasses(std::unique_lock<std::mutex>& lock);
+    void applyPendingLocked(std::unique_lock<std::mutex>& lock);
+    std::size_t markEditLocked(const SceneEdit& edit);
+    void markReleasedShadowsLocked();
     bool hasWorkLocked() const;
     bool planLocked(Plan& plan);
     void execute(Plan& plan, PassInfo& info);
@@ -94,7 +116,6 @@ private:
     bool fullQualityWhileMoving() const;
     uint8_t targetStateLocked() const;
 
-    std::mutex updateMutex_;  ///< Serialises update(); held without the frame lock.
     mutable std::mutex mutex_;  ///< Scheduler state; taken before frameMutex_.
     /// Frame pixels. Tiles commit disjoint pixels under a shared lock; edits (generation bump
     /// and dirty marking) and readers take it exclusively. Between passes no tile writes, so
@@ -104,7 +125,16 @@ private:
     std::condition_variable done_;
     std::atomic<uint64_t> generation_{0};
 
+    /// The document applied last; only the scheduler thread writes it (under mutex_) and
+    /// reads it without the lock while applying the next.
     SceneDocument doc_;
+    std::optional<SceneDocument> pendingDoc_;  ///< Posted, not yet applied (the latest wins).
+    uint64_t pendingGeneration_ = 0;           ///< Generation update() gave pendingDoc_.
+    bool applying_ = false;                    ///< The scheduler is applying a document.
+    uint64_t appliedGeneration_ = 0;           ///< Generation of the document applied last.
+    uint64_t failedGeneration_ = 0;            ///< Generation whose document failed to apply.
+    bool releasePending_ = false;              ///< endInteraction left shadows to mark.
+    SceneUpdater updater_;
     std::shared_ptr<const CompiledScene> snapshot_;
     DeepFrame frame_;
     std::vector<uint8_t> dirtyMask_;

@@ -1,52 +1,95 @@
-// Internal to the session: what a tile writes back for one pixel, and the segment-pool commit.
+// Internal to the session: what one tile of a pass writes back, as columns the frame's commit
+// copies from (structure of arrays; no per-pixel record in between).
 #pragma once
 
+#include "integrator/trace_kernel.h"
 #include "session/deep_frame.h"
 #include "session/dirty_region.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace rs {
 
-/// Everything a traced pixel writes back, to it and, for an undersampled pass, to the rest of
-/// its spanX x spanY block (index is the block's top-left pixel).
-struct PixelOut {
-    uint32_t index;
-    uint8_t spanX = 1, spanY = 1;
-    Color color;
-    Color base;
-    Color sampleSum;
-    uint16_t sampleCount;
-    ObjectId id;
-    float depth;
-    Vec3 normal;
-    uint32_t cost;
-    uint8_t state;
-    uint8_t flags;
-    glm::vec4 hitBound;
-    uint32_t recordOffset;  ///< Into the tile's local record list.
-    uint8_t recordCount;
-    uint32_t segmentOffset;  ///< Into the tile's local segment list.
-    uint8_t segmentCount;
-    uint8_t segmentMode;     ///< SegmentMode.
+/// Per-pixel capacities of the kernel's record and segment lists.
+constexpr int kRecordsPerPixel = 16;
+constexpr int kSegmentsPerPixel = 24;
+
+/// Camera rays of one list of a tile and everything the kernel writes back for them.
+struct RayList {
+    std::vector<Vec3> origin, dir;
+    std::vector<uint32_t> seed;
+    std::vector<std::size_t> pixel;  ///< Frame index (block entries: the block's top-left).
+    std::vector<uint8_t> extra;      ///< Flags or span packed by the pass.
+    std::vector<Color> color;
+    std::vector<PrimaryInfo> info;
+    std::vector<uint32_t> rays;
+    PerRayStorage<ShadingRecord> records;
+    PerRayStorage<TreeSegment> segments;
+    bool withRecords = false, withSegments = false;  ///< What the latest trace kept.
+
+    void clear() {
+        origin.clear(), dir.clear(), seed.clear(), pixel.clear(), extra.clear();
+        withRecords = withSegments = false;
+    }
+    void add(const Ray& ray, uint32_t s, std::size_t i, uint8_t e) {
+        origin.push_back(ray.origin);
+        dir.push_back(ray.dir);
+        seed.push_back(s);
+        pixel.push_back(i);
+        extra.push_back(e);
+    }
+    std::size_t size() const { return origin.size(); }
+    /// Traces the list; false when the generation went stale meanwhile.
+    bool trace(const TraceKernel& kernel, bool keepRecords, bool keepSegments,
+               TraceCounters& counters, const std::function<bool()>& stale);
+    /// The hit point of ray k as a bounding sphere of radius 0 (radius < 0 for a miss).
+    glm::vec4 hitBound(std::size_t k) const;
 };
 
-/// How a written pixel's secondary segments relate to the ones it had.
-enum SegmentMode : uint8_t { kReplace = 0, kAppend = 1, kKeep = 2 };
+/// What one tile of a pass writes. Each group is one kind of write, and DeepFrame::commit
+/// decides which buffers it touches (deep_frame.h says which); a pixel is in one group.
+struct TileResult {
+    uint64_t generation = 0;  ///< The pass's generation: a stale result is never written.
+    int tile = 0;
+    PixelRect rect;
 
-/// Rebuilds tile `tile`'s segment pool: written pixels get their new segments (or keep or
-/// extend their old ones), untouched pixels keep theirs; then refreshes the tile summary.
-/// Block entries (span > 1) never carry segments.
-void commitSegments(DeepFrame& frame, const PixelRect& r, int tile, const std::vector<PixelOut>& out,
-                    const std::vector<TreeSegment>& segments);
+    /// Camera rays at pixel centres (Interactive at full resolution, Base), in `tracedState`.
+    RayList traced;
+    uint8_t tracedState = kBase;
+    /// One ray per undersampled block (extra: spanX | spanY << 4), shown over the block.
+    RayList blocks;
+    /// Deferred shadows resolved: the pixels' full colour and flags, in `resolvedState`.
+    std::vector<std::size_t> resolvedPixel;
+    std::vector<Color> resolvedColor;
+    std::vector<uint8_t> resolvedFlags;
+    uint8_t resolvedState = kBase;
+    /// Supersampling found nothing to add: the centre sample is final.
+    std::vector<std::size_t> finishedPixel;
+    /// More samples: each pixel's new totals; its new rays are samples[sampleFirst[k],
+    /// sampleFirst[k + 1]) (their segments are appended to the pixel's).
+    struct Sampled {
+        std::size_t pixel;
+        Color color, sum;
+        uint16_t count;
+        uint8_t state, flags;
+        uint32_t cost;
+        glm::vec4 hitBound;
+    };
+    std::vector<Sampled> sampled;
+    std::vector<int> sampleFirst;
+    RayList samples;
 
-/// Calls f(i) for each pixel index that `o` writes.
-template <class F>
-void forEachWritten(const PixelOut& o, int width, F&& f) {
-    for (uint32_t dy = 0; dy < o.spanY; ++dy)
-        for (uint32_t dx = 0; dx < o.spanX; ++dx)
-            f(std::size_t(o.index) + std::size_t(dy) * std::size_t(width) + dx);
-}
+    void clear() {
+        traced.clear(), blocks.clear(), samples.clear();
+        resolvedPixel.clear(), resolvedColor.clear(), resolvedFlags.clear();
+        finishedPixel.clear(), sampled.clear(), sampleFirst.clear();
+    }
+    /// Pixels whose camera rays were traced (or whose shadows were resolved).
+    std::size_t tracedPixels() const {
+        return traced.size() + blocks.size() + resolvedPixel.size() + sampled.size();
+    }
+};
 
 }  // namespace rs

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <condition_variable>
+#include <future>
+#include <mutex>
 #include <random>
 
 namespace rs {
@@ -281,7 +284,7 @@ TEST(RenderSession, MovingADiffuseBall_RefitsAndTracesOnlyItsRegion) {
     Object* ball = doc.findObject(doc.objects[2].id);  // The diffuse ball.
     ASSERT_EQ(ball->name, "diffuse ball");
     ball->transform.translate.x += 0.2f;
-    session.update(doc);
+    ASSERT_TRUE(session.waitForUpdate(session.update(doc), 30s));
     const SessionStats stats = session.stats();
     EXPECT_TRUE(stats.lastEditRefitted);
     EXPECT_GT(stats.lastDirtyPixels, 0u);
@@ -409,7 +412,7 @@ TEST(RenderSession, LightEdits_RetraceOnlyPixelsTheLightCanReach) {
         ASSERT_NE(l, nullptr);
         if (k == 0) l->position.x += 0.4f;
         else l->intensity = 0.8f;
-        session.update(doc);
+        ASSERT_TRUE(session.waitForUpdate(session.update(doc), 30s));
         const std::size_t marked = session.stats().lastDirtyPixels;
         EXPECT_GT(marked, 0u);
         EXPECT_LT(marked, total / 2) << "edit " << k;
@@ -418,7 +421,7 @@ TEST(RenderSession, LightEdits_RetraceOnlyPixelsTheLightCanReach) {
     }
     // The key light above faces nearly everything.
     doc.lights[0].position.x += 0.3f;
-    session.update(doc);
+    ASSERT_TRUE(session.waitForUpdate(session.update(doc), 30s));
     EXPECT_GT(session.stats().lastDirtyPixels, total / 2);
     ASSERT_TRUE(session.waitUntilComplete(60s));
     EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
@@ -464,6 +467,152 @@ TEST(RenderSession, EditsFromAnotherThreadWhileRendering_EndExact) {
     ASSERT_TRUE(session.waitUntilComplete(120s));
     EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
     EXPECT_GT(session.stats().passes, 0u);
+}
+
+/// The session's scene updater with a gate: while closed, every snapshot build (updateScene)
+/// waits at the gate, as a slow mesh BVH build would; open() lets them all through.
+class GatedUpdater {
+public:
+    SceneUpdater updater() {
+        return [this](const SceneDocument& before, const std::shared_ptr<const CompiledScene>& snap,
+                      const SceneDocument& after, EngineKind engine) {
+            {
+                std::unique_lock lock(mutex_);
+                ++entered_;
+                cv_.notify_all();
+                cv_.wait(lock, [&] { return open_; });
+            }
+            SceneUpdate u = updateScene(before, snap, after, engine);
+            std::lock_guard lock(mutex_);
+            ++finished_;
+            return u;
+        };
+    }
+    void close() {
+        std::lock_guard lock(mutex_);
+        open_ = false;
+    }
+    void open() {
+        {
+            std::lock_guard lock(mutex_);
+            open_ = true;
+        }
+        cv_.notify_all();
+    }
+    /// Waits until `n` builds have reached the gate.
+    bool waitEntered(int n) {
+        std::unique_lock lock(mutex_);
+        return cv_.wait_for(lock, 30s, [&] { return entered_ >= n; });
+    }
+    int finished() {
+        std::lock_guard lock(mutex_);
+        return finished_;
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable cv_;
+    bool open_ = true;
+    int entered_ = 0, finished_ = 0;
+};
+
+/// update(doc) from another thread; false (and the gate opened, so nothing hangs) when it has
+/// not returned within 10 s.
+bool updateReturnsPromptly(RenderSession& session, const SceneDocument& doc, GatedUpdater& gate,
+                           uint64_t* generation = nullptr) {
+    auto call = std::async(std::launch::async, [&] { return session.update(doc); });
+    if (call.wait_for(10s) != std::future_status::ready) {
+        gate.open();
+        return false;
+    }
+    if (generation) *generation = call.get();
+    return true;
+}
+
+TEST(RenderSession, UpdateReturnsBeforeTheSnapshotBuildFinishes_AndRapidUpdatesCoalesce) {
+    SceneDocument doc = mixedRoom(false);
+    GatedUpdater gate;
+    RenderSession session(2);
+    session.setSceneUpdater(gate.updater());
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    ASSERT_EQ(gate.finished(), 1);
+
+    // An edit (a second mesh object) whose snapshot build cannot finish yet.
+    gate.close();
+    Object mesh = *doc.findObject(doc.objects.back().id);
+    mesh.name = "second mesh";
+    mesh.transform.translate += Vec3(-1.6f, 0.2f, -0.5f);
+    doc.addObject(mesh);
+    uint64_t first = 0;
+    ASSERT_TRUE(updateReturnsPromptly(session, doc, gate, &first));
+    ASSERT_TRUE(gate.waitEntered(2));
+    EXPECT_EQ(gate.finished(), 1);  // update() returned while the build was still held.
+    EXPECT_FALSE(session.waitForUpdate(first, 50ms));
+
+    // More edits while that one is applied: each returns at once, and only the last is applied.
+    const ObjectId ball = doc.objects[2].id;
+    uint64_t last = 0;
+    for (int k = 0; k < 5; ++k) {
+        doc.findObject(ball)->transform.translate.x += 0.1f;
+        ASSERT_TRUE(updateReturnsPromptly(session, doc, gate, &last));
+    }
+    EXPECT_GT(last, first);
+    gate.open();
+    ASSERT_TRUE(session.waitForUpdate(last, 30s));
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    EXPECT_EQ(gate.finished(), 3);  // The held build, then the last document only.
+    const SessionStats stats = session.stats();
+    EXPECT_EQ(stats.postedUpdates, 7u);
+    EXPECT_EQ(stats.appliedUpdates, 3u);
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+}
+
+/// Records the errors the session reports.
+class ErrorLog : public SessionObserver {
+public:
+    void error(const std::string& message) override {
+        std::lock_guard lock(mutex_);
+        messages_.push_back(message);
+    }
+    std::vector<std::string> messages() {
+        std::lock_guard lock(mutex_);
+        return messages_;
+    }
+
+private:
+    std::mutex mutex_;
+    std::vector<std::string> messages_;
+};
+
+TEST(RenderSession, AFailedSnapshotBuild_IsReportedToTheObserver_AndTheNextUpdateRenders) {
+    SceneDocument doc = testRoom();
+    ErrorLog log;
+    std::atomic<bool> fail{false};
+    RenderSession session(2);
+    session.setObserver(&log);
+    session.setSceneUpdater([&fail](const SceneDocument& before,
+                                    const std::shared_ptr<const CompiledScene>& snap,
+                                    const SceneDocument& after, EngineKind engine) {
+        if (fail) throw std::runtime_error("mesh 'x.obj': no faces");
+        return updateScene(before, snap, after, engine);
+    });
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    const SceneDocument shown = doc;
+    fail = true;
+    doc.objects[2].transform.translate.x += 0.3f;
+    const uint64_t failed = session.update(doc);
+    EXPECT_FALSE(session.waitForUpdate(failed, 30s));
+    ASSERT_EQ(log.messages().size(), 1u);
+    EXPECT_NE(log.messages()[0].find("mesh 'x.obj': no faces"), std::string::npos);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    EXPECT_LE(maxDiffToFullRender(session, shown), 1e-5f);  // The document applied last stays.
+    fail = false;
+    ASSERT_TRUE(session.waitForUpdate(session.update(doc), 30s));
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+    EXPECT_EQ(log.messages().size(), 1u);
 }
 
 TEST(InteractionPolicy, JsonRoundTripAndErrorsNameTheKey) {

@@ -1,0 +1,236 @@
+// DeepFrame::commit: a tile's results into the frame, with the frame's invariants (which
+// buffers each kind of result writes, the record and segment pools, the block summaries).
+#include "session/deep_frame.h"
+#include "session/tile_output.h"
+
+#include <algorithm>
+
+namespace rs {
+
+namespace {
+
+/// A tile's segment pool, append-only: a written pixel's segments go to the end and its old
+/// ones become garbage, so a commit costs what it writes, not the whole tile; compact() drops
+/// the garbage when it outweighs what is live.
+class SegmentPool {
+public:
+    SegmentPool(DeepFrame& frame, int tile)
+        : frame_(frame), pool_(frame.tileSegments[std::size_t(tile)]),
+          live_(frame.tileLiveSegments[std::size_t(tile)]) {}
+
+    /// Pixel i's segments become its old ones (when `keepOld`) followed by `count` from `first`
+    /// (several lists: call add() for each, then end()).
+    void begin(std::size_t i, bool keepOld) {
+        pixel_ = i;
+        oldCount_ = frame_.segmentCount[i];
+        start_ = uint32_t(pool_.size());
+        if (keepOld) {
+            const uint32_t oldStart = frame_.segmentStart[i];
+            for (uint32_t k = 0; k < oldCount_; ++k) pool_.push_back(pool_[oldStart + k]);
+        }
+    }
+    void add(const TreeSegment* first, std::size_t count) { pool_.insert(pool_.end(), first, first + count); }
+    void end() {
+        std::size_t count = pool_.size() - start_;
+        if (count > 255) {  // Too many to index: forget them and always re-trace.
+            pool_.resize(start_);
+            count = 0;
+            frame_.flags[pixel_] |= kTreeUnknown;
+        }
+        frame_.segmentStart[pixel_] = start_;
+        frame_.segmentCount[pixel_] = uint8_t(count);
+        live_ = live_ - oldCount_ + uint32_t(count);
+    }
+    void clear(std::size_t i) {
+        live_ -= frame_.segmentCount[i];
+        frame_.segmentStart[i] = uint32_t(pool_.size());
+        frame_.segmentCount[i] = 0;
+    }
+    /// Rewrites the pool with only the segments pixels of `r` still reference, when it is
+    /// mostly garbage.
+    void compactIfWasteful(const PixelRect& r) {
+        if (pool_.size() <= 2 * std::size_t(live_) + 4096) return;
+        std::vector<TreeSegment> fresh;
+        fresh.reserve(live_);
+        for (int y = r.y0; y < r.y1; ++y) {
+            for (int x = r.x0; x < r.x1; ++x) {
+                const std::size_t i = frame_.index(x, y);
+                const uint32_t start = frame_.segmentStart[i];
+                frame_.segmentStart[i] = uint32_t(fresh.size());
+                fresh.insert(fresh.end(), pool_.begin() + start, pool_.begin() + start + frame_.segmentCount[i]);
+            }
+        }
+        pool_.swap(fresh);
+    }
+
+private:
+    DeepFrame& frame_;
+    std::vector<TreeSegment>& pool_;
+    uint32_t& live_;
+    std::size_t pixel_ = 0;
+    uint32_t oldCount_ = 0, start_ = 0;
+};
+
+/// The blocks of one tile a commit wrote, so each summary is recomputed once.
+class TouchedBlocks {
+public:
+    TouchedBlocks(const DeepFrame& frame, const PixelRect& r)
+        : width_(frame.width), r_(r), perRow_((r.x1 - r.x0 + DeepFrame::kBlock - 1) / DeepFrame::kBlock),
+          marks_(std::size_t(perRow_) * std::size_t((r.y1 - r.y0 + DeepFrame::kBlock - 1) / DeepFrame::kBlock), 0) {}
+    void add(std::size_t i) {
+        const int x = int(i % std::size_t(width_)), y = int(i / std::size_t(width_));
+        marks_[std::size_t((y - r_.y0) / DeepFrame::kBlock) * std::size_t(perRow_) +
+               std::size_t((x - r_.x0) / DeepFrame::kBlock)] = 1;
+    }
+    void summarize(DeepFrame& frame) const {
+        for (std::size_t b = 0; b < marks_.size(); ++b)
+            if (marks_[b])
+                frame.summarizeBlock(r_.x0 + int(b % std::size_t(perRow_)) * DeepFrame::kBlock,
+                                     r_.y0 + int(b / std::size_t(perRow_)) * DeepFrame::kBlock);
+    }
+
+private:
+    int width_;
+    PixelRect r_;
+    int perRow_;
+    std::vector<uint8_t> marks_;
+};
+
+}  // namespace
+
+bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
+    if (t.generation != liveGeneration) return false;  // Never write a stale tile.
+    SegmentPool segments(*this, t.tile);
+    TouchedBlocks touched(*this, t.rect);
+
+    // Camera rays at pixel centres: every buffer of the pixel.
+    const RayList& traced = t.traced;
+    for (std::size_t k = 0; k < traced.size(); ++k) {
+        const std::size_t i = traced.pixel[k];
+        const PrimaryInfo& info = traced.info[k];
+        const bool complete = traced.withRecords && !traced.records.overflow[k];
+        color[i] = traced.color[k];
+        id[i] = info.id;
+        depth[i] = info.depth;
+        normal[i] = info.normal;
+        cost[i] = traced.rays[k];
+        state[i] = t.tracedState;
+        flags[i] = uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | traced.extra[k] |
+                           (complete ? kDeferredValid : 0) |
+                           (traced.withSegments && traced.segments.overflow[k] ? kTreeUnknown : 0));
+        hitBound[i] = traced.hitBound(k);
+        if (t.tracedState >= kBase) base[i] = traced.color[k];
+        sampleSum[i] = Color(0.0f);
+        sampleCount[i] = 0;
+        segments.begin(i, false);
+        if (traced.withSegments)
+            segments.add(traced.segments.of(k, kSegmentsPerPixel), traced.segments.count[k]);
+        segments.end();
+        touched.add(i);
+    }
+    if (traced.withRecords) {
+        // Rebuild the tile's record pool: new records for traced pixels, old ones kept for
+        // untouched pixels that still wait for their deferred shadows.
+        auto& pool = tileRecords[std::size_t(t.tile)];
+        const PixelRect& r = t.rect;
+        const std::size_t rw = std::size_t(r.x1 - r.x0);
+        std::vector<ShadingRecord> fresh;
+        std::vector<uint8_t> written(rw * std::size_t(r.y1 - r.y0), 0);
+        for (std::size_t k = 0; k < traced.size(); ++k) {
+            const std::size_t i = traced.pixel[k];
+            const int px = int(i % std::size_t(width)), py = int(i / std::size_t(width));
+            written[std::size_t(py - r.y0) * rw + std::size_t(px - r.x0)] = 1;
+            const uint8_t n = traced.records.overflow[k] ? 0 : traced.records.count[k];
+            recordStart[i] = uint32_t(fresh.size());
+            recordCount[i] = n;
+            const ShadingRecord* first = traced.records.of(k, kRecordsPerPixel);
+            fresh.insert(fresh.end(), first, first + n);
+        }
+        for (int y = r.y0; y < r.y1; ++y) {
+            for (int x = r.x0; x < r.x1; ++x) {
+                const std::size_t i = index(x, y);
+                if (written[std::size_t(y - r.y0) * rw + std::size_t(x - r.x0)]) continue;
+                if (!(flags[i] & kDeferredValid)) continue;
+                const uint32_t start = recordStart[i];
+                recordStart[i] = uint32_t(fresh.size());
+                fresh.insert(fresh.end(), pool.begin() + start, pool.begin() + start + recordCount[i]);
+            }
+        }
+        pool.swap(fresh);
+    }
+
+    // Undersampled blocks: the block's ray over all its pixels, which keep no segments.
+    const RayList& blocks = t.blocks;
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+        const PrimaryInfo& info = blocks.info[k];
+        const uint8_t f = uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) | kTracedLastUpdate);
+        const glm::vec4 bound = blocks.hitBound(k);
+        const int spanX = blocks.extra[k] & 15, spanY = blocks.extra[k] >> 4;
+        for (int dy = 0; dy < spanY; ++dy) {
+            for (int dx = 0; dx < spanX; ++dx) {
+                const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width) + std::size_t(dx);
+                color[i] = blocks.color[k];
+                id[i] = info.id;
+                depth[i] = info.depth;
+                normal[i] = info.normal;
+                cost[i] = blocks.rays[k];
+                state[i] = kInteractive;
+                flags[i] = f;
+                hitBound[i] = bound;
+                sampleSum[i] = Color(0.0f);
+                sampleCount[i] = 0;
+                segments.clear(i);
+                touched.add(i);
+            }
+        }
+    }
+
+    // Deferred shadows resolved: the hit, its tree and its cost stay.
+    for (std::size_t k = 0; k < t.resolvedPixel.size(); ++k) {
+        const std::size_t i = t.resolvedPixel[k];
+        color[i] = base[i] = t.resolvedColor[k];
+        state[i] = t.resolvedState;
+        flags[i] = t.resolvedFlags[k];
+        sampleSum[i] = Color(0.0f);
+        sampleCount[i] = 0;
+        touched.add(i);
+    }
+
+    // Nothing to supersample: the centre sample is final.
+    for (const std::size_t i : t.finishedPixel) {
+        color[i] = base[i];
+        state[i] = kFinal;
+        sampleSum[i] = Color(0.0f);
+        sampleCount[i] = 0;
+    }
+
+    // More samples: new totals, and the new rays' segments after the pixel's old ones.
+    const RayList& samples = t.samples;
+    for (std::size_t k = 0; k < t.sampled.size(); ++k) {
+        const TileResult::Sampled& s = t.sampled[k];
+        const std::size_t i = s.pixel;
+        color[i] = s.color;
+        sampleSum[i] = s.sum;
+        sampleCount[i] = s.count;
+        state[i] = s.state;
+        flags[i] = s.flags;
+        cost[i] = s.cost;
+        hitBound[i] = s.hitBound;
+        segments.begin(i, true);
+        std::size_t kept = 0;
+        for (int j = t.sampleFirst[k]; j < t.sampleFirst[k + 1] && kept < kSegmentsPerPixel; ++j) {
+            const std::size_t q = std::size_t(j);
+            const std::size_t n = std::min<std::size_t>(samples.segments.count[q], kSegmentsPerPixel - kept);
+            segments.add(samples.segments.of(q, kSegmentsPerPixel), n);
+            kept += n;
+        }
+        segments.end();
+        touched.add(i);
+    }
+
+    segments.compactIfWasteful(t.rect);
+    touched.summarize(*this);
+    return true;
+}
+
+}  // namespace rs
