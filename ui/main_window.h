@@ -45,7 +45,8 @@ public:
     bool saveFile(const QString& path);
     /// Imports a mesh file (worker thread + progress dialog).
     void importMesh(const QString& path);
-    /// Exports the current viewport frame to an image file.
+    /// Exports the current viewport frame to an image file, at the viewport's traced size (not
+    /// the output size: that is Render Image's); the status bar names the size written.
     bool exportFrame(const QString& path);
     /// Queues a full-quality render of the document as it is now at width x height into
     /// `path` (Render -> Render Image without its size and file dialogs): it runs in the
@@ -137,6 +138,7 @@ private:
     QLabel* statusRetraced_ = nullptr;
     QLabel* statusPass_ = nullptr;
     QLabel* statusRays_ = nullptr;
+    QLabel* statusGovernor_ = nullptr;
     QList<QAction*> addActions_;
 };
 
