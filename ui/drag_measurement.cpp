@@ -160,7 +160,8 @@ void Measurement::post(int i, QPoint start) {
 }
 
 double Measurement::renderImageMs() const {
-    const CompiledScene scene(window_.editor()->document());
+    // The viewport's own size and camera: the full frame the viewport pass is compared with.
+    const CompiledScene scene(window_.viewport()->viewDocument());
     RenderOptions options;
     options.threads = loadPreferences().threads;
     std::vector<double> ms;
@@ -256,14 +257,18 @@ int Measurement::run() {
     waitUntil([] { return false; }, 300);  // Let the window manager settle the geometry.
     const auto openStart = Clock::now();
     if (!window_.openFile(request_.scene)) return 2;
+    controller->flushUpdate();
+    const uint64_t openGeneration = controller->session().generation();
     Clock::time_point openShown;
     if (!waitFinalShown(&openShown)) {
         std::fprintf(stderr, "raystudio: the opened scene never completed\n");
         return 1;
     }
     double fullPassMs = 0.0;
+    // The scene's own full pass: the viewport traced the empty document before the file opened.
     for (const auto& [t, p] : passes_)
-        if (!p.cancelled && p.kind == PassKind::Base && p.tracedPixels == p.totalPixels) {
+        if (p.generation >= openGeneration && !p.cancelled && p.kind == PassKind::Base &&
+            p.tracedPixels == p.totalPixels) {
             fullPassMs = p.ms;
             break;
         }

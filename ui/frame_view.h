@@ -25,7 +25,7 @@ struct PresentedFrame {
     double composeMs = 0.0;   ///< From the end of drawing to the swap (window composition).
 };
 
-/// Draws the session's frame, letterboxed to the widget, with the selection outline.
+/// Draws the session's frame at fitRect() in the widget, with the selection outline.
 class FrameView {
 public:
     using PresentedHandler = std::function<void(const PresentedFrame&)>;
@@ -57,7 +57,9 @@ private:
     PresentedHandler presented_;
 };
 
-/// Where a frame of `frame` pixels is drawn inside a widget of `area` (aspect kept, centred).
+/// Where a frame of `frame` pixels is drawn inside a widget of `area`: all of it when the frame
+/// has the area's aspect to within a frame pixel (the viewport's own traced size), else
+/// letterboxed (aspect kept, centred; e.g. the old frame while a resize is pending).
 QRect fitRect(const QSize& area, const QSize& frame);
 
 /// True when OpenGL views can work on this platform (not offscreen, and a context can be made).

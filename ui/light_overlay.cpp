@@ -3,6 +3,7 @@
 #include "light_overlay.h"
 
 #include "display_frame.h"
+#include "passepartout.h"
 
 #include <QPainter>
 
@@ -58,8 +59,15 @@ void LightOverlay::setGlyphs(std::vector<LightGlyph> glyphs, ObjectId selected) 
     update();
 }
 
+void LightOverlay::setPassepartout(const QRectF& outputFrame) {
+    if (outputFrame == passepartout_) return;
+    passepartout_ = outputFrame;
+    update();
+}
+
 void LightOverlay::paintEvent(QPaintEvent*) {
     QPainter p(this);
+    paintPassepartout(p, rect(), passepartout_);
     paintLightGlyphs(p, glyphs_, selected_);
 }
 

@@ -6,6 +6,7 @@
 
 #include <QColor>
 #include <QPointF>
+#include <QRectF>
 #include <QWidget>
 
 #include <vector>
@@ -30,7 +31,8 @@ ObjectId pickLight(const std::vector<LightGlyph>& glyphs, const QPointF& p);
 /// Draws `glyphs` (the one of `selected` highlighted) with `p`, in widget coordinates.
 void paintLightGlyphs(QPainter& p, const std::vector<LightGlyph>& glyphs, ObjectId selected);
 
-/// Transparent widget over the frame view that draws the glyphs; mouse events pass through.
+/// Transparent widget over the frame view that draws the glyphs (and the passepartout); mouse
+/// events pass through.
 class LightOverlay : public QWidget {
     Q_OBJECT
 public:
@@ -39,6 +41,9 @@ public:
     void setGlyphs(std::vector<LightGlyph> glyphs, ObjectId selected);
     const std::vector<LightGlyph>& glyphs() const { return glyphs_; }
     ObjectId selected() const { return selected_; }
+    /// Dims what lies outside `outputFrame` (empty: nothing), under the glyphs.
+    void setPassepartout(const QRectF& outputFrame);
+    const QRectF& passepartout() const { return passepartout_; }
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -46,6 +51,7 @@ protected:
 private:
     std::vector<LightGlyph> glyphs_;
     ObjectId selected_ = kNoObject;
+    QRectF passepartout_;
 };
 
 }  // namespace rs::ui

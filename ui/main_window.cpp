@@ -59,6 +59,7 @@ MainWindow::MainWindow(QWidget* parent)
         session_.get(), this, [this](const QString& message) { onSessionError(message); });
     session_->session().setObserver(sessionErrors_.get());
     viewport_ = new Viewport(editor_, session_.get(), this);
+    viewport_->setPreviewDivider(prefs_.previewDivider);
     setCentralWidget(viewport_);
     setAcceptDrops(true);
 
@@ -281,6 +282,9 @@ void MainWindow::createStatusBar() {
     statusRetraced_ = label(tr("Share of the frame's pixels the last pass re-traced"));
     statusPass_ = label(tr("Kind of the last pass (interactive, base, supersampling)"));
     statusRays_ = label(tr("Rays per second in the last pass"));
+    statusGovernor_ = label(tr("What the governor turned down in the last interactive pass to "
+                               "keep its frame rate (Preferences)"));
+    statusGovernor_->setObjectName(QStringLiteral("statusGovernor"));
     // Leftmost of the permanent widgets: a running render is what the user looks for first.
     renderStatus_ = new RenderStatus(renders_, this);
     statusBar()->insertPermanentWidget(0, renderStatus_);
@@ -334,6 +338,11 @@ void MainWindow::onPassFinished(const PassInfo& info) {
                                                info.cancelled ? tr(" (cut short)") : QString()));
     const double mrays = info.ms > 0.0 ? double(info.rays) / info.ms / 1000.0 : 0.0;
     statusRays_->setText(tr("%1 Mrays/s").arg(mrays, 0, 'f', 2));
+    if (info.kind == PassKind::Interactive)
+        statusGovernor_->setText(info.governorLevel < 0
+                                     ? tr("governor: off")
+                                     : tr("governor: %1").arg(QString::fromLatin1(
+                                           Governor::levelName(info.governorLevel))));
 }
 
 void MainWindow::onSessionError(const QString& message) {
@@ -414,6 +423,7 @@ void MainWindow::applyPreferences(const Preferences& prefs) {
         autosave_->setIntervalMs(prefs.autosaveSeconds * 1000);
     prefs_ = prefs;
     session_->session().setPolicy(prefs.policy);
+    viewport_->setPreviewDivider(prefs.previewDivider);
     if (engineChanged) {
         // The next update rebuilds the snapshot with the other engine; post one now.
         session_->session().setEngine(prefs.engine);

@@ -49,7 +49,8 @@ public:
     /// Imports a mesh file (worker thread + progress dialog) onto the surface under widget
     /// point `at` of the viewport (its centre when none), scaled to fit the view.
     void importMesh(const QString& path, std::optional<QPoint> at = std::nullopt);
-    /// Exports the current viewport frame to an image file.
+    /// Exports the current viewport frame to an image file, at the viewport's traced size (not
+    /// the output size: that is Render Image's); the status bar names the size written.
     bool exportFrame(const QString& path);
     /// Queues a full-quality render of the document as it is now at width x height into
     /// `path` (Render -> Render Image without its size and file dialogs): it runs in the
@@ -148,6 +149,7 @@ private:
     QLabel* statusRetraced_ = nullptr;
     QLabel* statusPass_ = nullptr;
     QLabel* statusRays_ = nullptr;
+    QLabel* statusGovernor_ = nullptr;
     QList<QAction*> addActions_;
 };
 

@@ -165,12 +165,26 @@ bool MainWindow::exportFrame(const QString& path) {
         reportError(this, tr("Cannot export image"), QString::fromStdString(error));
         return false;
     }
-    statusBar()->showMessage(tr("Exported %1").arg(path), 3000);
+    statusBar()->showMessage(tr("Exported %1 (%2x%3, the viewport's frame; Render Image renders "
+                                "%4x%5)")
+                                 .arg(path)
+                                 .arg(frame->width)
+                                 .arg(frame->height)
+                                 .arg(editor_->document().render.width)
+                                 .arg(editor_->document().render.height),
+                             5000);
     return true;
 }
 
 void MainWindow::exportImageDialog() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export Current Frame"), QString(), kImageFilter);
+    // The viewport's frame has the viewport's size: the dialog says so before anything is written.
+    const auto frame = viewport_->frame();
+    const QString title = frame && !frame->empty()
+                              ? tr("Export Current Frame (%1x%2, the viewport's size)")
+                                    .arg(frame->width)
+                                    .arg(frame->height)
+                              : tr("Export Current Frame");
+    const QString path = QFileDialog::getSaveFileName(this, title, QString(), kImageFilter);
     if (!path.isEmpty()) exportFrame(path);
 }
 

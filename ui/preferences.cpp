@@ -1,13 +1,16 @@
 // Preferences storage and the dialog, one control per InteractionPolicy member.
 #include "preferences.h"
 
+#include "view_projection.h"
+
 #include <algorithm>
+#include <cmath>
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QLabel>
 #include <QSettings>
 #include <QSpinBox>
 #include <QThread>
@@ -28,6 +31,8 @@ Preferences loadPreferences() {
                          p.engine))
         p.engine = EngineKind::Embree;
     p.autosaveSeconds = std::max(0, s.value(QStringLiteral("autosave/seconds"), p.autosaveSeconds).toInt());
+    p.previewDivider = s.value(QStringLiteral("viewport/previewDivider"), 1).toInt();
+    if (!validPreviewDivider(p.previewDivider)) p.previewDivider = 1;
     return p;
 }
 
@@ -38,6 +43,15 @@ void savePreferences(const Preferences& p) {
     s.setValue(QStringLiteral("render/threads"), p.renderThreads);
     s.setValue(QStringLiteral("session/engine"), QString::fromLatin1(engineName(p.engine)));
     s.setValue(QStringLiteral("autosave/seconds"), p.autosaveSeconds);
+    s.setValue(QStringLiteral("viewport/previewDivider"), p.previewDivider);
+}
+
+int governorRate(double targetMs) {
+    return targetMs > 0.0 ? std::max(1, int(std::lround(1000.0 / targetMs))) : 0;
+}
+
+double governorTargetMs(int framesPerSecond) {
+    return framesPerSecond > 0 ? 1000.0 / framesPerSecond : 0.0;
 }
 
 namespace {
@@ -66,6 +80,41 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     auto* form = new QFormLayout(this);
     const InteractionPolicy& p = prefs_.policy;
     auto notify = [this] { Q_EMIT changed(prefs_); };
+
+    // The viewport traces its own size; the document's render size is Render Image's.
+    auto* preview = enumCombo(this, "previewScale",
+                              {tr("1 (every pixel)"), tr("1/2"), tr("1/4")},
+                              prefs_.previewDivider == 4 ? 2 : prefs_.previewDivider == 2 ? 1 : 0);
+    preview->setToolTip(tr("The viewport traces this share of its pixels a side (Blender's pixel size)"));
+    connect(preview, &QComboBox::currentIndexChanged, this, [=, this](int i) {
+        prefs_.previewDivider = 1 << i;
+        notify();
+    });
+    form->addRow(tr("Viewport preview scale"), preview);
+
+    // The governor first: while it is on it decides, frame by frame, what the fixed choices
+    // below would.
+    auto* governor = new QSpinBox(this);
+    governor->setObjectName(QStringLiteral("governor"));
+    governor->setRange(0, 240);
+    governor->setSuffix(tr(" frames/s"));
+    governor->setSpecialValueText(tr("Off"));
+    governor->setValue(governorRate(p.governorTargetMs));
+    connect(governor, &QSpinBox::valueChanged, this, [=, this](int v) {
+        prefs_.policy.governorTargetMs = governorTargetMs(v);
+        notify();
+    });
+    form->addRow(tr("Governor: frames per second"), governor);
+    auto* governorNote = new QLabel(
+        tr("While the governor is on it overrides the settings below, frame by frame, so that "
+           "a drag keeps this rate: it defers shadows, then halves the resolution, and only "
+           "when that is not enough shows mirrors and glass as diffuse, quarters the "
+           "resolution and draws the moving object as its box. Off: exactly the settings "
+           "below."),
+        this);
+    governorNote->setObjectName(QStringLiteral("governorNote"));
+    governorNote->setWordWrap(true);
+    form->addRow(governorNote);
 
     auto* resolution = enumCombo(this, "resolution", {tr("Full"), tr("Half"), tr("Quarter")}, p.resolution);
     connect(resolution, &QComboBox::currentIndexChanged, this, [=, this](int i) {
@@ -122,14 +171,6 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     connect(dirty, &QCheckBox::toggled, this, [=, this](bool on) { prefs_.policy.dirtyRegions = on; notify(); });
     form->addRow(tr("Dirty regions"), dirty);
 
-    auto* governor = new QDoubleSpinBox(this);
-    governor->setObjectName(QStringLiteral("governor"));
-    governor->setRange(0.0, 1000.0);
-    governor->setSuffix(tr(" ms"));
-    governor->setSpecialValueText(tr("Off"));
-    governor->setValue(p.governorTargetMs);
-    connect(governor, &QDoubleSpinBox::valueChanged, this, [=, this](double v) { prefs_.policy.governorTargetMs = v; notify(); });
-    form->addRow(tr("Governor target frame time"), governor);
 
     auto* threads = new QSpinBox(this);
     threads->setObjectName(QStringLiteral("threads"));

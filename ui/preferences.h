@@ -16,7 +16,13 @@ struct Preferences {
     EngineKind engine = EngineKind::Embree;  ///< Who answers the ray queries.
     int renderThreads = 0;  ///< Render Image's threads, shared with the viewport; 0: all cores.
     int autosaveSeconds = 60;  ///< Autosave interval while the document is modified; 0: off.
+    /// The viewport traces 1 / previewDivider of its device pixels a side (1, 2 or 4).
+    int previewDivider = 1;
 };
+
+/// Frames per second the governor aims at for a target frame time (0: off), and back.
+int governorRate(double targetMs);
+double governorTargetMs(int framesPerSecond);
 
 /// Reads preferences from QSettings (defaults where absent or unreadable).
 Preferences loadPreferences();

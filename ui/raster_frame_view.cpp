@@ -15,6 +15,12 @@ namespace rs::ui {
 QRect fitRect(const QSize& area, const QSize& frame) {
     if (frame.isEmpty() || area.isEmpty()) return {};
     const QSize s = frame.scaled(area, Qt::KeepAspectRatio);
+    // A frame traced at the area's own size (rounded up per preview pixel) fills it: a bar
+    // narrower than one frame pixel is rounding, not a different aspect.
+    const int slackX = (area.width() + frame.width() - 1) / frame.width();
+    const int slackY = (area.height() + frame.height() - 1) / frame.height();
+    if (area.width() - s.width() < slackX && area.height() - s.height() < slackY)
+        return QRect(QPoint(0, 0), area);
     return QRect((area.width() - s.width()) / 2, (area.height() - s.height()) / 2, s.width(),
                  s.height());
 }

@@ -3,6 +3,7 @@
 #include "viewport.h"
 
 #include "camera_navigation.h"
+#include "passepartout.h"
 #include "scene_edits.h"
 #include "scene_editor.h"
 #include "session_controller.h"
@@ -41,12 +42,16 @@ Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* par
         // (the overlay widget keeps them for picking).
         overlay_->hide();
         view_->setOverlayPainter([this](QPainter& p) {
+            paintPassepartout(p, rect(), overlay_->passepartout());
             paintLightGlyphs(p, overlay_->glyphs(), overlay_->selected());
         });
     }
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setMinimumSize(320, 180);
+    resizeSettle_.setSingleShot(true);
+    resizeSettle_.setInterval(kResizeSettleMs);
+    connect(&resizeSettle_, &QTimer::timeout, this, &Viewport::postView);
     connect(session_, &SessionController::frameUpdated, this, &Viewport::refresh);
     connect(editor_, &SceneEditor::selectionChanged, this, &Viewport::redraw);
     connect(editor_, &SceneEditor::documentReset, this, &Viewport::onDocumentReset);
@@ -68,38 +73,47 @@ void Viewport::redraw() {
                              ? kNoObject
                              : editor_->selection();
     view_->showFrame(frame_, mode_, sel);
-    overlay_->setGlyphs(ui::lightGlyphs(editor_->document(), projection()), sel);
+    const ViewProjection view = projection();
+    overlay_->setGlyphs(ui::lightGlyphs(editor_->document(), view), sel);
+    overlay_->setPassepartout(throughScene_ ? view.outputRect() : QRectF());
 }
 
 void Viewport::resizeEvent(QResizeEvent* e) {
     QWidget::resizeEvent(e);
     overlay_->setGeometry(rect());
+    // While the window edge moves, the old frame stays (letterboxed); the session restarts
+    // at the new size once it rests.
+    if (tracedSize_.isEmpty())
+        postView();
+    else
+        resizeSettle_.start();
     redraw();
 }
 
+void Viewport::setPreviewDivider(int divider) {
+    divider = validPreviewDivider(divider) ? divider : 1;
+    if (divider == divider_) return;
+    divider_ = divider;
+    postView();
+}
+
 ViewProjection Viewport::projection() const {
-    // Before the first frame arrives, the frame will have the document's render size.
-    const QSize frameSize = frame_ && !frame_->empty()
-                                ? QSize(frame_->width, frame_->height)
-                                : QSize(editor_->document().render.width,
-                                        editor_->document().render.height);
-    return ViewProjection(viewCamera_, frameSize, fitRect(size(), frameSize));
+    // The frame shown, or before the first one arrives, the size posted for it.
+    const QSize frameSize = frame_ && !frame_->empty() ? QSize(frame_->width, frame_->height)
+                            : !tracedSize_.isEmpty()   ? tracedSize_
+                                                       : sizeToTrace();
+    const RenderSettings& output = editor_->document().render;
+    return ViewProjection(viewCamera_, QSize(output.width, output.height), frameSize, size());
 }
 
 std::optional<QPoint> Viewport::pixelAt(const QPoint& p) const {
     if (!frame_ || frame_->empty()) return std::nullopt;
-    const QRect r = fitRect(size(), QSize(frame_->width, frame_->height));
-    if (!r.contains(p)) return std::nullopt;
-    const int x = int((p.x() - r.x() + 0.5) * frame_->width / r.width());
-    const int y = int((p.y() - r.y() + 0.5) * frame_->height / r.height());
-    return QPoint(std::clamp(x, 0, frame_->width - 1), std::clamp(y, 0, frame_->height - 1));
+    return projection().pixelAt(p);
 }
 
 QPoint Viewport::widgetPointOf(int x, int y) const {
     if (!frame_ || frame_->empty()) return {};
-    const QRect r = fitRect(size(), QSize(frame_->width, frame_->height));
-    return QPoint(r.x() + int((x + 0.5) * r.width() / frame_->width),
-                  r.y() + int((y + 0.5) * r.height() / frame_->height));
+    return projection().widgetPointOf(x, y);
 }
 
 bool Viewport::event(QEvent* e) {
@@ -246,8 +260,7 @@ void Viewport::startObjectDrag() {
         const auto snapshot = session_->session().snapshot();
         const Aabb bounds = snapshot ? snapshot->objectBounds(dragId_) : Aabb{};
         const std::size_t i = std::size_t(px->y()) * frame_->width + px->x();
-        const CameraModel cam(viewCamera_, frame_->width, frame_->height);
-        const Ray ray = cam.generateRay(px->x() + 0.5f, px->y() + 0.5f);
+        const Ray ray = projection().pixelRay(px->x(), px->y());
         const float depth = i < frame_->depth.size() ? frame_->depth[i] : kInfinity;
         const Vec3 hit = ray.at(std::isfinite(depth) ? depth : 1.0f);
         // Planes are unbounded: drag them through the point that was clicked.

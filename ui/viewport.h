@@ -10,6 +10,7 @@
 #include "view_projection.h"
 
 #include <QPoint>
+#include <QTimer>
 #include <QWidget>
 
 #include <memory>
@@ -37,6 +38,15 @@ public:
     ViewMode viewMode() const { return mode_; }
     /// Frame pixel under widget point `p`, or nullopt outside the image.
     std::optional<QPoint> pixelAt(const QPoint& p) const;
+    /// Preview scale 1 / `divider` (1, 2 or 4; anything else means 1): the session traces the
+    /// widget's device pixels divided by it (Blender's pixel size).
+    void setPreviewDivider(int divider);
+    int previewDivider() const { return divider_; }
+    /// The frame size posted to the session last: tracedFrameSize() of the widget when it
+    /// was posted (a resize is posted once the window edge rests, kResizeSettleMs).
+    QSize tracedSize() const { return tracedSize_; }
+    /// How long a resize must rest before the session traces the new size.
+    static constexpr int kResizeSettleMs = 120;
     /// Widget point at the centre of frame pixel (x, y).
     QPoint widgetPointOf(int x, int y) const;
     /// Copies the session's frame and redraws.
@@ -47,7 +57,8 @@ public:
     const Camera& viewCamera() const { return viewCamera_; }
     /// True while the view is the scene camera and follows its edits (the default on open).
     bool throughSceneCamera() const { return throughScene_; }
-    /// The document as the session renders it: the open document seen through the view camera.
+    /// The document as the session renders it: the open document seen through the view camera
+    /// (fitted to the traced frame), at the viewport's traced size instead of the output size.
     SceneDocument viewDocument() const;
     /// View -> Through Scene Camera.
     void viewThroughSceneCamera();
@@ -95,6 +106,8 @@ private:
     void onDocumentChanged();
     void setView(const Camera& camera);
     void postView();
+    /// tracedFrameSize() of the widget as it is now.
+    QSize sizeToTrace() const;
     Vec3 orbitPivot(const QPoint& pos) const;
 
     // viewport_gesture.cpp
@@ -121,6 +134,10 @@ private:
     Vec3 anchor_{0.0f};       ///< Centre of the dragged object at press.
     Vec3 grabOffset_{0.0f};   ///< Press point on the drag plane minus the anchor.
     int axisLock_ = -1;       ///< -1 free, else 0/1/2 for X/Y/Z.
+
+    int divider_ = 1;
+    QSize tracedSize_;     ///< Empty until the first post.
+    QTimer resizeSettle_;  ///< Restarted by each resize; posts the new size when it fires.
 
     std::optional<ModalTransform> gesture_;
 };

@@ -21,7 +21,12 @@ constexpr int kMaxSelfHits = 8;
 
 SceneDocument Viewport::viewDocument() const {
     SceneDocument doc = editor_->document();
-    doc.camera = viewCamera_;
+    // The output size stays the document's (Render Image, Export, the CLI); the viewport
+    // traces its own.
+    const QSize traced = tracedSize_.isEmpty() ? sizeToTrace() : tracedSize_;
+    doc.camera = fitOutputFrame(viewCamera_, traced, QSize(doc.render.width, doc.render.height));
+    doc.render.width = traced.width();
+    doc.render.height = traced.height();
     return doc;
 }
 
@@ -44,7 +49,13 @@ void Viewport::setView(const Camera& camera) {
     postView();
 }
 
+QSize Viewport::sizeToTrace() const {
+    return tracedFrameSize(size() * devicePixelRatioF(), divider_);
+}
+
 void Viewport::postView() {
+    resizeSettle_.stop();
+    tracedSize_ = sizeToTrace();
     session_->requestUpdate(viewDocument());
     redraw();
 }
@@ -59,6 +70,7 @@ void Viewport::sceneCameraFromView() {
     SceneDocument doc = editor_->document();
     if (doc.camera == viewCamera_) {
         throughScene_ = true;
+        redraw();
         return;
     }
     // Only the pose: lens and extras stay the scene camera's.
@@ -91,10 +103,7 @@ Vec3 Viewport::orbitPivot(const QPoint& pos) const {
     if (const auto px = pixelAt(pos)) {
         const std::size_t i = std::size_t(px->y()) * frame_->width + px->x();
         const float depth = i < frame_->depth.size() ? frame_->depth[i] : kInfinity;
-        if (std::isfinite(depth)) {
-            const CameraModel cam(viewCamera_, frame_->width, frame_->height);
-            return cam.generateRay(px->x() + 0.5f, px->y() + 0.5f).at(depth);
-        }
+        if (std::isfinite(depth)) return projection().pixelRay(px->x(), px->y()).at(depth);
     }
     return viewCamera_.target;
 }

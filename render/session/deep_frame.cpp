@@ -6,6 +6,19 @@
 namespace rs {
 
 void DeepFrame::resize(int w, int h) {
+    try {
+        allocate(w, h);
+    } catch (...) {
+        // Half-sized buffers under the new sides would send readers (the display copies under
+        // the frame lock the throw releases) past their ends or into huge copies: empty instead.
+        const int tile = tileSize;
+        *this = DeepFrame{};
+        tileSize = tile;
+        throw;
+    }
+}
+
+void DeepFrame::allocate(int w, int h) {
     width = w;
     height = h;
     const std::size_t n = std::size_t(w) * std::size_t(h);

@@ -79,8 +79,11 @@ struct DeepFrame {
     std::vector<TileSummary> blockSummary;
     static constexpr int kBlock = 8;
 
-    /// Allocates for w x h; every pixel starts stale and black.
+    /// Allocates for w x h; every pixel starts stale and black. When an allocation fails the
+    /// frame is left empty (0 x 0) and the exception passes on.
     void resize(int w, int h);
+    /// resize() without the clean-up on failure.
+    void allocate(int w, int h);
     std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
     std::size_t pixelCount() const { return color.size(); }
     int tilesX() const { return (width + tileSize - 1) / tileSize; }

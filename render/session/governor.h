@@ -9,29 +9,37 @@
 namespace rs {
 
 /// Chooses among a ladder of ever cheaper policies from measured costs. Level 0 is the user's
-/// policy as set; each further level turns down one more thing the thesis measured as costly:
-/// 1 defers shadows, 2 shows mirrors and glass as diffuse with depth 1, 3 halves the
-/// resolution, 4 quarters it and draws the moving object as its box.
+/// policy as set; each further level turns down one more thing, those that change what the
+/// picture shows last: 1 defers shadows, 2 halves the resolution, 3 shows mirrors and glass
+/// as diffuse with depth 1, 4 quarters the resolution, 5 draws the moving object as its box.
+/// A level that changes nothing over the one before it (the user already chose that) is
+/// skipped.
 class Governor {
 public:
-    static constexpr int kLevels = 5;
+    static constexpr int kLevels = 6;
 
     /// The policy of `level`, derived from the user's `base` policy.
     static InteractionPolicy policyForLevel(const InteractionPolicy& base, int level);
+    /// What `level` turns down, for the status bar ("half resolution").
+    static const char* levelName(int level);
     /// Pixels a level traces out of `stalePixels` (undersampling and interleaving divide).
     static double tracedPixels(const InteractionPolicy& p, std::size_t stalePixels);
+    /// Cost of a traced pixel under `p` relative to a full-quality one, from the thesis's
+    /// measurements (4.2), for levels not measured yet.
+    static double relativePixelCost(const InteractionPolicy& p);
 
     /// Picks the least-reduced level whose predicted frame time meets `targetMs`, or the
     /// cheapest level when none does.
     int choose(const InteractionPolicy& base, std::size_t stalePixels, double targetMs) const;
     /// Feeds back a measured interactive frame at `level`.
     void record(int level, double ms, std::size_t tracedPixels);
-    /// Seeds every level from a full-quality pass (ms per pixel), scaled by the relative costs
-    /// the thesis reports for the features each level removes.
+    /// Sets the cost of a full-quality pixel (ms), which predicts the levels not measured yet.
     void calibrate(double msPerFullQualityPixel);
-    double predictedMsPerPixel(int level) const { return msPerPixel_[std::size_t(level)]; }
+    /// Predicted ms per traced pixel of `level` under `base`: measured, else calibrated.
+    double predictedMsPerPixel(const InteractionPolicy& base, int level) const;
 
 private:
+    double msPerFullPixel_ = 0.0;
     std::array<double, kLevels> msPerPixel_{};
     std::array<bool, kLevels> measured_{};
 };

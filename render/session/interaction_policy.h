@@ -31,9 +31,12 @@ struct InteractionPolicy {
     bool supersampleWhileMoving = false;
     bool dirtyRegions = true;        ///< Re-trace only what an edit can change.
     /// > 0: per frame, the least-reduced policy level predicted to meet this frame time
-    /// (0: always exactly the settings above). The default keeps frames near 120 Hz and only
-    /// turns quality down when the dirty region is too large for that.
-    double governorTargetMs = 8.0;
+    /// (0: always exactly the settings above). The default is the frame time of a 30 Hz
+    /// refresh (Preferences asks for frames per second): more than a display of 30-60 Hz
+    /// shows buys nothing, and quality drops only when the change is too large for it.
+    double governorTargetMs = kDefaultGovernorTargetMs;
+    /// 1000 ms / 30 frames.
+    static constexpr double kDefaultGovernorTargetMs = 1000.0 / 30.0;
 
     bool operator==(const InteractionPolicy&) const = default;
 

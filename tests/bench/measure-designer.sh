@@ -3,7 +3,10 @@
 # 1600x1000 main window on the reference room; drags the blue ball, then orbits the camera,
 # and prints what `raystudio --measure-drag/--measure-orbit` reports.
 #
-#   bash tests/bench/measure-designer.sh [--frames N] [--json] [--build DIR]
+#   bash tests/bench/measure-designer.sh [--frames N] [--json] [--build DIR] [--display N]
+#
+# --display N runs Xvfb on :N (on a shared machine, the display you were given) instead of
+# letting it pick a free one.
 #
 # Issue 10, on the 2-core shared VM (Mesa llvmpipe, viewport 992x930, frame 1280x720, load
 # 3-6 from other builds: noisy). Medians of interleaved runs of the binary before the
@@ -25,12 +28,14 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 build=$root/build/release
 args=()
+display=
 while (($#)); do
     case $1 in
         --build) build=$2; shift 2 ;;
+        --display) display=${2#:}; shift 2 ;;
         --frames) args+=(--frames "$2"); shift 2 ;;
         --json) args+=(--json); shift ;;
-        *) echo "usage: $0 [--frames N] [--json] [--build DIR]" >&2; exit 2 ;;
+        *) echo "usage: $0 [--frames N] [--json] [--build DIR] [--display N]" >&2; exit 2 ;;
     esac
 done
 exe=$build/app/raystudio
@@ -40,14 +45,27 @@ for tool in Xvfb openbox; do
     command -v $tool >/dev/null || { echo "$tool not found (apt-get install xvfb openbox)" >&2; exit 2; }
 done
 
-# Xvfb picks a free display and writes its number to fd 3.
+# Xvfb picks a free display and writes its number to fd 3 (or takes the one named).
 tmp=$(mktemp -d)
-Xvfb -displayfd 3 -screen 0 1920x1200x24 -nolisten tcp 3>"$tmp/display" 2>"$tmp/xvfb.log" &
-xvfb=$!
+if [[ -n $display ]]; then
+    [[ $display =~ ^[0-9]+$ ]] || { echo "--display needs a number, not '$display'" >&2; exit 2; }
+    Xvfb ":$display" -screen 0 1920x1200x24 -nolisten tcp 2>"$tmp/xvfb.log" &
+    xvfb=$!
+    # Ready when the socket is there and this Xvfb still runs (another one on :N makes it exit).
+    for _ in $(seq 100); do
+        sleep 0.1
+        kill -0 "$xvfb" 2>/dev/null || break
+        [[ -S /tmp/.X11-unix/X$display ]] && { echo "$display" >"$tmp/display"; break; }
+    done
+else
+    Xvfb -displayfd 3 -screen 0 1920x1200x24 -nolisten tcp 3>"$tmp/display" 2>"$tmp/xvfb.log" &
+    xvfb=$!
+fi
 wm=
 cleanup() {
     [[ -n $wm ]] && kill "$wm" 2>/dev/null || true
     kill "$xvfb" 2>/dev/null || true
+    wait "$xvfb" 2>/dev/null || true  # The display is free again when this script ends.
     rm -rf "$tmp"
 }
 trap cleanup EXIT

@@ -120,7 +120,8 @@ void DesignerInputTest::commandShortcuts_WorkWhileAPropertyFieldHasFocus() {
     QString dialogTitle;
     closeNextModal(&dialogTitle);
     QTest::keyClick(spin, Qt::Key_E, Qt::ControlModifier);
-    QCOMPARE(dialogTitle, QStringLiteral("Export Current Frame"));
+    // The dialog names the size it writes: the viewport's frame, not the output size.
+    QCOMPARE(dialogTitle, QStringLiteral("Export Current Frame (160x90, the viewport's size)"));
 
     // Ctrl+Z undoes the last document edit instead of the field's text.
     const SceneDocument before = window_->editor()->document();
@@ -191,12 +192,11 @@ void DesignerInputTest::pressThenFrameResize_DoesNotStartADrag() {
     QTest::mousePress(v, Qt::LeftButton, {}, start);
     QCOMPARE(window_->editor()->selection(), blue);
 
-    // A frame of another shape arrives before the drag starts: the press point is off the
-    // (now pillar- or letterboxed) image.
-    for (const QSize size : {QSize(10, 90), QSize(160, 6)}) {
-        window_->setRenderSize(size.width(), size.height());
-        QVERIFY(settle(*window_));
-        QCOMPARE(v->frame()->width, size.width());
+    // The viewport changes shape before the drag starts (the frame follows it, at scale 1/2):
+    // the press point is off the image.
+    for (const QSize size : {QSize(20, 180), QSize(320, 12)}) {
+        QVERIFY(traceViewport(*window_, size, 2));
+        QCOMPARE(v->frame()->width, size.width() / 2);
         if (!v->pixelAt(start)) break;
     }
     QVERIFY(!v->pixelAt(start));
@@ -237,8 +237,7 @@ void DesignerInputTest::closingDuringRenderImage_CancelsItAndReturnsWithinASecon
     // Far more work than a second (3840x2160, 64 samples a pixel), so only a cancel is quick.
     SceneDocument doc = window_->editor()->document();
     doc.render.supersampling = 64;
-    doc.render.width = 32;  // Keeps the viewport's own session cheap meanwhile.
-    doc.render.height = 18;
+    QVERIFY(traceViewport(*window_, QSize(128, 72), 4));  // Keeps the viewport's own session cheap.
     window_->editor()->replaceDocument(doc);
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("render.png"));

@@ -90,15 +90,21 @@ void DesignerLimitsTest::outOfMemory_IsReported_AndDocumentKept() {
 #else
     const SceneDocument before = window_->editor()->document();
     const int undoSteps = window_->editor()->undoStack()->count();
-    // Half a GiB more address space than the process has now: an 8000 x 8000 frame (64
-    // Mpixels, within the area limit) needs gigabytes, so its allocation throws bad_alloc.
+    // Half a GiB more address space than the process has now: an 8000 x 8000 render (64
+    // Mpixels, within the area limit) and the deep frame of a 6000 x 4000 viewport (24
+    // Mpixels) need gigabytes, so their allocations throw bad_alloc.
+    // The big window (and its backing store) first, traced at 1/4 while no limit holds.
+    window_->viewport()->setPreviewDivider(4);
+    window_->viewport()->setFixedSize(6000, 4000);
+    QVERIFY(QTest::qWaitFor([&] { return window_->viewport()->size() == QSize(6000, 4000); }, 5000));
+    QTest::qWait(50);
     rlimit old{};
     QCOMPARE(getrlimit(RLIMIT_AS, &old), 0);
     long pages = 0;
     std::ifstream("/proc/self/statm") >> pages;
     const rlimit tight{rlim_t(pages) * 4096 + (rlim_t(1) << 29), old.rlim_max};
     QCOMPARE(setrlimit(RLIMIT_AS, &tight), 0);
-    window_->setRenderSize(8000, 8000);  // The viewport's session: its deep frame.
+    window_->viewport()->setPreviewDivider(1);  // The viewport's session: its deep frame.
     window_->session()->flushUpdate();
     QVERIFY(window_->renderImage(dir_.filePath(QStringLiteral("big.exr")), 8000, 8000));
     const bool reported = QTest::qWaitFor(
@@ -108,18 +114,21 @@ void DesignerLimitsTest::outOfMemory_IsReported_AndDocumentKept() {
         },
         60000);
     setrlimit(RLIMIT_AS, &old);
+    int sessionWidth = 0;
+    window_->session()->session().withFrame([&](const DeepFrame& f, const auto&) { sessionWidth = f.width; });
     QVERIFY2(reported,
-             qPrintable(errors_.join('\n') + " | " + window_->statusBar()->currentMessage()));
+             qPrintable(errors_.join('\n') + " | " + window_->statusBar()->currentMessage() +
+                        QStringLiteral(" | traced %1x%2, session frame width %3")
+                            .arg(window_->viewport()->tracedSize().width())
+                            .arg(window_->viewport()->tracedSize().height())
+                            .arg(sessionWidth)));
     QVERIFY2(errors_.first().contains(QStringLiteral("out of memory")),
              qPrintable(errors_.first()));
-    // The document is as it was (but for the size this test set), and so is its history.
-    SceneDocument expected = before;
-    expected.render.width = expected.render.height = 8000;
-    QVERIFY(window_->editor()->document().sameContent(expected));
+    // The document is as it was, and so is its history.
+    QVERIFY(window_->editor()->document().sameContent(before));
     QCOMPARE(window_->editor()->undoStack()->count(), undoSteps);
-    // And the viewport renders again after the next edit.
-    window_->setRenderSize(160, 90);
-    QVERIFY(settle(*window_));
+    // And the viewport renders again at its next size.
+    QVERIFY(traceViewport(*window_, QSize(320, 180), 2));
     QCOMPARE(window_->viewport()->frame()->width, 160);
 #endif
 }

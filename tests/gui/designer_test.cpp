@@ -33,7 +33,7 @@ private Q_SLOTS:
 
     void openScene_ShowsFrameAndOutliner();
     void clickOnSphere_SelectsItInOutliner_AndOutlinerSelectsInViewport();
-    void clickOutsideImage_ClearsSelection();
+    void clickOnNothing_ClearsSelection();
     void dragSphere_MovesItInDocument_AndUndoRestores();
     void dragWithAxisLock_MovesAlongThatAxisOnly_AndEscapeCancels();
     void propertyEdit_ReRendersFrame_AndSharedMaterialIsShown();
@@ -99,14 +99,19 @@ void DesignerTest::clickOnSphere_SelectsItInOutliner_AndOutlinerSelectsInViewpor
     QCOMPARE(window_->editor()->selection(), glass);
 }
 
-void DesignerTest::clickOutsideImage_ClearsSelection() {
-    window_->editor()->setSelection(idOf(*window_, "blue ball"));
-    // The frame is letterboxed: the viewport's top-left corner lies outside the image.
+void DesignerTest::clickOnNothing_ClearsSelection() {
+    // The frame fills the viewport (no letterbox to click on); with every object hidden the
+    // viewport shows nothing but the background.
+    SceneDocument doc = window_->editor()->document();
+    for (Object& o : doc.objects) o.visible = false;
+    window_->editor()->edit(QStringLiteral("Hide all"), std::move(doc));
+    QVERIFY(settle(*window_));
     Viewport* v = window_->viewport();
-    QPoint outside(2, 2);
-    if (v->pixelAt(outside)) outside = QPoint(v->width() - 2, v->height() - 2);
-    QVERIFY(!v->pixelAt(outside));
-    QTest::mouseClick(v, Qt::LeftButton, {}, outside);
+    const QPoint centre = v->rect().center();
+    QVERIFY(v->pixelAt(centre));
+    QCOMPARE(v->frame()->idAt(v->pixelAt(centre)->x(), v->pixelAt(centre)->y()), kNoObject);
+    window_->editor()->setSelection(idOf(*window_, "blue ball"));
+    QTest::mouseClick(v, Qt::LeftButton, {}, centre);
     QCOMPARE(window_->editor()->selection(), kNoObject);
 }
 

@@ -35,10 +35,10 @@ private:
 void DisplayTest::init() {
     window_ = std::make_unique<MainWindow>();
     window_->resize(1000, 700);
+    window_->viewport()->setFixedSize(320, 180);  // The viewport's frame: 10 x 6 tiles of 32.
     window_->show();
     QVERIFY(window_->openFile(scenePath("reference-room.scene.json")));
-    window_->setRenderSize(320, 180);  // 10 x 6 tiles of 32.
-    QVERIFY(settle(*window_));
+    QVERIFY(settleAtViewportSize(*window_, QSize(320, 180)));
 }
 
 void DisplayTest::cleanup() {

@@ -2,6 +2,7 @@
 // as the CPU tone mapping gives it, and draw the selection outline.
 #include "gui_test_support.h"
 
+#include "passepartout.h"
 #include "scene_edits.h"
 
 #include <QGuiApplication>
@@ -20,6 +21,7 @@ private Q_SLOTS:
     void initTestCase();
     void openGLViewport_ShowsTheToneMappedFrame();
     void openGLViewport_AfterEditsUploadedByRectangles_ShowsTheSessionFrame();
+    void openGLViewport_ThroughTheSceneCamera_DimsOnlyOutsideTheOutputFrame();
 };
 
 namespace {
@@ -63,8 +65,7 @@ void GlViewportTest::openGLViewport_ShowsTheToneMappedFrame() {
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     QVERIFY2(w.viewport()->frameView()->usesOpenGL(), "no OpenGL viewport under xcb/Mesa");
     QVERIFY(w.openFile(scenePath("reference-room.scene.json")));
-    w.setRenderSize(160, 90);
-    QVERIFY(settle(w));
+    QVERIFY(traceViewport(w, QSize(320, 180), 2));  // A 160x90 frame, drawn at twice its size.
     QTest::qWait(50);
 
     const auto frame = w.viewport()->frame();
@@ -113,8 +114,7 @@ void GlViewportTest::openGLViewport_AfterEditsUploadedByRectangles_ShowsTheSessi
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     QVERIFY(w.openFile(scenePath("reference-room.scene.json")));
-    w.setRenderSize(320, 180);
-    QVERIFY(settle(w));
+    QVERIFY(traceViewport(w, QSize(320, 180), 1));
     const ObjectId blue = idOf(w, "blue ball");
     w.editor()->setSelection(blue);
     QTest::qWait(50);
@@ -132,6 +132,35 @@ void GlViewportTest::openGLViewport_AfterEditsUploadedByRectangles_ShowsTheSessi
     QTest::qWait(50);
     const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
     QCOMPARE(differingPixels(w, full, blue), 0);
+    w.editor()->undoStack()->setClean();
+}
+
+void GlViewportTest::openGLViewport_ThroughTheSceneCamera_DimsOnlyOutsideTheOutputFrame() {
+    MainWindow w;
+    w.resize(1000, 700);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(scenePath("reference-room.scene.json")));
+    // Taller than the 16:9 output: the output frame spans rows 70 to 249 (passepartout.h).
+    QVERIFY(traceViewport(w, QSize(320, 320), 2));
+    QTest::qWait(50);
+    const auto frame = w.viewport()->frame();
+    const QImage expected = toneMappedImage(*frame);
+    const QImage shown = w.viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
+    auto ratio = [&](int y0, int y1) {
+        double a = 0.0, b = 0.0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < 320; ++x) {
+                const QColor s = shown.pixelColor(x, y), e = expected.pixelColor(x / 2, y / 2);
+                a += s.red() + s.green() + s.blue();
+                b += e.red() + e.green() + e.blue();
+            }
+        return b > 0.0 ? a / b : 0.0;
+    };
+    const double above = ratio(4, 64), inside = ratio(90, 230), below = ratio(256, 316);
+    QVERIFY2(std::abs(above - kPassepartoutKeep) < 0.05, qPrintable(QString::number(above)));
+    QVERIFY2(std::abs(below - kPassepartoutKeep) < 0.05, qPrintable(QString::number(below)));
+    QVERIFY2(std::abs(inside - 1.0) < 0.03, qPrintable(QString::number(inside)));
     w.editor()->undoStack()->setClean();
 }
 

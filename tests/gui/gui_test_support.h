@@ -5,6 +5,7 @@
 #include "main_window.h"
 #include "scene_editor.h"
 #include "session_controller.h"
+#include "view_projection.h"
 #include "viewport.h"
 
 #include <QCoreApplication>
@@ -37,20 +38,48 @@ inline bool settle(MainWindow& w) {
     return ok;
 }
 
-/// The id of the object named `name` (kNoObject when absent).
-/// A shown, active main window on the reference room with a 160x90 frame, refined to final:
-/// the starting point of most designer tests.
+/// Waits until the viewport has been laid out at `widget` and the session traces
+/// tracedFrameSize(widget, its preview divider) (a resize is posted once it rests), then settles.
+inline bool settleAtViewportSize(MainWindow& w, const QSize& widget) {
+    Viewport* v = w.viewport();
+    const bool laidOut = QTest::qWaitFor(
+        [&] {
+            return v->size() == widget &&
+                   v->tracedSize() == tracedFrameSize(widget * v->devicePixelRatioF(),
+                                                      v->previewDivider());
+        },
+        5000);
+    return laidOut && settle(w);
+}
+
+/// Sizes the viewport at `widget` pixels and preview scale 1 / `divider`, as a user resizing
+/// the window and choosing the scale in Preferences would (fixed, so the main window's
+/// layout keeps it), and waits until the frame of that size is final.
+inline bool traceViewport(MainWindow& w, const QSize& widget, int divider) {
+    w.viewport()->setFixedSize(widget);
+    w.viewport()->setPreviewDivider(divider);
+    return settleAtViewportSize(w, widget);
+}
+
+/// A shown, active main window on the reference room with a 160x90 frame (a 320x180 viewport
+/// at preview scale 1/2, the output also 160x90), refined to final: the starting point of
+/// most designer tests.
 inline bool openRoomWindow(std::unique_ptr<MainWindow>& window) {
     window = std::make_unique<MainWindow>();
     window->resize(1000, 700);
+    // Before the first post: the session never traces the big default viewport.
+    window->viewport()->setFixedSize(320, 180);
+    window->viewport()->setPreviewDivider(2);
     window->show();
     if (!QTest::qWaitForWindowExposed(window.get())) return false;
     window->activateWindow();
     if (!QTest::qWaitForWindowActive(window.get())) return false;
     if (!window->openFile(scenePath("reference-room.scene.json"))) return false;
     window->setRenderSize(160, 90);
-    return settle(*window);
+    return settleAtViewportSize(*window, QSize(320, 180));
 }
+
+/// The id of the object named `name` (kNoObject when absent).
 
 inline ObjectId idOf(const MainWindow& w, const std::string& name) {
     for (const Object& o : w.editor()->document().objects)
