@@ -613,6 +613,8 @@ TEST(RenderSession, AFailedSnapshotBuild_IsReportedToTheObserver_AndTheNextUpdat
     ASSERT_TRUE(session.waitUntilComplete(60s));
     EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
     EXPECT_EQ(log.messages().size(), 1u);
+}
+
 TEST(RenderSession, FramesSizedByTheViewport_OddSizesResizedMidDrag_EndExact) {
     // The designer's viewport traces its own size: any odd size, and a new one whenever the
     // window edge comes to rest, even during a drag. A target no level meets walks the
