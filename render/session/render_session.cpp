@@ -89,14 +89,39 @@ constexpr std::size_t kMaxDeferredShadowRegions = 64;
 
 uint64_t RenderSession::update(const SceneDocument& doc) {
     std::lock_guard updating(updateMutex_);
+    const uint64_t before = generation_.load();
+    std::string message;
+    try {
+        return applyUpdate(doc);
+    } catch (const std::bad_alloc&) {
+        message = "updating the scene failed: out of memory";
+    } catch (const std::exception& e) {
+        message = std::string("updating the scene failed: ") + e.what();
+    }
+    // It runs on the caller's (the designer's GUI) thread: report, never terminate. A throw
+    // before the generation moved left the previous document and snapshot as they were; one
+    // after it may have marked only part of the edit, so every pixel is traced again.
+    SessionObserver* observer = nullptr;
+    {
+        std::lock_guard lock(mutex_);
+        if (generation_.load() != before) pendingResize_ = true;
+        observer = observer_;
+    }
+    wake_.notify_all();
+    if (observer) observer->error(message);
+    return generation_.load();
+}
+
+uint64_t RenderSession::applyUpdate(const SceneDocument& doc) {
     const auto start = std::chrono::steady_clock::now();
     // Only update() writes doc_ and snapshot_, and updates are serialised, so the diff and the
     // (possibly slow) snapshot build run without holding the frame lock.
     SceneUpdate u = updateScene(doc_, hasDocument_ ? snapshot_ : nullptr, doc, engine_.load());
+    SceneDocument copy = doc;  // Copied before anything changes: a throw here changes nothing.
 
     std::unique_lock lock(mutex_);
     std::unique_lock frameLock(frameMutex_);  // No tile commits while the generation moves.
-    doc_ = doc;
+    doc_ = std::move(copy);
     hasDocument_ = true;
     if (!u.edit.traced()) {
         snapshot_ = u.snapshot;  // Nothing traced changed (names, tone mapping, ...).

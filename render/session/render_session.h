@@ -56,6 +56,8 @@ public:
 
     /// Shows `doc`: diffs it against the previous document, refits or rebuilds the snapshot,
     /// marks the pixels the edit can change and restarts work. Returns the new generation.
+    /// An exception (bad_alloc of a huge snapshot, ...) is reported through the observer's
+    /// error() on the calling thread; the session keeps what it showed before.
     uint64_t update(const SceneDocument& doc);
     /// The user started dragging `moving` (kNoObject: e.g. a camera drag).
     void beginInteraction(ObjectId moving);
@@ -85,6 +87,7 @@ public:
     struct TileJob;
 
 private:
+    uint64_t applyUpdate(const SceneDocument& doc);  ///< update() without its guard.
     void run();
     void runPasses(std::unique_lock<std::mutex>& lock);
     bool hasWorkLocked() const;
