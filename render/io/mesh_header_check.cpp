@@ -172,11 +172,12 @@ std::string checkPly(std::string_view head, std::uintmax_t fileSize) {
                        " count: " + std::string(w[2]);
             claims.push_back({std::string(w[1]) + " elements", *count, 0});
         } else if (w[0] == "property" && !claims.empty()) {
-            // A list costs at least its count; each scalar its size (ASCII: a number).
+            // A list costs at least its count; each scalar its size (ASCII: a number). A type
+            // the check does not know still takes a byte: the importer reads on regardless
+            // (a misspelt type once let a 2-billion-vertex claim run for minutes).
             const bool list = w.size() >= 2 && w[1] == "list";
             const std::uintmax_t bytes = plyScalarBytes(w.size() >= 2 ? w[list ? 2 : 1] : "");
-            if (bytes == 0) return {};  // unknown type: the importer says what is wrong
-            claims.back().minBytes += ascii ? kMinAsciiNumberBytes : bytes;
+            claims.back().minBytes += ascii ? kMinAsciiNumberBytes : std::max<std::uintmax_t>(bytes, 1);
         }
     }
     // An element without properties still takes a line (ASCII) or is not worth allocating for.

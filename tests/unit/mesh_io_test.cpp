@@ -220,6 +220,20 @@ TEST_F(MeshFiles, BinaryPlyClaimingMoreVerticesThanTheFileHolds_IsRefusedQuickly
                          "PLY header declares 2000000000 vertex");
 }
 
+// Found by tests/fuzz/mesh_loader_fuzz (corpus/mesh_loader/ply-unknown-type-lie.ply): a
+// property type the check did not know made it give up, and assimp read on for minutes.
+TEST_F(MeshFiles, PlyWithAnUnknownPropertyTypeClaimingManyVertices_IsRefusedQuickly) {
+    std::ifstream in(meshPath("tetra.ply"));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.find("element vertex 4"), 16, "element vertex 2000000000");
+    text.replace(text.find("property float x"), 16, "property floa\x94 x");
+    expectRefusedQuickly(write("lie.ply", text), "PLY header declares 2000000000 vertex");
+    std::string binary = binaryPlyHeader("2000000000");
+    binary.replace(binary.find("float y"), 5, "quad ");
+    expectRefusedQuickly(write("lie-binary.ply", binary + binaryTetraBody()),
+                         "PLY header declares 2000000000 vertex");
+}
+
 TEST_F(MeshFiles, BinaryPlyOneVertexShort_IsRefused) {
     // Without faces, a binary vertex list is exactly 12 bytes a vertex: one more is a lie.
     expectRefusedQuickly(write("short.ply", binaryPlyHeader("5", "0") + binaryTetraBody(false)),
