@@ -208,6 +208,16 @@ TEST_F(MeshFiles, OffVertexCountBeyondAnyInteger_IsRefused) {
                          "too large");
 }
 
+// Found by tests/fuzz/mesh_loader_fuzz (corpus/mesh_loader/off-face-count-garbage.off): the
+// importer reads a count's leading digits, so a face count with garbage after its digits
+// must not make the check give up on the vertex count.
+TEST_F(MeshFiles, OffLieWithGarbageAfterACount_IsRefusedQuickly) {
+    const std::string garbage("OFF\n1350000000 1\x01\0\0\0 0\n0 0 0\n3 0 0 0\n", 37);
+    expectRefusedQuickly(write("lie.off", garbage), "OFF header declares 1350000000 vertices");
+    expectRefusedQuickly(write("lie2.off", "OFF\n1350000000abc 1 0\n0 0 0\n3 0 0 0\n"),
+                         "OFF header declares 1350000000 vertices");
+}
+
 TEST_F(MeshFiles, AsciiPlyClaimingMoreVerticesThanTheFileHolds_IsRefusedQuickly) {
     std::ifstream in(meshPath("tetra.ply"));
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
