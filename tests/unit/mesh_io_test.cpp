@@ -244,6 +244,14 @@ TEST_F(MeshFiles, PlyWithAnUnknownPropertyTypeClaimingManyVertices_IsRefusedQuic
                          "PLY header declares 2000000000 vertex");
 }
 
+// Found by tests/fuzz/mesh_loader_fuzz (corpus/mesh_loader/ply-no-end-header.ply): assimp
+// never returns from a PLY header without end_header, whatever follows its magic number.
+TEST_F(MeshFiles, PlyHeaderWithoutEndHeader_IsRefusedQuickly) {
+    expectRefusedQuickly(write("cut.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"),
+                         "no end_header");
+    expectRefusedQuickly(write("cut2.ply", "ply2\nformat ascii 1.0\n"), "no end_header");
+}
+
 TEST_F(MeshFiles, BinaryPlyOneVertexShort_IsRefused) {
     // Without faces, a binary vertex list is exactly 12 bytes a vertex: one more is a lie.
     expectRefusedQuickly(write("short.ply", binaryPlyHeader("5", "0") + binaryTetraBody(false)),
