@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cctype>
 #include <chrono>
@@ -13,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <string>
 
 namespace rs {
@@ -262,6 +265,25 @@ TEST_F(MeshFiles, Fifo_IsRefusedWithoutBlocking) {
     const std::string fifo = path("pipe.obj");
     ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
     expectRefusedQuickly(fifo, "FIFO");
+}
+
+// The importer opens the files a mesh names too: an OBJ whose material library is a FIFO
+// must not block (the library is left out, as a missing one is).
+TEST_F(MeshFiles, ObjWhoseMaterialLibraryIsAFifo_LoadsWithoutBlocking) {
+    const std::string fifo = path("materials.mtl");
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+    const std::string obj =
+        write("t.obj", "mtllib materials.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    auto load = std::async(std::launch::async, [&] { return loadMesh(obj, false); });
+    if (load.wait_for(std::chrono::seconds(10)) != std::future_status::ready) {
+        // Blocked in open(): a writer that closes at once lets it go on, then fail.
+        ::close(::open(fifo.c_str(), O_WRONLY));
+        load.wait();
+        FAIL() << "loading blocked on the FIFO";
+    }
+    const MeshLoadResult r = load.get();
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_EQ(r.mesh->triangleCount(), 1u);
 }
 
 TEST_F(MeshFiles, FileAboveTheSizeLimit_IsRefusedBeforeReading) {
