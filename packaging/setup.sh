@@ -29,10 +29,11 @@ on later runs), then:
   run [SCENE]   open SCENE in the designer; without a display (or a built designer),
                 render SCENE with raystudio-cli into build/release/<scene name>.png.
                 SCENE defaults to ${DEFAULT_SCENE}.
-  test          run the session tests under ThreadSanitizer (build/tsan), the unit and
-                command-line tests under ASan + UBSan (build/asan), each fuzzer for
+  test          run the session tests under ThreadSanitizer (build/tsan), each fuzzer for
                 ${CI_FUZZ_SECONDS} s (build/fuzz), then the whole test suite (ctest), and
                 exit with the status.
+  asan          build the unit and command-line tests with ASan + UBSan (build/asan) and
+                run them (not yet part of test: its time on CI is still to be measured).
   fuzz [SECONDS]
                 build the libFuzzer targets (tests/fuzz, clang 14, ASan + UBSan) in
                 build/fuzz and run each for SECONDS (default ${DEFAULT_FUZZ_SECONDS}) on top of
@@ -172,11 +173,6 @@ run_tests() {
         printf 'setup.sh: ThreadSanitizer tests failed (exit status %d)\n' "${status}" >&2
         return "${status}"
     fi
-    run_address_sanitizer_tests || status=$?
-    if ((status != 0)); then
-        printf 'setup.sh: ASan + UBSan tests failed (exit status %d)\n' "${status}" >&2
-        return "${status}"
-    fi
     run_fuzzers "${CI_FUZZ_SECONDS}" || status=$?
     if ((status != 0)); then return "${status}"; fi
     say "Running the test suite."
@@ -250,6 +246,9 @@ main() {
         package)
             (($# == 0)) || die "package takes no arguments (see --help)"
             ;;
+        asan)
+            (($# == 0)) || die "asan takes no arguments (see --help)"
+            ;;
         fuzz)
             (($# <= 1)) || die "fuzz takes at most a number of seconds (see --help)"
             [[ "${1:-1}" =~ ^[1-9][0-9]*$ ]] || die "fuzz: SECONDS must be a positive whole number, got '${1}'"
@@ -276,11 +275,12 @@ main() {
     [[ -n "${scene}" ]] || scene="${DEFAULT_SCENE}"
 
     install_missing_packages
-    [[ "${command}" == fuzz ]] || build_release
+    [[ "${command}" == fuzz || "${command}" == asan ]] || build_release
     case "${command}" in
         run) run_scene "${scene}" ;;
         test) run_tests ;;
         package) build_package ;;
+        asan) run_address_sanitizer_tests ;;
         fuzz) run_fuzzers "${1:-${DEFAULT_FUZZ_SECONDS}}" ;;
     esac
 }
