@@ -2,6 +2,7 @@
 #include "io/mesh_io.h"
 
 #include "io/input_file.h"
+#include "io/mesh_file_access.h"
 #include "io/mesh_header_check.h"
 
 #include <assimp/postprocess.h>
@@ -100,6 +101,7 @@ MeshLoadResult loadMesh(const std::string& path, bool smoothNormals) {
     // No Assimp::DefaultLogger is created: assimp then logs to its null logger, so loading
     // never writes to stdout.
     Assimp::Importer importer;
+    importer.SetIOHandler(new MeshFileAccess);  // Owned by the importer (assimp's API).
     unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                      aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure;
     // Dropping flat normals first lets identical positions join into one vertex.

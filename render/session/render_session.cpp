@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -99,14 +100,29 @@ SessionStats RenderSession::stats() const {
 }
 
 uint64_t RenderSession::update(const SceneDocument& doc) {
-    SceneDocument copy = doc;  // Outside the lock: the scheduler may be planning.
+    // It runs on the caller's (the designer's GUI) thread: a copy that cannot be allocated is
+    // reported, never thrown; nothing has changed yet, so the session keeps what it showed.
+    std::optional<SceneDocument> copy;  // Outside the lock: the scheduler may be planning.
+    try {
+        copy.emplace(doc);
+    } catch (...) {
+        SessionObserver* observer = nullptr;
+        uint64_t current = 0;
+        {
+            std::lock_guard lock(mutex_);
+            observer = observer_;
+            current = generation_;
+        }
+        if (observer) observer->error(failureMessage(std::current_exception()));
+        return current;
+    }
     uint64_t gen;
     {
         std::lock_guard lock(mutex_);
         // The bump alone stops running tiles; the old document's frame is out of date anyway.
         // Tiles that commit before the scheduler applies this document are marked with the rest.
         gen = ++generation_;
-        pendingDoc_ = std::move(copy);  // A document not yet applied is dropped: the latest wins.
+        pendingDoc_ = std::move(*copy);  // A document not yet applied is dropped: the latest wins.
         pendingGeneration_ = gen;
         editTime_ = std::chrono::steady_clock::now();
         ++stats_.postedUpdates;

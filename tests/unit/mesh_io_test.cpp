@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cctype>
 #include <chrono>
@@ -13,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <string>
 
 namespace rs {
@@ -208,6 +211,16 @@ TEST_F(MeshFiles, OffVertexCountBeyondAnyInteger_IsRefused) {
                          "too large");
 }
 
+// Found by tests/fuzz/mesh_loader_fuzz (corpus/mesh_loader/off-face-count-garbage.off): the
+// importer reads a count's leading digits, so a face count with garbage after its digits
+// must not make the check give up on the vertex count.
+TEST_F(MeshFiles, OffLieWithGarbageAfterACount_IsRefusedQuickly) {
+    const std::string garbage("OFF\n1350000000 1\x01\0\0\0 0\n0 0 0\n3 0 0 0\n", 37);
+    expectRefusedQuickly(write("lie.off", garbage), "OFF header declares 1350000000 vertices");
+    expectRefusedQuickly(write("lie2.off", "OFF\n1350000000abc 1 0\n0 0 0\n3 0 0 0\n"),
+                         "OFF header declares 1350000000 vertices");
+}
+
 TEST_F(MeshFiles, AsciiPlyClaimingMoreVerticesThanTheFileHolds_IsRefusedQuickly) {
     std::ifstream in(meshPath("tetra.ply"));
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -220,6 +233,28 @@ TEST_F(MeshFiles, BinaryPlyClaimingMoreVerticesThanTheFileHolds_IsRefusedQuickly
                          "PLY header declares 2000000000 vertex");
 }
 
+// Found by tests/fuzz/mesh_loader_fuzz (corpus/mesh_loader/ply-unknown-type-lie.ply): a
+// property type the check did not know made it give up, and assimp read on for minutes.
+TEST_F(MeshFiles, PlyWithAnUnknownPropertyTypeClaimingManyVertices_IsRefusedQuickly) {
+    std::ifstream in(meshPath("tetra.ply"));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.find("element vertex 4"), 16, "element vertex 2000000000");
+    text.replace(text.find("property float x"), 16, "property floa\x94 x");
+    expectRefusedQuickly(write("lie.ply", text), "PLY header declares 2000000000 vertex");
+    std::string binary = binaryPlyHeader("2000000000");
+    binary.replace(binary.find("float y"), 5, "quad ");
+    expectRefusedQuickly(write("lie-binary.ply", binary + binaryTetraBody()),
+                         "PLY header declares 2000000000 vertex");
+}
+
+// Found by tests/fuzz/mesh_loader_fuzz (corpus/mesh_loader/ply-no-end-header.ply): assimp
+// never returns from a PLY header without end_header, whatever follows its magic number.
+TEST_F(MeshFiles, PlyHeaderWithoutEndHeader_IsRefusedQuickly) {
+    expectRefusedQuickly(write("cut.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"),
+                         "no end_header");
+    expectRefusedQuickly(write("cut2.ply", "ply2\nformat ascii 1.0\n"), "no end_header");
+}
+
 TEST_F(MeshFiles, BinaryPlyOneVertexShort_IsRefused) {
     // Without faces, a binary vertex list is exactly 12 bytes a vertex: one more is a lie.
     expectRefusedQuickly(write("short.ply", binaryPlyHeader("5", "0") + binaryTetraBody(false)),
@@ -230,6 +265,25 @@ TEST_F(MeshFiles, Fifo_IsRefusedWithoutBlocking) {
     const std::string fifo = path("pipe.obj");
     ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
     expectRefusedQuickly(fifo, "FIFO");
+}
+
+// The importer opens the files a mesh names too: an OBJ whose material library is a FIFO
+// must not block (the library is left out, as a missing one is).
+TEST_F(MeshFiles, ObjWhoseMaterialLibraryIsAFifo_LoadsWithoutBlocking) {
+    const std::string fifo = path("materials.mtl");
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+    const std::string obj =
+        write("t.obj", "mtllib materials.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    auto load = std::async(std::launch::async, [&] { return loadMesh(obj, false); });
+    if (load.wait_for(std::chrono::seconds(10)) != std::future_status::ready) {
+        // Blocked in open(): a writer that closes at once lets it go on, then fail.
+        ::close(::open(fifo.c_str(), O_WRONLY));
+        load.wait();
+        FAIL() << "loading blocked on the FIFO";
+    }
+    const MeshLoadResult r = load.get();
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_EQ(r.mesh->triangleCount(), 1u);
 }
 
 TEST_F(MeshFiles, FileAboveTheSizeLimit_IsRefusedBeforeReading) {

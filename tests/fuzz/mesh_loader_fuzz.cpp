@@ -1,0 +1,63 @@
+// libFuzzer target for the mesh loader on small files: the first byte picks the format (the
+// importer goes by the file name's extension), the rest is the file. Any bytes load to a mesh
+// or to an error, never a crash, a sanitizer report or an allocation for a lying header.
+#include "io/mesh_io.h"
+
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+namespace {
+constexpr std::array<const char*, 4> kExtensions = {".obj", ".off", ".ply", ".stl"};
+
+/// One folder per fuzzing process (libFuzzer's -fork and -jobs run several).
+const std::string& scratchDir() {
+    static const std::string dir = [] {
+        std::string pattern = "/tmp/raystudio-mesh-fuzz-XXXXXX";
+        if (!mkdtemp(pattern.data())) std::abort();
+        static std::string removeAtExit = pattern;
+        std::atexit([] { rmdir(removeAtExit.c_str()); });
+        return pattern;
+    }();
+    return dir;
+}
+
+[[noreturn]] void broken(const char* what) {
+    std::fprintf(stderr, "mesh_loader_fuzz: %s\n", what);
+    std::abort();
+}
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    if (size == 0) return 0;
+    const std::string path = scratchDir() + "/mesh" + kExtensions[data[0] % kExtensions.size()];
+    {
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(data + 1), std::streamsize(size - 1));
+        if (!out) broken("cannot write the scratch file");
+    }
+    for (bool smooth : {false, true}) {
+        const rs::MeshLoadResult result = rs::loadMesh(path, smooth);
+        if (!result.ok()) {
+            if (result.error.empty()) broken("a failed load without a message");
+            continue;
+        }
+        // What loadMesh promises (mesh_io.h): triangles over existing, finite vertices.
+        const rs::MeshData& mesh = *result.mesh;
+        if (mesh.indices.empty() || mesh.indices.size() % 3 != 0) broken("not a triangle list");
+        for (uint32_t i : mesh.indices)
+            if (i >= mesh.positions.size()) broken("an index past the vertices");
+        for (const rs::Vec3& p : mesh.positions)
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                broken("a vertex that is not finite");
+        if (smooth && mesh.normals.size() != mesh.positions.size()) broken("normals missing");
+    }
+    std::remove(path.c_str());
+    return 0;
+}
