@@ -11,6 +11,7 @@ readonly REQUIRED_PACKAGES=(
     libglm-dev libopenimageio-dev openimageio-tools libassimp-dev libtbb-dev libembree-dev
     nlohmann-json3-dev libgtest-dev googletest
     xvfb xauth mesa-utils libgl1-mesa-dri
+    povray python3
 )
 
 usage() {
