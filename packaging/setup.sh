@@ -16,6 +16,7 @@ readonly REQUIRED_PACKAGES=(
     xvfb xauth mesa-utils libgl1-mesa-dri
     # The fuzz preset: Debian's clang and its libFuzzer/sanitizer runtimes.
     clang-14 libclang-rt-14-dev
+    povray python3
 )
 
 usage() {

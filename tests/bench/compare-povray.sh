@@ -7,9 +7,10 @@ usage() {
 Usage: bash tests/bench/compare-povray.sh [RUNS] [THREADS] [SCENE.scene.json SCENE.pov]
 
 Alternates RUNS (default 7) renders of the reference room at 1280x720 (depth 3, 1 shadow
-sample, no antialiasing) by POV-Ray (tests/bench/reference-room.pov) and by raystudio-cli
-(scenes/reference-room.scene.json), THREADS (default 2) threads each, and prints medians.
-Another pair of twins may be named instead (make-bench-scenes.py writes spheres-N ones):
+sample, no antialiasing) by POV-Ray (the twin tests/oracle/scene_to_pov.py writes) and by
+raystudio-cli (scenes/reference-room.scene.json), THREADS (default 2) threads each, and prints
+medians. Another scene may be named instead; its twin is written the same way unless a .pov
+is named too (make-bench-scenes.py writes spheres-N ones):
   render  POV-Ray's own "Trace Time" vs raystudio-cli --stats "ms" (loading excluded)
   wall    whole process, start to exit, image written (both)
 Needs the Debian 'povray' package and a release build (bash packaging/setup.sh test).
@@ -27,8 +28,11 @@ command -v povray >/dev/null 2>&1 || { echo "compare-povray.sh: povray not found
 [[ -x "${cli}" ]] || { echo "compare-povray.sh: ${cli} not built" >&2; exit 1; }
 work="$(mktemp -d)"
 scene_json="${scene_json:-${root}/scenes/reference-room.scene.json}"
-scene_pov="${scene_pov:-${root}/tests/bench/reference-room.pov}"
 trap 'rm -rf "${work}"' EXIT
+if [[ -z "${scene_pov}" ]]; then
+    scene_pov="${work}/twin.pov"
+    python3 "${root}/tests/oracle/scene_to_pov.py" "${scene_json}" "${scene_pov}" --width 1280 --height 720
+fi
 
 now_ms() { echo $(( $(date +%s%N) / 1000000 )); }
 median() { sort -g | awk '{v[NR]=$1} END {print (NR%2) ? v[(NR+1)/2] : (v[NR/2]+v[NR/2+1])/2}'; }

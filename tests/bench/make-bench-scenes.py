@@ -4,7 +4,7 @@
   room-box.scene.json            the reference room plus one box
   room-sphere-light.scene.json   the reference room, its light a sphere light, 16 shadow samples
   spheres-N.scene.json / .pov    N random spheres on a floor, one light (N = 10 ... 100,000),
-                                 with a POV-Ray 3.7 twin of the same geometry
+                                 with its POV-Ray 3.7 twin (tests/oracle/scene_to_pov.py)
   mesh-N.obj, mesh-N.scene.json  a tessellated sphere of about N triangles in a room
                                  (N = 1,000 ... 1,000,000)
   mesh-N-primary.scene.json      the same mesh, depth 0, no shadows: primary rays + Lambert
@@ -18,6 +18,9 @@ import random
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+# The one scene -> POV-Ray mapping (tests/oracle/scene_to_pov.py) writes the twins.
+sys.path.insert(0, os.path.join(ROOT, "tests", "oracle"))
+import scene_to_pov  # noqa: E402
 
 
 def reference_room():
@@ -68,28 +71,15 @@ def spheres(out, n, rng):
         "objects": [{"name": "floor", "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
                      "material": "floor"}],
     }
-    pov = ["#version 3.7;", "global_settings { assumed_gamma 1.0 max_trace_level 4 }",
-           "camera { perspective location <0, %g, %g> look_at <0, 0, 0> right x*1280/720 angle %g }"
-           % (0.45 * side, -0.55 * side, 2 * math.degrees(math.atan(math.tan(math.radians(27.5)) * 1280 / 720))),
-           "light_source { <%g, %g, %g> color rgb 1 }" % (0.3 * side, side, -0.2 * side),
-           "background { rgb <0.05, 0.05, 0.08> }",
-           "plane { y, 0 pigment { rgb 0.7 } finish { ambient 0.05 diffuse 0.9 } }"]
-    finishes = {
-        "red": "pigment { rgb <0.8, 0.2, 0.1> } finish { ambient 0.05 diffuse 0.9 phong 0.4 phong_size 40 }",
-        "blue": "pigment { rgb <0.1, 0.3, 0.8> } finish { ambient 0.05 diffuse 0.9 phong 0.4 phong_size 40 }",
-        "mirror": "pigment { rgb 0.9 } finish { ambient 0.05 diffuse 0.1 reflection 0.8 }",
-    }
     for i in range(n):
         x, z = rng.uniform(-side / 2, side / 2), rng.uniform(-side / 2, side / 2)
         r = radius * rng.uniform(0.4, 1.0)
         mat = ("red", "blue", "mirror")[i % 3]
         doc["objects"].append({"name": "ball %d" % i, "type": "sphere", "center": [x, r, z],
                                "radius": r, "material": mat})
-        # POV-Ray is left-handed: z is mirrored so both programs see the same picture.
-        pov.append("sphere { <%g, %g, %g>, %g %s }" % (x, r, -z, r, finishes[mat]))
     write_json(os.path.join(out, "spheres-%d.scene.json" % n), doc)
     with open(os.path.join(out, "spheres-%d.pov" % n), "w") as f:
-        f.write("\n".join(pov) + "\n")
+        f.write(scene_to_pov.convert(doc, out))
 
 
 def mesh(out, triangles):

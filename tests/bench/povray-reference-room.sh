@@ -6,7 +6,8 @@ usage() {
     cat <<USAGE
 Usage: bash tests/bench/povray-reference-room.sh [RUNS]
 
-Renders tests/bench/reference-room.pov RUNS times (default 5) with
+Renders the POV-Ray twin of scenes/reference-room.scene.json (written by
+tests/oracle/scene_to_pov.py) RUNS times (default 5) with
   povray +W1280 +H720 -D -A +WT2
 and prints each wall time and the median in milliseconds. Needs the Debian 'povray' package.
 Antialiasing is off with -A: POV-Ray 3.7 rejects "+A0" as an option, and +A<threshold> would
@@ -26,9 +27,11 @@ command -v povray >/dev/null 2>&1 || {
 }
 
 script_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-scene="${script_dir}/reference-room.pov"
 work="$(mktemp -d)"
 trap 'rm -rf "${work}"' EXIT
+scene="${work}/reference-room.pov"
+python3 "${script_dir}/../oracle/scene_to_pov.py" "${script_dir}/../../scenes/reference-room.scene.json" \
+    "${scene}" --width 1280 --height 720
 
 times=()
 for ((i = 1; i <= runs; i++)); do

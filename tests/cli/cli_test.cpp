@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "image/image_io.h"
+
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <string>
 
@@ -112,12 +115,48 @@ TEST_F(CliTest, Render_WritesTheImageAndStatsLine) {
 }
 
 TEST_F(CliTest, Render_EveryOutputFormat) {
-    for (const char* ext : {"png", "jpg", "tif", "exr", "hdr"}) {
-        const std::string out = path(std::string("room.") + ext);
+    // Each extension gives its format (the file's magic bytes), and every file holds the same
+    // picture: read back, the 8-bit ones agree with each other, the float ones with each other.
+    const std::vector<std::pair<std::string, std::string>> formats = {
+        {"png", "\x89PNG"}, {"jpg", "\xff\xd8\xff"}, {"tif", "II*"}, {"exr", "v/1\x01"},
+        {"hdr", "#?RADIANCE"}};
+    std::map<std::string, rs::ImageRgb> images;
+    for (const auto& [ext, magic] : formats) {
+        const std::string out = path("room." + ext);
         CliRun r = cli("render " + kRoom + " -o " + out + " --width 16 --height 9");
-        EXPECT_EQ(r.exitCode, 0) << ext << ": " << r.err;
-        EXPECT_GT(fs::file_size(out), 0u) << ext;
+        ASSERT_EQ(r.exitCode, 0) << ext << ": " << r.err;
+        EXPECT_EQ(r.out, "") << ext;
+        EXPECT_EQ(readAll(out).substr(0, magic.size()), magic) << ext << " is not that format";
+        std::string error;
+        ASSERT_TRUE(rs::readImage(out, images[ext], error)) << ext << ": " << error;
+        ASSERT_EQ(images[ext].width, 16) << ext;
+        ASSERT_EQ(images[ext].height, 9) << ext;
     }
+    // Largest difference, relative to the pixel's largest channel when `relative`, and mean.
+    auto worst = [&](const std::string& a, const std::string& b, bool relative) {
+        float w = 0.0f;
+        for (std::size_t i = 0; i < images[a].pixels.size(); ++i) {
+            const rs::Color x = images[a].pixels[i], y = images[b].pixels[i];
+            const float scale = relative ? std::max({1e-3f, x.x, x.y, x.z}) : 1.0f;
+            for (int c = 0; c < 3; ++c) w = std::max(w, std::abs(x[c] - y[c]) / scale);
+        }
+        return w;
+    };
+    auto mean = [&](const std::string& a, const std::string& b) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < images[a].pixels.size(); ++i) {
+            const rs::Color d = glm::abs(images[a].pixels[i] - images[b].pixels[i]);
+            sum += double(d.x + d.y + d.z) / 3.0;
+        }
+        return sum / double(images[a].pixels.size());
+    };
+    EXPECT_EQ(worst("png", "tif", false), 0.0f);  // both lossless 8-bit
+    EXPECT_LE(mean("png", "jpg"), 0.05);          // JPEG loss at 16x9 (chroma subsampled), linear
+    EXPECT_LE(worst("exr", "hdr", true), 0.01f);  // RGBE: 8 bits of mantissa, a shared exponent
+    // Not a blank picture: the red left wall and the dark floor differ.
+    float lo = 1e9f, hi = 0.0f;
+    for (const rs::Color& c : images["exr"].pixels) lo = std::min(lo, c.x), hi = std::max(hi, c.x);
+    EXPECT_GT(hi - lo, 0.2f);
 }
 
 TEST_F(CliTest, Render_BadNumbers_Exit2NamingTheOption) {
@@ -247,19 +286,55 @@ TEST_F(CliTest, Bench_JsonHasOneEntryPerExperiment) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto entries = nlohmann::json::parse(r.out);
     ASSERT_TRUE(entries.is_array());
-    EXPECT_EQ(entries.size(), 13u);  // Baseline + 3 experiments of 4 values.
+    ASSERT_EQ(entries.size(), 13u);  // Baseline + 3 experiments of 4 values.
+    std::map<std::string, std::vector<std::pair<int, long>>> runs;  // experiment -> (value, rays)
     for (const auto& e : entries) {
-        EXPECT_TRUE(e.contains("experiment") && e.contains("value") && e.contains("median_ms") &&
-                    e.contains("rays"));
+        ASSERT_TRUE(e.contains("experiment") && e.contains("value") && e.contains("median_ms") &&
+                    e.contains("rays")) << e.dump();
+        EXPECT_GE(e["median_ms"].get<double>(), 0.0);
+        runs[e["experiment"]].emplace_back(e["value"].get<int>(), e["rays"].get<long>());
     }
-    EXPECT_EQ(entries[1]["experiment"], "shadow_samples");
-    EXPECT_EQ(entries[12]["value"], 8);
+    ASSERT_EQ(runs["baseline"].size(), 1u);
+    const long baseline = runs["baseline"][0].second;
+    auto values = [&](const std::string& name) {
+        std::vector<int> v;
+        for (const auto& [value, rays] : runs[name]) v.push_back(value);
+        return v;
+    };
+    EXPECT_EQ(values("shadow_samples"), (std::vector<int>{0, 1, 27, 64}));
+    EXPECT_EQ(values("max_depth"), (std::vector<int>{0, 1, 2, 44}));
+    EXPECT_EQ(values("supersampling"), (std::vector<int>{1, 2, 4, 8}));
+    // What each experiment does to the work, at 16 x 9 = 144 pixels of the room:
+    // no shadow rays without shadows; the room's one point light takes one shadow ray per
+    // shading point whatever the sample count (its samples coincide); the baseline is the
+    // scene's own settings (1 sample, depth 3, no supersampling).
+    const auto& shadows = runs["shadow_samples"];
+    EXPECT_GE(shadows[0].second, 144);
+    EXPECT_LT(shadows[0].second, shadows[1].second);
+    EXPECT_EQ(shadows[1].second, baseline);
+    EXPECT_EQ(shadows[2].second, shadows[1].second);
+    EXPECT_EQ(shadows[3].second, shadows[1].second);
+    // Deeper trees trace more rays.
+    const auto& depth = runs["max_depth"];
+    for (std::size_t i = 1; i < depth.size(); ++i) EXPECT_GT(depth[i].second, depth[i - 1].second);
+    // k samples per pixel: about k times the rays of one.
+    const auto& ss = runs["supersampling"];
+    EXPECT_EQ(ss[0].second, baseline);
+    for (const auto& [k, rays] : ss) {
+        EXPECT_GE(double(rays), 0.9 * k * double(baseline)) << k << " samples";
+        EXPECT_LE(double(rays), 1.2 * k * double(baseline)) << k << " samples";
+    }
 }
 
 TEST_F(CliTest, GarbageSceneFiles_NeverCrash) {
+    // Every mutation ends in exit 0 with an image or exit 2 with a message naming the file and
+    // the place; what render accepts, validate accepts; text that is not JSON at all (as
+    // nlohmann::json, an independent parser, judges) is always an error at a line and column.
+    // (Whether the rest are valid is validate's business: scene_errors_test.cpp.)
     std::mt19937 rng(1234);
     const std::string good = R"({"format": "raystudio-scene", "version": 1, "render": {"width": 8,
  "height": 8}, "objects": [{"name": "s", "type": "sphere", "center": [0,0,-3], "radius": 1}]})";
+    int rejected = 0, notJson = 0;
     for (int i = 0; i < 40; ++i) {
         std::string text = good;
         // Mutate a few characters: truncations, swaps, junk bytes.
@@ -272,10 +347,32 @@ TEST_F(CliTest, GarbageSceneFiles_NeverCrash) {
             }
         }
         const std::string scene = write("fuzz.scene.json", text);
+        fs::remove(path("fuzz.png"));
         CliRun r = cli("render " + scene + " -o " + path("fuzz.png"));
-        EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 2) << "exit " << r.exitCode << " for:\n"
-                                                        << text << "\n" << r.err;
+        const std::string what = "mutation " + std::to_string(i) + ":\n" + text + "\n" + r.err;
+        ASSERT_TRUE(r.exitCode == 0 || r.exitCode == 2) << "exit " << r.exitCode << " for " << what;
+        if (r.exitCode == 0) {  // a scene render accepts, validate accepts too
+            EXPECT_TRUE(fs::exists(path("fuzz.png"))) << what;
+            EXPECT_EQ(cli("validate " + scene).out, "ok\n") << what;
+            continue;
+        }
+        ++rejected;
+        EXPECT_FALSE(fs::exists(path("fuzz.png"))) << "an image written for " << what;
+        EXPECT_EQ(r.out, "") << what;
+        EXPECT_EQ(r.err.rfind(scene + ":", 0), 0u) << "the message does not start with the file: " << what;
+        if (!nlohmann::json::accept(text)) {
+            ++notJson;
+            // file:line:column: ...
+            const std::string rest = r.err.substr(scene.size() + 1);
+            EXPECT_TRUE(!rest.empty() && std::isdigit(static_cast<unsigned char>(rest[0])) &&
+                        rest.find(':') != std::string::npos)
+                << "no line and column for " << what;
+        }
     }
+    // Three random edits of a 150-byte file break it most of the time; a test where every
+    // mutation passed would test nothing.
+    EXPECT_GE(rejected, 25);
+    EXPECT_GE(notJson, 15);
 }
 
 }  // namespace

@@ -182,8 +182,31 @@ void DesignerTest::outOfRangeProperty_IsRejectedWithMessage() {
     QVERIFY(!window_->propertyPanel()->applyEdit(QStringLiteral("geometry"), "radius", -1.0f));
     QVERIFY(window_->propertyPanel()->lastError().contains(QStringLiteral("radius")));
     QVERIFY(!window_->editor()->undoStack()->canUndo());
-    // Glass in one edit: transparency up, and the sphere keeps its place.
+    // Glass in one edit: transparency up, and the sphere keeps its place: same geometry and
+    // transform in the document, and the frame shows it at the same pixels.
+    const Object before = *window_->editor()->document().findObject(blue);
+    const DisplayFrame frameBefore = *window_->viewport()->frame();  // a copy: the view updates its own
     QVERIFY(window_->propertyPanel()->applyEdit(QStringLiteral("material"), "transparency", 0.9f));
+    QCOMPARE(window_->editor()->document().findMaterial("blue plastic")->transparency, 0.9f);
+    QVERIFY(settle(*window_));
+    const Object& after = *window_->editor()->document().findObject(blue);
+    QVERIFY(after.geometry == before.geometry);
+    QVERIFY(after.transform == before.transform);
+    const auto frameAfter = window_->viewport()->frame();
+    int moved = 0, pixels = 0;
+    for (int y = 0; y < 90; ++y)
+        for (int x = 0; x < 160; ++x) {
+            pixels += frameBefore.idAt(x, y) == blue;
+            moved += (frameBefore.idAt(x, y) == blue) != (frameAfter->idAt(x, y) == blue);
+        }
+    QVERIFY(pixels > 50);
+    QCOMPARE(moved, 0);
+    // ...and it is glass now: its centre shows what lies behind it, not blue plastic.
+    const auto [x, y] = pixelOf(*frameAfter, blue);
+    const Color c0 = frameBefore.color[std::size_t(y) * 160 + x];
+    const Color c1 = frameAfter->color[std::size_t(y) * 160 + x];
+    QVERIFY2(c0.z > c0.x && glm::length(c1 - c0) > 0.05f,
+             qPrintable(QStringLiteral("%1 %2 %3 -> %4 %5 %6").arg(c0.x).arg(c0.y).arg(c0.z).arg(c1.x).arg(c1.y).arg(c1.z)));
 }
 
 void DesignerTest::saveAndReopen_GiveTheSameScene() {
@@ -297,35 +320,94 @@ void DesignerTest::badSceneFile_ShowsErrorAndKeepsDocument() {
     QCOMPARE(window_->editor()->filePath(), fileBefore);
 }
 
+/// Sum of the frame's linear colour: more light, more energy.
+static double frameEnergy(const DisplayFrame& f) {
+    double e = 0.0;
+    for (const Color& c : f.color) e += double(c.x + c.y + c.z);
+    return e;
+}
+
 void DesignerTest::addSphereLight_UndoRedo() {
     QAction* add = window_->findChild<QAction*>(QStringLiteral("add Sphere light"));
     QVERIFY(add);
     const std::size_t lights = window_->editor()->document().lights.size();
+    const DisplayFrame dark = *window_->viewport()->frame();  // a copy: the view updates its own
+    const double energyBefore = frameEnergy(dark);
     add->trigger();
     QCOMPARE(window_->editor()->document().lights.size(), lights + 1);
     const ObjectId id = window_->editor()->selection();
     QVERIFY(window_->editor()->document().findLight(id));
     QCOMPARE(window_->editor()->document().findLight(id)->type, LightType::Sphere);
+    // The frame shows the new light: the room gets brighter.
+    QVERIFY(settle(*window_));
+    const double energyLit = frameEnergy(*window_->viewport()->frame());
+    QVERIFY2(energyLit > 1.05 * energyBefore,
+             qPrintable(QStringLiteral("%1 -> %2").arg(energyBefore).arg(energyLit)));
+    // Undo takes the light out of the picture again: the frame is the one before, pixel for pixel.
     window_->editor()->undoStack()->undo();
     QCOMPARE(window_->editor()->document().lights.size(), lights);
+    QVERIFY(settle(*window_));
+    const auto undone = window_->viewport()->frame();
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < undone->color.size(); ++i) {
+        const Color d = glm::abs(undone->color[i] - dark.color[i]);
+        worst = std::max({worst, d.x, d.y, d.z});
+    }
+    QVERIFY2(worst <= 1e-5f, qPrintable(QString::number(worst)));
     window_->editor()->undoStack()->redo();
     QCOMPARE(window_->editor()->document().lights.size(), lights + 1);
     QVERIFY(settle(*window_));
+    QVERIFY(std::abs(frameEnergy(*window_->viewport()->frame()) - energyLit) <= 1e-3 * energyLit);
 }
 
 void DesignerTest::debugViews_ProduceImages() {
-    const auto frame = window_->viewport()->frame();
+    const DisplayFrame shown = *window_->viewport()->frame();  // a copy: the view updates its own
+    const DisplayFrame* frame = &shown;
+    const ObjectId blue = idOf(*window_, "blue ball"), glass = idOf(*window_, "glass ball");
+    const ObjectId floor = idOf(*window_, "floor"), back = idOf(*window_, "back wall");
+    const ObjectId left = idOf(*window_, "left wall");
+    const auto [bx, by] = pixelOf(*frame, blue);
+    const auto [gx, gy] = pixelOf(*frame, glass);
+    const auto [lx, ly] = pixelOf(*frame, left);
+    // Pixels with known content: the floor at the bottom centre, the back wall in the middle.
+    const int fx = 80, fy = 88, wx = 80, wy = 25;
+    QCOMPARE(frame->idAt(fx, fy), floor);
+    QCOMPARE(frame->idAt(wx, wy), back);
+    auto rgb = [](const QImage& img, int x, int y) { return img.pixelColor(x, y); };
     for (ViewMode m : {ViewMode::Color, ViewMode::ObjectIds, ViewMode::Normals, ViewMode::Depth,
-                       ViewMode::Cost, ViewMode::Retraced}) {
-        window_->viewport()->setViewMode(m);
-        const QImage img = viewportImage(*frame, m, kNoObject);
-        QCOMPARE(img.size(), QSize(160, 90));
-    }
-    // Hashed id colours tell neighbouring objects apart.
-    uint8_t a[3], b[3];
-    idColor(1, a);
-    idColor(2, b);
-    QVERIFY(a[0] != b[0] || a[1] != b[1] || a[2] != b[2]);
+                       ViewMode::Cost, ViewMode::Retraced})
+        QCOMPARE(viewportImage(*frame, m, kNoObject).size(), QSize(160, 90));
+
+    // Colour: the red wall is red, the blue ball blue.
+    const QImage color = viewportImage(*frame, ViewMode::Color, kNoObject);
+    QVERIFY(rgb(color, lx, ly).red() > 2 * rgb(color, lx, ly).green());
+    QVERIFY(rgb(color, bx, by).blue() > rgb(color, bx, by).red());
+    // Object ids: one colour per object, different objects different colours.
+    const QImage ids = viewportImage(*frame, ViewMode::ObjectIds, kNoObject);
+    QCOMPARE(rgb(ids, fx, fy), rgb(ids, fx + 3, fy));
+    QVERIFY(rgb(ids, fx, fy) != rgb(ids, wx, wy));
+    QVERIFY(rgb(ids, bx, by) != rgb(ids, gx, gy));
+    // Normals: the floor faces +y (green full, red and blue half), the back wall +z.
+    const QImage normals = viewportImage(*frame, ViewMode::Normals, kNoObject);
+    QVERIFY(std::abs(rgb(normals, fx, fy).red() - 127) <= 1 && rgb(normals, fx, fy).green() >= 254 &&
+            std::abs(rgb(normals, fx, fy).blue() - 127) <= 1);
+    QVERIFY(std::abs(rgb(normals, wx, wy).red() - 127) <= 1 && rgb(normals, wx, wy).blue() >= 254);
+    // Depth: near is bright, far is dark; the floor in front is nearer than the back wall.
+    const QImage depth = viewportImage(*frame, ViewMode::Depth, kNoObject);
+    QVERIFY(rgb(depth, fx, fy).red() > rgb(depth, wx, wy).red() + 30);
+    QCOMPARE(rgb(depth, fx, fy).red(), rgb(depth, fx, fy).blue());  // grey
+    // Cost: the glass ball's ray trees are deeper than the back wall's single hit.
+    QVERIFY(frame->cost[std::size_t(gy) * 160 + gx] > frame->cost[std::size_t(wy) * 160 + wx]);
+    const QImage cost = viewportImage(*frame, ViewMode::Cost, kNoObject);
+    QVERIFY(rgb(cost, gx, gy) != rgb(cost, wx, wy));
+    // Re-traced pixels: after retinting the blue ball, its pixels are marked re-traced (red
+    // tint) and the left wall, which cannot see it, is not.
+    window_->editor()->setSelection(blue);
+    QVERIFY(window_->propertyPanel()->applyEdit(QStringLiteral("material"), "color", Vec3(0.2f, 0.9f, 0.2f)));
+    QVERIFY(settle(*window_));
+    const QImage retraced = viewportImage(*window_->viewport()->frame(), ViewMode::Retraced, kNoObject);
+    QVERIFY(rgb(retraced, bx, by).red() >= 127);
+    QVERIFY(rgb(retraced, 2, 45).red() < 127);
 }
 
 QTEST_MAIN(DesignerTest)

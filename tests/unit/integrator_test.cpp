@@ -163,21 +163,8 @@ TEST(Whitted, MirrorAtMaxDepthZero_ShowsOnlyItsLocalShare) {
     expectColorNear(traceDown(doc), 0.1f * local + Color(0.9f));
 }
 
-TEST(Whitted, GlassAtNormalIncidence_SplitsBySchlickR0) {
-    Material glass;
-    glass.name = "glass";
-    glass.diffuse = 0.0f;
-    glass.transparency = 1.0f;
-    glass.ior = 1.5f;
-    SceneDocument doc = floorScene(glass);
-    doc.render.background = Color(1.0f);
-    doc.render.maxDepth = 1;
-    // Reflected ray sees the background (F = 0.04); the refracted ray goes below the plane and
-    // sees the background too: both parts together give the background back.
-    expectColorNear(traceDown(doc), Color(1.0f));
-    doc.render.background = Color(0.0f);
-    EXPECT_NEAR(traceDown(doc).x, 0.0f, 1e-6f);
-}
+// Glass's Fresnel split, with different colours behind the two branches, and total internal
+// reflection at the critical angle: analytic_test.cpp.
 
 TEST(Whitted, InsideGlassBeyondCriticalAngle_SendsAllEnergyToReflection) {
     // A camera inside a glass ball: a ray meeting the surface beyond the critical angle is
