@@ -11,6 +11,7 @@ readonly REQUIRED_PACKAGES=(
     libglm-dev libopenimageio-dev openimageio-tools libassimp-dev libtbb-dev libembree-dev
     nlohmann-json3-dev libgtest-dev googletest
     xvfb xauth mesa-utils libgl1-mesa-dri
+    slurm-wlm munge
 )
 
 usage() {
@@ -25,7 +26,8 @@ on later runs), then:
                 render SCENE with raystudio-cli into build/release/<scene name>.png.
                 SCENE defaults to ${DEFAULT_SCENE}.
   test          run the session tests under ThreadSanitizer (build/tsan), then the whole
-                test suite (ctest), and exit with the status.
+                test suite (ctest) and the Slurm farm test (needs root), and exit with
+                the status.
   package       build the Debian package build/release/raystudio_<version>_<arch>.deb
                 with CPack (install it with: sudo apt install ./build/release/raystudio_*.deb).
   -h, --help    show this help.
@@ -97,6 +99,15 @@ run_thread_sanitizer_tests() {
     ctest --preset tsan -R 'RenderSession|Renderer|Sampling' --output-on-failure
 }
 
+# `raystudio-cli farm` against a real single-node Slurm (munge, slurmctld, slurmd in a
+# temporary folder, loopback ports 17817/17818): a 4-part job array and its merge job must
+# give the local render's pixels. Daemons that cannot start fail it, with their logs.
+run_slurm_farm_test() {
+    say "Running the Slurm farm integration test (tests/cluster/slurm_farm_test.sh)."
+    timeout 600 bash tests/cluster/slurm_farm_test.sh build/release/app/raystudio-cli \
+        scenes/reference-room.scene.json
+}
+
 run_tests() {
     local status=0
     run_thread_sanitizer_tests || status=$?
@@ -106,6 +117,7 @@ run_tests() {
     fi
     say "Running the test suite."
     ctest --preset release --output-on-failure || status=$?
+    run_slurm_farm_test || status=$?
     if ((status == 0)); then
         say "All tests passed."
     else

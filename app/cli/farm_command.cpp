@@ -161,7 +161,7 @@ int runStatus(int argc, char** argv) {
         return 1;
     }
     // One line per array task: id, state, elapsed time, node or reason.
-    ChildResult q = runChild({"squeue", "-h", "-r", "-j", id, "-o", "%i %T %M %R"}, kSchedulerTimeoutS);
+    ChildResult q = runChild({"squeue", "-h", "-r", "-t", "all", "-j", id, "-o", "%i %T %M %R"}, kSchedulerTimeoutS);
     if (q.timedOut) {
         std::fprintf(stderr, "raystudio-cli farm status: %s\n", schedulerFailure("squeue", q).c_str());
         return 1;
