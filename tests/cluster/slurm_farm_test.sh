@@ -69,15 +69,17 @@ on_exit() {
 trap on_exit EXIT
 trap 'exit 130' INT TERM
 
-# Waits up to DAEMON_TIMEOUT_S for a command to succeed; fails naming what did not come up.
+# Waits up to DAEMON_TIMEOUT_S for a command to succeed, each try bounded by 5 s (a port held
+# by something else may accept and never answer); fails naming what did not come up.
 wait_for() {
     local what="$1"
     shift
-    for _ in $(seq $((DAEMON_TIMEOUT_S * 5))); do
-        "$@" >/dev/null 2>&1 && return 0
+    local deadline=$(($(date +%s) + DAEMON_TIMEOUT_S))
+    while (($(date +%s) < deadline)); do
+        timeout 5 "$@" >/dev/null 2>&1 && return 0
         sleep 0.2
     done
-    fail "${what} did not come up within ${DAEMON_TIMEOUT_S} s (its log follows)"
+    fail "${what} did not come up within ${DAEMON_TIMEOUT_S} s (the logs follow)"
 }
 
 say "munge, slurmctld and slurmd in ${T}"
@@ -134,13 +136,13 @@ merge_job="$(sed -n 's/^merge job \([0-9]*\):.*/\1/p' <<<"${submit}")"
 start_ns=$(date +%s%N)
 deadline=$(($(date +%s) + JOB_TIMEOUT_S))
 while :; do
-    state="$(squeue -h -t all -j "${merge_job}" -o %T 2>/dev/null || true)"
+    state="$(timeout 10 squeue -h -t all -j "${merge_job}" -o %T 2>/dev/null || true)"
     [[ "${state}" == COMPLETED || ( -z "${state}" && -f "${out}" ) ]] && break
     case "${state}" in FAILED | CANCELLED | TIMEOUT | NODE_FAIL | OUT_OF_MEMORY)
         fail "merge job ${merge_job} ended ${state}" ;;
     esac
     # afterok on a failed array leaves the merge job pending forever (DependencyNeverSatisfied)
-    if squeue -h -t all -j "${merge_job}" -o %R 2>/dev/null | grep -q DependencyNeverSatisfied; then
+    if timeout 10 squeue -h -t all -j "${merge_job}" -o %R 2>/dev/null | grep -q DependencyNeverSatisfied; then
         "${CLI}" farm status "${render_job}" >&2 || true
         fail "a render task failed; merge job ${merge_job} can never run"
     fi
