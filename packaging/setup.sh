@@ -17,6 +17,7 @@ readonly REQUIRED_PACKAGES=(
     # The fuzz preset: Debian's clang and its libFuzzer/sanitizer runtimes.
     clang-14 libclang-rt-14-dev
     povray python3
+    slurm-wlm munge
 )
 
 usage() {
@@ -31,8 +32,8 @@ on later runs), then:
                 render SCENE with raystudio-cli into build/release/<scene name>.png.
                 SCENE defaults to ${DEFAULT_SCENE}.
   test          run the session tests under ThreadSanitizer (build/tsan), the scene reader's
-                fuzzer for ${CI_FUZZ_SECONDS} s (build/fuzz), then the whole test suite (ctest),
-                and exit with the status.
+                fuzzer for ${CI_FUZZ_SECONDS} s (build/fuzz), then the whole test suite (ctest)
+                and the Slurm farm test (needs root), and exit with the status.
   asan          build the unit and command-line tests with ASan + UBSan (build/asan) and
                 run them (not yet part of test: its time on CI is still to be measured).
   fuzz [SECONDS]
@@ -172,6 +173,15 @@ run_address_sanitizer_tests() {
 }
 # ---- End of ASan + UBSan ---------------------------------------------------------------------
 
+# `raystudio-cli farm` against a real single-node Slurm (munge, slurmctld, slurmd in a
+# temporary folder, loopback ports 17817/17818): a 4-part job array and its merge job must
+# give the local render's pixels. Daemons that cannot start fail it, with their logs.
+run_slurm_farm_test() {
+    say "Running the Slurm farm integration test (tests/cluster/slurm_farm_test.sh)."
+    timeout 600 bash tests/cluster/slurm_farm_test.sh build/release/app/raystudio-cli \
+        scenes/reference-room.scene.json
+}
+
 run_tests() {
     local status=0
     run_thread_sanitizer_tests || status=$?
@@ -185,6 +195,7 @@ run_tests() {
     if ((status != 0)); then return "${status}"; fi
     say "Running the test suite."
     ctest --preset release --output-on-failure || status=$?
+    run_slurm_farm_test || status=$?
     if ((status == 0)); then
         say "All tests passed."
     else

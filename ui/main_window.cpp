@@ -4,6 +4,7 @@
 #include "action_icons.h"
 #include "autosave.h"
 #include "background_jobs.h"
+#include "cluster_submit_dialog.h"
 #include "command_shortcut_filter.h"
 #include "error_reporter.h"
 #include "material_list.h"
@@ -244,6 +245,8 @@ void MainWindow::createMenus() {
     QAction* renderAct =
         render->addAction(tr("&Render Image..."), QKeySequence(Qt::Key_F12), this, &MainWindow::renderImageDialog);
     renderAct->setIcon(actionIcon(nullptr, "render-image"));
+    if (clusterSubmitAvailable())  // only where Slurm's client is installed
+        render->addAction(tr("Submit to &Cluster..."), this, &MainWindow::submitToClusterDialog);
     render->addAction(tr("&Export Current Frame..."), this, &MainWindow::exportImageDialog);
     render->addAction(tr("Show Render &Window"), this, [this] {
         renderWindow_->show();

@@ -25,6 +25,7 @@ namespace rs::ui {
 
 class Autosave;
 class MaterialList;
+class ClusterSubmitDialog;
 class OutlinerView;
 class PropertyPanel;
 class RenderQueue;
@@ -58,6 +59,10 @@ public:
     /// status bar; closing the window cancels it. A render estimated over the cost budget
     /// (integrator/cost_estimate.h) is queued only if the user confirms; false when it is not.
     bool renderImage(const QString& path, int width, int height);
+    /// Render -> Submit to Cluster...: once the scene is saved (the nodes read the file, so an
+    /// unsaved or modified scene is saved first, if the user agrees), opens the non-modal
+    /// farm-submit dialog and returns it; null when the scene was not saved.
+    ClusterSubmitDialog* submitToClusterDialog();
     /// Overrides the render size of the open document without an undo step (tests).
     void setRenderSize(int width, int height);
     /// Opens the (non-modal) preferences dialog and returns it.

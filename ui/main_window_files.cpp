@@ -3,6 +3,7 @@
 
 #include "autosave.h"
 #include "background_jobs.h"
+#include "cluster_submit_dialog.h"
 #include "display_frame.h"
 #include "error_reporter.h"
 #include "image/image_io.h"
@@ -208,6 +209,21 @@ void MainWindow::renderImageDialog() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Render Image To"), QString(), kImageFilter);
     if (path.isEmpty()) return;
     renderImage(path, width->value(), height->value());
+}
+
+ClusterSubmitDialog* MainWindow::submitToClusterDialog() {
+    if (editor_->filePath().isEmpty() || !editor_->undoStack()->isClean()) {
+        if (!confirm(this, tr("Submit to Cluster"),
+                     tr("The cluster's nodes render the scene file, not the open document. "
+                        "Save the scene first?")) ||
+            !save())
+            return nullptr;
+    }
+    const SceneDocument& doc = editor_->document();
+    auto* dialog = new ClusterSubmitDialog(editor_->filePath(), doc.render.width, doc.render.height, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+    return dialog;
 }
 
 bool MainWindow::renderImage(const QString& path, int width, int height) {

@@ -12,6 +12,8 @@ int runRender(int argc, char** argv);
 int runValidate(int argc, char** argv);
 int runBench(int argc, char** argv);
 int runDrag(int argc, char** argv);
+int runMerge(int argc, char** argv);
+int runFarm(int argc, char** argv);
 
 /// Loads a scene for a command; prints every error to stderr and returns false on failure.
 bool loadSceneOrReport(const std::string& path, SceneDocument& doc);

@@ -32,6 +32,17 @@ const char* const kUsage =
     "             [--min-weight W] [--shadow-samples N] [--supersampling N]\n"
     "             [--engine embree|builtin]\n"
     "      drag an object through the interactive session, refine, compare with a full render\n"
+    "  render SCENE --tile I/N -o PART.exr [--ids] [render options]\n"
+    "      render part I of N (0-based band of rows) into a linear EXR that records its place\n"
+    "      in the image and a fingerprint of the scene and settings\n"
+    "  merge PART... -o OUT\n"
+    "      merge every part of one render into OUT, bit-identical to a one-machine render;\n"
+    "      refuses missing, doubled and foreign parts\n"
+    "  farm submit SCENE -o OUT --parts N [--partition P] [--time T] [--cpus-per-task C]\n"
+    "              [--dry-run] [render options]\n"
+    "      render on a Slurm cluster: a job array of N parts and a merge job (sbatch)\n"
+    "  farm status JOB\n"
+    "      progress of a submitted job (squeue, sacct)\n"
     "\n"
     "results go to stdout, errors to stderr; exit codes: 0 success, 2 bad input or usage,\n"
     "1 any other failure\n";
@@ -49,6 +60,8 @@ int main(int argc, char** argv) {
         if (command == "validate") return rs::cli::runValidate(argc, argv);
         if (command == "bench") return rs::cli::runBench(argc, argv);
         if (command == "drag") return rs::cli::runDrag(argc, argv);
+        if (command == "merge") return rs::cli::runMerge(argc, argv);
+        if (command == "farm") return rs::cli::runFarm(argc, argv);
         if (command == "--version") {
             std::puts("raystudio-cli " RAYSTUDIO_VERSION_STRING);
             return 0;

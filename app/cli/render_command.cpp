@@ -1,22 +1,51 @@
-// `raystudio-cli render`: one scene to one image file, with optional JSON stats.
+// `raystudio-cli render`: one scene to one image file (or one part of it), with optional JSON stats.
 #include "arguments.h"
 #include "commands.h"
 #include "progress_bar.h"
 
 #include "image/image_io.h"
+#include "image/part_file.h"
 #include "integrator/cost_estimate.h"
+#include "integrator/image_part.h"
 #include "integrator/renderer.h"
+#include "io/render_fingerprint.h"
 
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <tbb/info.h>
 
 namespace rs::cli {
+
+namespace {
+
+bool exrPath(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".exr";
+}
+
+/// What part `part` of `doc`'s image says about itself in its file.
+PartHeader partHeader(const SceneDocument& doc, EngineKind engine, const ImagePart& part) {
+    PartHeader header;
+    header.part = part;
+    header.fullWidth = doc.render.width;
+    header.fullHeight = doc.render.height;
+    header.rows = partRows(part, doc.render.height);
+    header.fingerprint = renderFingerprint(doc, engine);
+    header.tonemap = doc.render.tonemap;
+    header.exposure = doc.render.exposure;
+    return header;
+}
+
+}  // namespace
 
 int runRender(int argc, char** argv) {
     OptionSpec spec;
     spec.valued = {"--output",     "--width",          "--height",        "--max-depth",
                    "--min-weight", "--shadow-samples", "--supersampling", "--threads", "--engine"};
-    spec.flags = {"--stats", "--force"};
+    spec.valued.insert("--tile");
+    spec.flags = {"--stats", "--force", "--ids"};
     spec.aliases = {{"-o", "--output"}};
     Arguments args(argc, argv, 2, spec);
     if (args.positional().size() != 1)
@@ -27,12 +56,33 @@ int runRender(int argc, char** argv) {
     options.threads = args.intValue("--threads", 1, 1024).value_or(0);
     options.ids = false;  // only the image is written
 
+    if (args.has("--ids") && !args.has("--tile"))
+        throw UsageError{"--ids is for parts (render --tile I/N --ids -o PART.exr)"};
+    ImagePart part;
+    if (auto tile = args.value("--tile")) {
+        std::string error;
+        if (!parseImagePart(*tile, part, error)) throw UsageError{"--tile " + error};
+        if (!exrPath(*output))
+            throw UsageError{"a part is written as linear EXR: -o must name a .exr file, got '" +
+                             *output + "'"};
+    }
+
     SceneDocument doc;
     if (!loadSceneOrReport(args.positional()[0], doc)) return 2;
     applyRenderOverrides(args, doc.render);
+    if (args.has("--tile")) {
+        if (const std::string bad = partError(part, doc.render.height); !bad.empty())
+            throw UsageError{"--tile " + bad};
+        const RowRange rows = partRows(part, doc.render.height);
+        options.firstRow = rows.begin;
+        options.endRow = rows.end;
+        options.ids = args.has("--ids");
+    }
     // Before compiling or allocating anything: a typo'd depth or sample count should cost a
-    // message, not an afternoon.
-    if (const std::string over = budgetExceeded(estimateCost(doc)); !over.empty() && !args.has("--force")) {
+    // message, not an afternoon. A part is held to its own share of the work.
+    SceneDocument costed = doc;
+    if (options.endRow >= 0) costed.render.height = options.endRow - options.firstRow;
+    if (const std::string over = budgetExceeded(estimateCost(costed)); !over.empty() && !args.has("--force")) {
         std::fprintf(stderr, "raystudio-cli render: %s; pass --force to render it anyway\n",
                      over.c_str());
         return 2;
@@ -44,7 +94,12 @@ int runRender(int argc, char** argv) {
     RenderResult result = renderImage(scene, options);
 
     std::string error;
-    if (!writeImage(*output, result.image, doc.render.tonemap, doc.render.exposure, error)) {
+    const bool written =
+        args.has("--tile")
+            ? writePart(*output, partHeader(doc, engineOption(args), part), result.image,
+                        result.ids, error)
+            : writeImage(*output, result.image, doc.render.tonemap, doc.render.exposure, error);
+    if (!written) {
         std::fprintf(stderr, "raystudio-cli render: %s\n", error.c_str());
         return 2;
     }

@@ -5,14 +5,13 @@
 #include <OpenImageIO/strutil.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cstdint>
 #include <filesystem>
-#include <random>
 #include <system_error>
 #include <vector>
 
+#include "image/temporary_file.h"
 #include "image/tonemap.h"
 
 namespace rs {
@@ -43,24 +42,6 @@ bool kindForExtension(const std::string& ext, FileKind& kind) {
         return true;
     }
     return false;
-}
-
-/// A sibling of `path` that no concurrent writer picks: same folder (so the final rename is
-/// atomic on one file system) and same extension (so OIIO picks the same format for it).
-fs::path temporarySibling(const fs::path& path) {
-    static std::atomic<unsigned> counter{0};
-    static const unsigned seed = std::random_device{}();
-    // Built with append rather than "." + string: GCC 12 warns (-Wrestrict) on that form.
-    std::string name(".");
-    name.append(path.stem().string());
-    name.append(".tmp-");
-    name.append(std::to_string(seed));
-    name.append("-");
-    name.append(std::to_string(counter++));
-    name.append(path.extension().string());
-    fs::path tmp = path;
-    tmp.replace_filename(name);
-    return tmp;
 }
 
 std::string oiioError(const std::string& message) {
@@ -116,15 +97,20 @@ bool writeWithOiio(const std::string& path, const fs::path& tmp, const ImageRgb&
 
 }  // namespace
 
+std::string imageFormatError(const std::string& path) {
+    FileKind kind;
+    const std::string ext = lowerExtension(path);
+    if (kindForExtension(ext, kind)) return {};
+    return "cannot write '" + path + "': " +
+           (ext.empty() ? std::string("no file extension") : "unsupported extension '" + ext + "'") +
+           " (supported: " + kSupportedExtensions + ")";
+}
+
 bool writeImage(const std::string& path, const ImageRgb& image, ToneMap op, float exposure,
                 std::string& error) {
     FileKind kind;
-    const std::string ext = lowerExtension(path);
-    if (!kindForExtension(ext, kind)) {
-        error = "cannot write '" + path + "': " +
-                (ext.empty() ? std::string("no file extension")
-                             : "unsupported extension '" + ext + "'") +
-                " (supported: " + kSupportedExtensions + ")";
+    if (!kindForExtension(lowerExtension(path), kind)) {
+        error = imageFormatError(path);
         return false;
     }
     if (image.width <= 0 || image.height <= 0 ||

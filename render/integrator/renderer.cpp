@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <mutex>
 
@@ -74,17 +75,17 @@ bool supersamplePixels(const TraceKernel& kernel, const int32_t* xs, const int32
 }
 
 bool needsSupersampling(const Color* colors, const ObjectId* ids, const Vec3* normals, int width,
-                        int height, int x, int y) {
+                        int height, int x, int y, int bufferRow) {
     constexpr float kNormalCos = 0.95f;
     constexpr float kColorDelta = 0.1f;
     const std::size_t w = std::size_t(width);
-    const std::size_t i = std::size_t(y) * w + std::size_t(x);
+    const std::size_t i = std::size_t(y - bufferRow) * w + std::size_t(x);
     const Color c = glm::min(colors[i], Color(1.0f));
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
             const int nx = x + dx, ny = y + dy;
             if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-            const std::size_t j = std::size_t(ny) * w + std::size_t(nx);
+            const std::size_t j = std::size_t(ny - bufferRow) * w + std::size_t(nx);
             if (ids[j] != ids[i]) return true;
             if (glm::dot(normals[j], normals[i]) < kNormalCos) return true;
             const Color d = glm::abs(glm::min(colors[j], Color(1.0f)) - c);
@@ -96,13 +97,13 @@ bool needsSupersampling(const Color* colors, const ObjectId* ids, const Vec3* no
 
 namespace {
 
-/// Runs `body(x0, y0, x1, y1, counters)` over all tiles in parallel, with cancellation and
-/// progress; returns false when cancelled.
+/// Runs `body(x0, y0, x1, y1, counters)` over all tiles of rows [rowBegin, rowEnd) in
+/// parallel, with cancellation and progress; returns false when cancelled.
 template <class Body>
-bool forEachTile(int width, int height, const RenderOptions& options, uint64_t& rays,
-                 Body&& body) {
+bool forEachTile(int width, int rowBegin, int rowEnd, const RenderOptions& options,
+                 uint64_t& rays, Body&& body) {
     const int ts = std::max(1, options.tileSize);
-    const int tilesX = (width + ts - 1) / ts, tilesY = (height + ts - 1) / ts;
+    const int tilesX = (width + ts - 1) / ts, tilesY = (rowEnd - rowBegin + ts - 1) / ts;
     const int total = tilesX * tilesY;
     std::atomic<int> done{0};
     std::atomic<uint64_t> rayCount{0};
@@ -112,8 +113,8 @@ bool forEachTile(int width, int height, const RenderOptions& options, uint64_t& 
             for (int ty = r.rows().begin(); ty != r.rows().end(); ++ty) {
                 for (int tx = r.cols().begin(); tx != r.cols().end(); ++tx) {
                     TraceCounters counters;
-                    const int x0 = tx * ts, y0 = ty * ts;
-                    body(x0, y0, std::min(width, x0 + ts), std::min(height, y0 + ts), counters);
+                    const int x0 = tx * ts, y0 = rowBegin + ty * ts;
+                    body(x0, y0, std::min(width, x0 + ts), std::min(rowEnd, y0 + ts), counters);
                     rayCount.fetch_add(counters.total(), std::memory_order_relaxed);
                     const int d = done.fetch_add(1) + 1;
                     if (options.progress) {
@@ -148,6 +149,15 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
     const bool adaptive = settings.adaptiveSupersampling && spp > 1;
     const CameraModel& camera = scene.camera();
     const TraceKernel kernel(scene, TraceOptions::fromSettings(settings));
+    // The band asked for, and the rows traced in pass 1: adaptive decisions at the band's
+    // edges compare with the rows next to it, so those are traced too (and cropped at the end).
+    const int r0 = std::clamp(options.firstRow, 0, h);
+    const int r1 = options.endRow < 0 ? h : std::clamp(options.endRow, r0, h);
+    const int t0 = adaptive ? std::max(0, r0 - 1) : r0;
+    const int t1 = adaptive ? std::min(h, r1 + 1) : r1;
+    auto index = [&](int x, int y) {
+        return std::size_t(y - t0) * std::size_t(w) + std::size_t(x);
+    };
     const std::function<bool()> cancelled = [&] {
         return options.cancel && options.cancel->load(std::memory_order_relaxed);
     };
@@ -155,15 +165,15 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
     // Pass 1 writes every pixel (tiles skipped on cancellation are cleared), so the buffers
     // are not cleared first: that would touch 15 MB at 1280x720 before any tracing.
     RenderResult result;
-    result.image = ImageRgb::uninitialized(w, h);
-    const std::size_t pixelCount = std::size_t(w) * std::size_t(h);
+    result.image = ImageRgb::uninitialized(w, t1 - t0);
+    const std::size_t pixelCount = result.image.pixels.size();
     std::vector<ObjectId> ids;  // adaptive supersampling reads them even when not asked for
     if (options.ids || adaptive) ids.resize(pixelCount);
     std::vector<Vec3> normals(adaptive ? pixelCount : 0);
     auto clearTile = [&](int x0, int x1, int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
-                const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                const std::size_t i = index(x, y);
                 result.image.pixels[i] = Color(0.0f);
                 if (!ids.empty()) ids[i] = kNoObject;
             }
@@ -174,7 +184,7 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
     arenaExecute(arena, [&] {
         // Pass 1: one centre sample per pixel (all the image needs without supersampling), or
         // the full pattern when supersampling everywhere. Ids come from the centre ray.
-        result.cancelled = !forEachTile(w, h, options, result.rays,
+        result.cancelled = !forEachTile(w, t0, t1, options, result.rays,
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
                 thread_local std::vector<int32_t> xs, ys;
                 thread_local std::vector<Vec3> origins, dirs;
@@ -213,38 +223,45 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
                 }
                 if (!done) return clearTile(x0, x1, y0, y1);
                 for (std::size_t k = 0; k < n; ++k) {
-                    const std::size_t i = std::size_t(ys[k]) * std::size_t(w) + std::size_t(xs[k]);
+                    const std::size_t i = index(xs[k], ys[k]);
                     result.image.pixels[i] = colors[k];
                     if (!ids.empty()) ids[i] = infos[k].id;
                     if (adaptive) normals[i] = infos[k].normal;
                 }
-                if (options.tileDone) options.tileDone(result.image, x0, y0, x1, y1);
+                if (options.tileDone) options.tileDone(result.image, x0, y0 - t0, x1, y1 - t0);
             });
-        if (!adaptive || result.cancelled) {
-            if (options.ids) result.ids = std::move(ids);
-            return;
-        }
+        if (!adaptive || result.cancelled) return;
         // Pass 2: supersample only where neighbours differ; decisions read pass 1's image,
         // so they are written to a copy.
         ImageRgb refined = result.image;
-        result.cancelled = !forEachTile(w, h, options, result.rays,
+        result.cancelled = !forEachTile(w, r0, r1, options, result.rays,
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
                 thread_local std::vector<int32_t> xs, ys;
                 thread_local std::vector<Color> colors;
                 if (cancelled()) return;
                 tilePixels(x0, y0, x1, y1, xs, ys, [&](int x, int y) {
                     return needsSupersampling(result.image.pixels.data(), ids.data(),
-                                              normals.data(), w, h, x, y);
+                                              normals.data(), w, h, x, y, t0);
                 });
                 colors.resize(xs.size());
                 if (!supersamplePixels(kernel, xs.data(), ys.data(), xs.size(), spp,
                                        colors.data(), counters, cancelled))
                     return;
-                for (std::size_t k = 0; k < xs.size(); ++k) refined.at(xs[k], ys[k]) = colors[k];
+                for (std::size_t k = 0; k < xs.size(); ++k)
+                    refined.at(xs[k], ys[k] - t0) = colors[k];
             });
         result.image = std::move(refined);
-        if (options.ids) result.ids = std::move(ids);
     });
+    if (t0 != r0 || t1 != r1) {  // drop the margin rows: only the band was asked for
+        const std::size_t first = index(0, r0), count = std::size_t(w) * std::size_t(r1 - r0);
+        ImageRgb band = ImageRgb::uninitialized(w, r1 - r0);
+        std::copy_n(result.image.pixels.begin() + std::ptrdiff_t(first), count, band.pixels.begin());
+        result.image = std::move(band);
+        if (options.ids)
+            ids = std::vector<ObjectId>(ids.begin() + std::ptrdiff_t(first),
+                                        ids.begin() + std::ptrdiff_t(first + count));
+    }
+    if (options.ids) result.ids = std::move(ids);
     result.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count();
     return result;

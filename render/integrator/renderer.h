@@ -28,6 +28,13 @@ struct RenderOptions {
     /// pass wrote tile [x0, x1) x [y0, y1) of `image`, so a viewer can show the image filling
     /// in; other tiles of `image` are being written meanwhile. May be empty.
     std::function<void(const ImageRgb& image, int x0, int y0, int x1, int y1)> tileDone;
+    /// Render only image rows [firstRow, endRow) (a part, integrator/image_part.h); endRow < 0
+    /// means to the last row. Every pixel gets the value a whole-image render gives it: seeds
+    /// depend on the pixel alone, and adaptive decisions read a one-row margin traced around
+    /// the band. RenderResult's image and ids then hold the band's rows only, and tileDone's
+    /// `image` and rows are those of the traced rows (margin included).
+    int firstRow = 0;
+    int endRow = -1;
 };
 
 /// A finished (or cancelled) render.
@@ -56,11 +63,13 @@ bool supersamplePixels(const TraceKernel& kernel, const int32_t* xs, const int32
                        const std::function<bool()>& stale = {});
 
 /// True when the 1-sample pixel at (x, y) differs from a neighbour in object id, normal or
-/// colour enough to deserve adaptive supersampling.
+/// colour enough to deserve adaptive supersampling. The buffers are `width` wide and start at
+/// image row `bufferRow`; they must hold every row of the image within one of y (the image is
+/// `height` rows; neighbours outside it are ignored).
 bool needsSupersampling(const Color* colors, const ObjectId* ids, const Vec3* normals, int width,
-                        int height, int x, int y);
+                        int height, int x, int y, int bufferRow = 0);
 
-/// Renders the whole image at the scene's render settings.
+/// Renders the whole image (or options' rows of it) at the scene's render settings.
 RenderResult renderImage(const CompiledScene& scene, const RenderOptions& options = {});
 
 }  // namespace rs

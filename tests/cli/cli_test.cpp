@@ -1,4 +1,6 @@
 // raystudio-cli as a user runs it: exit codes 0/1/2, messages that name the problem, outputs.
+#include "cli_run.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -22,37 +24,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CliRun {
-    int exitCode;     ///< -1 when the process died from a signal; 124 when it hung.
-    std::string out;  ///< stdout: results only.
-    std::string err;  ///< stderr: messages, usage, progress.
-};
-
-std::string readAll(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
-/// Runs the CLI with `args` (shell words), capturing stdout and stderr apart. A run that
-/// takes over `timeoutS` seconds is killed: nothing the CLI is given may make it hang.
-CliRun cli(const std::string& args, int timeoutS = 120) {
-    static int calls = 0;
-    const fs::path errFile = fs::temp_directory_path() / ("raystudio-cli-test-stderr-" +
-                                                          std::to_string(getpid()) + "-" +
-                                                          std::to_string(++calls));
-    const std::string cmd = "timeout " + std::to_string(timeoutS) + " '" + RAYSTUDIO_CLI + "' " +
-                            args + " 2>'" + errFile.string() + "'";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    CliRun run{-1, {}, {}};
-    std::array<char, 4096> buf;
-    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) run.out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.err = readAll(errFile);
-    fs::remove(errFile);
-    return run;
-}
 
 class CliTest : public ::testing::Test {
 protected:
