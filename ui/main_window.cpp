@@ -178,6 +178,13 @@ void MainWindow::createMenus() {
     for (int i = 0; i < 3; ++i)
         edit->addAction(gestures[i].first, QKeySequence(gestureKeys[i]), viewport_,
                         [this, kind = gestures[i].second] { viewport_->beginTransform(kind); });
+    // The gizmo's and G/R/S axis locks' orientation (Blender's Global / Local).
+    QAction* local = edit->addAction(tr("&Local Axes"), viewport_, &Viewport::setLocalOrientation);
+    local->setObjectName(QStringLiteral("localAxes"));
+    local->setCheckable(true);
+    local->setStatusTip(tr("Gizmo and axis locks along the active object's own axes"));
+    edit->addSeparator();
+    edit->addAction(tr("&Box Select"), QKeySequence(Qt::Key_B), viewport_, &Viewport::beginBoxSelect);
     edit->addSeparator();
     edit->addAction(tr("&Preferences..."), QKeySequence::Preferences, this, &MainWindow::showPreferences);
 
@@ -188,6 +195,10 @@ void MainWindow::createMenus() {
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Frame Selection"), QKeySequence(Qt::Key_F), viewport_, &Viewport::frameSelection);
+    QAction* gizmo = view->addAction(tr("Show &Gizmo"), viewport_, &Viewport::setGizmoVisible);
+    gizmo->setObjectName(QStringLiteral("showGizmo"));
+    gizmo->setCheckable(true);
+    gizmo->setChecked(viewport_->gizmoVisible());
     view->addSeparator();
     // Navigation moves the view camera only; these two are the bridges to the scene camera
     // (Blender's Numpad 0 and Ctrl+Alt+Numpad 0).

@@ -313,7 +313,7 @@ void DesignerTest::debugViews_ProduceImages() {
     for (ViewMode m : {ViewMode::Color, ViewMode::ObjectIds, ViewMode::Normals, ViewMode::Depth,
                        ViewMode::Cost, ViewMode::Retraced}) {
         window_->viewport()->setViewMode(m);
-        const QImage img = viewportImage(*frame, m, kNoObject);
+        const QImage img = viewportImage(*frame, m, {});
         QCOMPARE(img.size(), QSize(160, 90));
     }
     // Hashed id colours tell neighbouring objects apart.
