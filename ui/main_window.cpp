@@ -88,6 +88,9 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+    // A gesture still running would end (focus lost) when the viewport goes, after the
+    // session it edits through.
+    viewport_->cancelInteraction();
     // Before the session and the widgets a job reports to go.
     renders_->cancelAll();
     cancelJobs(this);

@@ -78,6 +78,9 @@ public:
     bool localOrientation() const { return localAxes_; }
     /// B: the next left-button drag draws a selection box, even over an object.
     void beginBoxSelect();
+    /// Cancels a running drag or gesture (the window closes while one runs: its edits must
+    /// reach the session before the session goes).
+    void cancelInteraction();
     /// The mapping from widget points to view rays for the frame shown now.
     ViewProjection projection() const;
 

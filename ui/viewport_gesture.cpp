@@ -90,6 +90,13 @@ void Viewport::finishGesture(bool cancel) {
     syncModal();
 }
 
+void Viewport::cancelInteraction() {
+    if (gesture_) finishGesture(true);
+    if (drag_ != Drag::None) finishDrag(true);
+    boxArmed_ = false;
+    syncModal();
+}
+
 void Viewport::abandonDrag() {
     const bool interacting = gesture_ || drag_ == Drag::Object;
     gesture_.reset();

@@ -258,6 +258,22 @@ void GizmoTest::boxSelect_SelectsTheBallsWhoseCentresAreInside() {
     QVERIFY(doc().sameContent(before));  // Nothing moved, no walls taken.
     QCOMPARE(editor()->undoStack()->count(), 0);
 
+    // A box about the whole image takes every ball and the light, never a wall.
+    QTest::keyClick(viewport(), Qt::Key_B);
+    const QRect all(QPoint(1, 1), QPoint(viewport()->width() - 2, viewport()->height() - 2));
+    drag(viewport(), all.topLeft(), all.bottomRight());
+    int balls = 0;
+    for (const Object& o : doc().objects) {
+        const auto p = view.project(*entityCentre(doc(), o.id));
+        const bool inside = !std::holds_alternative<PlaneGeometry>(o.geometry) && p &&
+                            all.contains(p->toPoint());
+        balls += inside;
+        QVERIFY2(editor()->isSelected(o.id) == inside, o.name.c_str());
+    }
+    QVERIFY(balls >= 5);
+    QVERIFY(editor()->isSelected(doc().lights.front().id));
+    editor()->setSelection(expected);
+
     // Shift adds a box's contents to the selection: the light's glyph this time.
     const QPointF light = viewport()->lightGlyphs().front().centre;
     QTest::keyClick(viewport(), Qt::Key_B);
