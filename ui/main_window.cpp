@@ -6,6 +6,7 @@
 #include "background_jobs.h"
 #include "command_shortcut_filter.h"
 #include "error_reporter.h"
+#include "material_list.h"
 #include "outliner_view.h"
 #include "property_panel.h"
 #include "render_queue.h"
@@ -126,6 +127,16 @@ void MainWindow::createActions() {
     light(tr("Point light"), LightType::Point, "add-point-light");
     light(tr("Sphere light"), LightType::Sphere, "add-sphere-light");
     for (QAction* a : addActions_) a->setObjectName(QStringLiteral("add ") + a->text());
+
+    // Placement (issue 11): new objects rest on the surface under the view centre, or with
+    // this on, on the floor below that point. Kept across sessions.
+    snapToFloorAct_ = new QAction(tr("Snap New Objects to &Floor"), this);
+    snapToFloorAct_->setObjectName(QStringLiteral("snapToFloor"));
+    snapToFloorAct_->setCheckable(true);
+    snapToFloorAct_->setStatusTip(tr("New objects rest on the surface below where you look"));
+    snapToFloorAct_->setChecked(QSettings().value(QStringLiteral("placement/snapToFloor")).toBool());
+    connect(snapToFloorAct_, &QAction::toggled, this,
+            [](bool on) { QSettings().setValue(QStringLiteral("placement/snapToFloor"), on); });
 }
 
 void MainWindow::createDocks() {
@@ -139,6 +150,11 @@ void MainWindow::createDocks() {
     right->setObjectName(QStringLiteral("propertiesDock"));
     right->setWidget(properties_);
     addDockWidget(Qt::RightDockWidgetArea, right);
+    materials_ = new MaterialList(editor_, this);
+    auto* materialsDock = new QDockWidget(tr("Materials"), this);
+    materialsDock->setObjectName(QStringLiteral("materialsDock"));
+    materialsDock->setWidget(materials_);
+    addDockWidget(Qt::RightDockWidgetArea, materialsDock);
 }
 
 void MainWindow::createMenus() {
@@ -195,6 +211,8 @@ void MainWindow::createMenus() {
     add->addActions(addActions_.mid(0, 5));
     add->addSeparator();
     add->addActions(addActions_.mid(5));
+    add->addSeparator();
+    add->addAction(snapToFloorAct_);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Frame Selection"), QKeySequence(Qt::Key_F), viewport_, &Viewport::frameSelection);

@@ -2,13 +2,15 @@
 // actions, menus, toolbar, status bar, file handling and settings.
 #pragma once
 
+#include "placement.h"
 #include "preferences.h"
 #include "scene_edits.h"
 
 #include <QMainWindow>
+#include <QPoint>
 
-#include <functional>
 #include <memory>
+#include <optional>
 
 class QAction;
 class QDialog;
@@ -22,6 +24,7 @@ struct PassInfo;
 namespace rs::ui {
 
 class Autosave;
+class MaterialList;
 class OutlinerView;
 class PropertyPanel;
 class RenderQueue;
@@ -43,8 +46,9 @@ public:
     bool openFile(const QString& path);
     /// Saves to `path` (atomically); false and an error report on failure.
     bool saveFile(const QString& path);
-    /// Imports a mesh file (worker thread + progress dialog).
-    void importMesh(const QString& path);
+    /// Imports a mesh file (worker thread + progress dialog) onto the surface under widget
+    /// point `at` of the viewport (its centre when none), scaled to fit the view.
+    void importMesh(const QString& path, std::optional<QPoint> at = std::nullopt);
     /// Exports the current viewport frame to an image file.
     bool exportFrame(const QString& path);
     /// Queues a full-quality render of the document as it is now at width x height into
@@ -77,6 +81,7 @@ public:
     Viewport* viewport() const { return viewport_; }
     OutlinerView* outliner() const { return outliner_; }
     PropertyPanel* propertyPanel() const { return properties_; }
+    MaterialList* materialList() const { return materials_; }
     RenderQueue* renderQueue() const { return renders_; }
     RenderWindow* renderWindow() const { return renderWindow_; }
     RenderStatus* renderStatus() const { return renderStatus_; }
@@ -109,8 +114,12 @@ private:
     void updateRecentFileActions();
     void updateTitle();
     void onPassFinished(const rs::PassInfo& info);
-    /// Runs `add` on `doc` with the view camera standing in for the scene camera.
-    ObjectId inFrontOfView(SceneDocument& doc, const std::function<ObjectId()>& add) const;
+    /// Where a new object goes: the view ray through widget point `at` of the viewport (its
+    /// centre when none), cast into the session's scene.
+    Placement placementAt(std::optional<QPoint> at) const;
+    /// Places new object or light `id` of `doc` at `at`: resting on the surface there, or
+    /// on the floor below it with Add -> Snap to Floor.
+    void placeNew(SceneDocument& doc, ObjectId id, const Placement& at) const;
     void onSessionError(const QString& message);
     void addShapeAction(ShapeKind kind);
     void addLightAction(LightType type);
@@ -124,6 +133,7 @@ private:
     Viewport* viewport_;
     OutlinerView* outliner_ = nullptr;
     PropertyPanel* properties_ = nullptr;
+    MaterialList* materials_ = nullptr;
     RenderQueue* renders_ = nullptr;
     RenderWindow* renderWindow_ = nullptr;
     RenderStatus* renderStatus_ = nullptr;
@@ -131,6 +141,7 @@ private:
 
     QAction* deleteAct_ = nullptr;
     QAction* duplicateAct_ = nullptr;
+    QAction* snapToFloorAct_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QLabel* statusFrame_ = nullptr;
     QLabel* statusUps_ = nullptr;

@@ -9,10 +9,12 @@
 #include "integrator/cost_estimate.h"
 #include "io/scene_io.h"
 #include "outliner_view.h"
+#include "placement.h"
 #include "render_queue.h"
 #include "scene_file_writer.h"
 #include "scene_editor.h"
 #include "session_controller.h"
+#include "snapshot/compiled_scene.h"
 #include "user_confirmation.h"
 #include "viewport.h"
 
@@ -125,17 +127,30 @@ void MainWindow::importMeshDialog() {
     if (!path.isEmpty()) importMesh(path);
 }
 
-void MainWindow::importMesh(const QString& path) {
-    importMeshAsync(this, path, true, [this, path](const MeshLoadResult& r) {
+void MainWindow::importMesh(const QString& path, std::optional<QPoint> at) {
+    importMeshAsync(this, path, true, [this, path, at](const MeshLoadResult& r) {
         if (!r.ok()) {
             reportError(this, tr("Cannot import mesh"), QString::fromStdString(r.error));
             return;
         }
         SceneDocument doc = editor_->document();
-        const ObjectId id = inFrontOfView(
-            doc, [&] { return addMesh(doc, QFileInfo(path).absoluteFilePath().toStdString(), r.mesh); });
-        editor_->edit(tr("Import mesh"), std::move(doc));
+        const Placement place = placementAt(at);
+        const ObjectId id =
+            addMesh(doc, QFileInfo(path).absoluteFilePath().toStdString(), r.mesh, place.point);
+        // A mesh at its file's own size can swallow the view (a 150-unit spider) or vanish
+        // in it: scale it to fit, and say so; Transform -> Scale in Properties edits it.
+        const float factor = fitScale(r.mesh->bounds(), viewport_->viewCamera(), place.distance);
+        doc.findObject(id)->transform.scale = Vec3(factor);
+        placeNew(doc, id, place);
+        const QString name = QString::fromStdString(doc.findObject(id)->name);
+        editor_->edit(tr("Import %1").arg(name), std::move(doc));
         editor_->setSelection(id);
+        if (factor != 1.0f)
+            statusBar()->showMessage(
+                tr("Imported %1 scaled by %2 to fit the view (Properties: Transform, Scale)")
+                    .arg(name)
+                    .arg(double(factor), 0, 'g', 3),
+                10000);
     });
 }
 
@@ -215,24 +230,41 @@ void MainWindow::dropEvent(QDropEvent* event) {
             if (maybeSave()) openFile(path);
             break;
         }
-        importMesh(path);
+        // Dropped on the viewport: the mesh lands on the surface under the cursor.
+        const QPoint at = viewport_->mapFrom(this, event->position().toPoint());
+        importMesh(path, viewport_->rect().contains(at) ? std::optional<QPoint>(at) : std::nullopt);
     }
     event->acceptProposedAction();
 }
 
-ObjectId MainWindow::inFrontOfView(SceneDocument& doc, const std::function<ObjectId()>& add) const {
-    // New things appear in front of the camera the user is looking through, which is the
-    // view camera, not the scene camera; the document keeps its own.
-    const Camera scene = doc.camera;
-    doc.camera = viewport_->viewCamera();
-    const ObjectId id = add();
-    doc.camera = scene;
-    return id;
+Placement MainWindow::placementAt(std::optional<QPoint> at) const {
+    // New things appear where the user looks through the view camera (not the scene
+    // camera): on the surface under the viewport's centre or the cursor.
+    const Camera& view = viewport_->viewCamera();
+    const ViewProjection projection = viewport_->projection();
+    const Ray ray = projection.valid()
+                        ? projection.rayThrough(QPointF(at.value_or(viewport_->rect().center())))
+                        : Ray::make(view.position, view.target - view.position);
+    // The snapshot must hold the latest edits: its surfaces are the ones hit.
+    session_->flushUpdate();
+    const auto snapshot = session_->session().snapshot();
+    return placeAlong(snapshot.get(), ray, fallbackDistance(view));
+}
+
+void MainWindow::placeNew(SceneDocument& doc, ObjectId id, const Placement& at) const {
+    restOn(doc, id, at);
+    if (!snapToFloorAct_->isChecked() || !doc.findObject(id)) return;
+    const Vec3 up = doc.camera.up;
+    const float len = glm::length(up);
+    const auto snapshot = session_->session().snapshot();
+    snapToFloor(doc, id, snapshot.get(), len > 1e-6f ? up / len : Vec3(0.0f, 1.0f, 0.0f));
 }
 
 void MainWindow::addShapeAction(ShapeKind kind) {
     SceneDocument doc = editor_->document();
-    const ObjectId id = inFrontOfView(doc, [&] { return addShape(doc, kind); });
+    const Placement place = placementAt(std::nullopt);
+    const ObjectId id = addShape(doc, kind, place.point);
+    placeNew(doc, id, place);
     const QString text = tr("Add %1").arg(QString::fromStdString(doc.findObject(id)->name));
     editor_->edit(text, std::move(doc));
     editor_->setSelection(id);
@@ -240,7 +272,9 @@ void MainWindow::addShapeAction(ShapeKind kind) {
 
 void MainWindow::addLightAction(LightType type) {
     SceneDocument doc = editor_->document();
-    const ObjectId id = inFrontOfView(doc, [&] { return addLight(doc, type); });
+    const Placement place = placementAt(std::nullopt);
+    const ObjectId id = addLight(doc, type, place.point);
+    placeNew(doc, id, place);
     const QString text = tr("Add %1").arg(QString::fromStdString(doc.findLight(id)->name));
     editor_->edit(text, std::move(doc));
     editor_->setSelection(id);

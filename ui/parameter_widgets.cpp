@@ -47,8 +47,9 @@ QWidget* row(QWidget* parent, QHBoxLayout*& layout) {
 }
 
 void paintSwatch(QPushButton* b, const Vec3& c) {
-    const QColor q = QColor::fromRgbF(std::clamp(c.x, 0.0f, 1.0f), std::clamp(c.y, 0.0f, 1.0f),
-                                      std::clamp(c.z, 0.0f, 1.0f));
+    // An HDR colour shows its hue: the colour divided by its value.
+    const Vec3 shown = glm::clamp(c / std::max({1.0f, c.x, c.y, c.z}), Vec3(0.0f), Vec3(1.0f));
+    const QColor q = QColor::fromRgbF(shown.x, shown.y, shown.z);
     const QString text = q.lightnessF() > 0.5 ? QStringLiteral("black") : QStringLiteral("white");
     b->setStyleSheet(QStringLiteral("background-color: %1; color: %2; min-height: 18px;").arg(q.name(), text));
     b->setText(QStringLiteral("%1, %2, %3").arg(c.x, 0, 'g', 3).arg(c.y, 0, 'g', 3).arg(c.z, 0, 'g', 3));
@@ -110,32 +111,73 @@ ParamEditor vecEditor(const ParamDescriptor& d, QWidget* parent,
     return {w, set};
 }
 
+/// Largest component: the colour's value (HSV), which HDR colours take beyond 1.
+float valueOf(const Vec3& c) { return std::max({c.x, c.y, c.z}); }
+
+/// `c` rescaled so that its value is `v` (a grey of `v` for black).
+Vec3 withValue(const Vec3& c, float v) {
+    const float m = valueOf(c);
+    return m > 0.0f ? c * (v / m) : Vec3(v);
+}
+
+/// A colour button (QColorDialog, which clamps to 1, edits the colour divided by its HDR
+/// multiplier max(1, value)) and a value spin box that goes beyond 1. While the dialog is
+/// open the colour shown in it is previewed; Cancel puts the old one back, OK is one edit.
 ParamEditor colorEditor(const ParamDescriptor& d, QWidget* parent,
-                        std::function<void(const ParamValue&)> onChange) {
-    auto* button = new QPushButton(parent);
-    auto value = std::make_shared<Vec3>(0.0f);
+                        std::function<void(const ParamValue&)> onChange, ParamPreview onPreview) {
+    QHBoxLayout* layout;
+    QWidget* w = row(parent, layout);
+    auto* button = new QPushButton(w);
+    button->setObjectName(QStringLiteral("colorButton"));
+    auto* value = new QDoubleSpinBox(w);
+    value->setObjectName(QStringLiteral("colorValue"));
+    value->setRange(0.0, d.max);
+    value->setSingleStep(0.1);
+    value->setDecimals(3);
+    value->setKeyboardTracking(false);
+    value->setPrefix(QStringLiteral("× "));
+    value->setToolTip(QObject::tr("Value: the largest component; beyond 1 for HDR colours"));
+    layout->addWidget(button, 3);
+    layout->addWidget(value, 1);
+    auto colour = std::make_shared<Vec3>(0.0f);
     QObject::connect(button, &QPushButton::clicked, button, [=] {
-        const Vec3 c = glm::clamp(*value, Vec3(0.0f), Vec3(1.0f));
-        const QColor chosen = QColorDialog::getColor(QColor::fromRgbF(c.x, c.y, c.z), button,
-                                                     QString::fromStdString(d.label));
-        if (!chosen.isValid()) return;
-        onChange(Vec3(float(chosen.redF()), float(chosen.greenF()), float(chosen.blueF())));
+        const float scale = std::max(1.0f, valueOf(*colour));
+        const Vec3 base = glm::clamp(*colour / scale, Vec3(0.0f), Vec3(1.0f));
+        const QColor initial = QColor::fromRgbF(base.x, base.y, base.z);
+        auto hdr = [scale](const QColor& q) {
+            return Vec3(float(q.redF()), float(q.greenF()), float(q.blueF())) * scale;
+        };
+        QColorDialog dialog(initial, button);
+        dialog.setWindowTitle(QString::fromStdString(d.label));
+        dialog.setOption(QColorDialog::DontUseNativeDialog);  // Native ones report no live colour.
+        if (onPreview)
+            QObject::connect(&dialog, &QColorDialog::currentColorChanged, &dialog,
+                             [&](const QColor& q) { onPreview(ParamValue(hdr(q))); });
+        const bool ok = dialog.exec() == QDialog::Accepted;
+        if (onPreview) onPreview(std::nullopt);
+        const QColor chosen = dialog.selectedColor();
+        if (ok && chosen.isValid() && chosen.rgb() != initial.rgb()) onChange(hdr(chosen));
     });
+    QObject::connect(value, &QDoubleSpinBox::valueChanged, w,
+                     [=](double v) { onChange(withValue(*colour, float(v))); });
     auto set = [=](const ParamValue& v) {
-        *value = std::get<Vec3>(v);
-        paintSwatch(button, *value);
+        *colour = std::get<Vec3>(v);
+        paintSwatch(button, *colour);
+        const QSignalBlocker block(value);
+        value->setValue(valueOf(*colour));
     };
-    return {button, set};
+    return {w, set};
 }
 
 }  // namespace
 
 ParamEditor makeParamEditor(const ParamDescriptor& d, QWidget* parent,
-                            std::function<void(const ParamValue&)> onChange) {
+                            std::function<void(const ParamValue&)> onChange, ParamPreview onPreview) {
     switch (d.type) {
         case ParamType::Float: return floatEditor(d, parent, std::move(onChange));
         case ParamType::Vec3: return vecEditor(d, parent, std::move(onChange));
-        case ParamType::Color: return colorEditor(d, parent, std::move(onChange));
+        case ParamType::Color:
+            return colorEditor(d, parent, std::move(onChange), std::move(onPreview));
         case ParamType::Int: {
             auto* spin = new QSpinBox(parent);
             spin->setRange(int(d.min), int(d.max));

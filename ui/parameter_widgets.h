@@ -5,6 +5,7 @@
 #include "scene/parameters.h"
 
 #include <functional>
+#include <optional>
 
 class QWidget;
 
@@ -16,8 +17,14 @@ struct ParamEditor {
     std::function<void(const ParamValue&)> setValue;
 };
 
-/// Builds the editor for `desc` as a child of `parent`; `onChange` gets every user edit.
+/// Shows a value the user is trying (a colour dialog's current colour) without an undo
+/// step; nullopt ends the try and puts the document's value back.
+using ParamPreview = std::function<void(const std::optional<ParamValue>&)>;
+
+/// Builds the editor for `desc` as a child of `parent`; `onChange` gets every user edit,
+/// `onPreview` (when set) the values a dialog tries before its OK.
 ParamEditor makeParamEditor(const ParamDescriptor& desc, QWidget* parent,
-                            std::function<void(const ParamValue&)> onChange);
+                            std::function<void(const ParamValue&)> onChange,
+                            ParamPreview onPreview = {});
 
 }  // namespace rs::ui

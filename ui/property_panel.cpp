@@ -97,9 +97,23 @@ void PropertyPanel::addSection(const QString& title, const QString& section, Par
         return true;
     };
     appliers_.emplace_back(section, apply);
+    // A dialog's live preview: the document shows the value tried, with no undo step; the
+    // end puts it back, and its OK then comes as one edit through `apply`.
+    auto preview = [this, locate](const std::string& key, const std::optional<ParamValue>& v) {
+        if (!v) {
+            editor_->endPreview();
+            editor_->closeMerge();  // OK is a step of its own, not merged into earlier edits.
+            return;
+        }
+        SceneDocument doc = editor_->document();
+        auto* target = locate(doc);
+        if (target && setParameter(*target, key, *v).empty()) editor_->preview(std::move(doc));
+    };
     for (const ParamDescriptor& d : parameters(kind)) {
         const std::string key = d.key;
-        ParamEditor pe = makeParamEditor(d, box, [apply, key](const ParamValue& v) { apply(key, v); });
+        ParamEditor pe = makeParamEditor(
+            d, box, [apply, key](const ParamValue& v) { apply(key, v); },
+            [preview, key](const std::optional<ParamValue>& v) { preview(key, v); });
         form->addRow(QString::fromStdString(d.label), pe.widget);
         refreshers_.push_back([this, locate, key, set = pe.setValue] {
             const auto* target = locate(editor_->document());

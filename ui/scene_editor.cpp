@@ -26,7 +26,20 @@ void SceneEditor::replaceDocument(SceneDocument doc) {
     Q_EMIT documentChanged();
 }
 
+void SceneEditor::preview(SceneDocument doc) {
+    if (!beforePreview_) beforePreview_ = doc_;
+    replaceDocument(std::move(doc));
+}
+
+void SceneEditor::endPreview() {
+    if (!beforePreview_) return;
+    SceneDocument before = std::move(*beforePreview_);
+    beforePreview_.reset();
+    replaceDocument(std::move(before));
+}
+
 void SceneEditor::resetDocument(SceneDocument doc, const QString& filePath) {
+    beforePreview_.reset();
     undo_.clear();
     doc_ = std::move(doc);
     selected_.clear();

@@ -8,6 +8,7 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <optional>
 #include <vector>
 
 namespace rs::ui {
@@ -34,6 +35,11 @@ public:
     void closeMerge() { ++mergeSerial_; }
     /// Replaces the document without undo (used by undo commands themselves).
     void replaceDocument(SceneDocument doc);
+    /// Shows `doc` as the document, without an undo step, until endPreview() (a colour
+    /// dialog's live preview); the first call keeps the document to go back to.
+    void preview(SceneDocument doc);
+    /// Puts back the document from before preview(); nothing when no preview runs.
+    void endPreview();
     /// Loads a new document (Open/New): clears undo history, sets the file, clears selection.
     void resetDocument(SceneDocument doc, const QString& filePath);
 
@@ -79,6 +85,7 @@ private:
     std::vector<ObjectId> selected_;
     bool cameraSelected_ = false;
     int mergeSerial_ = 0;
+    std::optional<SceneDocument> beforePreview_;
 };
 
 }  // namespace rs::ui

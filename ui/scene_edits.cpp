@@ -14,14 +14,6 @@ bool nameTaken(const SceneDocument& doc, const std::string& name) {
            std::any_of(doc.materials.begin(), doc.materials.end(), same);
 }
 
-/// A point a few units in front of the camera, where new things appear.
-Vec3 spawnPoint(const SceneDocument& doc) {
-    const Vec3 dir = doc.camera.target - doc.camera.position;
-    const float len = glm::length(dir);
-    if (len < 1e-6f) return doc.camera.target;
-    return doc.camera.position + dir / len * std::min(len, 5.0f);
-}
-
 }  // namespace
 
 std::string uniqueName(const SceneDocument& doc, const std::string& base) {
@@ -44,9 +36,8 @@ std::string uniqueName(const SceneDocument& doc, const std::string& base) {
     }
 }
 
-ObjectId addShape(SceneDocument& doc, ShapeKind kind) {
+ObjectId addShape(SceneDocument& doc, ShapeKind kind, const Vec3& p) {
     Object o;
-    const Vec3 p = spawnPoint(doc);
     switch (kind) {
         case ShapeKind::Sphere:
             o.name = uniqueName(doc, "sphere");
@@ -55,7 +46,7 @@ ObjectId addShape(SceneDocument& doc, ShapeKind kind) {
             break;
         case ShapeKind::Plane:
             o.name = uniqueName(doc, "plane");
-            o.geometry = PlaneGeometry{Vec3(p.x, p.y - 1.0f, p.z), Vec3(0, 1, 0)};
+            o.geometry = PlaneGeometry{p, Vec3(0, 1, 0)};
             break;
         case ShapeKind::Rectangle:
             o.name = uniqueName(doc, "rectangle");
@@ -71,7 +62,8 @@ ObjectId addShape(SceneDocument& doc, ShapeKind kind) {
     return doc.addObject(std::move(o));
 }
 
-ObjectId addMesh(SceneDocument& doc, const std::string& file, std::shared_ptr<const MeshData> data) {
+ObjectId addMesh(SceneDocument& doc, const std::string& file, std::shared_ptr<const MeshData> data,
+                 const Vec3& at) {
     Object o;
     std::string base = file.substr(file.find_last_of("/\\") + 1);
     base = base.substr(0, base.find('.'));
@@ -81,15 +73,15 @@ ObjectId addMesh(SceneDocument& doc, const std::string& file, std::shared_ptr<co
     g.resolvedPath = file;
     g.data = std::move(data);
     o.geometry = std::move(g);
-    o.transform.translate = spawnPoint(doc);
+    o.transform.translate = at;
     return doc.addObject(std::move(o));
 }
 
-ObjectId addLight(SceneDocument& doc, LightType type) {
+ObjectId addLight(SceneDocument& doc, LightType type, const Vec3& at) {
     Light l;
     l.type = type;
     l.name = uniqueName(doc, type == LightType::Sphere ? "sphere light" : "point light");
-    l.position = spawnPoint(doc) + Vec3(0.0f, 2.0f, 0.0f);
+    l.position = at;
     l.radius = 0.3f;
     return doc.addLight(std::move(l));
 }
@@ -170,6 +162,70 @@ std::string makeMaterialUnique(SceneDocument& doc, ObjectId id) {
     o->material = copy.name;
     doc.materials.push_back(std::move(copy));
     return o->material;
+}
+
+std::string materialNameError(const SceneDocument& doc, const std::string& current,
+                              const std::string& name) {
+    if (name.empty()) return "a material name must not be empty";
+    if (name != current && doc.findMaterial(name))
+        return "another material is already named \"" + name + "\"";
+    return {};
+}
+
+std::string addMaterial(SceneDocument& doc) {
+    Material m;
+    m.name = uniqueName(doc, "material");
+    doc.materials.push_back(m);
+    return m.name;
+}
+
+std::string duplicateMaterial(SceneDocument& doc, const std::string& name) {
+    const Material* m = doc.findMaterial(name);
+    if (!m) return {};
+    Material copy = *m;
+    copy.name = uniqueName(doc, name);
+    doc.materials.push_back(copy);
+    return copy.name;
+}
+
+std::string renameMaterial(SceneDocument& doc, const std::string& from, const std::string& to) {
+    Material* m = findMaterial(doc, from);
+    if (!m) return "there is no material \"" + from + "\"";
+    if (std::string error = materialNameError(doc, from, to); !error.empty()) return error;
+    m->name = to;
+    for (Object& o : doc.objects)
+        if (o.material == from) o.material = to;
+    return {};
+}
+
+std::string materialDeleteError(const SceneDocument& doc, const std::string& name) {
+    if (!doc.findMaterial(name)) return "there is no material \"" + name + "\"";
+    std::vector<std::string> users;
+    for (const Object& o : doc.objects)
+        if (o.material == name) users.push_back(o.name);
+    if (users.empty()) return {};
+    std::string list = "\"" + users[0] + "\"";
+    constexpr std::size_t kNamed = 3;
+    for (std::size_t i = 1; i < std::min(users.size(), kNamed); ++i) list += ", \"" + users[i] + "\"";
+    if (users.size() > kNamed) list += " and " + std::to_string(users.size() - kNamed) + " more";
+    return "\"" + name + "\" is used by " + list + "; assign those another material first";
+}
+
+std::string deleteMaterial(SceneDocument& doc, const std::string& name) {
+    if (std::string error = materialDeleteError(doc, name); !error.empty()) return error;
+    std::erase_if(doc.materials, [&](const Material& m) { return m.name == name; });
+    return {};
+}
+
+int assignMaterial(SceneDocument& doc, const std::vector<ObjectId>& ids, const std::string& name) {
+    if (!name.empty() && !doc.findMaterial(name)) return 0;
+    int changed = 0;
+    for (ObjectId id : ids)
+        if (Object* o = doc.findObject(id); o && o->material != name) {
+            o->material = name;
+            ++changed;
+        }
+    return changed;
 }
 
 }  // namespace rs::ui

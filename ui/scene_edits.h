@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace rs::ui {
 
@@ -14,12 +15,13 @@ enum class ShapeKind { Sphere, Plane, Rectangle, Box };
 
 /// A name based on `base` that no object, light or material of `doc` uses yet.
 std::string uniqueName(const SceneDocument& doc, const std::string& base);
-/// Adds a default shape in front of the camera; returns its id.
-ObjectId addShape(SceneDocument& doc, ShapeKind kind);
-/// Adds a mesh object for already loaded data; returns its id.
-ObjectId addMesh(SceneDocument& doc, const std::string& file, std::shared_ptr<const MeshData> data);
-/// Adds a point or sphere light above the camera target; returns its id.
-ObjectId addLight(SceneDocument& doc, LightType type);
+/// Adds a default shape centred at `at` (a plane through it, facing up); returns its id.
+ObjectId addShape(SceneDocument& doc, ShapeKind kind, const Vec3& at);
+/// Adds a mesh object for already loaded data, its origin at `at`; returns its id.
+ObjectId addMesh(SceneDocument& doc, const std::string& file, std::shared_ptr<const MeshData> data,
+                 const Vec3& at);
+/// Adds a point or sphere light at `at`; returns its id.
+ObjectId addLight(SceneDocument& doc, LightType type, const Vec3& at);
 /// Duplicates object or light `id` (slightly offset); returns the copy's id or kNoObject.
 ObjectId duplicate(SceneDocument& doc, ObjectId id);
 /// Removes object or light `id`; false when there is none.
@@ -36,5 +38,23 @@ int materialUsers(const SceneDocument& doc, const std::string& name);
 std::string makeMaterialUnique(SceneDocument& doc, ObjectId id);
 /// Finds a material by name for editing.
 Material* findMaterial(SceneDocument& doc, const std::string& name);
+
+// The material list (scene-format.md: names are non-empty and unique among the materials).
+/// Why `name` cannot be the name of material `current` (empty `current`: a new one); empty
+/// when it can.
+std::string materialNameError(const SceneDocument& doc, const std::string& current,
+                              const std::string& name);
+/// Adds a default material with a fresh name; returns the name.
+std::string addMaterial(SceneDocument& doc);
+/// Adds a copy of material `name` under a fresh name; returns it (empty when there is none).
+std::string duplicateMaterial(SceneDocument& doc, const std::string& name);
+/// Renames material `from` to `to` and every object that uses it; the error, or empty.
+std::string renameMaterial(SceneDocument& doc, const std::string& from, const std::string& to);
+/// Why material `name` cannot be deleted (it is used, or there is none); empty when it can.
+std::string materialDeleteError(const SceneDocument& doc, const std::string& name);
+/// Deletes material `name` when nothing uses it; the error (unchanged document), or empty.
+std::string deleteMaterial(SceneDocument& doc, const std::string& name);
+/// Gives the objects among `ids` material `name` (empty: the built-in grey); how many changed.
+int assignMaterial(SceneDocument& doc, const std::vector<ObjectId>& ids, const std::string& name);
 
 }  // namespace rs::ui

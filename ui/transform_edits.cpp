@@ -13,14 +13,28 @@ namespace rs::ui {
 
 namespace {
 
+/// The shape's own bounds, before its transform (empty for planes).
+Aabb localBounds(const Geometry& g) {
+    Aabb b;
+    if (const auto* s = std::get_if<SphereGeometry>(&g)) {
+        b.expand(s->center - Vec3(s->radius));
+        b.expand(s->center + Vec3(s->radius));
+    } else if (const auto* r = std::get_if<RectangleGeometry>(&g)) {
+        for (float su : {-1.0f, 1.0f})
+            for (float sv : {-1.0f, 1.0f}) b.expand(r->center + su * r->u + sv * r->v);
+    } else if (const auto* box = std::get_if<BoxGeometry>(&g)) {
+        b.expand(box->min);
+        b.expand(box->max);
+    } else if (const auto* m = std::get_if<MeshGeometry>(&g)) {
+        if (m->data) b = m->data->bounds();
+    }
+    return b;
+}
+
 /// The shape's own centre, before its transform.
 Vec3 localCentre(const Geometry& g) {
-    if (const auto* s = std::get_if<SphereGeometry>(&g)) return s->center;
-    if (const auto* r = std::get_if<RectangleGeometry>(&g)) return r->center;
-    if (const auto* b = std::get_if<BoxGeometry>(&g)) return 0.5f * (b->min + b->max);
-    if (const auto* m = std::get_if<MeshGeometry>(&g))
-        if (m->data && !m->data->bounds().empty()) return m->data->bounds().center();
-    return Vec3(0.0f);
+    const Aabb b = localBounds(g);
+    return b.empty() ? Vec3(0.0f) : b.center();
 }
 
 Mat4 rotationOf(const Vec3& degrees) {
@@ -42,6 +56,13 @@ std::optional<Vec3> entityCentre(const SceneDocument& doc, ObjectId id) {
     if (!o) return std::nullopt;
     if (const auto* p = std::get_if<PlaneGeometry>(&o->geometry)) return p->point;
     return Vec3(o->transform.matrix() * glm::vec4(localCentre(o->geometry), 1.0f));
+}
+
+Aabb worldBounds(const SceneDocument& doc, ObjectId id) {
+    const Object* o = doc.findObject(id);
+    if (!o) return {};
+    const Aabb local = localBounds(o->geometry);
+    return local.empty() ? local : local.transformed(o->transform.matrix());
 }
 
 Vec3 pivotOf(const SceneDocument& doc, const std::vector<ObjectId>& ids) {

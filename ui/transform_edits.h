@@ -11,6 +11,8 @@ namespace rs::ui {
 /// World centre of an object (its shape's centre through its transform; a plane's point) or
 /// a light's position; nullopt when `id` is neither.
 std::optional<Vec3> entityCentre(const SceneDocument& doc, ObjectId id);
+/// World bounds of object `id` (empty for planes, unknown ids and meshes without data).
+Aabb worldBounds(const SceneDocument& doc, ObjectId id);
 /// The point gestures act about: the mean of the entities' centres.
 Vec3 pivotOf(const SceneDocument& doc, const std::vector<ObjectId>& ids);
 /// Moves every entity by `delta`.

@@ -1,10 +1,11 @@
 // The production engine: Embree 3. Meshes are triangle scenes of their own, placed by
 // instances, so moving one re-commits only the top level; world-space spheres are Embree's
 // own (SIMD) spheres; boxes, rectangles and spheres in a frame of their own are user
-// geometry calling the project's shape tests; planes stay outside (PlaneSet).
+// geometry calling the project's shape tests; planes stay outside (FlatSet). A scene of a
+// few world spheres is answered by the flat set alone, which costs less there.
 #pragma once
 
-#include "accel/plane_set.h"
+#include "accel/flat_set.h"
 #include "accel/ray_engine.h"
 
 #include <embree3/rtcore.h>
@@ -39,7 +40,8 @@ public:
 
 private:
     SceneGeometry geometry_;
-    PlaneSet planes_;
+    FlatSet planes_;         ///< The planes, and the spheres too when flatOnly_.
+    bool flatOnly_ = false;  ///< A few world spheres only: no Embree scene is traversed.
     RTCScene scene_ = nullptr;
     unsigned userGeomID_ = RTC_INVALID_GEOMETRY_ID;
     unsigned sphereGeomID_ = RTC_INVALID_GEOMETRY_ID;

@@ -54,7 +54,7 @@ struct EngineHit {
 
 /// Answers closest-hit and any-hit queries over one SceneGeometry. Immutable once built and
 /// safe to query from any number of threads. Every engine answers with the same rule for
-/// planes (PlaneSet) and for spheres, boxes and rectangles (intersectPrimitive); meshes may
+/// planes (FlatSet) and for spheres, boxes and rectangles (intersectPrimitive); meshes may
 /// differ in the last bits of t. Answers do not depend on batch size or thread count.
 class RayEngine {
 public:

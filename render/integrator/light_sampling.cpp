@@ -17,18 +17,20 @@ void sampleLights(const CompiledScene& scene, const Vec3& p, const Vec3& n, uint
         // A point light's samples all coincide, so one stands for all of them.
         const int count = sampled ? shadowSamples : 1;
         Vec3 axisA(0.0f), axisB(0.0f);
+        uint32_t lightSeed = 0;
         if (sampled) {
             const Vec3 w = glm::normalize(light.position - p);
             axisA = glm::normalize(std::abs(w.x) > 0.9f ? glm::cross(w, Vec3(0, 1, 0))
                                                         : glm::cross(w, Vec3(1, 0, 0)));
             axisB = glm::cross(w, axisA);
+            lightSeed = hashCombine(seed, uint32_t(li) + 17u);
         }
-        const uint32_t lightSeed = hashCombine(seed, uint32_t(li) + 17u);
         LightSpan span{uint32_t(li), uint32_t(samples.size()), 0, uint32_t(count)};
+        const DiskStrata strata(count);
         for (int s = 0; s < count; ++s) {
             Vec3 q = light.position;
             if (sampled) {
-                const Vec3 d = stratifiedDiskSample(s, count, lightSeed);
+                const Vec3 d = strata.sample(s, lightSeed);
                 q += light.radius * (d.x * axisA + d.y * axisB);
             }
             Vec3 toLight = q - p;

@@ -29,11 +29,12 @@ Vec3 pixelSampleOffset(int k, int n, uint32_t seed) {
     return Vec3((float(k) + jx) / float(n), (float(row) + jy) / float(n), 0.0f);
 }
 
-Vec3 stratifiedDiskSample(int k, int n, uint32_t seed) {
+DiskStrata::DiskStrata(int n)
+    : cols(std::max(1, int(std::ceil(std::sqrt(double(n)))))), rows((n + cols - 1) / cols) {}
+
+Vec3 DiskStrata::sample(int k, uint32_t seed) const {
     // Strata on a cols x rows grid covering n (the last row may be partial), then
     // Shirley-Chiu concentric mapping keeps strata compact on the disk.
-    int cols = std::max(1, int(std::ceil(std::sqrt(double(n)))));
-    int rows = (n + cols - 1) / cols;
     float jx = hashToUnit(hashCombine(seed, uint32_t(2 * k)));
     float jy = hashToUnit(hashCombine(seed, uint32_t(2 * k + 1)));
     float sx = 2.0f * (float(k % cols) + jx) / float(cols) - 1.0f;
@@ -49,5 +50,7 @@ Vec3 stratifiedDiskSample(int k, int n, uint32_t seed) {
     }
     return Vec3(r * std::cos(phi), r * std::sin(phi), 0.0f);
 }
+
+Vec3 stratifiedDiskSample(int k, int n, uint32_t seed) { return DiskStrata(n).sample(k, seed); }
 
 }  // namespace rs

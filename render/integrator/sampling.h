@@ -32,4 +32,12 @@ Vec3 pixelSampleOffset(int k, int n, uint32_t seed);
 /// a sub-grid with hashed jitter. Used for sphere lights: the disk faces the shading point.
 Vec3 stratifiedDiskSample(int k, int n, uint32_t seed);
 
+/// stratifiedDiskSample's grid for n samples, worked out once for all k of a light.
+struct DiskStrata {
+    explicit DiskStrata(int n);
+    /// stratifiedDiskSample(k, n, seed).
+    Vec3 sample(int k, uint32_t seed) const;
+    int cols, rows;
+};
+
 }  // namespace rs

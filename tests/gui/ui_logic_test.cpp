@@ -1,6 +1,10 @@
 // The designer's Qt-free-ish logic without a window: names for duplicates, the default scene.
 #include "default_scene.h"
+#include "placement.h"
+#include "scene/parameters.h"
 #include "scene_edits.h"
+#include "snapshot/compiled_scene.h"
+#include "transform_edits.h"
 
 #include <QDir>
 #include <QFile>
@@ -35,7 +39,78 @@ private Q_SLOTS:
     void duplicate_NamesWithoutAPlainNumberGetOneAppended();
     void defaultScene_BuildTree_FoundFromAnyExecutableFolder();
     void defaultScene_Installed_PrefersShareNextToTheExecutable();
+    void materials_DeleteRefusedWhileUsed_RenameFollowsUsers_NamesValidated();
+    void placement_RestsOnTheSurfaceHit_OrSnapsToTheFloorBelow();
+    void fitScale_ScalesOnlyMeshesThatDoNotFitTheView();
 };
+
+void UiLogicTest::materials_DeleteRefusedWhileUsed_RenameFollowsUsers_NamesValidated() {
+    SceneDocument doc;
+    const std::string red = addMaterial(doc);
+    QCOMPARE(red, std::string("material"));
+    const ObjectId a = addBall(doc, "a");
+    addBall(doc, "b");
+    QCOMPARE(assignMaterial(doc, {a}, red), 1);
+    QCOMPARE(assignMaterial(doc, {a}, "no such"), 0);
+    const std::string refused = deleteMaterial(doc, red);
+    QVERIFY2(refused.find("used by \"a\"") != std::string::npos, refused.c_str());
+    QCOMPARE(doc.materials.size(), std::size_t(1));
+
+    const std::string copy = duplicateMaterial(doc, red);
+    QCOMPARE(copy, std::string("material 2"));
+    QVERIFY(renameMaterial(doc, red, copy).find("already named") != std::string::npos);
+    QVERIFY(renameMaterial(doc, red, "").find("must not be empty") != std::string::npos);
+    QCOMPARE(renameMaterial(doc, red, "a"), std::string());  // Objects are another list.
+    QCOMPARE(doc.findObject(a)->material, std::string("a"));
+    QCOMPARE(deleteMaterial(doc, copy), std::string());
+    QCOMPARE(doc.materials.size(), std::size_t(1));
+}
+
+void UiLogicTest::placement_RestsOnTheSurfaceHit_OrSnapsToTheFloorBelow() {
+    SceneDocument doc;
+    Object floor;
+    floor.name = "floor";
+    floor.geometry = PlaneGeometry{Vec3(0.0f, -2.0f, 0.0f), Vec3(0, 1, 0)};
+    doc.addObject(floor);
+    Object wall;
+    wall.name = "wall";
+    wall.geometry = PlaneGeometry{Vec3(0.0f, 0.0f, -10.0f), Vec3(0, 0, 1)};
+    doc.addObject(wall);
+    const CompiledScene scene(doc);
+
+    const Placement hit = placeAlong(&scene, Ray::make(Vec3(0.0f), Vec3(0, 0, -2)), 3.0f);
+    QVERIFY(hit.onSurface);
+    QCOMPARE(hit.distance, 10.0f);
+    QVERIFY(hit.normal == Vec3(0, 0, 1));
+    const ObjectId box = addShape(doc, ShapeKind::Box, hit.point);
+    restOn(doc, box, hit);
+    QCOMPARE(worldBounds(doc, box).min.z, -10.0f);  // Touching the wall, in front of it.
+    QVERIFY(snapToFloor(doc, box, &scene, Vec3(0, 1, 0)));
+    QCOMPARE(worldBounds(doc, box).min.y, -2.0f);
+    QCOMPARE(worldBounds(doc, box).min.z, -10.0f);
+
+    const Placement miss = placeAlong(&scene, Ray::make(Vec3(0.0f), Vec3(0, 1, 0)), 3.0f);
+    QVERIFY(!miss.onSurface);
+    QVERIFY(miss.point == Vec3(0.0f, 3.0f, 0.0f));
+}
+
+void UiLogicTest::fitScale_ScalesOnlyMeshesThatDoNotFitTheView() {
+    Camera view;  // fov 55 degrees: about 1.04 units visible per unit of distance.
+    const float visible = 2.0f * 10.0f * std::tan(glm::radians(view.fovY) / 2.0f);
+    auto cube = [](float side) {
+        Aabb b;
+        b.expand(Vec3(-side / 2));
+        b.expand(Vec3(side / 2));
+        return b;
+    };
+    QCOMPARE(fitScale(cube(2.0f), view, 10.0f), 1.0f);
+    const float big = fitScale(cube(150.0f), view, 10.0f);
+    const float share = big * glm::length(cube(150.0f).extent()) / visible;
+    QVERIFY2(std::abs(share - kFitViewShare) < 0.02f, qPrintable(QString::number(share)));
+    QVERIFY(fitScale(cube(0.001f), view, 10.0f) > 100.0f);
+    // A factor the Scale field could not show is clamped to its range.
+    QCOMPARE(fitScale(cube(1e9f), view, 10.0f), float(findParameter(ParamKind::Transform, "scale")->min));
+}
 
 void UiLogicTest::duplicate_CountsOnFromTheCopysNumber() {
     SceneDocument doc;

@@ -1,0 +1,212 @@
+// The eight-lane loops of FlatSet. Not a header: flat_set.cpp includes it twice, into
+// namespace avx2 under `#pragma GCC target("avx2")` (with RS_FLAT_AVX2 defined) and into
+// namespace baseline, so one source gives both machine codes. It touches raw arrays and its
+// own inline functions only: no template of another header is instantiated inside the AVX2
+// region, so nothing the rest of the program links to is compiled for AVX2.
+// Every expression is written in the association order of the scalar test it mirrors
+// (glm's dot is (x + y) + z): that, and -ffp-contract=off, keeps the bits equal.
+// Expects FlatView (raw tables) to be declared.
+
+constexpr int kLanes = 8;
+using F8 = float __attribute__((vector_size(32)));
+using I8 = int32_t __attribute__((vector_size(32)));
+
+inline F8 splat(float v) { return F8{v, v, v, v, v, v, v, v}; }
+inline I8 splatI(int32_t v) { return I8{v, v, v, v, v, v, v, v}; }
+inline F8 select(I8 m, F8 a, F8 b) { return m ? a : b; }
+inline I8 select(I8 m, I8 a, I8 b) { return m ? a : b; }
+
+inline F8 sqrt8(F8 x) {
+#if defined(RS_FLAT_AVX2)
+    return F8(_mm256_sqrt_ps(__m256(x)));
+#elif defined(__SSE2__)
+    __m128 lo, hi;
+    std::memcpy(&lo, &x, 16);
+    std::memcpy(&hi, reinterpret_cast<const char*>(&x) + 16, 16);
+    lo = _mm_sqrt_ps(lo);
+    hi = _mm_sqrt_ps(hi);
+    F8 r;
+    std::memcpy(&r, &lo, 16);
+    std::memcpy(reinterpret_cast<char*>(&r) + 16, &hi, 16);
+    return r;
+#else
+    F8 r;
+    for (int k = 0; k < kLanes; ++k) r[k] = std::sqrt(x[k]);
+    return r;
+#endif
+}
+
+/// Bit k set when lane k of `m` is true.
+inline unsigned bits(I8 m) {
+#if defined(RS_FLAT_AVX2)
+    return unsigned(_mm256_movemask_ps(__m256(m)));
+#elif defined(__SSE2__)
+    __m128 lo, hi;
+    std::memcpy(&lo, &m, 16);
+    std::memcpy(&hi, reinterpret_cast<const char*>(&m) + 16, 16);
+    return unsigned(_mm_movemask_ps(lo)) | (unsigned(_mm_movemask_ps(hi)) << 4);
+#else
+    unsigned b = 0;
+    for (int k = 0; k < kLanes; ++k) b |= unsigned(m[k] != 0) << k;
+    return b;
+#endif
+}
+
+/// Eight rays of a batch; a short last group repeats its last ray in the spare lanes.
+struct Rays8 {
+    F8 ox, oy, oz, dx, dy, dz, tmax;
+    int lanes;
+};
+
+inline F8 load8(const float* p, std::size_t first, int lanes) {
+    F8 v;
+    if (lanes == kLanes) {
+        std::memcpy(&v, p + first, sizeof v);
+    } else {
+        for (int k = 0; k < kLanes; ++k) v[k] = p[first + std::size_t(k < lanes ? k : lanes - 1)];
+    }
+    return v;
+}
+
+inline Rays8 loadRays(const RayBatch& r, std::size_t first) {
+    const std::size_t left = r.count - first;
+    const int lanes = left < std::size_t(kLanes) ? int(left) : kLanes;
+    return {load8(r.ox, first, lanes), load8(r.oy, first, lanes), load8(r.oz, first, lanes),
+            load8(r.dx, first, lanes), load8(r.dy, first, lanes), load8(r.dz, first, lanes),
+            load8(r.tmax, first, lanes), lanes};
+}
+
+/// intersect(PlaneShape)'s quotient (PlaneSet's distances) for one plane and eight rays.
+inline F8 planeDistance(const Rays8& r, const FlatView& v, int j) {
+    const F8 denom = r.dx * v.nx[j] + r.dy * v.ny[j] + r.dz * v.nz[j];
+    const F8 num = (v.px[j] - r.ox) * v.nx[j] + (v.py[j] - r.oy) * v.ny[j] + (v.pz[j] - r.oz) * v.nz[j];
+    return num / denom;
+}
+
+/// One sphere against eight rays: intersect(SphereShape) up to solveRecentredSphere, then
+/// its root choice with range (0, tmax). True lanes get t, the offset and f.
+struct SphereLanes {
+    F8 t, offset, fx, fy, fz;
+};
+
+inline I8 sphereHit(const Rays8& r, F8 a, const FlatView& v, int s, F8 tmax, SphereLanes& out) {
+    const float cx = v.cx[s], cy = v.cy[s], cz = v.cz[s];
+    const F8 tProj = ((cx - r.ox) * r.dx + (cy - r.oy) * r.dy + (cz - r.oz) * r.dz) / a;
+    const F8 fx = (r.ox - cx) + tProj * r.dx;
+    const F8 fy = (r.oy - cy) + tProj * r.dy;
+    const F8 fz = (r.oz - cz) + tProj * r.dz;
+    const F8 bHalf = fx * r.dx + fy * r.dy + fz * r.dz;
+    const F8 c = (fx * fx + fy * fy + fz * fz) - v.radius2[s];
+    const F8 disc = bHalf * bHalf - a * c;
+    const I8 valid = disc >= 0.0f;
+    if (!bits(valid)) return splatI(0);
+    const F8 root = sqrt8(select(valid, disc, splat(0.0f)));
+    const F8 q = select(bHalf >= 0.0f, -(bHalf + root), -(bHalf - root));
+    const I8 nonzero = q != 0.0f;
+    const F8 s0raw = q / a, s1raw = c / q;
+    const I8 swap = s0raw > s1raw;
+    const F8 s0 = select(nonzero, select(swap, s1raw, s0raw), splat(0.0f));
+    const F8 s1 = select(nonzero, select(swap, s0raw, s1raw), splat(0.0f));
+    const F8 t0 = tProj + s0, t1 = tProj + s1;
+    const I8 nearHit = valid & (t0 > 0.0f) & (t0 < tmax);
+    const I8 farHit = valid & ~nearHit & (t1 > 0.0f) & (t1 < tmax);
+    out.t = select(nearHit, t0, t1);
+    out.offset = select(nearHit, s0, s1);
+    out.fx = fx, out.fy = fy, out.fz = fz;
+    return nearHit | farHit;
+}
+
+/// Closest hits of rays [first, first + 8): planes first in order, then spheres in order,
+/// each taken only when strictly nearer (so the first of equal hits wins, as in the scalar
+/// scans). The sphere normal is (f + offset d) / radius of the winner, as intersect() has it.
+inline void closest8(const FlatView& v, const RayBatch& rays, std::size_t first, const HitBatch& hits) {
+    const Rays8 r = loadRays(rays, first);
+    F8 best = r.tmax;
+    I8 slot = splatI(int32_t(kNoSlot));
+    F8 nx = splat(0.0f), ny = splat(0.0f), nz = splat(0.0f);
+    for (int j = 0; j < v.planes; ++j) {
+        const F8 t = planeDistance(r, v, j);
+        const I8 m = (t > 0.0f) & (t < best);
+        if (!bits(m)) continue;
+        best = select(m, t, best);
+        slot = select(m, splatI(int32_t(kPlaneSlot | uint32_t(j))), slot);
+        nx = select(m, splat(v.nx[j]), nx);
+        ny = select(m, splat(v.ny[j]), ny);
+        nz = select(m, splat(v.nz[j]), nz);
+    }
+    const F8 a = r.dx * r.dx + r.dy * r.dy + r.dz * r.dz;
+    for (int s = 0; s < v.spheres; ++s) {
+        SphereLanes h;
+        const I8 m = sphereHit(r, a, v, s, best, h);
+        if (!bits(m)) continue;
+        best = select(m, h.t, best);
+        slot = select(m, splatI(int32_t(v.prim[s])), slot);
+        const float radius = v.radius[s];
+        nx = select(m, (h.fx + h.offset * r.dx) / radius, nx);
+        ny = select(m, (h.fy + h.offset * r.dy) / radius, ny);
+        nz = select(m, (h.fz + h.offset * r.dz) / radius, nz);
+    }
+    for (int k = 0; k < r.lanes; ++k) {
+        const std::size_t i = first + std::size_t(k);
+        hits.t[i] = slot[k] == int32_t(kNoSlot) ? kInfinity : best[k];
+        hits.nx[i] = nx[k], hits.ny[i] = ny[k], hits.nz[i] = nz[k];
+        hits.slot[i] = uint32_t(slot[k]);
+    }
+}
+
+/// Any hit of rays [first, first + 8): spheres first (a shadow ray toward a light inside a
+/// room rarely reaches a wall), stopping once every lane is blocked. With `skipBlocked`,
+/// lanes already marked occluded count as blocked from the start.
+inline void any8(const FlatView& v, const RayBatch& rays, std::size_t first, uint8_t* occluded,
+                 bool skipBlocked) {
+    const Rays8 r = loadRays(rays, first);
+    const unsigned all = (1u << r.lanes) - 1u;
+    unsigned blocked = 0;
+    if (skipBlocked)
+        for (int k = 0; k < r.lanes; ++k) blocked |= unsigned(occluded[first + std::size_t(k)] != 0) << k;
+    if (blocked == all) return;
+    const F8 a = r.dx * r.dx + r.dy * r.dy + r.dz * r.dz;
+    for (int s = 0; s < v.spheres && (blocked & all) != all; ++s) {
+        SphereLanes h;
+        blocked |= bits(sphereHit(r, a, v, s, r.tmax, h));
+    }
+    for (int j = 0; j < v.planes && (blocked & all) != all; ++j) {
+        const F8 t = planeDistance(r, v, j);
+        blocked |= bits((t > 0.0f) & (t < r.tmax));
+    }
+    for (int k = 0; k < r.lanes; ++k) occluded[first + std::size_t(k)] = (blocked >> k) & 1u;
+}
+
+/// For rays [first, first + 8) and each other primitive o: bit k of masks[o] set when ray k
+/// may meet o's (slightly widened) world bounds within (0, tmax). A filter only, so it fails
+/// open: NaN slabs (a ray in a face's plane) leave the interval unconstrained.
+inline void boundsMasks(const FlatView& v, const RayBatch& rays, std::size_t first, const F8& tmax,
+                        uint8_t* masks) {
+    const Rays8 r = loadRays(rays, first);
+    const F8 one = splat(1.0f);
+    const F8 ix = one / r.dx, iy = one / r.dy, iz = one / r.dz;
+    for (int o = 0; o < v.others; ++o) {
+        const F8 x0 = (v.lox[o] - r.ox) * ix, x1 = (v.hix[o] - r.ox) * ix;
+        const F8 y0 = (v.loy[o] - r.oy) * iy, y1 = (v.hiy[o] - r.oy) * iy;
+        const F8 z0 = (v.loz[o] - r.oz) * iz, z1 = (v.hiz[o] - r.oz) * iz;
+        // Per axis near and far; a NaN axis (0 * inf) is skipped by the selects below.
+        const F8 nx = select(x0 < x1, x0, x1), fx = select(x0 < x1, x1, x0);
+        const F8 ny = select(y0 < y1, y0, y1), fy = select(y0 < y1, y1, y0);
+        const F8 nz = select(z0 < z1, z0, z1), fz = select(z0 < z1, z1, z0);
+        F8 enter = splat(-kInfinity), exit = splat(kInfinity);
+        enter = select(nx > enter, nx, enter), exit = select(fx < exit, fx, exit);
+        enter = select(ny > enter, ny, enter), exit = select(fy < exit, fy, exit);
+        enter = select(nz > enter, nz, enter), exit = select(fz < exit, fz, exit);
+        const I8 miss = (enter > exit) | (exit < 0.0f) | (enter > tmax);
+        masks[o] = uint8_t(~bits(miss) & ((1u << r.lanes) - 1u));
+    }
+}
+
+inline void closestAll(const FlatView& v, const RayBatch& rays, const HitBatch& hits) {
+    for (std::size_t first = 0; first < rays.count; first += kLanes) closest8(v, rays, first, hits);
+}
+
+inline void anyAll(const FlatView& v, const RayBatch& rays, uint8_t* occluded, bool skipBlocked) {
+    for (std::size_t first = 0; first < rays.count; first += kLanes)
+        any8(v, rays, first, occluded, skipBlocked);
+}

@@ -1,0 +1,478 @@
+// Placement and materials (issue 11), with real events: new objects land on the surface
+// under the view centre (or on the floor below), a large imported mesh is scaled to the view,
+// the material list's edits are undo steps, HDR colours reach the frame, and the colour
+// dialog previews live (Cancel restores, OK is one undo step).
+#include "gui_test_support.h"
+
+#include "material_list.h"
+#include "placement.h"
+#include "property_panel.h"
+#include "snapshot/compiled_scene.h"
+#include "transform_edits.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QColorDialog>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QToolBar>
+#include <QToolButton>
+#include <QtTest>
+
+#include <cmath>
+#include <functional>
+
+using namespace rs;
+using namespace rs::ui;
+using namespace rs::ui::test;
+
+namespace {
+
+QString str(const Vec3& v) { return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z); }
+
+/// Mean linear colour of the pixels showing `id`.
+Vec3 meanColourOf(const DisplayFrame& f, ObjectId id) {
+    Vec3 sum(0.0f);
+    int n = 0;
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x)
+            if (f.idAt(x, y) == id) sum += f.color[std::size_t(y) * f.width + x], ++n;
+    return n ? sum / float(n) : Vec3(-1.0f);
+}
+
+/// A cube of side `size` centred at the origin, as an OBJ file.
+bool writeCube(const QString& path, float size) {
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) return false;
+    const float h = size / 2;
+    QByteArray text;
+    for (int i = 0; i < 8; ++i)
+        text += QStringLiteral("v %1 %2 %3\n")
+                    .arg(i & 1 ? h : -h).arg(i & 2 ? h : -h).arg(i & 4 ? h : -h).toLatin1();
+    text += "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+    return f.write(text) == text.size();
+}
+
+}  // namespace
+
+class MaterialsTest : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup();
+
+    void newSphere_LandsOnTheSurfaceUnderTheViewCentre();
+    void snapToFloor_NewBoxRestsOnTheFloorBelowTheViewCentre();
+    void largeMeshImport_IsScaledToFitTheView_AndTheFactorIsEditable();
+    void meshImportedAtTheCursor_LandsOnTheSurfaceUnderIt_Unscaled();
+    void newAndDuplicateMaterial_EachOneUndoStep();
+    void renameMaterial_InPlace_RenamesItsUsers_AndRefusesTakenOrEmptyNames();
+    void deleteMaterial_UsedIsRefusedWithTheReason_UnusedIsOneUndoStep();
+    void assignToSelection_IsOneUndoStep_AndReachesTheFrame();
+    void hdrValueBeyondOne_ReachesTheDocumentAndTheFrame();
+    void colourDialog_PreviewsLive_OkIsOneUndoStep();
+    void colourDialog_Cancel_RestoresAndLeavesNoUndoStep();
+
+private:
+    const SceneDocument& doc() { return window_->editor()->document(); }
+    int undoCount() { return window_->editor()->undoStack()->count(); }
+    /// Clicks the Add toolbar's button of action `name` ("add Sphere").
+    void clickAdd(const QString& name);
+    /// Clicks `name` in the viewport (a real press and release on its pixels).
+    void clickObject(const std::string& name);
+    QPushButton* materialButton(const char* name);
+    /// The widget of row `label` in the property panel's group titled `group`.
+    QWidget* propertyField(const QString& group, const QString& label);
+    /// Replaces the text of `spin` by typing `text` and Enter.
+    static void typeInto(QDoubleSpinBox* spin, const QString& text);
+    /// Opens the colour dialog of the selection's material, runs `inDialog` in it, then
+    /// clicks `button` (Ok or Cancel).
+    void withColourDialog(const std::function<void(QColorDialog*)>& inDialog,
+                          QDialogButtonBox::StandardButton button);
+
+    std::unique_ptr<MainWindow> window_;
+};
+
+void MaterialsTest::init() {
+    QSettings().remove(QStringLiteral("placement/snapToFloor"));
+    QVERIFY(openRoomWindow(window_));
+}
+
+void MaterialsTest::cleanup() {
+    QSettings().remove(QStringLiteral("placement/snapToFloor"));
+    if (!window_) return;
+    window_->editor()->undoStack()->setClean();  // No save prompt on close.
+    window_.reset();
+}
+
+void MaterialsTest::clickAdd(const QString& name) {
+    auto* tools = window_->findChild<QToolBar*>(QStringLiteral("addToolBar"));
+    QVERIFY(tools);
+    QAction* action = window_->findChild<QAction*>(name);
+    QVERIFY2(action, qPrintable(name));
+    QWidget* button = tools->widgetForAction(action);
+    QVERIFY(button);
+    QTest::mouseClick(button, Qt::LeftButton);
+}
+
+void MaterialsTest::clickObject(const std::string& name) {
+    const ObjectId id = idOf(*window_, name);
+    const auto [x, y] = pixelOf(*window_->viewport()->frame(), id);
+    QVERIFY2(x >= 0, name.c_str());
+    QTest::mouseClick(window_->viewport(), Qt::LeftButton, {}, window_->viewport()->widgetPointOf(x, y));
+    QCOMPARE(window_->editor()->selection(), id);
+}
+
+QPushButton* MaterialsTest::materialButton(const char* name) {
+    return window_->materialList()->findChild<QPushButton*>(QString::fromLatin1(name));
+}
+
+QWidget* MaterialsTest::propertyField(const QString& group, const QString& label) {
+    for (QGroupBox* box : window_->propertyPanel()->findChildren<QGroupBox*>()) {
+        if (!box->title().startsWith(group)) continue;
+        auto* form = qobject_cast<QFormLayout*>(box->layout());
+        for (int row = 0; form && row < form->rowCount(); ++row) {
+            auto* l = form->itemAt(row, QFormLayout::LabelRole);
+            auto* f = form->itemAt(row, QFormLayout::FieldRole);
+            if (l && f && qobject_cast<QLabel*>(l->widget()) &&
+                qobject_cast<QLabel*>(l->widget())->text() == label)
+                return f->widget();
+        }
+    }
+    return nullptr;
+}
+
+void MaterialsTest::typeInto(QDoubleSpinBox* spin, const QString& text) {
+    spin->setFocus();
+    spin->selectAll();
+    QTest::keyClicks(spin, text);
+    QTest::keyClick(spin, Qt::Key_Return);
+}
+
+void MaterialsTest::withColourDialog(const std::function<void(QColorDialog*)>& inDialog,
+                                     QDialogButtonBox::StandardButton button) {
+    QWidget* field = propertyField(QStringLiteral("Material \""), QStringLiteral("Colour"));
+    QVERIFY(field);
+    auto* open = field->findChild<QPushButton*>(QStringLiteral("colorButton"));
+    QVERIFY(open);
+    bool ran = false;
+    QTimer::singleShot(0, this, [&] {
+        auto* dialog = qobject_cast<QColorDialog*>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        ran = true;
+        inDialog(dialog);
+        QPushButton* b = dialog->findChild<QDialogButtonBox*>()->button(button);
+        QTest::mouseClick(b, Qt::LeftButton);
+        if (dialog->isVisible()) dialog->reject();  // Never leave the test stuck in exec().
+    });
+    QTest::mouseClick(open, Qt::LeftButton);  // Returns when the dialog closes.
+    QVERIFY(ran);
+}
+
+void MaterialsTest::newSphere_LandsOnTheSurfaceUnderTheViewCentre() {
+    // Where the view centre's ray meets the room (the back wall, seen from the door).
+    const ViewProjection view = window_->viewport()->projection();
+    const Ray ray = view.rayThrough(QPointF(window_->viewport()->rect().center()));
+    const auto scene = window_->session()->session().snapshot();
+    const Placement hit = placeAlong(scene.get(), ray, 1.0f);
+    QVERIFY(hit.onSurface);
+
+    clickAdd(QStringLiteral("add Sphere"));
+    const ObjectId id = idOf(*window_, "sphere");
+    QVERIFY(id != kNoObject);
+    QCOMPARE(window_->editor()->selection(), id);
+    QCOMPARE(undoCount(), 1);
+    const Object& sphere = *doc().findObject(id);
+    const float r = std::get<SphereGeometry>(sphere.geometry).radius;
+    // It touches the surface from the viewer's side: centre one radius off the hit point.
+    const Vec3 expected = hit.point + hit.normal * r;
+    QVERIFY2(glm::length(sphere.transform.translate - expected) < 1e-3f,
+             qPrintable(str(sphere.transform.translate) + " vs " + str(expected)));
+    // And it is what the view centre shows.
+    QVERIFY(settle(*window_));
+    const DisplayFrame& f = *window_->viewport()->frame();
+    QCOMPARE(f.idAt(f.width / 2, f.height / 2), id);
+}
+
+void MaterialsTest::snapToFloor_NewBoxRestsOnTheFloorBelowTheViewCentre() {
+    QAction* snap = window_->findChild<QAction*>(QStringLiteral("snapToFloor"));
+    QVERIFY(snap && snap->isCheckable() && !snap->isChecked());
+    snap->trigger();
+    QVERIFY(snap->isChecked());
+    clickAdd(QStringLiteral("add Box"));
+    const ObjectId id = idOf(*window_, "box");
+    QVERIFY(id != kNoObject);
+    const Aabb b = worldBounds(doc(), id);
+    // The floor plane is at y = 0: the box stands on it, below where the view centre looks
+    // (the back wall), and touching that wall.
+    QVERIFY2(std::abs(b.min.y) < 1e-3f, qPrintable(str(b.min)));
+    QVERIFY2(std::abs(b.min.z - -12.0f) < 1e-3f, qPrintable(str(b.min)));
+    QCOMPARE(undoCount(), 1);
+}
+
+void MaterialsTest::largeMeshImport_IsScaledToFitTheView_AndTheFactorIsEditable() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("spider.obj"));
+    QVERIFY(writeCube(path, 150.0f));
+    window_->importMesh(path);
+    QTRY_VERIFY_WITH_TIMEOUT(idOf(*window_, "spider") != kNoObject, 20000);
+    const ObjectId id = idOf(*window_, "spider");
+    QCOMPARE(undoCount(), 1);
+    const float factor = doc().findObject(id)->transform.scale.x;
+    QVERIFY2(factor > 0.0f && factor < 0.1f, qPrintable(QString::number(factor)));
+    QVERIFY(doc().findObject(id)->transform.scale == Vec3(factor));
+    QVERIFY2(window_->statusBar()->currentMessage().contains(QString::number(double(factor), 'g', 3)),
+             qPrintable(window_->statusBar()->currentMessage()));
+    // It fits the view: every corner of its bounds projects inside the image, and the view
+    // camera stands outside it.
+    const Aabb b = worldBounds(doc(), id);
+    const Camera& view = window_->viewport()->viewCamera();
+    QVERIFY(!(glm::all(glm::greaterThan(view.position, b.min)) &&
+              glm::all(glm::lessThan(view.position, b.max))));
+    const ViewProjection projection = window_->viewport()->projection();
+    const QRect shown = window_->viewport()->rect();
+    for (int i = 0; i < 8; ++i) {
+        const Vec3 corner(b[i & 1].x, b[(i >> 1) & 1].y, b[(i >> 2) & 1].z);
+        const auto p = projection.project(corner);
+        QVERIFY2(p && shown.contains(p->toPoint()), qPrintable(str(corner)));
+    }
+    QVERIFY(settle(*window_));
+    QVERIFY(pixelOf(*window_->viewport()->frame(), id).first >= 0);
+
+    // The factor is the Transform's Scale in the property panel: typing one is an undo step.
+    QWidget* scale = propertyField(QStringLiteral("Transform"), QStringLiteral("Scale"));
+    QVERIFY(scale);
+    const auto spins = scale->findChildren<QDoubleSpinBox*>();
+    QCOMPARE(spins.size(), 3);
+    QCOMPARE(float(spins[0]->value()), factor);
+    typeInto(spins[0], QStringLiteral("0.004"));
+    QCOMPARE(doc().findObject(id)->transform.scale.x, 0.004f);
+    QCOMPARE(undoCount(), 2);
+    window_->editor()->undoStack()->undo();
+    QCOMPARE(doc().findObject(id)->transform.scale.x, factor);
+}
+
+void MaterialsTest::meshImportedAtTheCursor_LandsOnTheSurfaceUnderIt_Unscaled() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("crate.obj"));
+    QVERIFY(writeCube(path, 0.6f));
+    // A floor pixel low in the frame, away from the view centre (the back wall).
+    const DisplayFrame& f = *window_->viewport()->frame();
+    const ObjectId floor = idOf(*window_, "floor");
+    const int x = f.width / 2 + f.width / 8, y = f.height - 4;
+    QCOMPARE(f.idAt(x, y), floor);
+    const QPoint at = window_->viewport()->widgetPointOf(x, y);
+    // What a drop on the viewport does: import onto the surface under the cursor.
+    window_->importMesh(path, at);
+    QTRY_VERIFY_WITH_TIMEOUT(idOf(*window_, "crate") != kNoObject, 20000);
+    const ObjectId id = idOf(*window_, "crate");
+    QVERIFY(doc().findObject(id)->transform.scale == Vec3(1.0f));  // It fits: not rescaled.
+    const Aabb b = worldBounds(doc(), id);
+    QVERIFY2(std::abs(b.min.y) < 1e-3f, qPrintable(str(b.min)));  // On the floor.
+    QVERIFY(settle(*window_));
+    const ViewProjection view = window_->viewport()->projection();
+    const auto shown = view.project(b.center());
+    QVERIFY(shown);
+    // Its centre appears above the drop point (it stands on the floor there).
+    QVERIFY2(std::abs(shown->x() - at.x()) < 0.05 * window_->viewport()->width(),
+             qPrintable(QStringLiteral("%1 vs %2").arg(shown->x()).arg(at.x())));
+    QVERIFY(shown->y() < at.y());
+}
+
+void MaterialsTest::newAndDuplicateMaterial_EachOneUndoStep() {
+    MaterialList* list = window_->materialList();
+    const std::size_t before = doc().materials.size();
+    QTest::mouseClick(materialButton("newMaterial"), Qt::LeftButton);
+    QCOMPARE(doc().materials.size(), before + 1);
+    QCOMPARE(doc().materials.back().name, std::string("material"));
+    QCOMPARE(list->current(), std::string("material"));
+    QCOMPARE(list->list()->count(), int(before + 1));
+    QCOMPARE(undoCount(), 1);
+
+    QVERIFY(list->setCurrent("orange plastic"));
+    QTest::mouseClick(materialButton("duplicateMaterial"), Qt::LeftButton);
+    QCOMPARE(doc().materials.size(), before + 2);
+    const Material& copy = doc().materials.back();
+    QCOMPARE(copy.name, std::string("orange plastic 2"));
+    Material renamed = *doc().findMaterial("orange plastic");
+    renamed.name = copy.name;
+    QVERIFY(copy == renamed);
+    QCOMPARE(undoCount(), 2);
+
+    window_->editor()->undoStack()->undo();
+    QCOMPARE(doc().materials.size(), before + 1);
+    window_->editor()->undoStack()->undo();
+    QCOMPARE(doc().materials.size(), before);
+    QCOMPARE(list->list()->count(), int(before));
+}
+
+void MaterialsTest::renameMaterial_InPlace_RenamesItsUsers_AndRefusesTakenOrEmptyNames() {
+    MaterialList* list = window_->materialList();
+    QVERIFY(list->setCurrent("blue plastic"));
+    auto rename = [&](const QString& text) {
+        QTest::mouseClick(materialButton("renameMaterial"), Qt::LeftButton);
+        auto* editor = list->list()->findChild<QLineEdit*>();
+        QVERIFY(editor);
+        editor->selectAll();
+        if (!text.isEmpty()) QTest::keyClicks(editor, text);
+        else QTest::keyClick(editor, Qt::Key_Delete);
+        QTest::keyClick(editor, Qt::Key_Return);
+    };
+    rename(QStringLiteral("cobalt"));
+    QTRY_VERIFY(doc().findMaterial("cobalt"));
+    QVERIFY(!doc().findMaterial("blue plastic"));
+    QCOMPARE(doc().findObject(idOf(*window_, "blue ball"))->material, std::string("cobalt"));
+    QCOMPARE(undoCount(), 1);
+    QCOMPARE(list->current(), std::string("cobalt"));
+
+    // Names are unique among the materials and non-empty (scene-format.md).
+    rename(QStringLiteral("glass"));
+    QTRY_VERIFY(list->message().contains(QStringLiteral("already named")));
+    QVERIFY(doc().findMaterial("cobalt"));
+    QCOMPARE(list->list()->currentItem()->text(), QStringLiteral("cobalt"));
+    rename(QString());
+    QTRY_VERIFY(list->message().contains(QStringLiteral("must not be empty")));
+    QVERIFY(doc().findMaterial("cobalt"));
+    QCOMPARE(undoCount(), 1);
+
+    window_->editor()->undoStack()->undo();
+    QVERIFY(doc().findMaterial("blue plastic"));
+    QCOMPARE(doc().findObject(idOf(*window_, "blue ball"))->material, std::string("blue plastic"));
+}
+
+void MaterialsTest::deleteMaterial_UsedIsRefusedWithTheReason_UnusedIsOneUndoStep() {
+    MaterialList* list = window_->materialList();
+    QPushButton* del = materialButton("deleteMaterial");
+    const std::size_t before = doc().materials.size();
+    QVERIFY(list->setCurrent("mirror"));
+    QVERIFY(!del->isEnabled());
+    QVERIFY2(list->message().contains(QStringLiteral("\"mirror ball\"")), qPrintable(list->message()));
+    QVERIFY(del->toolTip().contains(QStringLiteral("is used by")));
+    QTest::mouseClick(del, Qt::LeftButton);
+    list->deleteMaterial();  // Refused even when called directly.
+    QCOMPARE(doc().materials.size(), before);
+    QCOMPARE(undoCount(), 0);
+
+    QTest::mouseClick(materialButton("newMaterial"), Qt::LeftButton);
+    QVERIFY(del->isEnabled());
+    QTest::mouseClick(del, Qt::LeftButton);
+    QCOMPARE(doc().materials.size(), before);
+    QVERIFY(!doc().findMaterial("material"));
+    QCOMPARE(undoCount(), 2);
+    window_->editor()->undoStack()->undo();
+    QVERIFY(doc().findMaterial("material"));
+}
+
+void MaterialsTest::assignToSelection_IsOneUndoStep_AndReachesTheFrame() {
+    MaterialList* list = window_->materialList();
+    QPushButton* assign = materialButton("assignMaterial");
+    QVERIFY(list->setCurrent("red wall"));
+    QVERIFY(!assign->isEnabled());  // Nothing selected.
+    clickObject("chalk ball");
+    QVERIFY(assign->isEnabled());
+    const ObjectId id = idOf(*window_, "chalk ball");
+    const Vec3 chalk = meanColourOf(*window_->viewport()->frame(), id);
+    QTest::mouseClick(assign, Qt::LeftButton);
+    QCOMPARE(doc().findObject(id)->material, std::string("red wall"));
+    QCOMPARE(undoCount(), 1);
+    QVERIFY(settle(*window_));
+    const Vec3 red = meanColourOf(*window_->viewport()->frame(), id);
+    QVERIFY2(red.x > 2.0f * red.z && !(chalk.x > 2.0f * chalk.z), qPrintable(str(chalk) + str(red)));
+    window_->editor()->undoStack()->undo();
+    QCOMPARE(doc().findObject(id)->material, std::string("chalk"));
+}
+
+void MaterialsTest::hdrValueBeyondOne_ReachesTheDocumentAndTheFrame() {
+    clickObject("blue ball");
+    const ObjectId id = idOf(*window_, "blue ball");
+    const Vec3 colour = doc().findMaterial("blue plastic")->color;
+    const float value = std::max({colour.x, colour.y, colour.z});
+    QVERIFY(value <= 1.0f);
+    const Vec3 before = meanColourOf(*window_->viewport()->frame(), id);
+    QWidget* field = propertyField(QStringLiteral("Material \""), QStringLiteral("Colour"));
+    QVERIFY(field);
+    auto* spin = field->findChild<QDoubleSpinBox*>(QStringLiteral("colorValue"));
+    QVERIFY(spin);
+    QCOMPARE(float(spin->value()), value);
+    typeInto(spin, QStringLiteral("%1").arg(double(value) * 4.0));
+    const Vec3 now = doc().findMaterial("blue plastic")->color;
+    QVERIFY2(glm::length(now - colour * 4.0f) < 1e-3f, qPrintable(str(now)));
+    QVERIFY(std::max({now.x, now.y, now.z}) > 1.0f);
+    QCOMPARE(undoCount(), 1);
+    QVERIFY(settle(*window_));
+    const Vec3 after = meanColourOf(*window_->viewport()->frame(), id);
+    // The ball's colour scales its shading: brighter than an LDR colour can make it.
+    QVERIFY2(after.z > 2.5f * before.z, qPrintable(str(before) + " -> " + str(after)));
+}
+
+void MaterialsTest::colourDialog_PreviewsLive_OkIsOneUndoStep() {
+    clickObject("chalk ball");
+    const ObjectId id = idOf(*window_, "chalk ball");
+    const Vec3 chalk = doc().findMaterial("chalk")->color;
+    Vec3 previewed(0.0f);
+    withColourDialog(
+        [&](QColorDialog* dialog) {
+            QLineEdit* html = nullptr;
+            for (QLineEdit* e : dialog->findChildren<QLineEdit*>())
+                if (e->text().startsWith(QLatin1Char('#'))) html = e;
+            QVERIFY(html);
+            html->setFocus();
+            html->selectAll();
+            QTest::keyClicks(html, QStringLiteral("#ff0000"));
+            // While the dialog is open: the document and the frame show red, no undo step.
+            QVERIFY(doc().findMaterial("chalk")->color == Vec3(1.0f, 0.0f, 0.0f));
+            QCOMPARE(undoCount(), 0);
+            QVERIFY(settle(*window_));
+            previewed = meanColourOf(*window_->viewport()->frame(), id);
+        },
+        QDialogButtonBox::Ok);
+    QVERIFY2(previewed.x > 5.0f * std::max(previewed.y, 1e-4f), qPrintable(str(previewed)));
+    QVERIFY(doc().findMaterial("chalk")->color == Vec3(1.0f, 0.0f, 0.0f));
+    QCOMPARE(undoCount(), 1);
+    window_->editor()->undoStack()->undo();
+    QVERIFY(doc().findMaterial("chalk")->color == chalk);
+}
+
+void MaterialsTest::colourDialog_Cancel_RestoresAndLeavesNoUndoStep() {
+    clickObject("chalk ball");
+    const ObjectId id = idOf(*window_, "chalk ball");
+    const Vec3 chalk = doc().findMaterial("chalk")->color;
+    const Vec3 before = meanColourOf(*window_->viewport()->frame(), id);
+    Vec3 previewed(0.0f);
+    withColourDialog(
+        [&](QColorDialog* dialog) {
+            for (QLineEdit* e : dialog->findChildren<QLineEdit*>())
+                if (e->text().startsWith(QLatin1Char('#'))) {
+                    e->setFocus();
+                    e->selectAll();
+                    QTest::keyClicks(e, QStringLiteral("#00ff00"));
+                }
+            QVERIFY(settle(*window_));
+            previewed = meanColourOf(*window_->viewport()->frame(), id);
+        },
+        QDialogButtonBox::Cancel);
+    QVERIFY2(previewed.y > 5.0f * std::max(previewed.x, 1e-4f), qPrintable(str(previewed)));
+    QVERIFY(doc().findMaterial("chalk")->color == chalk);
+    QCOMPARE(undoCount(), 0);
+    QVERIFY(window_->editor()->undoStack()->isClean());
+    QVERIFY(settle(*window_));
+    const Vec3 after = meanColourOf(*window_->viewport()->frame(), id);
+    QVERIFY2(glm::length(after - before) < 1e-3f, qPrintable(str(before) + " vs " + str(after)));
+}
+
+QTEST_MAIN(MaterialsTest)
+#include "materials_test.moc"

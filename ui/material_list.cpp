@@ -1,0 +1,211 @@
+// MaterialList: list widget, buttons and the edits of scene_edits.h they push.
+#include "material_list.h"
+
+#include "scene_edits.h"
+#include "scene_editor.h"
+
+#include <QGridLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include <unordered_map>
+
+namespace rs::ui {
+
+namespace {
+/// The material name an item stands for (its text is edited in place, so kept apart).
+constexpr int kNameRole = Qt::UserRole;
+}  // namespace
+
+std::vector<ObjectId> materialTargets(const SceneEditor& editor) {
+    // Every selected object (lights have no material).
+    std::vector<ObjectId> ids;
+    for (ObjectId id : editor.selectedIds())
+        if (editor.document().findObject(id)) ids.push_back(id);
+    return ids;
+}
+
+MaterialList::MaterialList(SceneEditor* editor, QWidget* parent)
+    : QWidget(parent), editor_(editor) {
+    auto* layout = new QVBoxLayout(this);
+    list_ = new QListWidget(this);
+    list_->setObjectName(QStringLiteral("materialList"));
+    list_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+    layout->addWidget(list_, 1);
+    auto* buttons = new QGridLayout;
+    auto button = [this](const QString& text, const char* name, const QString& tip) {
+        auto* b = new QPushButton(text, this);
+        b->setObjectName(QString::fromLatin1(name));
+        b->setToolTip(tip);
+        return b;
+    };
+    new_ = button(tr("New"), "newMaterial", tr("Add a default material"));
+    duplicate_ = button(tr("Duplicate"), "duplicateMaterial", tr("Add a copy of this material"));
+    rename_ = button(tr("Rename"), "renameMaterial", tr("Rename this material (F2)"));
+    delete_ = button(tr("Delete"), "deleteMaterial", tr("Delete this material"));
+    assign_ = button(tr("Assign to Selection"), "assignMaterial",
+                     tr("Give the selected object this material"));
+    buttons->addWidget(new_, 0, 0);
+    buttons->addWidget(duplicate_, 0, 1);
+    buttons->addWidget(rename_, 1, 0);
+    buttons->addWidget(delete_, 1, 1);
+    buttons->addWidget(assign_, 2, 0, 1, 2);
+    layout->addLayout(buttons);
+    message_ = new QLabel(this);
+    message_->setObjectName(QStringLiteral("materialMessage"));
+    message_->setWordWrap(true);
+    layout->addWidget(message_);
+
+    connect(new_, &QPushButton::clicked, this, &MaterialList::newMaterial);
+    connect(duplicate_, &QPushButton::clicked, this, &MaterialList::duplicateMaterial);
+    connect(rename_, &QPushButton::clicked, this, &MaterialList::renameMaterial);
+    connect(delete_, &QPushButton::clicked, this, &MaterialList::deleteMaterial);
+    connect(assign_, &QPushButton::clicked, this, &MaterialList::assignToSelection);
+    connect(list_, &QListWidget::itemChanged, this, &MaterialList::onItemChanged);
+    connect(list_, &QListWidget::currentItemChanged, this, [this] {
+        refused_.clear();
+        updateButtons();
+    });
+    connect(editor_, &SceneEditor::documentChanged, this, &MaterialList::rebuild);
+    connect(editor_, &SceneEditor::selectionChanged, this, &MaterialList::updateButtons);
+    rebuild();
+}
+
+std::string MaterialList::current() const {
+    const QListWidgetItem* item = list_->currentItem();
+    return item ? item->data(kNameRole).toString().toStdString() : std::string();
+}
+
+bool MaterialList::setCurrent(const std::string& name) {
+    for (int i = 0; i < list_->count(); ++i)
+        if (list_->item(i)->data(kNameRole).toString().toStdString() == name) {
+            list_->setCurrentRow(i);
+            return true;
+        }
+    return false;
+}
+
+QString MaterialList::message() const { return message_->text(); }
+
+void MaterialList::showMessage(const QString& text) {
+    message_->setText(text);
+    message_->setVisible(!text.isEmpty());
+}
+
+void MaterialList::rebuild() {
+    refused_.clear();
+    // A drag edits the document many times a second without touching the list: keep it.
+    const SceneDocument& doc = editor_->document();
+    std::unordered_map<std::string, int> users;  // One pass: a scene may have many of both.
+    for (const Object& o : doc.objects) ++users[o.material];
+    QStringList shown;
+    for (const Material& m : doc.materials)
+        shown << QString::fromStdString(m.name) + QLatin1Char('/') + QString::number(users[m.name]);
+    if (shown == shown_) {
+        updateButtons();
+        return;
+    }
+    shown_ = shown;
+    const std::string keep = current();
+    {
+        const QSignalBlocker block(list_);
+        list_->clear();
+        for (const Material& m : doc.materials) {
+            const QString name = QString::fromStdString(m.name);
+            auto* item = new QListWidgetItem(name, list_);
+            item->setData(kNameRole, name);
+            item->setFlags(item->flags() | Qt::ItemIsEditable);
+            const int n = users[m.name];
+            item->setToolTip(n ? tr("Used by %n object(s)", nullptr, n) : tr("Unused"));
+        }
+    }
+    if (!setCurrent(keep) && list_->count() > 0) list_->setCurrentRow(0);
+    updateButtons();
+}
+
+void MaterialList::updateButtons() {
+    const SceneDocument& doc = editor_->document();
+    const std::string name = current();
+    const bool has = !name.empty() && doc.findMaterial(name);
+    duplicate_->setEnabled(has);
+    rename_->setEnabled(has);
+    const std::string deleteError = has ? materialDeleteError(doc, name) : std::string();
+    delete_->setEnabled(has && deleteError.empty());
+    delete_->setToolTip(deleteError.empty() ? tr("Delete this material")
+                                            : QString::fromStdString(deleteError));
+    const std::vector<ObjectId> targets = materialTargets(*editor_);
+    assign_->setEnabled(has && !targets.empty());
+    QString reason = refused_;
+    if (reason.isEmpty() && !deleteError.empty())
+        reason = tr("Cannot delete: %1").arg(QString::fromStdString(deleteError));
+    showMessage(reason);
+}
+
+void MaterialList::newMaterial() {
+    SceneDocument doc = editor_->document();
+    const std::string name = addMaterial(doc);
+    editor_->edit(tr("New material %1").arg(QString::fromStdString(name)), std::move(doc));
+    setCurrent(name);
+}
+
+void MaterialList::duplicateMaterial() {
+    SceneDocument doc = editor_->document();
+    const std::string name = rs::ui::duplicateMaterial(doc, current());
+    if (name.empty()) return;
+    editor_->edit(tr("Duplicate material %1").arg(QString::fromStdString(current())), std::move(doc));
+    setCurrent(name);
+}
+
+void MaterialList::renameMaterial() {
+    if (QListWidgetItem* item = list_->currentItem()) list_->editItem(item);
+}
+
+void MaterialList::onItemChanged(QListWidgetItem* item) {
+    const std::string from = item->data(kNameRole).toString().toStdString();
+    const std::string to = item->text().toStdString();
+    if (from == to) return;
+    // After the in-place editor has finished with the item: the edit rebuilds the list.
+    QMetaObject::invokeMethod(this, [this, from, to] { applyRename(from, to); }, Qt::QueuedConnection);
+}
+
+void MaterialList::applyRename(const std::string& from, const std::string& to) {
+    SceneDocument doc = editor_->document();
+    const std::string error = rs::ui::renameMaterial(doc, from, to);
+    if (!error.empty()) {
+        shown_.clear();
+        rebuild();  // Back to the names the document has.
+        setCurrent(from);
+        refused_ = tr("Cannot rename \"%1\": %2")
+                       .arg(QString::fromStdString(from), QString::fromStdString(error));
+        updateButtons();
+        return;
+    }
+    const QString text = tr("Rename material %1 to %2")
+                             .arg(QString::fromStdString(from), QString::fromStdString(to));
+    editor_->edit(text, std::move(doc));
+    setCurrent(to);
+}
+
+void MaterialList::deleteMaterial() {
+    SceneDocument doc = editor_->document();
+    const std::string name = current();
+    const std::string error = rs::ui::deleteMaterial(doc, name);
+    if (!error.empty()) {
+        refused_ = tr("Cannot delete: %1").arg(QString::fromStdString(error));
+        updateButtons();
+        return;
+    }
+    editor_->edit(tr("Delete material %1").arg(QString::fromStdString(name)), std::move(doc));
+}
+
+void MaterialList::assignToSelection() {
+    SceneDocument doc = editor_->document();
+    const std::string name = current();
+    if (name.empty() || assignMaterial(doc, materialTargets(*editor_), name) == 0) return;
+    editor_->edit(tr("Assign material %1").arg(QString::fromStdString(name)), std::move(doc));
+}
+
+}  // namespace rs::ui

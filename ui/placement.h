@@ -1,0 +1,50 @@
+// Where new things go: on the surface a view ray meets (under the viewport centre or the
+// cursor), else a sensible distance along it; resting on that surface or on the floor below;
+// and the scale that makes an imported mesh fit the view.
+#pragma once
+
+#include "scene/document.h"
+
+namespace rs {
+class CompiledScene;
+}
+
+namespace rs::ui {
+
+/// Where a view ray puts a new object.
+struct Placement {
+    Vec3 point{0.0f};   ///< The surface point hit, else a point `fallbackDistance` along the ray.
+    Vec3 normal{0.0f};  ///< The hit surface's normal on the viewer's side; -direction when none.
+    Vec3 viewDir{0.0f, 0.0f, -1.0f};  ///< Unit direction of the ray.
+    float distance = 0.0f;  ///< From the ray's origin to `point`.
+    bool onSurface = false;
+};
+
+/// Casts `ray` into `scene` (nullptr: nothing to hit); without a hit the point lies
+/// `fallbackDistance` along the ray.
+Placement placeAlong(const CompiledScene* scene, const Ray& ray, float fallbackDistance);
+
+/// The distance in front of `view` a new object goes when no surface is there: its target's,
+/// at most `kMaxFallbackDistance` (a view backed far out must not put it out of sight).
+float fallbackDistance(const Camera& view);
+inline constexpr float kMaxFallbackDistance = 5.0f;
+
+/// Moves object or light `id` to `at`: an object so that it touches the surface from the
+/// normal's side (its bounds' centre `at.normal` times its half depth off the point), a
+/// light a little short of the surface towards the viewer, a plane through the point.
+void restOn(SceneDocument& doc, ObjectId id, const Placement& at);
+
+/// Drops object `id` along -`up` (unit) until its bounds rest on the first surface of
+/// `scene` below their centre; false (unchanged) when nothing is below or `id` is unbounded.
+bool snapToFloor(SceneDocument& doc, ObjectId id, const CompiledScene* scene, const Vec3& up);
+
+/// The uniform scale that fits a mesh of object-space `bounds`, seen through `view` from
+/// `distance`, into the view: 1 when its size is already between kMinViewShare and
+/// kMaxViewShare of the visible height there, else the factor (two significant digits) that
+/// makes it kFitViewShare of it, within the range Transform -> Scale accepts.
+float fitScale(const Aabb& bounds, const Camera& view, float distance);
+inline constexpr float kMinViewShare = 0.02f;
+inline constexpr float kMaxViewShare = 1.0f;
+inline constexpr float kFitViewShare = 0.5f;
+
+}  // namespace rs::ui
