@@ -33,6 +33,7 @@ bool CommandShortcutFilter::eventFilter(QObject* watched, QEvent* event) {
     if (event->type() != QEvent::ShortcutOverride || !watched->isWidgetType()) return false;
     auto* key = static_cast<QKeyEvent*>(event);
     if (!isCommandKey(*key) || !inWindow(static_cast<QWidget*>(watched))) return false;
+    if (watched->property(kTakesAllKeys).toBool()) return false;
     const QKeySequence pressed(
         QKeyCombination(key->modifiers() & ~Qt::KeypadModifier, Qt::Key(key->key())));
     for (const QAction* a : window_->findChildren<QAction*>()) {

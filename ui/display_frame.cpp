@@ -249,23 +249,28 @@ QImage debugImage(const DisplayFrame& f, ViewMode mode) {
     return img;
 }
 
-bool onOutline(const DisplayFrame& f, int x, int y, ObjectId selected) {
-    if (selected == kNoObject) return false;
+bool outlined(const std::vector<ObjectId>& selected, ObjectId id) {
+    const auto end = selected.begin() + std::ptrdiff_t(std::min(selected.size(), kMaxOutlined));
+    return id != kNoObject && std::find(selected.begin(), end, id) != end;
+}
+
+bool onOutline(const DisplayFrame& f, int x, int y, const std::vector<ObjectId>& selected) {
+    if (selected.empty()) return false;
     const ObjectId c = f.idAt(x, y);
     const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
     for (int k = 0; k < 4; ++k) {
         const int nx = x + dx[k], ny = y + dy[k];
         if (nx < 0 || ny < 0 || nx >= f.width || ny >= f.height) continue;
         const ObjectId n = f.idAt(nx, ny);
-        if (n != c && (n == selected || c == selected)) return true;
+        if (n != c && (outlined(selected, n) || outlined(selected, c))) return true;
     }
     return false;
 }
 
-QImage viewportImage(const DisplayFrame& f, ViewMode mode, ObjectId selected) {
+QImage viewportImage(const DisplayFrame& f, ViewMode mode, const std::vector<ObjectId>& selected) {
     if (f.empty()) return {};
     QImage img = debugImage(f, mode);
-    if (selected == kNoObject) return img;
+    if (selected.empty()) return img;
     for (int y = 0; y < f.height; ++y) {
         uchar* line = img.scanLine(y);
         for (int x = 0; x < f.width; ++x)

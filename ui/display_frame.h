@@ -68,13 +68,19 @@ std::vector<QRect> mergeRects(std::vector<QRect> rects, const QSize& frame);
 QImage debugImage(const DisplayFrame& frame, ViewMode mode);
 /// The tone-mapped colour view (CPU path of the viewport's shader).
 QImage toneMappedImage(const DisplayFrame& frame);
+/// The selection outline is drawn about this many objects at most (the first of the
+/// selection): the OpenGL view passes them to its shader as a fixed-size uniform array.
+inline constexpr std::size_t kMaxOutlined = 32;
+/// True when `id` is one of the first kMaxOutlined of `selected`.
+bool outlined(const std::vector<ObjectId>& selected, ObjectId id);
 /// True when pixel (x, y) lies on the selection outline: its id differs from a 4-neighbour
-/// and one of the two is `selected`.
-bool onOutline(const DisplayFrame& frame, int x, int y, ObjectId selected);
+/// and one of the two is outlined.
+bool onOutline(const DisplayFrame& frame, int x, int y, const std::vector<ObjectId>& selected);
 /// The colour of the selection outline.
 inline constexpr uint8_t kOutlineRgb[3] = {255, 160, 32};
 /// The image the viewport shows: view mode plus the selection outline.
-QImage viewportImage(const DisplayFrame& frame, ViewMode mode, ObjectId selected);
+QImage viewportImage(const DisplayFrame& frame, ViewMode mode,
+                     const std::vector<ObjectId>& selected);
 /// A well-spread colour for an object id (hashed), as the id debug view and shader use.
 void idColor(ObjectId id, uint8_t rgb[3]);
 

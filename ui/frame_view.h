@@ -33,14 +33,15 @@ public:
     virtual ~FrameView() = default;
     /// The widget that draws (owned by its Qt parent).
     virtual QWidget* widget() = 0;
-    /// Shows `frame` in `mode` with `selected` outlined; repaints soon.
+    /// Shows `frame` in `mode` with the `selected` objects outlined; repaints soon.
     virtual void showFrame(std::shared_ptr<const DisplayFrame> frame, ViewMode mode,
-                           ObjectId selected) = 0;
+                           const std::vector<ObjectId>& selected) = 0;
     /// What is on screen now, at widget resolution.
     virtual QImage grabImage() = 0;
     /// True for the OpenGL implementation.
     virtual bool usesOpenGL() const = 0;
-    /// What to paint over the frame with QPainter, in widget coordinates (the light glyphs).
+    /// What to paint over the frame with QPainter, in widget coordinates (light glyphs, the
+    /// transform gizmo, the selection box).
     /// A view whose window is native paints it itself: widgets cannot draw over it.
     virtual void setOverlayPainter(std::function<void(QPainter&)> painter) { (void)painter; }
     /// Paints again (the overlay changed).

@@ -8,6 +8,8 @@
 #include <QWidget>
 #include <QtCore/qfloat16.h>
 
+#include <algorithm>
+
 static void initRayStudioResources() { Q_INIT_RESOURCE(raystudio); }
 
 namespace rs::ui {
@@ -41,7 +43,7 @@ GlFrameView::~GlFrameView() {
 }
 
 void GlFrameView::showFrame(std::shared_ptr<const DisplayFrame> frame, ViewMode mode,
-                            ObjectId selected) {
+                            const std::vector<ObjectId>& selected) {
     frame_ = std::move(frame);
     mode_ = mode;
     selected_ = selected;
@@ -147,7 +149,7 @@ void GlFrameView::upload() {
         uploadColor();
     else
         uploadDebug();
-    if (selected_ != kNoObject) uploadIds();
+    if (!selected_.empty()) uploadIds();
 }
 
 void GlFrameView::paintOverlay() {
@@ -187,7 +189,11 @@ void GlFrameView::paintGL() {
     program_.setUniformValue("displayReady", mode_ == ViewMode::Color ? 0 : 1);
     program_.setUniformValue("tonemap", int(frame_->tonemap));
     program_.setUniformValue("exposure", frame_->exposure);
-    glUniform1ui(program_.uniformLocation("selected"), selected_);
+    GLuint outlined[kMaxOutlined] = {};
+    const std::size_t count = std::min(selected_.size(), kMaxOutlined);
+    std::copy_n(selected_.begin(), count, outlined);
+    glUniform1uiv(program_.uniformLocation("selected"), GLsizei(kMaxOutlined), outlined);
+    program_.setUniformValue("selectedCount", int(count));
     program_.setUniformValue("outlineColor", QVector3D(kOutlineRgb[0] / 255.0f,
                                                        kOutlineRgb[1] / 255.0f,
                                                        kOutlineRgb[2] / 255.0f));

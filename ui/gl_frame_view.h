@@ -25,7 +25,7 @@ public:
     ~GlFrameView() override;
     QWidget* widget() override { return container_; }
     void showFrame(std::shared_ptr<const DisplayFrame> frame, ViewMode mode,
-                   ObjectId selected) override;
+                   const std::vector<ObjectId>& selected) override;
     QImage grabImage() override { return grabFramebuffer(); }
     bool usesOpenGL() const override { return true; }
     void setOverlayPainter(std::function<void(QPainter&)> painter) override {
@@ -57,7 +57,7 @@ private:
     QWidget* container_ = nullptr;
     std::shared_ptr<const DisplayFrame> frame_;
     ViewMode mode_ = ViewMode::Color;
-    ObjectId selected_ = kNoObject;
+    std::vector<ObjectId> selected_;
     QOpenGLShaderProgram program_;
     QOpenGLVertexArrayObject vao_;
     /// Linear HDR colour as RGB16F: half precision is far below an 8-bit display step.

@@ -48,34 +48,12 @@ ObjectId pickLight(const std::vector<LightGlyph>& glyphs, const QPointF& p) {
     return best;
 }
 
-LightOverlay::LightOverlay(QWidget* parent) : QWidget(parent) {
-    setAttribute(Qt::WA_TransparentForMouseEvents);
-    setAttribute(Qt::WA_NoSystemBackground);
-}
-
-void LightOverlay::setGlyphs(std::vector<LightGlyph> glyphs, ObjectId selected) {
-    glyphs_ = std::move(glyphs);
-    selected_ = selected;
-    update();
-}
-
-void LightOverlay::setPassepartout(const QRectF& outputFrame) {
-    if (outputFrame == passepartout_) return;
-    passepartout_ = outputFrame;
-    update();
-}
-
-void LightOverlay::paintEvent(QPaintEvent*) {
-    QPainter p(this);
-    paintPassepartout(p, rect(), passepartout_);
-    paintLightGlyphs(p, glyphs_, selected_);
-}
-
-void paintLightGlyphs(QPainter& p, const std::vector<LightGlyph>& glyphs, ObjectId selected) {
+void paintLightGlyphs(QPainter& p, const std::vector<LightGlyph>& glyphs,
+                      const std::vector<ObjectId>& selected) {
     p.setRenderHint(QPainter::Antialiasing);
     const QColor highlight(kOutlineRgb[0], kOutlineRgb[1], kOutlineRgb[2]);
     for (const LightGlyph& g : glyphs) {
-        const bool chosen = g.id == selected;
+        const bool chosen = std::find(selected.begin(), selected.end(), g.id) != selected.end();
         const double r = g.radius;
         if (r > kPointGlyphPx) {
             // A sphere light: its outline, so the surfaces it lights stay visible through it.

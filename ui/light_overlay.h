@@ -6,8 +6,6 @@
 
 #include <QColor>
 #include <QPointF>
-#include <QRectF>
-#include <QWidget>
 
 #include <vector>
 
@@ -28,30 +26,8 @@ std::vector<LightGlyph> lightGlyphs(const SceneDocument& doc, const ViewProjecti
 /// The light whose glyph is under widget point `p` (the nearest centre wins), or kNoObject.
 ObjectId pickLight(const std::vector<LightGlyph>& glyphs, const QPointF& p);
 
-/// Draws `glyphs` (the one of `selected` highlighted) with `p`, in widget coordinates.
-void paintLightGlyphs(QPainter& p, const std::vector<LightGlyph>& glyphs, ObjectId selected);
-
-/// Transparent widget over the frame view that draws the glyphs (and the passepartout); mouse
-/// events pass through.
-class LightOverlay : public QWidget {
-    Q_OBJECT
-public:
-    explicit LightOverlay(QWidget* parent = nullptr);
-    /// Shows `glyphs`, the one of `selected` highlighted.
-    void setGlyphs(std::vector<LightGlyph> glyphs, ObjectId selected);
-    const std::vector<LightGlyph>& glyphs() const { return glyphs_; }
-    ObjectId selected() const { return selected_; }
-    /// Dims what lies outside `outputFrame` (empty: nothing), under the glyphs.
-    void setPassepartout(const QRectF& outputFrame);
-    const QRectF& passepartout() const { return passepartout_; }
-
-protected:
-    void paintEvent(QPaintEvent* event) override;
-
-private:
-    std::vector<LightGlyph> glyphs_;
-    ObjectId selected_ = kNoObject;
-    QRectF passepartout_;
-};
+/// Draws `glyphs` (those of `selected` highlighted) with `p`, in widget coordinates.
+void paintLightGlyphs(QPainter& p, const std::vector<LightGlyph>& glyphs,
+                      const std::vector<ObjectId>& selected);
 
 }  // namespace rs::ui

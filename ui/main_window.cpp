@@ -91,6 +91,9 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+    // A gesture still running would end (focus lost) when the viewport goes, after the
+    // session it edits through.
+    viewport_->cancelInteraction();
     // Before the session and the widgets a job reports to go.
     renders_->cancelAll();
     cancelJobs(this);
@@ -196,6 +199,13 @@ void MainWindow::createMenus() {
     for (int i = 0; i < 3; ++i)
         edit->addAction(gestures[i].first, QKeySequence(gestureKeys[i]), viewport_,
                         [this, kind = gestures[i].second] { viewport_->beginTransform(kind); });
+    // The gizmo's and G/R/S axis locks' orientation (Blender's Global / Local).
+    QAction* local = edit->addAction(tr("&Local Axes"), viewport_, &Viewport::setLocalOrientation);
+    local->setObjectName(QStringLiteral("localAxes"));
+    local->setCheckable(true);
+    local->setStatusTip(tr("Gizmo and axis locks along the active object's own axes"));
+    edit->addSeparator();
+    edit->addAction(tr("&Box Select"), QKeySequence(Qt::Key_B), viewport_, &Viewport::beginBoxSelect);
     edit->addSeparator();
     edit->addAction(tr("&Preferences..."), QKeySequence::Preferences, this, &MainWindow::showPreferences);
 
@@ -208,6 +218,10 @@ void MainWindow::createMenus() {
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Frame Selection"), QKeySequence(Qt::Key_F), viewport_, &Viewport::frameSelection);
+    QAction* gizmo = view->addAction(tr("Show &Gizmo"), viewport_, &Viewport::setGizmoVisible);
+    gizmo->setObjectName(QStringLiteral("showGizmo"));
+    gizmo->setCheckable(true);
+    gizmo->setChecked(viewport_->gizmoVisible());
     view->addSeparator();
     // Navigation moves the view camera only; these two are the bridges to the scene camera
     // (Blender's Numpad 0 and Ctrl+Alt+Numpad 0).

@@ -311,18 +311,25 @@ void MainWindow::addLightAction(LightType type) {
 }
 
 void MainWindow::deleteSelection() {
+    // Every selected entity, in one undo step.
     SceneDocument doc = editor_->document();
-    if (!remove(doc, editor_->selection())) return;
-    editor_->edit(tr("Delete"), std::move(doc));
+    int removed = 0;
+    for (ObjectId id : editor_->selectedIds()) removed += remove(doc, id);
+    if (removed == 0) return;
+    editor_->edit(removed == 1 ? tr("Delete") : tr("Delete %1 items").arg(removed), std::move(doc));
     editor_->setSelection(kNoObject);
 }
 
 void MainWindow::duplicateSelection() {
+    // The copies, in one undo step, become the selection.
     SceneDocument doc = editor_->document();
-    const ObjectId id = duplicate(doc, editor_->selection());
-    if (id == kNoObject) return;
-    editor_->edit(tr("Duplicate"), std::move(doc));
-    editor_->setSelection(id);
+    std::vector<ObjectId> copies;
+    for (ObjectId id : editor_->selectedIds())
+        if (const ObjectId copy = duplicate(doc, id); copy != kNoObject) copies.push_back(copy);
+    if (copies.empty()) return;
+    editor_->edit(copies.size() == 1 ? tr("Duplicate") : tr("Duplicate %1 items").arg(copies.size()),
+                  std::move(doc));
+    editor_->setSelection(copies);
 }
 
 }  // namespace rs::ui

@@ -21,8 +21,10 @@ constexpr int kNameRole = Qt::UserRole;
 }  // namespace
 
 std::vector<ObjectId> materialTargets(const SceneEditor& editor) {
+    // Every selected object (lights have no material).
     std::vector<ObjectId> ids;
-    if (editor.document().findObject(editor.selection())) ids.push_back(editor.selection());
+    for (ObjectId id : editor.selectedIds())
+        if (editor.document().findObject(id)) ids.push_back(id);
     return ids;
 }
 

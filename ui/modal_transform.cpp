@@ -58,8 +58,13 @@ ModalTransform::KeyResult ModalTransform::keyPress(int key, const QString& text)
         case Qt::Key_X:
         case Qt::Key_Y:
         case Qt::Key_Z: {
+            // Shift+X gives an upper-case "X": the plane normal to X, as in Blender.
+            const bool plane = text.size() == 1 && text[0].isUpper();
             const int axis = key - Qt::Key_X;
-            axis_ = axis_ == axis ? -1 : axis;
+            if (axis_ == axis && plane_ == plane)
+                lock(-1, false);
+            else
+                lock(axis, plane);
             return KeyResult::Updated;
         }
         case Qt::Key_G:
@@ -88,15 +93,24 @@ ModalTransform::KeyResult ModalTransform::keyPress(int key, const QString& text)
     return KeyResult::Unhandled;
 }
 
+void ModalTransform::lock(int axis, bool plane) {
+    axis_ = axis;
+    plane_ = axis >= 0 && plane;
+}
+
 void ModalTransform::setCursor(const QPointF& cursor, bool snap) {
     cursor_ = cursor;
     snap_ = snap;
 }
 
 Vec3 ModalTransform::axisVector() const {
-    Vec3 a(0.0f);
-    a[axis_ < 0 ? 0 : axis_] = 1.0f;
-    return a;
+    return axes_[axis_ < 0 ? 0 : axis_];
+}
+
+Vec3 ModalTransform::snappedInAxes(const Vec3& v, float step) const {
+    Vec3 out(0.0f);
+    for (int i = 0; i < 3; ++i) out += axes_[i] * snapped(glm::dot(v, axes_[i]), step);
+    return out;
 }
 
 bool ModalTransform::typedValue(float& value) const {
@@ -110,21 +124,23 @@ bool ModalTransform::typedValue(float& value) const {
 
 Vec3 ModalTransform::moveDelta(const ViewProjection& view) const {
     float typed = 0.0f;
-    // A typed distance without an axis goes along X, as Blender's does.
-    if (typedValue(typed)) return axisVector() * typed;
+    // A typed distance without an axis goes along X, as Blender's does; in a locked plane,
+    // along the plane's first axis.
+    if (typedValue(typed)) return (plane_ ? axes_[(axis_ + 1) % 3] : axisVector()) * typed;
     const Ray from = view.rayThrough(startCursor_), to = view.rayThrough(cursor_);
     Vec3 delta;
-    if (axis_ >= 0) {
+    if (axis_ >= 0 && !plane_) {
         const Vec3 axis = axisVector();
-        delta = axis *
-                glm::dot(closestOnAxis(pivot_, axis, to) - closestOnAxis(pivot_, axis, from), axis);
-    } else {
-        const Vec3 f = view.camera().forward();
-        delta = onViewPlane(pivot_, f, to) - onViewPlane(pivot_, f, from);
+        float along =
+            glm::dot(closestOnAxis(pivot_, axis, to) - closestOnAxis(pivot_, axis, from), axis);
+        if (snap_) along = snapped(along, kGridStep);
+        return axis * along;
     }
-    if (snap_)
-        for (int i = 0; i < 3; ++i) delta[i] = snapped(delta[i], kGridStep);
-    return delta;
+    // The view plane, or the locked plane (its normal is the locked axis).
+    const Vec3 n = plane_ ? axisVector() : view.camera().forward();
+    delta = onViewPlane(pivot_, n, to) - onViewPlane(pivot_, n, from);
+    if (plane_) delta -= n * glm::dot(delta, n);
+    return snap_ ? snappedInAxes(delta, kGridStep) : delta;
 }
 
 float ModalTransform::rotateDegrees(const ViewProjection& view, Vec3& axis) const {
@@ -154,8 +170,9 @@ Vec3 ModalTransform::scaleFactors(const ViewProjection& view) const {
         if (snap_) f = snapped(f, kScaleStep);
     }
     if (axis_ < 0) return Vec3(f);
-    Vec3 factors(1.0f);
-    factors[axis_] = f;
+    // Along the axis, or across the plane normal to it.
+    Vec3 factors(plane_ ? f : 1.0f);
+    factors[axis_] = plane_ ? 1.0f : f;
     return factors;
 }
 
@@ -183,7 +200,11 @@ SceneDocument ModalTransform::result(const ViewProjection& view) const {
 QString ModalTransform::describe() const {
     static const char* const kinds[] = {"Move", "Rotate", "Scale"};
     QString s = QString::fromLatin1(kinds[int(kind_)]);
-    if (axis_ >= 0) s += QLatin1Char(' ') + QLatin1String(kAxisNames[axis_]);
+    if (axis_ >= 0 && plane_)
+        s += QStringLiteral(" plane ") + QLatin1String(kAxisNames[(axis_ + 1) % 3]) +
+             QLatin1String(kAxisNames[(axis_ + 2) % 3]);
+    else if (axis_ >= 0)
+        s += QLatin1Char(' ') + QLatin1String(kAxisNames[axis_]);
     if (!typed_.isEmpty()) s += QLatin1Char(' ') + typed_;
     return s + QStringLiteral(
                    "   (X Y Z lock, type a value, Ctrl snaps, Enter/click confirms, Esc cancels)");

@@ -28,9 +28,15 @@ public:
     ModalTransform(TransformKind kind, SceneDocument start, std::vector<ObjectId> ids,
                    const QPointF& cursor);
 
-    /// X/Y/Z lock (again: unlock), G/R/S switch, digits . - Backspace type a value,
-    /// Enter confirms, Esc cancels.
+    /// X/Y/Z lock (again: unlock; Shift+X/Y/Z: the plane normal to that axis), G/R/S
+    /// switch, digits . - Backspace type a value, Enter confirms, Esc cancels.
     KeyResult keyPress(int key, const QString& text);
+    /// Locks to `axis` (0/1/2; -1 free) or, with `plane`, to the plane normal to it: what a
+    /// gizmo handle grabs.
+    void lock(int axis, bool plane);
+    /// The axes the locks use, as columns: identity for world space, the active object's
+    /// rotation for local space.
+    void setOrientation(const Mat3& axes) { axes_ = axes; }
     /// The cursor moved; `snap` while Ctrl is held.
     void setCursor(const QPointF& cursor, bool snap);
     void setSnap(bool snap) { snap_ = snap; }
@@ -46,6 +52,8 @@ public:
 
 private:
     Vec3 axisVector() const;
+    /// `v` with each component along axes_ rounded to `step`.
+    Vec3 snappedInAxes(const Vec3& v, float step) const;
     bool typedValue(float& value) const;
     Vec3 moveDelta(const ViewProjection& view) const;
     float rotateDegrees(const ViewProjection& view, Vec3& axis) const;
@@ -58,6 +66,8 @@ private:
     QPointF startCursor_, cursor_;
     bool snap_ = false;
     int axis_ = -1;  ///< -1 free, else 0/1/2 for X/Y/Z.
+    bool plane_ = false;  ///< Locked to the plane normal to axis_ instead of along it.
+    Mat3 axes_{1.0f};
     QString typed_;
 };
 

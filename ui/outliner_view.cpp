@@ -1,4 +1,5 @@
-// OutlinerView: selection sync both ways, rename in place, context menu.
+// OutlinerView: selection sync both ways (several rows: Qt's extended selection), rename in
+// place, context menu.
 #include "outliner_view.h"
 
 #include "outliner_model.h"
@@ -12,7 +13,7 @@ OutlinerView::OutlinerView(SceneEditor* editor, QList<QAction*> contextActions, 
     : QTreeView(parent), editor_(editor), model_(new OutlinerModel(editor, this)) {
     setModel(model_);
     header()->hide();
-    setSelectionMode(QAbstractItemView::SingleSelection);
+    setSelectionMode(QAbstractItemView::ExtendedSelection);
     setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
     setContextMenuPolicy(Qt::ActionsContextMenu);
     addActions(contextActions);
@@ -21,29 +22,58 @@ OutlinerView::OutlinerView(SceneEditor* editor, QList<QAction*> contextActions, 
         expandAll();
         selectFromEditor();
     });
-    connect(selectionModel(), &QItemSelectionModel::currentChanged, this,
-            [this](const QModelIndex& current) { onCurrentChanged(current); });
+    // The current row is the active entity, so it is read with the selection: selecting
+    // moves the current index first, then changes the selection.
+    connect(selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &OutlinerView::onSelectionChanged);
     connect(editor_, &SceneEditor::selectionChanged, this, &OutlinerView::selectFromEditor);
 }
 
 void OutlinerView::selectFromEditor() {
     if (syncing_) return;
     syncing_ = true;
-    const QModelIndex i = model_->indexOf(editor_->selection());
-    if (i.isValid()) {
-        selectionModel()->setCurrentIndex(i, QItemSelectionModel::ClearAndSelect);
-        scrollTo(i);
+    QItemSelection rows;
+    const ObjectId active = editor_->selection();
+    if (active == SceneEditor::kCameraSelection) {
+        const QModelIndex i = model_->indexOf(active);
+        rows.select(i, i);
+    }
+    for (ObjectId id : editor_->selectedIds()) {
+        const QModelIndex i = model_->indexOf(id);
+        if (i.isValid()) rows.select(i, i);
+    }
+    selectionModel()->select(rows, QItemSelectionModel::ClearAndSelect);
+    const QModelIndex current = model_->indexOf(active);
+    if (current.isValid()) {
+        selectionModel()->setCurrentIndex(current, QItemSelectionModel::NoUpdate);
+        scrollTo(current);
     } else {
-        selectionModel()->clearSelection();
-        selectionModel()->setCurrentIndex({}, QItemSelectionModel::Clear);
+        selectionModel()->setCurrentIndex({}, QItemSelectionModel::NoUpdate);
     }
     syncing_ = false;
 }
 
-void OutlinerView::onCurrentChanged(const QModelIndex& current) {
+void OutlinerView::onSelectionChanged() {
     if (syncing_) return;
     syncing_ = true;
-    editor_->setSelection(model_->idOf(current));
+    std::vector<ObjectId> ids;
+    bool camera = false;
+    const ObjectId current = model_->idOf(currentIndex());
+    for (const QModelIndex& i : selectionModel()->selectedRows()) {
+        const ObjectId id = model_->idOf(i);
+        if (id == SceneEditor::kCameraSelection)
+            camera = true;
+        else if (id != kNoObject && id != current)
+            ids.push_back(id);
+    }
+    // The current row, when selected, is the active one: last.
+    if (current != kNoObject && current != SceneEditor::kCameraSelection &&
+        selectionModel()->isSelected(currentIndex()))
+        ids.push_back(current);
+    if (camera && ids.empty())
+        editor_->setSelection(SceneEditor::kCameraSelection);
+    else
+        editor_->setSelection(ids);
     syncing_ = false;
 }
 

@@ -8,7 +8,8 @@ namespace rs::ui {
 class OutlinerModel;
 class SceneEditor;
 
-/// Tree view with two-way selection sync and a context menu of the given actions.
+/// Tree view with two-way selection sync (Ctrl/Shift-click select several) and a context
+/// menu of the given actions.
 class OutlinerView : public QTreeView {
     Q_OBJECT
 public:
@@ -18,7 +19,7 @@ public:
 
 private:
     void selectFromEditor();
-    void onCurrentChanged(const QModelIndex& current);
+    void onSelectionChanged();
 
     SceneEditor* editor_;
     OutlinerModel* model_;

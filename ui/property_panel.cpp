@@ -189,6 +189,24 @@ void PropertyPanel::rebuild() {
 
     const SceneDocument& doc = editor_->document();
     const ObjectId id = editor_->selection();
+    if (const auto& ids = editor_->selectedIds(); ids.size() > 1) {
+        // Several selected: the panel edits the active one (the last picked) and says so;
+        // the viewport's gizmo and G/R/S, Delete and Duplicate act on them all.
+        const auto nameOf = [&](ObjectId e) {
+            if (const Object* o = doc.findObject(e)) return QString::fromStdString(o->name);
+            if (const Light* l = doc.findLight(e)) return QString::fromStdString(l->name);
+            return QString();
+        };
+        auto* summary = new QLabel(
+            tr("<b>%1 selected.</b> Below: %2, the active one (the last picked); edits here "
+               "change it alone. Move, rotate, scale, delete and duplicate act on all %1.")
+                .arg(ids.size())
+                .arg(nameOf(id).toHtmlEscaped()),
+            content_);
+        summary->setObjectName(QStringLiteral("selectionSummary"));
+        summary->setWordWrap(true);
+        layout_->addWidget(summary);
+    }
     if (const Object* o = doc.findObject(id)) {
         addSection(QString::fromLatin1(kindLabel(geometryKind(o->geometry))), QStringLiteral("geometry"),
                    geometryKind(o->geometry), [id](auto& d) {

@@ -43,7 +43,7 @@ RasterFrameView::RasterFrameView(QWidget* parent) : QWidget(parent) {
     setAttribute(Qt::WA_OpaquePaintEvent);
 }
 
-bool RasterFrameView::canShadeRects(const DisplayFrame& f, ViewMode mode, ObjectId selected,
+bool RasterFrameView::canShadeRects(const DisplayFrame& f, ViewMode mode, const std::vector<ObjectId>& selected,
                                     std::vector<QRect>& rects) const {
     // Debug views normalise over the whole frame; everything else changes only where pixels did.
     return mode == ViewMode::Color && shadedFrame_ == &f && shadedMode_ == mode &&
@@ -52,7 +52,7 @@ bool RasterFrameView::canShadeRects(const DisplayFrame& f, ViewMode mode, Object
            f.changedSince(shadedSerial_, rects);
 }
 
-void RasterFrameView::shadeRect(const DisplayFrame& f, ObjectId selected, const QRect& rect) {
+void RasterFrameView::shadeRect(const DisplayFrame& f, const std::vector<ObjectId>& selected, const QRect& rect) {
     // The outline of a pixel depends on its neighbours' ids: one pixel of margin.
     const QRect r = rect.adjusted(-1, -1, 1, 1) & QRect(0, 0, f.width, f.height);
     for (int y = r.top(); y <= r.bottom(); ++y) {
@@ -68,7 +68,7 @@ void RasterFrameView::shadeRect(const DisplayFrame& f, ObjectId selected, const 
 }
 
 void RasterFrameView::showFrame(std::shared_ptr<const DisplayFrame> frame, ViewMode mode,
-                                ObjectId selected) {
+                                const std::vector<ObjectId>& selected) {
     QElapsedTimer timer;
     timer.start();
     if (!frame || frame->empty()) {

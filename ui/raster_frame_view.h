@@ -15,7 +15,7 @@ public:
     explicit RasterFrameView(QWidget* parent = nullptr);
     QWidget* widget() override { return this; }
     void showFrame(std::shared_ptr<const DisplayFrame> frame, ViewMode mode,
-                   ObjectId selected) override;
+                   const std::vector<ObjectId>& selected) override;
     QImage grabImage() override;
     bool usesOpenGL() const override { return false; }
     /// The shaded frame at frame resolution (what is drawn, before scaling).
@@ -26,9 +26,11 @@ protected:
 
 private:
     /// True when image_ can be brought up to date by re-shading `rects` alone.
-    bool canShadeRects(const DisplayFrame& frame, ViewMode mode, ObjectId selected,
+    bool canShadeRects(const DisplayFrame& frame, ViewMode mode,
+                       const std::vector<ObjectId>& selected,
                        std::vector<QRect>& rects) const;
-    void shadeRect(const DisplayFrame& frame, ObjectId selected, const QRect& rect);
+    void shadeRect(const DisplayFrame& frame, const std::vector<ObjectId>& selected,
+                   const QRect& rect);
 
     QImage image_;
     PresentedFrame shown_;  ///< The frame image_ comes from.
@@ -36,7 +38,7 @@ private:
     const DisplayFrame* shadedFrame_ = nullptr;
     uint64_t shadedSerial_ = 0;
     ViewMode shadedMode_ = ViewMode::Color;
-    ObjectId shadedSelected_ = kNoObject;
+    std::vector<ObjectId> shadedSelected_;
     ToneMap shadedTonemap_ = ToneMap::Clamp;
     float shadedExposure_ = 0.0f;
 };

@@ -9,6 +9,7 @@
 #include <QUndoStack>
 
 #include <optional>
+#include <vector>
 
 namespace rs::ui {
 
@@ -46,9 +47,23 @@ public:
     QString filePath() const { return filePath_; }
     void setFilePath(const QString& path);
 
-    /// Selected light or object id, kNoObject for none; kCameraSelection for the camera.
-    ObjectId selection() const { return selection_; }
+    // The selection: any number of lights and objects, or the camera alone. It is the one
+    // place that says what "the selected objects" are (edits that act on several use it).
+    /// The active entity: the last one selected (the property panel and the outliner's
+    /// current row show it); kNoObject for none; kCameraSelection for the camera.
+    ObjectId selection() const;
+    /// Every selected light and object, in the order they were selected (the active one
+    /// last); empty when nothing or the camera is selected.
+    const std::vector<ObjectId>& selectedIds() const { return selected_; }
+    bool isSelected(ObjectId id) const;
+    /// Replaces the selection with `id` alone (kNoObject: none; kCameraSelection: the camera).
     void setSelection(ObjectId id);
+    /// Replaces the selection with `ids` (duplicates and ids absent from the document are
+    /// dropped); the last becomes the active one.
+    void setSelection(const std::vector<ObjectId>& ids);
+    /// Adds `id` to the selection (as the active one), or removes it when selected:
+    /// Ctrl/Shift-click.
+    void toggleSelected(ObjectId id);
     /// Pseudo id of the camera in selections (never a real document id in practice).
     static constexpr ObjectId kCameraSelection = 0xFFFFFFFFu;
 
@@ -67,7 +82,8 @@ private:
     SceneDocument doc_;
     QUndoStack undo_;
     QString filePath_;
-    ObjectId selection_ = kNoObject;
+    std::vector<ObjectId> selected_;
+    bool cameraSelected_ = false;
     int mergeSerial_ = 0;
     std::optional<SceneDocument> beforePreview_;
 };

@@ -1,15 +1,19 @@
 // Viewport input: id-buffer and light-glyph picking, image-plane drags with axis locks, and
-// the routing of mouse and keys to view navigation and G/R/S gestures.
+// the routing of mouse and keys to view navigation, the gizmo and G/R/S gestures.
 #include "viewport.h"
 
 #include "camera_navigation.h"
 #include "passepartout.h"
+#include "command_shortcut_filter.h"
 #include "scene_edits.h"
 #include "scene_editor.h"
 #include "session_controller.h"
+#include "transform_edits.h"
+#include "viewport_overlay.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QPainter>
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
@@ -31,20 +35,16 @@ Vec3 closestOnAxis(const Vec3& a, const Vec3& axis, const Vec3& o, const Vec3& d
 
 Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* parent)
     : QWidget(parent), editor_(editor), session_(session), view_(createFrameView(this)),
-      overlay_(new LightOverlay(this)) {
+      overlay_(new ViewportOverlay([this](QPainter& p) { paintOverlay(p); }, this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(view_->widget());
     view_->widget()->setAttribute(Qt::WA_TransparentForMouseEvents);
     overlay_->raise();
     if (view_->usesOpenGL()) {
-        // A native GL window covers sibling widgets: the GL view paints the glyphs itself
-        // (the overlay widget keeps them for picking).
+        // A native GL window covers sibling widgets: the GL view paints the overlay itself.
         overlay_->hide();
-        view_->setOverlayPainter([this](QPainter& p) {
-            paintPassepartout(p, rect(), overlay_->passepartout());
-            paintLightGlyphs(p, overlay_->glyphs(), overlay_->selected());
-        });
+        view_->setOverlayPainter([this](QPainter& p) { paintOverlay(p); });
     }
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
@@ -56,6 +56,7 @@ Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* par
     connect(editor_, &SceneEditor::selectionChanged, this, &Viewport::redraw);
     connect(editor_, &SceneEditor::documentReset, this, &Viewport::onDocumentReset);
     connect(editor_, &SceneEditor::documentChanged, this, &Viewport::onDocumentChanged);
+    connect(editor_->undoStack(), &QUndoStack::indexChanged, this, &Viewport::onUndoIndexChanged);
 }
 
 void Viewport::setViewMode(ViewMode mode) {
@@ -69,13 +70,56 @@ void Viewport::refresh() {
 }
 
 void Viewport::redraw() {
-    const ObjectId sel = editor_->selection() == SceneEditor::kCameraSelection
-                             ? kNoObject
-                             : editor_->selection();
-    view_->showFrame(frame_, mode_, sel);
-    const ViewProjection view = projection();
-    overlay_->setGlyphs(ui::lightGlyphs(editor_->document(), view), sel);
-    overlay_->setPassepartout(throughScene_ ? view.outputRect() : QRectF());
+    view_->showFrame(frame_, mode_, editor_->selectedIds());
+    glyphs_ = ui::lightGlyphs(editor_->document(), projection());
+    repaintOverlay();
+}
+
+void Viewport::repaintOverlay() {
+    if (view_->usesOpenGL())
+        view_->repaintOverlay();
+    else
+        overlay_->update();
+}
+
+std::optional<TransformGizmo> Viewport::gizmo() const {
+    const std::vector<ObjectId>& ids = editor_->selectedIds();
+    if (ids.empty() || !gizmoVisible_) return std::nullopt;
+    const SceneDocument& doc = editor_->document();
+    TransformGizmo g(projection(), pivotOf(doc, ids), gizmoAxes(doc, ids.back(), localAxes_));
+    if (!g.valid()) return std::nullopt;
+    return g;
+}
+
+void Viewport::setGizmoVisible(bool visible) {
+    gizmoVisible_ = visible;
+    repaintOverlay();
+}
+
+void Viewport::setLocalOrientation(bool local) {
+    localAxes_ = local;
+    repaintOverlay();
+}
+
+void Viewport::beginBoxSelect() {
+    if (gesture_ || drag_ != Drag::None) return;
+    boxArmed_ = true;
+    syncModal();
+    Q_EMIT statusMessage(tr("Box select: drag a rectangle (Shift or Ctrl adds to the selection, "
+                            "Esc cancels)"));
+}
+
+void Viewport::paintOverlay(QPainter& p) const {
+    // Through the scene camera, what lies outside the output frame is dimmed (passepartout).
+    if (throughScene_) paintPassepartout(p, rect(), projection().outputRect());
+    paintLightGlyphs(p, glyphs_, editor_->selectedIds());
+    if (const auto g = gizmo()) g->paint(p, gizmoHandle_);
+    if (drag_ == Drag::Box) {
+        p.setRenderHint(QPainter::Antialiasing, false);
+        p.setPen(QPen(QColor(240, 240, 240), 1.0, Qt::DashLine));
+        p.setBrush(QColor(255, 255, 255, 30));
+        p.drawRect(QRect(pressPos_, lastPos_).normalized());
+    }
 }
 
 void Viewport::resizeEvent(QResizeEvent* e) {
@@ -118,12 +162,24 @@ QPoint Viewport::widgetPointOf(int x, int y) const {
 
 bool Viewport::event(QEvent* e) {
     // During a gesture every key is the gesture's: digits are typed values, not the numpad
-    // views' shortcuts, and G/R/S switch the gesture instead of starting another.
-    if (e->type() == QEvent::ShortcutOverride && gesture_) {
-        e->accept();
-        return true;
+    // views' shortcuts, and G/R/S switch the gesture instead of starting another. During a
+    // mouse drag, Ctrl+Z / Ctrl+Y cancel the drag instead of undoing under it.
+    if (e->type() == QEvent::ShortcutOverride) {
+        const auto* k = static_cast<QKeyEvent*>(e);
+        const bool undoKey = k->matches(QKeySequence::Undo) || k->matches(QKeySequence::Redo);
+        if (gesture_ || (drag_ != Drag::None && undoKey) ||
+            (boxArmed_ && k->key() == Qt::Key_Escape)) {
+            e->accept();
+            return true;
+        }
     }
-    return QWidget::event(e);
+    const bool handled = QWidget::event(e);
+    syncModal();  // Presses, releases and keys start and end drags and gestures.
+    return handled;
+}
+
+void Viewport::syncModal() {
+    setProperty(kTakesAllKeys, gesture_.has_value() || drag_ != Drag::None || boxArmed_);
 }
 
 void Viewport::mousePressEvent(QMouseEvent* e) {
@@ -134,6 +190,11 @@ void Viewport::mousePressEvent(QMouseEvent* e) {
     }
     editor_->closeMerge();
     pressPos_ = lastPos_ = e->position().toPoint();
+    if (boxArmed_ && e->button() != Qt::LeftButton) {
+        boxArmed_ = false;  // Any other button cancels B.
+        Q_EMIT statusMessage({});
+        return;
+    }
     if (e->button() == Qt::RightButton ||
         (e->button() == Qt::LeftButton && (e->modifiers() & Qt::AltModifier))) {
         drag_ = Drag::Orbit;
@@ -141,20 +202,46 @@ void Viewport::mousePressEvent(QMouseEvent* e) {
     } else if (e->button() == Qt::MiddleButton) {
         drag_ = Drag::Pan;
     } else if (e->button() == Qt::LeftButton) {
-        // A light's glyph is drawn in front of everything, so it is picked first.
-        ObjectId id = pickLight(overlay_->glyphs(), e->position());
-        if (id == kNoObject) {
-            const auto px = pixelAt(pressPos_);
-            id = px ? frame_->idAt(px->x(), px->y()) : kNoObject;
-        }
-        editor_->setSelection(id);
-        if (id != kNoObject) {
-            drag_ = Drag::PendingObject;
-            dragId_ = id;
-        }
+        pressLeft(e);
         return;
     }
     if (drag_ == Drag::Orbit || drag_ == Drag::Pan) session_->beginInteraction(kNoObject);
+}
+
+void Viewport::pressLeft(QMouseEvent* e) {
+    const bool extend = e->modifiers() & (Qt::ShiftModifier | Qt::ControlModifier);
+    if (boxArmed_) {
+        boxArmed_ = false;
+        drag_ = Drag::Box;
+        return;
+    }
+    // The gizmo is drawn over everything: its handles win.
+    if (!extend)
+        if (const auto g = gizmo())
+            if (const auto handle = g->handleAt(e->position())) {
+                startGesture(handle->kind, e->position(), handle);
+                return;
+            }
+    // A light's glyph is drawn in front of every surface, so it is picked next.
+    ObjectId id = pickLight(glyphs_, e->position());
+    if (id == kNoObject) {
+        const auto px = pixelAt(pressPos_);
+        id = px ? frame_->idAt(px->x(), px->y()) : kNoObject;
+    }
+    if (id == kNoObject) {
+        // Empty space: a drag draws a box, a click clears the selection.
+        drag_ = Drag::PendingBox;
+        return;
+    }
+    if (extend) {
+        editor_->toggleSelected(id);
+        return;
+    }
+    // Pressing one of several selected keeps the group, so a drag moves them all; a click
+    // without a drag selects it alone (on release).
+    if (!editor_->isSelected(id)) editor_->setSelection(id);
+    drag_ = Drag::PendingObject;
+    dragId_ = id;
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent* e) {
@@ -166,23 +253,62 @@ void Viewport::mouseMoveEvent(QMouseEvent* e) {
         updateGesture();
         return;
     }
-    if (drag_ == Drag::PendingObject &&
-        (pos - pressPos_).manhattanLength() >= kDragThresholdPx)
-        startObjectDrag();
-    if (drag_ == Drag::Object) {
+    const bool moved = (pos - pressPos_).manhattanLength() >= kDragThresholdPx;
+    if (drag_ == Drag::PendingObject && moved) startObjectDrag();
+    if (drag_ == Drag::PendingBox && moved) drag_ = Drag::Box;
+    if (drag_ == Drag::Box) {
+        repaintOverlay();
+    } else if (drag_ == Drag::Object) {
         updateObjectDrag(pos);
     } else if (drag_ == Drag::Orbit || drag_ == Drag::Pan) {
-        Camera c = viewCamera_;
-        if (drag_ == Drag::Orbit)
-            orbitAround(c, orbitPivot_, worldUp_, delta.x() * 0.4f, delta.y() * 0.4f);
-        else
+        if (drag_ == Drag::Orbit) {
+            orbitView(delta);
+        } else {
+            Camera c = viewCamera_;
             pan(c, float(delta.x()) / std::max(1, height()), float(delta.y()) / std::max(1, height()));
-        setView(c);
+            setView(c);
+        }
     }
 }
 
-void Viewport::mouseReleaseEvent(QMouseEvent*) {
-    if (!gesture_) finishDrag(false);
+void Viewport::mouseReleaseEvent(QMouseEvent* e) {
+    if (gesture_) {
+        // A gizmo drag ends with its button; a key-started gesture ends with a click.
+        if (gizmoHandle_) finishGesture(false);
+        return;
+    }
+    const bool extend = e->modifiers() & (Qt::ShiftModifier | Qt::ControlModifier);
+    if (drag_ == Drag::Box) {
+        drag_ = Drag::None;
+        finishBox(QRect(pressPos_, e->position().toPoint()).normalized(), extend);
+        return;
+    }
+    if (drag_ == Drag::PendingBox) {
+        drag_ = Drag::None;
+        if (!extend) editor_->setSelection(kNoObject);
+        return;
+    }
+    if (drag_ == Drag::PendingObject) editor_->setSelection(dragId_);  // A click: it alone.
+    finishDrag(false);
+}
+
+void Viewport::finishBox(const QRect& box, bool add) {
+    Q_EMIT statusMessage({});
+    const ViewProjection view = projection();
+    const SceneDocument& doc = editor_->document();
+    std::vector<ObjectId> ids = add ? editor_->selectedIds() : std::vector<ObjectId>{};
+    const auto inside = [&](const Vec3& p) {
+        const auto at = view.project(p);
+        return at && box.contains(at->toPoint());
+    };
+    for (const Light& l : doc.lights)
+        if (inside(l.position)) ids.push_back(l.id);
+    // Planes are unbounded (the room's walls): a box around a ball must not take them.
+    for (const Object& o : doc.objects)
+        if (!std::holds_alternative<PlaneGeometry>(o.geometry) && o.visible)
+            if (const auto c = entityCentre(doc, o.id); c && inside(*c)) ids.push_back(o.id);
+    editor_->setSelection(ids);
+    repaintOverlay();
 }
 
 void Viewport::wheelEvent(QWheelEvent* e) {
@@ -192,6 +318,20 @@ void Viewport::wheelEvent(QWheelEvent* e) {
 }
 
 void Viewport::keyPressEvent(QKeyEvent* e) {
+    const bool undoKey = e->matches(QKeySequence::Undo) || e->matches(QKeySequence::Redo);
+    if (gesture_ && undoKey) {
+        finishGesture(true);  // Undo mid-gesture cancels it, back to where it began.
+        return;
+    }
+    if (drag_ != Drag::None && undoKey) {
+        finishDrag(true);
+        return;
+    }
+    if (boxArmed_ && e->key() == Qt::Key_Escape) {
+        boxArmed_ = false;
+        Q_EMIT statusMessage({});
+        return;
+    }
     if (gesture_) {
         switch (gesture_->keyPress(e->key(), e->text())) {
             case ModalTransform::KeyResult::Confirm:
@@ -254,6 +394,7 @@ void Viewport::startObjectDrag() {
     drag_ = Drag::Object;
     axisLock_ = -1;
     dragStartDoc_ = editor_->document();
+    dragIds_ = editor_->isSelected(dragId_) ? editor_->selectedIds() : std::vector{dragId_};
     if (const Light* l = dragStartDoc_.findLight(dragId_)) {
         anchor_ = l->position;
     } else {
@@ -298,10 +439,25 @@ void Viewport::updateObjectDrag(const QPoint& pos) {
     // Everything but the dragged object comes from the current document, so any other edit
     // made during the drag survives the next step.
     SceneDocument doc = editor_->document();
-    restoreEntity(doc, dragStartDoc_, dragId_);
-    moveBy(doc, dragId_, delta);
+    for (ObjectId id : dragIds_) {
+        restoreEntity(doc, dragStartDoc_, id);
+        moveBy(doc, id, delta);
+    }
     if (const auto px = pixelAt(pos)) session_->session().setFocus(px->x() + 0.5f, px->y() + 0.5f);
-    editor_->edit(tr("Move object"), std::move(doc), MergeKind::Drag, QString::number(dragId_));
+    dragEdit(tr("Move object"), std::move(doc), QString::number(dragId_));
+}
+
+void Viewport::dragEdit(const QString& text, SceneDocument doc, const QString& mergeKey) {
+    ownEdit_ = true;
+    editor_->edit(text, std::move(doc), MergeKind::Drag, mergeKey);
+    ownEdit_ = false;
+}
+
+void Viewport::onUndoIndexChanged() {
+    // Undo from the menu (a mouse click) while a gesture or drag runs: the undo has already
+    // put the document back, so the gesture ends without restoring (or editing) anything.
+    if (ownEdit_ || (!gesture_ && drag_ != Drag::Object)) return;
+    abandonDrag();
 }
 
 void Viewport::finishDrag(bool cancel) {
@@ -309,10 +465,11 @@ void Viewport::finishDrag(bool cancel) {
     drag_ = Drag::None;
     if (was == Drag::Object && cancel) {
         SceneDocument doc = editor_->document();
-        restoreEntity(doc, dragStartDoc_, dragId_);
-        editor_->edit(tr("Move object"), std::move(doc), MergeKind::Drag, QString::number(dragId_));
+        for (ObjectId id : dragIds_) restoreEntity(doc, dragStartDoc_, id);
+        dragEdit(tr("Move object"), std::move(doc), QString::number(dragId_));
     }
     if (was == Drag::Object || was == Drag::Orbit || was == Drag::Pan) session_->endInteraction();
+    if (was == Drag::Box) repaintOverlay();
     editor_->closeMerge();
 }
 

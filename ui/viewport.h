@@ -1,5 +1,6 @@
 // The viewport: shows the session's frame through a view camera of its own and turns mouse
-// and keys into selection, object drags, G/R/S gestures and view navigation.
+// and keys into selection (click, Ctrl/Shift-click, box), object drags, the transform gizmo,
+// G/R/S gestures and view navigation.
 #pragma once
 
 #include "display_frame.h"
@@ -7,6 +8,7 @@
 #include "light_overlay.h"
 #include "modal_transform.h"
 #include "scene/document.h"
+#include "transform_gizmo.h"
 #include "view_projection.h"
 
 #include <QPoint>
@@ -20,6 +22,7 @@ namespace rs::ui {
 
 class SceneEditor;
 class SessionController;
+class ViewportOverlay;
 
 /// Blender's numpad views (1, 3, 7; with Ctrl the opposite side).
 enum class AxisView { Front, Back, Right, Left, Top, Bottom };
@@ -74,7 +77,21 @@ public:
     bool beginTransform(TransformKind kind);
     bool transforming() const { return gesture_.has_value(); }
     /// The light glyphs as drawn now.
-    const std::vector<LightGlyph>& lightGlyphs() const { return overlay_->glyphs(); }
+    const std::vector<LightGlyph>& lightGlyphs() const { return glyphs_; }
+    /// The transform gizmo about the selection as drawn now; nullopt when nothing is
+    /// selected or the gizmo is hidden.
+    std::optional<TransformGizmo> gizmo() const;
+    /// View -> Show Gizmo.
+    void setGizmoVisible(bool visible);
+    bool gizmoVisible() const { return gizmoVisible_; }
+    /// World (false) or local (true) axes for the gizmo and for G/R/S axis locks.
+    void setLocalOrientation(bool local);
+    bool localOrientation() const { return localAxes_; }
+    /// B: the next left-button drag draws a selection box, even over an object.
+    void beginBoxSelect();
+    /// Cancels a running drag or gesture (the window closes while one runs: its edits must
+    /// reach the session before the session goes).
+    void cancelInteraction();
     /// The mapping from widget points to view rays for the frame shown now.
     ViewProjection projection() const;
 
@@ -94,12 +111,22 @@ protected:
     void focusOutEvent(QFocusEvent* e) override;
 
 private:
-    enum class Drag { None, PendingObject, Object, Orbit, Pan };
+    enum class Drag { None, PendingObject, Object, Orbit, Pan, PendingBox, Box };
+    void pressLeft(QMouseEvent* e);
     void startObjectDrag();
     void updateObjectDrag(const QPoint& pos);
     void finishDrag(bool cancel);
     Vec3 dragPoint(const QPoint& pos) const;
     void redraw();
+    /// Light glyphs, the gizmo and the selection box, in widget coordinates.
+    void paintOverlay(QPainter& p) const;
+    void repaintOverlay();
+    /// The box select's result: entities whose centre is drawn inside `box`.
+    void finishBox(const QRect& box, bool add);
+    /// An undo or redo that this viewport did not make, while a drag or gesture runs.
+    void onUndoIndexChanged();
+    /// Makes an edit of a drag or gesture (the undo guard knows it for its own).
+    void dragEdit(const QString& text, SceneDocument doc, const QString& mergeKey);
 
     // viewport_navigation.cpp
     void onDocumentReset();
@@ -108,17 +135,28 @@ private:
     void postView();
     /// tracedFrameSize() of the widget as it is now.
     QSize sizeToTrace() const;
-    Vec3 orbitPivot(const QPoint& pos) const;
+    /// The orbit's pivot for a press at `pos` (and the orbit's start).
+    Vec3 orbitPivot(const QPoint& pos);
+    void orbitView(const QPoint& delta);
+    /// How far from `from` along unit `dir` the first surface not of `ignore` lies.
+    float freeDistance(const Vec3& from, const Vec3& dir, ObjectId ignore) const;
 
     // viewport_gesture.cpp
+    bool startGesture(TransformKind kind, const QPointF& cursor,
+                      const std::optional<GizmoHandle>& handle);
     void updateGesture();
     void finishGesture(bool cancel);
-    std::vector<ObjectId> selectedIds() const;
+    /// Drops the gesture or drag without restoring anything (an undo already did).
+    void abandonDrag();
+    /// Tells the window's command shortcuts to leave our keys alone while a drag, gesture or
+    /// armed box select runs (CommandShortcutFilter).
+    void syncModal();
 
     SceneEditor* editor_;
     SessionController* session_;
     FrameView* view_;
-    LightOverlay* overlay_;
+    ViewportOverlay* overlay_;
+    std::vector<LightGlyph> glyphs_;
     std::shared_ptr<const DisplayFrame> frame_;
     ViewMode mode_ = ViewMode::Color;
 
@@ -126,10 +164,17 @@ private:
     bool throughScene_ = true;
     Vec3 worldUp_{0.0f, 1.0f, 0.0f};
     Vec3 orbitPivot_{0.0f};
+    Camera orbitFree_;                  ///< The orbit's camera before clipping.
+    ObjectId orbitIgnore_ = kNoObject;  ///< The entity the pivot lies in or on.
 
     Drag drag_ = Drag::None;
     QPoint pressPos_, lastPos_;
-    ObjectId dragId_ = kNoObject;
+    ObjectId dragId_ = kNoObject;  ///< The entity pressed.
+    std::vector<ObjectId> dragIds_;  ///< Every entity the drag moves (the selection).
+    bool boxArmed_ = false;
+    bool localAxes_ = false;
+    bool gizmoVisible_ = true;
+    bool ownEdit_ = false;
     SceneDocument dragStartDoc_;
     Vec3 anchor_{0.0f};       ///< Centre of the dragged object at press.
     Vec3 grabOffset_{0.0f};   ///< Press point on the drag plane minus the anchor.
@@ -140,6 +185,8 @@ private:
     QTimer resizeSettle_;  ///< Restarted by each resize; posts the new size when it fires.
 
     std::optional<ModalTransform> gesture_;
+    /// The gizmo handle the gesture was started from (it ends on release), if any.
+    std::optional<GizmoHandle> gizmoHandle_;
 };
 
 }  // namespace rs::ui

@@ -1,5 +1,6 @@
-// Viewport G / R / S gestures: one merged undo step each, under the session's drag policies
-// (the same beginInteraction / endInteraction the mouse drag uses).
+// Viewport G / R / S gestures, from keys or from a gizmo handle: one merged undo step each,
+// under the session's drag policies (the same beginInteraction / endInteraction the mouse
+// drag uses), whether they move, rotate or scale.
 #include "viewport.h"
 
 #include "scene_editor.h"
@@ -26,26 +27,33 @@ QString gestureText(TransformKind kind) {
 }
 }  // namespace
 
-std::vector<ObjectId> Viewport::selectedIds() const {
-    const ObjectId sel = editor_->selection();
-    const SceneDocument& doc = editor_->document();
-    if (doc.findObject(sel) || doc.findLight(sel)) return {sel};
-    return {};
-}
-
 bool Viewport::beginTransform(TransformKind kind) {
     if (gesture_ || drag_ != Drag::None) return false;
-    std::vector<ObjectId> ids = selectedIds();
-    if (ids.empty()) return false;
     // The gesture measures from where the cursor is now; a key press gives no position.
     QPointF cursor = mapFromGlobal(QCursor::pos());
     if (!rect().contains(cursor.toPoint())) cursor = lastPos_;
+    return startGesture(kind, cursor, std::nullopt);
+}
+
+bool Viewport::startGesture(TransformKind kind, const QPointF& cursor,
+                            const std::optional<GizmoHandle>& handle) {
+    std::vector<ObjectId> ids = editor_->selectedIds();
+    if (ids.empty()) return false;
+    boxArmed_ = false;
     editor_->closeMerge();
-    gesture_.emplace(kind, editor_->document(), std::move(ids), cursor);
+    const SceneDocument& doc = editor_->document();
+    gesture_.emplace(kind, doc, ids, cursor);
+    gesture_->setOrientation(gizmoAxes(doc, ids.back(), localAxes_));
+    if (handle) gesture_->lock(handle->axis, handle->plane);
+    gizmoHandle_ = handle;
+    lastPos_ = cursor.toPoint();
     setFocus(Qt::OtherFocusReason);
-    setMouseTracking(true);
+    // A gizmo drag holds a button, which tracks the mouse anyway.
+    if (!handle) setMouseTracking(true);
     session_->beginInteraction(gesture_->ids().front());
     Q_EMIT statusMessage(gesture_->describe());
+    repaintOverlay();
+    syncModal();
     return true;
 }
 
@@ -58,7 +66,7 @@ void Viewport::updateGesture() {
     for (ObjectId id : gesture_->ids()) restoreEntity(doc, moved, id);
     Q_EMIT statusMessage(gesture_->describe());
     if (doc.sameContent(editor_->document())) return;
-    editor_->edit(gestureText(gesture_->kind()), std::move(doc), MergeKind::Drag, kGestureMergeKey);
+    dragEdit(gestureText(gesture_->kind()), std::move(doc), kGestureMergeKey);
 }
 
 void Viewport::finishGesture(bool cancel) {
@@ -68,16 +76,38 @@ void Viewport::finishGesture(bool cancel) {
         SceneDocument doc = editor_->document();
         for (ObjectId id : gesture_->ids()) restoreEntity(doc, gesture_->start(), id);
         if (!doc.sameContent(editor_->document()))
-            editor_->edit(gestureText(gesture_->kind()), std::move(doc), MergeKind::Drag,
-                          kGestureMergeKey);
+            dragEdit(gestureText(gesture_->kind()), std::move(doc), kGestureMergeKey);
     } else {
         updateGesture();
     }
     gesture_.reset();
+    gizmoHandle_.reset();
     setMouseTracking(false);
     session_->endInteraction();
     editor_->closeMerge();
     Q_EMIT statusMessage({});
+    repaintOverlay();
+    syncModal();
+}
+
+void Viewport::cancelInteraction() {
+    if (gesture_) finishGesture(true);
+    if (drag_ != Drag::None) finishDrag(true);
+    boxArmed_ = false;
+    syncModal();
+}
+
+void Viewport::abandonDrag() {
+    const bool interacting = gesture_ || drag_ == Drag::Object;
+    gesture_.reset();
+    gizmoHandle_.reset();
+    drag_ = Drag::None;
+    setMouseTracking(false);
+    if (interacting) session_->endInteraction();
+    editor_->closeMerge();
+    Q_EMIT statusMessage({});
+    repaintOverlay();
+    syncModal();
 }
 
 }  // namespace rs::ui

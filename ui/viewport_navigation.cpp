@@ -17,6 +17,8 @@ namespace {
 constexpr float kWallClearance = 0.9f;
 /// Surfaces of the selection itself a framing ray passes through before it finds a wall.
 constexpr int kMaxSelfHits = 8;
+/// A plane nearer than this to a cast's start is the one it starts on.
+constexpr float kOnPlane = 1e-3f;
 }  // namespace
 
 SceneDocument Viewport::viewDocument() const {
@@ -92,15 +94,19 @@ void Viewport::setAxisView(AxisView v) {
     setView(c);
 }
 
-Vec3 Viewport::orbitPivot(const QPoint& pos) const {
+Vec3 Viewport::orbitPivot(const QPoint& pos) {
     // The selection's centre; else the surface under the cursor; else the view's target.
     const ObjectId sel = editor_->selection();
     const SceneDocument& doc = editor_->document();
     const Object* o = doc.findObject(sel);
     const bool unbounded = o && std::holds_alternative<PlaneGeometry>(o->geometry);
+    orbitFree_ = viewCamera_;
+    orbitIgnore_ = sel;
     if (!unbounded)
         if (const auto c = entityCentre(doc, sel)) return *c;
+    orbitIgnore_ = kNoObject;
     if (const auto px = pixelAt(pos)) {
+        orbitIgnore_ = frame_->idAt(px->x(), px->y());
         const std::size_t i = std::size_t(px->y()) * frame_->width + px->x();
         const float depth = i < frame_->depth.size() ? frame_->depth[i] : kInfinity;
         if (std::isfinite(depth)) return projection().pixelRay(px->x(), px->y()).at(depth);
@@ -126,34 +132,61 @@ void Viewport::frameSelection() {
     }
     // Cast from the centre towards where the view will stand: the first surface that is not
     // the selection itself (a wall of the room) limits the distance.
-    float maxDistance = kInfinity;
     const Vec3 back = viewCamera_.position - viewCamera_.target;
-    if (snapshot && glm::length(back) > 1e-6f) {
-        const Vec3 dir = glm::normalize(back);
-        Vec3 origin = center;
-        float travelled = 0.0f;
-        for (int i = 0; i < kMaxSelfHits; ++i) {
-            SurfaceHit hit;
-            if (!snapshot->intersect(Ray::make(origin, dir), kInfinity, hit)) break;
-            if (hit.id != id) {
-                maxDistance = (travelled + hit.t) * kWallClearance;
-                break;
-            }
-            const float step = hit.t + snapshot->epsilon();
-            origin += dir * step;
-            travelled += step;
-        }
-        // Walls and floors also limit it when the selection touches one: stepping out of the
-        // selection there can land behind the plane, where the cast above sees nothing.
-        for (const PlanePrimitive& p : snapshot->planes()) {
-            const float denom = glm::dot(dir, p.shape.normal);
-            if (denom == 0.0f) continue;
-            const float t = glm::dot(p.shape.point - center, p.shape.normal) / denom;
-            if (t > 0.0f) maxDistance = std::min(maxDistance, t * kWallClearance);
-        }
-    }
+    const float maxDistance = glm::length(back) > 1e-6f
+                                  ? freeDistance(center, glm::normalize(back), id) * kWallClearance
+                                  : kInfinity;
     Camera c = viewCamera_;
     ui::frame(c, center, radius, maxDistance);
+    setView(c);
+}
+
+float Viewport::freeDistance(const Vec3& from, const Vec3& dir, ObjectId ignore) const {
+    const auto snapshot = session_->session().snapshot();
+    if (!snapshot) return kInfinity;
+    float free = kInfinity;
+    Vec3 origin = from;
+    float travelled = 0.0f;
+    for (int i = 0; i < kMaxSelfHits; ++i) {
+        SurfaceHit hit;
+        if (!snapshot->intersect(Ray::make(origin, dir), kInfinity, hit)) break;
+        if (hit.id != ignore) {
+            free = travelled + hit.t;
+            break;
+        }
+        const float step = hit.t + snapshot->epsilon();
+        origin += dir * step;
+        travelled += step;
+    }
+    // Walls and floors also limit it when `from` touches one: stepping out of `ignore` there
+    // can land behind the plane, where the cast above sees nothing. A plane `from` lies on
+    // (an orbit about a point of a wall) is left behind, not in the way.
+    for (const PlanePrimitive& p : snapshot->planes()) {
+        const float denom = glm::dot(dir, p.shape.normal);
+        if (denom == 0.0f) continue;
+        const float t = glm::dot(p.shape.point - from, p.shape.normal) / denom;
+        if (t > kOnPlane) free = std::min(free, t);
+    }
+    return free;
+}
+
+void Viewport::orbitView(const QPoint& delta) {
+    // The orbit turns a camera of its own, unclipped, so the view comes back out to its
+    // distance once the way is clear; what is shown stops short of the first surface between
+    // the pivot and the camera (orbiting about a far wall would swing out through the side
+    // walls of the room).
+    orbitAround(orbitFree_, orbitPivot_, worldUp_, delta.x() * 0.4f, delta.y() * 0.4f);
+    Camera c = orbitFree_;
+    const Vec3 out = c.position - orbitPivot_;
+    const float dist = glm::length(out);
+    if (dist > 1e-6f) {
+        const float free = freeDistance(orbitPivot_, out / dist, orbitIgnore_) * kWallClearance;
+        if (free < dist) {
+            const Vec3 in = out * (free / dist - 1.0f);
+            c.position += in;
+            c.target += in;
+        }
+    }
     setView(c);
 }
 

@@ -8,8 +8,15 @@ uniform usampler2D idTex;
 uniform int displayReady;   // 1: colorTex already holds display values
 uniform int tonemap;        // 0 clamp, 1 linear, 2 reinhard, 3 aces (render/image/tonemap.cpp)
 uniform float exposure;
-uniform uint selected;
+uniform uint selected[32];  // kMaxOutlined (ui/display_frame.h)
+uniform int selectedCount;
 uniform vec3 outlineColor;
+
+bool isSelected(uint id) {
+    for (int i = 0; i < selectedCount; ++i)
+        if (selected[i] == id) return true;
+    return false;
+}
 
 float sanitize(float x) { return x > 0.0 ? min(x, 1.0e4) : 0.0; }
 float aces(float x) {
@@ -36,14 +43,14 @@ void main() {
     ivec2 size = textureSize(colorTex, 0);
     ivec2 p = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
     // Ids are uploaded only while something is selected: read them only then.
-    if (selected != 0u) {
+    if (selectedCount > 0) {
         uint id = texelFetch(idTex, p, 0).r;
         ivec2 offs[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
         for (int k = 0; k < 4; ++k) {
             ivec2 q = p + offs[k];
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
             uint n = texelFetch(idTex, q, 0).r;
-            if (n != id && (n == selected || id == selected)) {
+            if (n != id && (isSelected(n) || isSelected(id))) {
                 fragColor = vec4(outlineColor, 1.0);
                 return;
             }

@@ -376,36 +376,36 @@ void DesignerTest::debugViews_ProduceImages() {
     auto rgb = [](const QImage& img, int x, int y) { return img.pixelColor(x, y); };
     for (ViewMode m : {ViewMode::Color, ViewMode::ObjectIds, ViewMode::Normals, ViewMode::Depth,
                        ViewMode::Cost, ViewMode::Retraced})
-        QCOMPARE(viewportImage(*frame, m, kNoObject).size(), QSize(160, 90));
+        QCOMPARE(viewportImage(*frame, m, {}).size(), QSize(160, 90));
 
     // Colour: the red wall is red, the blue ball blue.
-    const QImage color = viewportImage(*frame, ViewMode::Color, kNoObject);
+    const QImage color = viewportImage(*frame, ViewMode::Color, {});
     QVERIFY(rgb(color, lx, ly).red() > 2 * rgb(color, lx, ly).green());
     QVERIFY(rgb(color, bx, by).blue() > rgb(color, bx, by).red());
     // Object ids: one colour per object, different objects different colours.
-    const QImage ids = viewportImage(*frame, ViewMode::ObjectIds, kNoObject);
+    const QImage ids = viewportImage(*frame, ViewMode::ObjectIds, {});
     QCOMPARE(rgb(ids, fx, fy), rgb(ids, fx + 3, fy));
     QVERIFY(rgb(ids, fx, fy) != rgb(ids, wx, wy));
     QVERIFY(rgb(ids, bx, by) != rgb(ids, gx, gy));
     // Normals: the floor faces +y (green full, red and blue half), the back wall +z.
-    const QImage normals = viewportImage(*frame, ViewMode::Normals, kNoObject);
+    const QImage normals = viewportImage(*frame, ViewMode::Normals, {});
     QVERIFY(std::abs(rgb(normals, fx, fy).red() - 127) <= 1 && rgb(normals, fx, fy).green() >= 254 &&
             std::abs(rgb(normals, fx, fy).blue() - 127) <= 1);
     QVERIFY(std::abs(rgb(normals, wx, wy).red() - 127) <= 1 && rgb(normals, wx, wy).blue() >= 254);
     // Depth: near is bright, far is dark; the floor in front is nearer than the back wall.
-    const QImage depth = viewportImage(*frame, ViewMode::Depth, kNoObject);
+    const QImage depth = viewportImage(*frame, ViewMode::Depth, {});
     QVERIFY(rgb(depth, fx, fy).red() > rgb(depth, wx, wy).red() + 30);
     QCOMPARE(rgb(depth, fx, fy).red(), rgb(depth, fx, fy).blue());  // grey
     // Cost: the glass ball's ray trees are deeper than the back wall's single hit.
     QVERIFY(frame->cost[std::size_t(gy) * 160 + gx] > frame->cost[std::size_t(wy) * 160 + wx]);
-    const QImage cost = viewportImage(*frame, ViewMode::Cost, kNoObject);
+    const QImage cost = viewportImage(*frame, ViewMode::Cost, {});
     QVERIFY(rgb(cost, gx, gy) != rgb(cost, wx, wy));
     // Re-traced pixels: after retinting the blue ball, its pixels are marked re-traced (red
     // tint) and the left wall, which cannot see it, is not.
     window_->editor()->setSelection(blue);
     QVERIFY(window_->propertyPanel()->applyEdit(QStringLiteral("material"), "color", Vec3(0.2f, 0.9f, 0.2f)));
     QVERIFY(settle(*window_));
-    const QImage retraced = viewportImage(*window_->viewport()->frame(), ViewMode::Retraced, kNoObject);
+    const QImage retraced = viewportImage(*window_->viewport()->frame(), ViewMode::Retraced, {});
     QVERIFY(rgb(retraced, bx, by).red() >= 127);
     QVERIFY(rgb(retraced, 2, 45).red() < 127);
 }

@@ -123,7 +123,7 @@ void DisplayTest::incrementalHandover_EqualsFullCopyAfterThePass() {
     QVERIFY(sameBits(shown->cost, full.cost));
     QVERIFY(sameBits(shown->flags, full.flags));
     // The raster view re-shaded only what changed; it must still equal shading it all.
-    const QImage expected = viewportImage(full, ViewMode::Color, blue);
+    const QImage expected = viewportImage(full, ViewMode::Color, {blue});
     QCOMPARE(shownImage(), expected.convertToFormat(QImage::Format_RGB888));
 }
 
@@ -146,7 +146,7 @@ void DisplayTest::exposureEdit_ChangesShownImageAndExport_UndoRestoresThem() {
     full.exposure = w.editor()->document().render.exposure;
     QCOMPARE(
         brighter,
-        viewportImage(full, ViewMode::Color, kNoObject).convertToFormat(QImage::Format_RGB888));
+        viewportImage(full, ViewMode::Color, {}).convertToFormat(QImage::Format_RGB888));
     const QImage exportedBrighter = exported(QStringLiteral("brighter.png"));
     QVERIFY(exportedBrighter != exportedBefore);
     QVERIFY(maxDifference(exportedBefore, before) <= 1);  // The file writer rounds its own way.

@@ -1,5 +1,6 @@
 // A real window under Xvfb (xcb, Mesa GL): the OpenGL viewport must show the session's frame
-// as the CPU tone mapping gives it, and draw the selection outline.
+// as the CPU tone mapping gives it, and draw the selection outline, the light glyphs and the
+// transform gizmo.
 #include "gui_test_support.h"
 
 #include "passepartout.h"
@@ -22,6 +23,7 @@ private Q_SLOTS:
     void openGLViewport_ShowsTheToneMappedFrame();
     void openGLViewport_AfterEditsUploadedByRectangles_ShowsTheSessionFrame();
     void openGLViewport_ThroughTheSceneCamera_DimsOnlyOutsideTheOutputFrame();
+    void openGLViewport_DrawsTheGizmo_AndOutlinesEverySelectedObject();
 };
 
 namespace {
@@ -36,7 +38,7 @@ bool underGlyph(MainWindow& w, const QPoint& p) {
 }
 
 int differingPixels(MainWindow& w, const DisplayFrame& frame, ObjectId selected) {
-    const QImage expected = viewportImage(frame, ViewMode::Color, selected);
+    const QImage expected = viewportImage(frame, ViewMode::Color, {selected});
     const QImage shown =
         w.viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
     int bad = 0;
@@ -101,7 +103,7 @@ void GlViewportTest::openGLViewport_ShowsTheToneMappedFrame() {
     int outlinePixels = 0;
     for (int y = 0; y < frame->height; ++y)
         for (int x = 0; x < frame->width; ++x)
-            if (onOutline(*frame, x, y, blue))
+            if (onOutline(*frame, x, y, {blue}))
                 outlinePixels += outlined.pixelColor(w.viewport()->widgetPointOf(x, y)) ==
                                  QColor(kOutlineRgb[0], kOutlineRgb[1], kOutlineRgb[2]);
     QVERIFY(outlinePixels > 10);
@@ -117,6 +119,7 @@ void GlViewportTest::openGLViewport_AfterEditsUploadedByRectangles_ShowsTheSessi
     QVERIFY(traceViewport(w, QSize(320, 180), 1));
     const ObjectId blue = idOf(w, "blue ball");
     w.editor()->setSelection(blue);
+    w.viewport()->setGizmoVisible(false);  // Its pixels are not the frame's.
     QTest::qWait(50);
     // Steps of a drag with repaints between them: colour and ids go up by rectangles.
     w.session()->beginInteraction(blue);
@@ -161,6 +164,61 @@ void GlViewportTest::openGLViewport_ThroughTheSceneCamera_DimsOnlyOutsideTheOutp
     QVERIFY2(std::abs(above - kPassepartoutKeep) < 0.05, qPrintable(QString::number(above)));
     QVERIFY2(std::abs(below - kPassepartoutKeep) < 0.05, qPrintable(QString::number(below)));
     QVERIFY2(std::abs(inside - 1.0) < 0.03, qPrintable(QString::number(inside)));
+    w.editor()->undoStack()->setClean();
+}
+
+void GlViewportTest::openGLViewport_DrawsTheGizmo_AndOutlinesEverySelectedObject() {
+    MainWindow w;
+    w.resize(1000, 700);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.viewport()->frameView()->usesOpenGL());
+    QVERIFY(w.openFile(scenePath("reference-room.scene.json")));
+    w.setRenderSize(160, 90);
+    QVERIFY(settle(w));
+    const ObjectId blue = idOf(w, "blue ball"), chrome = idOf(w, "chrome ball");
+    w.editor()->setSelection(std::vector{blue, chrome});
+    QTest::qWait(100);
+    const auto gizmo = w.viewport()->gizmo();
+    QVERIFY(gizmo);
+    const auto grabShown = [&] {
+        return w.viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
+    };
+    const QImage with = grabShown();
+    w.viewport()->setGizmoVisible(false);
+    QTest::qWait(100);
+    const QImage without = grabShown();
+    // The X arrow is painted red into the GL framebuffer; without the gizmo the frame is there.
+    const QPointF arrow = *gizmo->grabPoint({TransformKind::Move, 0, false});
+    int red = 0, changed = 0;
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            const QPoint p = arrow.toPoint() + QPoint(dx, dy);
+            const QColor c = with.pixelColor(p);
+            red += c.red() > c.green() + 80 && c.red() > c.blue() + 80;
+            changed += c != without.pixelColor(p);
+        }
+    QVERIFY2(red >= 3 && changed >= 3, qPrintable(QStringLiteral("%1 red, %2 changed").arg(red).arg(changed)));
+    // Some ring is drawn too: the gizmo's rotate handle.
+    const QPointF ring = *gizmo->grabPoint({TransformKind::Rotate, 1, false});
+    int ringChanged = 0;
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            const QPoint p = ring.toPoint() + QPoint(dx, dy);
+            ringChanged += with.pixelColor(p) != without.pixelColor(p);
+        }
+    QVERIFY(ringChanged >= 2);
+    // Both selected balls are outlined by the shader.
+    const auto frame = w.viewport()->frame();
+    for (ObjectId id : {blue, chrome}) {
+        int outline = 0;
+        for (int y = 0; y < frame->height; ++y)
+            for (int x = 0; x < frame->width; ++x)
+                if (onOutline(*frame, x, y, {id}))
+                    outline += without.pixelColor(w.viewport()->widgetPointOf(x, y)) ==
+                               QColor(kOutlineRgb[0], kOutlineRgb[1], kOutlineRgb[2]);
+        QVERIFY2(outline > 5, qPrintable(QString::number(id)));
+    }
     w.editor()->undoStack()->setClean();
 }
 

@@ -1,0 +1,431 @@
+// The transform gizmo and multi-selection, with real mouse and key events (offscreen): the
+// gizmo's scale boxes, rings and arrows, world and local axes, Ctrl/Shift-click, box select,
+// Delete of a group, undo in the middle of a gesture, and orbiting about a far wall.
+#include <QApplication>
+#include <QLabel>
+#include <QtTest>
+#include <cmath>
+
+#include "gui_test_support.h"
+#include "outliner_model.h"
+#include "outliner_view.h"
+#include "property_panel.h"
+#include "transform_edits.h"
+
+using namespace rs;
+using namespace rs::ui;
+using namespace rs::ui::test;
+
+namespace {
+
+QString str(const Vec3& v) {
+    return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z);
+}
+
+/// A left-button move with `mods` held (QTest::mouseMove sends no modifiers).
+void moveHeld(QWidget* w, const QPointF& to, Qt::KeyboardModifiers mods = {}) {
+    QMouseEvent e(QEvent::MouseMove, to, w->mapToGlobal(to), Qt::NoButton, Qt::LeftButton, mods);
+    QApplication::sendEvent(w, &e);
+}
+
+/// Presses at `from`, moves in steps to `to` and releases there.
+void drag(QWidget* w, const QPointF& from, const QPointF& to, Qt::KeyboardModifiers mods = {}) {
+    QTest::mousePress(w, Qt::LeftButton, {}, from.toPoint());
+    for (int i = 1; i <= 8; ++i) moveHeld(w, from + (to - from) * (i / 8.0), mods);
+    QTest::mouseRelease(w, Qt::LeftButton, mods, to.toPoint());
+}
+
+}  // namespace
+
+class GizmoTest : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup();
+
+    void scaleBox_DraggedOutwards_ScalesAlongItsAxis_InOneUndoStep();
+    void zRing_DraggedWithCtrl_RotatesAboutZ_In15DegreeSteps();
+    void xArrow_MovesAlongX_AndInLocalAxesAlongTheObjectsOwnX();
+    void planeSquare_MovesInItsPlaneOnly();
+    void ctrlAndShiftClick_SelectSeveral_GMovesAll_OneUndoStep();
+    void gizmoArrow_MovesTheWholeGroup();
+    void boxSelect_SelectsTheBallsWhoseCentresAreInside();
+    void delete_OfAGroup_IsOneUndoStep();
+    void duplicate_OfAGroup_SelectsTheCopies();
+    void outliner_CtrlClick_SelectsSeveral_AndFollowsTheViewport();
+    void propertyPanel_WithSeveralSelected_SaysWhichOneItShows();
+    void ctrlZ_DuringAGizmoDrag_CancelsIt_AndUndoesNothingElse();
+    void ctrlZ_DuringAKeyGesture_CancelsIt();
+    void undoFromTheMenu_DuringADrag_EndsTheDrag();
+    void orbitAboutAFarWall_KeepsTheViewInsideTheRoom();
+
+private:
+    Viewport* viewport() { return window_->viewport(); }
+    SceneEditor* editor() { return window_->editor(); }
+    const SceneDocument& doc() { return window_->editor()->document(); }
+    const Object& object(const std::string& name) {
+        return *doc().findObject(idOf(*window_, name));
+    }
+    /// Clicks `name` in the viewport with `mods`.
+    void click(const std::string& name, Qt::KeyboardModifiers mods = {});
+    /// The widget point grabbing `h` of the gizmo shown now (checked to grab exactly `h`).
+    QPointF grab(const GizmoHandle& h);
+
+    std::unique_ptr<MainWindow> window_;
+};
+
+void GizmoTest::init() {
+    QVERIFY(openRoomWindow(window_));
+    viewport()->setFocus();
+}
+
+void GizmoTest::cleanup() {
+    if (!window_) return;
+    editor()->undoStack()->setClean();  // No save prompt on close.
+    window_.reset();
+}
+
+void GizmoTest::click(const std::string& name, Qt::KeyboardModifiers mods) {
+    const auto [x, y] = pixelOf(*viewport()->frame(), idOf(*window_, name));
+    QVERIFY2(x >= 0, name.c_str());
+    QTest::mouseClick(viewport(), Qt::LeftButton, mods, viewport()->widgetPointOf(x, y));
+}
+
+QPointF GizmoTest::grab(const GizmoHandle& h) {
+    const auto g = viewport()->gizmo();
+    if (!g) return {};
+    const auto at = g->grabPoint(h);
+    if (!at) return {};
+    const auto picked = g->handleAt(*at);
+    return picked && *picked == h ? *at : QPointF();
+}
+
+void GizmoTest::scaleBox_DraggedOutwards_ScalesAlongItsAxis_InOneUndoStep() {
+    click("blue ball");
+    const Transform before = object("blue ball").transform;
+    const Vec3 centreBefore = *entityCentre(doc(), idOf(*window_, "blue ball"));
+    const QPointF at = grab({TransformKind::Scale, 0, false});
+    QVERIFY(!at.isNull());
+    const QPointF centre =
+        *viewport()->projection().project(*entityCentre(doc(), idOf(*window_, "blue ball")));
+    drag(viewport(), at, centre + (at - centre) * 1.5);
+    QVERIFY(!viewport()->transforming());
+    const Transform after = object("blue ball").transform;
+    QVERIFY2(std::abs(after.scale.x - 1.5f * before.scale.x) < 0.05f, qPrintable(str(after.scale)));
+    QCOMPARE(after.scale.y, before.scale.y);
+    QCOMPARE(after.scale.z, before.scale.z);
+    // Scaled about its own centre: it stays where it was.
+    QVERIFY(glm::length(*entityCentre(doc(), idOf(*window_, "blue ball")) - centreBefore) < 1e-4f);
+    QCOMPARE(editor()->undoStack()->count(), 1);
+    editor()->undoStack()->undo();
+    QVERIFY(object("blue ball").transform == before);
+}
+
+void GizmoTest::zRing_DraggedWithCtrl_RotatesAboutZ_In15DegreeSteps() {
+    click("blue ball");
+    const Transform before = object("blue ball").transform;
+    const QPointF at = grab({TransformKind::Rotate, 2, false});
+    QVERIFY(!at.isNull());
+    const QPointF c =
+        *viewport()->projection().project(*entityCentre(doc(), idOf(*window_, "blue ball")));
+    // A quarter turn of the cursor about the centre, Ctrl held after the press.
+    const QPointF r = at - c;
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, at.toPoint());
+    for (int i = 1; i <= 10; ++i) {
+        const double a = -M_PI / 2 * i / 10.0;  // Anticlockwise on screen (y grows down).
+        moveHeld(viewport(),
+                 c + QPointF(r.x() * std::cos(a) - r.y() * std::sin(a),
+                             r.x() * std::sin(a) + r.y() * std::cos(a)),
+                 Qt::ControlModifier);
+    }
+    QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::ControlModifier,
+                        viewport()->mapFromGlobal(QCursor::pos()));
+    const Transform after = object("blue ball").transform;
+    const float turned = after.rotate.z - before.rotate.z;
+    QVERIFY2(std::abs(std::abs(turned) - 90.0f) < 1e-3f, qPrintable(str(after.rotate)));
+    QCOMPARE(after.rotate.x, before.rotate.x);
+    QCOMPARE(after.rotate.y, before.rotate.y);
+    QCOMPARE(editor()->undoStack()->count(), 1);
+}
+
+void GizmoTest::xArrow_MovesAlongX_AndInLocalAxesAlongTheObjectsOwnX() {
+    click("blue ball");
+    const ObjectId id = idOf(*window_, "blue ball");
+    Vec3 before = object("blue ball").transform.translate;
+    QPointF at = grab({TransformKind::Move, 0, false});
+    QVERIFY(!at.isNull());
+    drag(viewport(), at, at + QPointF(40, 0));
+    Vec3 delta = object("blue ball").transform.translate - before;
+    QVERIFY2(delta.x > 0.2f && delta.y == 0.0f && delta.z == 0.0f, qPrintable(str(delta)));
+
+    // Turned 45 degrees about Z, in local axes the X arrow follows the ball's own X.
+    QTest::keyClicks(viewport(), QStringLiteral("rz45"));
+    QTest::keyClick(viewport(), Qt::Key_Return);
+    viewport()->setLocalOrientation(true);
+    before = object("blue ball").transform.translate;
+    at = grab({TransformKind::Move, 0, false});
+    QVERIFY(!at.isNull());
+    const QPointF tip = *viewport()->projection().project(before + gizmoAxes(doc(), id, true)[0]);
+    const QPointF c = *viewport()->projection().project(before);
+    drag(viewport(), at, at + (tip - c) * 0.5);
+    delta = object("blue ball").transform.translate - before;
+    const Vec3 ownX = glm::normalize(Vec3(1, 1, 0));
+    QVERIFY2(glm::length(delta) > 0.2f && glm::length(glm::cross(delta, ownX)) < 1e-3f,
+             qPrintable(str(delta)));
+    QCOMPARE(editor()->undoStack()->count(), 3);
+}
+
+void GizmoTest::planeSquare_MovesInItsPlaneOnly() {
+    click("blue ball");
+    const Vec3 before = object("blue ball").transform.translate;
+    // The square between X and Z (normal Y): the floor's plane.
+    const QPointF at = grab({TransformKind::Move, 1, true});
+    QVERIFY(!at.isNull());
+    drag(viewport(), at, at + QPointF(30, 20));
+    const Vec3 delta = object("blue ball").transform.translate - before;
+    QVERIFY2(std::abs(delta.y) < 1e-4f && std::abs(delta.x) > 0.1f && std::abs(delta.z) > 0.1f,
+             qPrintable(str(delta)));
+}
+
+void GizmoTest::ctrlAndShiftClick_SelectSeveral_GMovesAll_OneUndoStep() {
+    click("blue ball");
+    click("chrome ball", Qt::ControlModifier);
+    click("green ball", Qt::ShiftModifier);
+    const std::vector<ObjectId> three = {idOf(*window_, "blue ball"), idOf(*window_, "chrome ball"),
+                                         idOf(*window_, "green ball")};
+    QVERIFY(editor()->selectedIds() == three);
+    QCOMPARE(editor()->selection(), three.back());  // The last picked is the active one.
+    // Ctrl-click again takes one out.
+    click("chrome ball", Qt::ControlModifier);
+    QVERIFY((editor()->selectedIds() == std::vector{three[0], three[2]}));
+    const SceneDocument before = doc();
+    QTest::keyClicks(viewport(), QStringLiteral("gx1"));
+    QTest::keyClick(viewport(), Qt::Key_Return);
+    for (const char* n : {"blue ball", "green ball"}) {
+        const Vec3 d = object(n).transform.translate -
+                       before.findObject(idOf(*window_, n))->transform.translate;
+        QVERIFY2(glm::length(d - Vec3(1, 0, 0)) < 1e-5f, n);
+    }
+    QVERIFY(object("chrome ball").transform == before.findObject(three[1])->transform);
+    QCOMPARE(editor()->undoStack()->count(), 1);
+    editor()->undoStack()->undo();
+    QVERIFY(doc().sameContent(before));
+    // A plain click on one of them selects it alone.
+    click("blue ball");
+    QVERIFY(editor()->selectedIds() == std::vector{three[0]});
+}
+
+void GizmoTest::gizmoArrow_MovesTheWholeGroup() {
+    click("blue ball");
+    click("glass ball", Qt::ControlModifier);
+    const SceneDocument before = doc();
+    const QPointF at = grab({TransformKind::Move, 0, false});
+    QVERIFY(!at.isNull());
+    drag(viewport(), at, at + QPointF(40, 0));
+    const Vec3 a = object("blue ball").transform.translate -
+                   before.findObject(idOf(*window_, "blue ball"))->transform.translate;
+    const Vec3 b = object("glass ball").transform.translate -
+                   before.findObject(idOf(*window_, "glass ball"))->transform.translate;
+    QVERIFY2(a.x > 0.2f && glm::length(a - b) < 1e-5f, qPrintable(str(a) + str(b)));
+    QCOMPARE(editor()->undoStack()->count(), 1);
+    editor()->undoStack()->undo();
+    QVERIFY(doc().sameContent(before));
+}
+
+void GizmoTest::boxSelect_SelectsTheBallsWhoseCentresAreInside() {
+    // A box about the blue and the glass ball's centres (with a margin).
+    const ViewProjection view = viewport()->projection();
+    const QPointF a = *view.project(*entityCentre(doc(), idOf(*window_, "blue ball")));
+    const QPointF b = *view.project(*entityCentre(doc(), idOf(*window_, "glass ball")));
+    const QRectF box = QRectF(a, b).normalized().adjusted(-6, -6, 6, 6);
+    std::vector<ObjectId> expected;
+    for (const Object& o : doc().objects)
+        if (!std::holds_alternative<PlaneGeometry>(o.geometry))
+            if (const auto p = view.project(*entityCentre(doc(), o.id)); p && box.contains(*p))
+                expected.push_back(o.id);
+    QVERIFY(expected.size() >= 2);
+    // B, then a drag that starts on a ball: with B it draws a box instead of moving it.
+    QTest::keyClick(viewport(), Qt::Key_B);
+    const SceneDocument before = doc();
+    drag(viewport(), box.topLeft(), box.bottomRight());
+    std::vector<ObjectId> got = editor()->selectedIds();
+    std::sort(got.begin(), got.end());
+    std::sort(expected.begin(), expected.end());
+    QVERIFY2(got == expected,
+             qPrintable(
+                 QStringLiteral("%1 selected, %2 expected").arg(got.size()).arg(expected.size())));
+    QVERIFY(doc().sameContent(before));  // Nothing moved, no walls taken.
+    QCOMPARE(editor()->undoStack()->count(), 0);
+
+    // A box about the whole image takes every ball and the light, never a wall.
+    QTest::keyClick(viewport(), Qt::Key_B);
+    const QRect all(QPoint(1, 1), QPoint(viewport()->width() - 2, viewport()->height() - 2));
+    drag(viewport(), all.topLeft(), all.bottomRight());
+    int balls = 0;
+    for (const Object& o : doc().objects) {
+        const auto p = view.project(*entityCentre(doc(), o.id));
+        const bool inside = !std::holds_alternative<PlaneGeometry>(o.geometry) && p &&
+                            all.contains(p->toPoint());
+        balls += inside;
+        QVERIFY2(editor()->isSelected(o.id) == inside, o.name.c_str());
+    }
+    QVERIFY(balls >= 5);
+    QVERIFY(editor()->isSelected(doc().lights.front().id));
+    editor()->setSelection(expected);
+
+    // Shift adds a box's contents to the selection: the light's glyph this time.
+    const QPointF light = viewport()->lightGlyphs().front().centre;
+    QTest::keyClick(viewport(), Qt::Key_B);
+    drag(viewport(), light - QPointF(8, 8), light + QPointF(8, 8), Qt::ShiftModifier);
+    QCOMPARE(editor()->selectedIds().size(), expected.size() + 1);
+    QVERIFY(editor()->isSelected(doc().lights.front().id));
+}
+
+void GizmoTest::delete_OfAGroup_IsOneUndoStep() {
+    click("blue ball");
+    click("chalk ball", Qt::ControlModifier);
+    QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ControlModifier,
+                      viewport()->lightGlyphs().front().centre.toPoint());
+    QCOMPARE(editor()->selectedIds().size(), std::size_t(3));
+    const SceneDocument before = doc();
+    QTest::keyClick(viewport(), Qt::Key_Delete);
+    QCOMPARE(idOf(*window_, "blue ball"), kNoObject);
+    QCOMPARE(idOf(*window_, "chalk ball"), kNoObject);
+    QVERIFY(doc().lights.empty());
+    QCOMPARE(doc().objects.size(), before.objects.size() - 2);
+    QVERIFY(editor()->selectedIds().empty());
+    QCOMPARE(editor()->undoStack()->count(), 1);
+    QTest::keyClick(viewport(), Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY(doc().sameContent(before));
+}
+
+void GizmoTest::duplicate_OfAGroup_SelectsTheCopies() {
+    click("blue ball");
+    click("chalk ball", Qt::ControlModifier);
+    const std::size_t n = doc().objects.size();
+    QTest::keyClick(viewport(), Qt::Key_D, Qt::ControlModifier);
+    QCOMPARE(doc().objects.size(), n + 2);
+    QCOMPARE(editor()->selectedIds().size(), std::size_t(2));
+    for (ObjectId id : editor()->selectedIds()) {
+        QVERIFY(id != idOf(*window_, "blue ball") && id != idOf(*window_, "chalk ball"));
+        QVERIFY(doc().findObject(id));
+    }
+    QCOMPARE(editor()->undoStack()->count(), 1);
+}
+
+void GizmoTest::outliner_CtrlClick_SelectsSeveral_AndFollowsTheViewport() {
+    OutlinerView* tree = window_->outliner();
+    OutlinerModel* model = tree->outlinerModel();
+    const ObjectId blue = idOf(*window_, "blue ball"), green = idOf(*window_, "green ball");
+    const auto clickRow = [&](ObjectId id, Qt::KeyboardModifiers mods) {
+        const QRect r = tree->visualRect(model->indexOf(id));
+        QVERIFY(r.isValid());
+        QTest::mouseClick(tree->viewport(), Qt::LeftButton, mods, r.center());
+    };
+    clickRow(blue, {});
+    clickRow(green, Qt::ControlModifier);
+    QVERIFY((editor()->selectedIds() == std::vector{blue, green}));
+    QCOMPARE(tree->selectionModel()->selectedRows().size(), 2);
+    // Selected in the viewport, the rows follow.
+    click("chrome ball", Qt::ShiftModifier);
+    QCOMPARE(tree->selectionModel()->selectedRows().size(), 3);
+    QVERIFY(tree->selectionModel()->isSelected(model->indexOf(idOf(*window_, "chrome ball"))));
+}
+
+void GizmoTest::propertyPanel_WithSeveralSelected_SaysWhichOneItShows() {
+    click("blue ball");
+    QVERIFY(!window_->propertyPanel()->findChild<QLabel*>(QStringLiteral("selectionSummary")));
+    click("glass ball", Qt::ControlModifier);
+    const auto* summary =
+        window_->propertyPanel()->findChild<QLabel*>(QStringLiteral("selectionSummary"));
+    QVERIFY(summary);
+    QVERIFY2(summary->text().contains(QStringLiteral("2 selected")) &&
+                 summary->text().contains(QStringLiteral("glass ball")),
+             qPrintable(summary->text()));
+    // Its fields are the active one's.
+    QVERIFY(window_->propertyPanel()->applyEdit(QStringLiteral("transform"), "translate",
+                                                Vec3(0.0f, 1.0f, -4.0f)));
+    QVERIFY(object("glass ball").transform.translate == Vec3(0.0f, 1.0f, -4.0f));
+}
+
+void GizmoTest::ctrlZ_DuringAGizmoDrag_CancelsIt_AndUndoesNothingElse() {
+    click("blue ball");
+    QTest::keyClicks(viewport(), QStringLiteral("gy1"));  // An earlier step that must survive.
+    QTest::keyClick(viewport(), Qt::Key_Return);
+    const SceneDocument before = doc();
+    const QPointF at = grab({TransformKind::Move, 0, false});
+    QVERIFY(!at.isNull());
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, at.toPoint());
+    for (int i = 1; i <= 4; ++i) moveHeld(viewport(), at + QPointF(10 * i, 0));
+    QVERIFY(viewport()->transforming());
+    QVERIFY(!doc().sameContent(before));
+    QTest::keyClick(viewport(), Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY(!viewport()->transforming());
+    QVERIFY(doc().sameContent(before));
+    QCOMPARE(editor()->undoStack()->count(), 1);
+    // The rest of the drag does nothing.
+    moveHeld(viewport(), at + QPointF(60, 0));
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, (at + QPointF(60, 0)).toPoint());
+    QVERIFY(doc().sameContent(before));
+    QCOMPARE(editor()->undoStack()->count(), 1);
+}
+
+void GizmoTest::ctrlZ_DuringAKeyGesture_CancelsIt() {
+    click("blue ball");
+    const SceneDocument before = doc();
+    const QPoint c = viewport()->rect().center();
+    QTest::mouseMove(viewport(), c);
+    QTest::keyClick(viewport(), Qt::Key_G);
+    for (int i = 1; i <= 4; ++i) QTest::mouseMove(viewport(), c + QPoint(12 * i, 0));
+    QVERIFY(!doc().sameContent(before));
+    QTest::keyClick(viewport(), Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY(!viewport()->transforming());
+    QVERIFY(doc().sameContent(before));
+    QCOMPARE(editor()->undoStack()->count(), 0);
+}
+
+void GizmoTest::undoFromTheMenu_DuringADrag_EndsTheDrag() {
+    click("blue ball");
+    const SceneDocument before = doc();
+    const QPointF at = grab({TransformKind::Move, 0, false});
+    QVERIFY(!at.isNull());
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, at.toPoint());
+    for (int i = 1; i <= 4; ++i) moveHeld(viewport(), at + QPointF(10 * i, 0));
+    QCOMPARE(editor()->undoStack()->count(), 1);
+    editor()->undoStack()->undo();  // What Edit -> Undo does.
+    QVERIFY(!viewport()->transforming());
+    QVERIFY(doc().sameContent(before));
+    moveHeld(viewport(), at + QPointF(60, 0));
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, (at + QPointF(60, 0)).toPoint());
+    QVERIFY(doc().sameContent(before));
+    QVERIFY(!editor()->undoStack()->canUndo());
+}
+
+void GizmoTest::orbitAboutAFarWall_KeepsTheViewInsideTheRoom() {
+    // Nothing selected: the orbit turns about the back wall under the cursor, 14 units away,
+    // which unclipped swings the view out through the side wall.
+    editor()->setSelection(kNoObject);
+    Viewport* v = viewport();
+    const QPoint c = v->rect().center();
+    const auto px = v->pixelAt(c);
+    QVERIFY(px);
+    QCOMPARE(v->frame()->idAt(px->x(), px->y()), idOf(*window_, "back wall"));
+    const Vec3 forwardBefore = glm::normalize(v->viewCamera().target - v->viewCamera().position);
+    QTest::mousePress(v, Qt::RightButton, {}, c);
+    for (int i = 1; i <= 10; ++i) QTest::mouseMove(v, c + QPoint(10 * i, 0));
+    QTest::mouseRelease(v, Qt::RightButton, {}, c + QPoint(100, 0));
+    const Camera& cam = v->viewCamera();
+    for (const Object& o : doc().objects)
+        if (const auto* plane = std::get_if<PlaneGeometry>(&o.geometry))
+            QVERIFY2(glm::dot(cam.position - plane->point, plane->normal) > 0.0f,
+                     qPrintable(QString::fromStdString("behind the " + o.name + " at ") +
+                                str(cam.position)));
+    // It did turn, about 40 degrees.
+    const Vec3 forward = glm::normalize(cam.target - cam.position);
+    QVERIFY(glm::degrees(std::acos(glm::dot(forward, forwardBefore))) > 30.0f);
+    QCOMPARE(editor()->undoStack()->count(), 0);
+}
+
+QTEST_MAIN(GizmoTest)
+#include "gizmo_test.moc"
