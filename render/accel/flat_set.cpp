@@ -49,14 +49,12 @@ namespace {
 
 namespace {
 
-bool useAvx2() {
 #if defined(RS_FLAT_DISPATCH)
+bool useAvx2() {
     static const bool has = __builtin_cpu_supports("avx2");
     return has;
-#else
-    return false;
-#endif
 }
+#endif
 
 void othersMasks(const FlatView& v, const RayBatch& rays, std::size_t first, const float* tmax,
                  uint8_t* masks, FlatSet::Lanes lanes) {
