@@ -87,6 +87,15 @@ TEST(SessionFailure, FrameOverAreaLimit_IsRefusedWithMessage_AndSessionKeepsWork
     std::exit(::testing::Test::HasFailure() ? 1 : 0);
 }
 
+TEST(SessionFailure, BadAllocOfTheFrame_IsReported_AndSessionKeepsWorking) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    GTEST_SKIP() << "sanitizers reserve more address space than the limit allows";
+#else
+    GTEST_FLAG_SET(death_test_style, "threadsafe");  // A fresh process: no inherited threads.
+    EXPECT_EXIT(renderUnderAddressSpaceLimit(), ::testing::ExitedWithCode(0), "");
+#endif
+}
+
 /// An allocation that fails while the session builds a snapshot (a huge scene, on the
 /// session's scheduler thread, where the designer's edits are applied) is reported through
 /// the observer; the session keeps what it showed and renders the next edit. The failure is
