@@ -122,20 +122,9 @@ bool writeImage(const std::string& path, const ImageRgb& image, ToneMap op, floa
 
     // Write next to the target and rename over it, so readers and crashes never see a
     // half-written image and a failed write leaves any previous file untouched.
-    const fs::path target(path);
-    const fs::path tmp = temporarySibling(target);
-    std::error_code ec;
-    if (!writeWithOiio(path, tmp, image, kind, op, exposure, error)) {
-        fs::remove(tmp, ec);
-        return false;
-    }
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        error = "cannot write '" + path + "': " + ec.message();
-        fs::remove(tmp, ec);
-        return false;
-    }
-    return true;
+    return writeAtomically(path, [&](const fs::path& tmp) {
+        return writeWithOiio(path, tmp, image, kind, op, exposure, error);
+    }, error);
 }
 
 bool readImage(const std::string& path, ImageRgb& image, std::string& error) {

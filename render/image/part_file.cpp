@@ -84,20 +84,9 @@ bool writePart(const std::string& path, const PartHeader& header, const ImageRgb
         error = "cannot write '" + path + "': the band's size does not match its part";
         return false;
     }
-    const fs::path target(path);
-    const fs::path tmp = temporarySibling(target);
-    std::error_code ec;
-    if (!writeFile(tmp, path, header, band, ids, error)) {
-        fs::remove(tmp, ec);
-        return false;
-    }
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        error = "cannot write '" + path + "': " + ec.message();
-        fs::remove(tmp, ec);
-        return false;
-    }
-    return true;
+    return writeAtomically(path, [&](const fs::path& tmp) {
+        return writeFile(tmp, path, header, band, ids, error);
+    }, error);
 }
 
 bool readPartHeader(const std::string& path, PartHeader& header, std::string& error) {

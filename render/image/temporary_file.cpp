@@ -1,4 +1,5 @@
-// Unique temporary names beside a target file: a per-process random seed and a counter.
+// Unique temporary names beside a target file (a per-process random seed and a counter),
+// and the write-then-rename that uses them.
 #include "image/temporary_file.h"
 
 #include <atomic>
@@ -21,6 +22,25 @@ std::filesystem::path temporarySibling(const std::filesystem::path& path) {
     std::filesystem::path tmp = path;
     tmp.replace_filename(name);
     return tmp;
+}
+
+bool writeAtomically(const std::string& path,
+                     const std::function<bool(const std::filesystem::path& tmp)>& write,
+                     std::string& error) {
+    const std::filesystem::path target(path);
+    const std::filesystem::path tmp = temporarySibling(target);
+    std::error_code ec;
+    if (!write(tmp)) {
+        std::filesystem::remove(tmp, ec);
+        return false;
+    }
+    std::filesystem::rename(tmp, target, ec);
+    if (ec) {
+        error = "cannot write '" + path + "': " + ec.message();
+        std::filesystem::remove(tmp, ec);
+        return false;
+    }
+    return true;
 }
 
 }  // namespace rs
