@@ -1,0 +1,94 @@
+// The interaction policy's file form and the governor's choice of levels.
+#include "session_test_support.h"
+
+#include <gtest/gtest.h>
+
+namespace rs {
+namespace {
+
+TEST(InteractionPolicy, JsonRoundTripAndErrorsNameTheKey) {
+    InteractionPolicy p;
+    p.resolution = MovingResolution::Quarter;
+    p.refraction = RefractionMode::DiffuseExceptSelected;
+    p.shadows = MovingShadows::HardOnly;
+    p.maxDepthWhileMoving = 2;
+    p.governorTargetMs = 12.5;
+    InteractionPolicy back = InteractionPolicy::none();
+    std::string error;
+    ASSERT_TRUE(policyFromJson(policyToJson(p), back, error)) << error;
+    EXPECT_EQ(back, p);
+    EXPECT_FALSE(policyFromJson(R"({"shadow": "off"})", back, error));
+    EXPECT_NE(error.find("shadow"), std::string::npos);
+    EXPECT_FALSE(policyFromJson(R"({"shadows": "sometimes"})", back, error));
+    EXPECT_NE(error.find("sometimes"), std::string::npos);
+}
+
+TEST(Governor, LowerTargetsPickCheaperLevels) {
+    Governor g;
+    g.calibrate(0.001);  // 1 microsecond per full-quality pixel.
+    const InteractionPolicy base = InteractionPolicy::none();
+    const int generous = g.choose(base, 100000, 1000.0);
+    const int tight = g.choose(base, 100000, 10.0);
+    const int impossible = g.choose(base, 100000, 0.001);
+    EXPECT_EQ(generous, 0);
+    EXPECT_GT(tight, generous);
+    EXPECT_EQ(impossible, Governor::kLevels - 1);
+    // Feedback moves predictions: a level measured slow is skipped.
+    g.record(1, 1000.0, 100000);
+    EXPECT_GT(g.choose(base, 100000, 60.0), 1);
+}
+
+TEST(Governor, LevelsThatChangeThePictureComeLast) {
+    // The default aims at what a 30 Hz display shows.
+    EXPECT_DOUBLE_EQ(InteractionPolicy{}.governorTargetMs, 1000.0 / 30.0);
+    InteractionPolicy full = InteractionPolicy::none();
+    full.governorTargetMs = InteractionPolicy::kDefaultGovernorTargetMs;
+    auto keepsMaterials = [](const InteractionPolicy& p) {
+        return p.reflection == ReflectionMode::Full && p.refraction == RefractionMode::Full &&
+               p.maxDepthWhileMoving < 0 && !p.boxProxy;
+    };
+    // First what the picture gets back after release or shows a little softer...
+    EXPECT_EQ(Governor::policyForLevel(full, 0), full);
+    EXPECT_EQ(Governor::policyForLevel(full, 1).shadows, MovingShadows::Deferred);
+    EXPECT_EQ(Governor::policyForLevel(full, 1).resolution, MovingResolution::Full);
+    EXPECT_EQ(Governor::policyForLevel(full, 2).resolution, MovingResolution::Half);
+    for (int level : {0, 1, 2}) EXPECT_TRUE(keepsMaterials(Governor::policyForLevel(full, level)));
+    // ...then white glass and mirrors, blocks, a box, in that order.
+    const InteractionPolicy diffuse = Governor::policyForLevel(full, 3);
+    EXPECT_EQ(diffuse.refraction, RefractionMode::Diffuse);
+    EXPECT_EQ(diffuse.reflection, ReflectionMode::Diffuse);
+    EXPECT_EQ(diffuse.resolution, MovingResolution::Half);
+    EXPECT_FALSE(diffuse.boxProxy);
+    EXPECT_EQ(Governor::policyForLevel(full, 4).resolution, MovingResolution::Quarter);
+    EXPECT_FALSE(Governor::policyForLevel(full, 4).boxProxy);
+    EXPECT_TRUE(Governor::policyForLevel(full, 5).boxProxy);
+    // Each level predicts a cheaper frame than the one before.
+    Governor g;
+    g.calibrate(1e-4);
+    for (int level = 1; level < Governor::kLevels; ++level)
+        EXPECT_LT(Governor::tracedPixels(Governor::policyForLevel(full, level), 100000) *
+                      g.predictedMsPerPixel(full, level),
+                  Governor::tracedPixels(Governor::policyForLevel(full, level - 1), 100000) *
+                      g.predictedMsPerPixel(full, level - 1))
+            << level;
+    EXPECT_STREQ(Governor::levelName(2), "half resolution");
+}
+
+TEST(Governor, AtTheDefaultTarget_ADragStaysFullQuality_AWholeFrameOnlyHalvesTheResolution) {
+    // A room pixel at 1e-4 ms (a 1 Mpixel full frame in 100 ms, this machine's viewport).
+    Governor g;
+    g.calibrate(1e-4);
+    const InteractionPolicy defaults;  // Deferred shadows, 33 ms.
+    // A ball's drag step re-traces about 1.5 % of the frame: nothing is turned down.
+    EXPECT_EQ(g.choose(defaults, 15000, defaults.governorTargetMs), 0);
+    // An orbit re-traces everything: deferred shadows alone (45 ms) miss the target, half
+    // resolution meets it; mirrors and glass stay. Level 1 is the user's own setting (shadows
+    // already deferred), so it is skipped.
+    EXPECT_EQ(g.choose(defaults, 1000000, defaults.governorTargetMs), 2);
+    // Only a measured cost that really forces it goes further.
+    g.record(2, 60.0, 250000);
+    EXPECT_GE(g.choose(defaults, 1000000, defaults.governorTargetMs), 3);
+}
+
+}  // namespace
+}  // namespace rs
