@@ -309,20 +309,25 @@ TEST(Renderer, GlassPairAtDepth1000_MinWeightBoundsTheTree) {
 }
 
 TEST(Renderer, CancelStopsInsideADeepRayTree) {
-    // Trees that double per level (min_weight 0, depth 40) would take longer than the test's
-    // timeout to finish even one tile: the render returns only because cancellation is
-    // polled between the levels of a tree.
+    // With min_weight 0 the glass pair's trees grow about sevenfold every ten levels: at
+    // depth 40 the whole 64x36 image takes ~0.2 s (so a cancel at 200 ms raced the finish
+    // and CI once lost), at 60 ~8 s, at 80 several minutes on a 2-core machine. The render
+    // returns at once only because cancellation is polled between the levels of a tree.
     std::atomic<bool> cancel{false};
     RenderOptions options;
     options.cancel = &cancel;
     std::thread canceller([&] {
-        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
         cancel = true;
     });
-    const RenderResult r = renderImage(CompiledScene(glassPair(40, 0.0f)), options);
+    const auto start = std::chrono::steady_clock::now();
+    const RenderResult r = renderImage(CompiledScene(glassPair(80, 0.0f)), options);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     canceller.join();
     EXPECT_TRUE(r.cancelled);
     EXPECT_EQ(r.image.pixels.size(), std::size_t(64 * 36));
+    // Promptly: far below the minutes the uncancelled render takes, with room for TSan.
+    EXPECT_LT(seconds, 20.0);
 }
 
 }  // namespace
