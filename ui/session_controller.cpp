@@ -1,7 +1,6 @@
 // SessionController: worker-thread callbacks to GUI-thread signals at display rate.
 #include "session_controller.h"
 
-#include <QMetaObject>
 
 #include <algorithm>
 #include <chrono>
@@ -15,7 +14,7 @@ constexpr std::size_t kMaxListedTiles = 16384;
 }
 
 SessionController::SessionController(int threads, QObject* parent)
-    : QObject(parent), session_(std::make_unique<RenderSession>(threads)) {
+    : QObject(parent), session_(std::make_unique<RenderSession>(threads)), mailbox_(this) {
     qRegisterMetaType<rs::PassInfo>();
     repaintTimer_.setSingleShot(true);
     repaintTimer_.setInterval(kDisplayIntervalMs);
@@ -134,9 +133,7 @@ void SessionController::tileDone(int x0, int y0, int x1, int y1, uint64_t genera
         committedGeneration_ = std::max(committedGeneration_, generation);
     }
     if (framePending_.exchange(true)) return;
-    QMetaObject::invokeMethod(
-        this, [this] { if (!repaintTimer_.isActive()) repaintTimer_.start(); },
-        Qt::QueuedConnection);
+    mailbox_.post([this] { if (!repaintTimer_.isActive()) repaintTimer_.start(); });
 }
 
 void SessionController::onRepaintTimer() {
@@ -145,17 +142,14 @@ void SessionController::onRepaintTimer() {
 }
 
 void SessionController::passDone(const PassInfo& info) {
-    QMetaObject::invokeMethod(this, [this, info] { Q_EMIT passFinished(info); },
-                              Qt::QueuedConnection);
+    mailbox_.post([this, info] { Q_EMIT passFinished(info); });
 }
 
 void SessionController::frameComplete(uint64_t generation) {
-    QMetaObject::invokeMethod(
-        this, [this, generation] {
-            Q_EMIT frameUpdated();
-            Q_EMIT frameCompleted(generation);
-        },
-        Qt::QueuedConnection);
+    mailbox_.post([this, generation] {
+        Q_EMIT frameUpdated();
+        Q_EMIT frameCompleted(generation);
+    });
 }
 
 }  // namespace rs::ui
