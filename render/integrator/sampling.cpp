@@ -1,6 +1,7 @@
 // Stratified sample patterns for supersampling and sphere lights.
 #include "integrator/sampling.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -30,15 +31,23 @@ Vec3 pixelSampleOffset(int k, int n, uint32_t seed) {
 }
 
 DiskStrata::DiskStrata(int n)
-    : cols(std::max(1, int(std::ceil(std::sqrt(double(n)))))), rows((n + cols - 1) / cols) {}
+    : cols(std::max(1, int(std::ceil(std::sqrt(double(n)))))), rows((n + cols - 1) / cols) {
+    strata_.resize(std::size_t(std::clamp(n, 0, kMaxSampleCount)));
+    for (std::size_t k = 0; k < strata_.size(); ++k) strata_[k] = stratum(int(k));
+}
+
+DiskStrata::Stratum DiskStrata::stratum(int k) const {
+    return {float(k % cols), float(k / cols), hashKey(uint32_t(2 * k)), hashKey(uint32_t(2 * k + 1))};
+}
 
 Vec3 DiskStrata::sample(int k, uint32_t seed) const {
     // Strata on a cols x rows grid covering n (the last row may be partial), then
     // Shirley-Chiu concentric mapping keeps strata compact on the disk.
-    float jx = hashToUnit(hashCombine(seed, uint32_t(2 * k)));
-    float jy = hashToUnit(hashCombine(seed, uint32_t(2 * k + 1)));
-    float sx = 2.0f * (float(k % cols) + jx) / float(cols) - 1.0f;
-    float sy = 2.0f * (float(k / cols) + jy) / float(rows) - 1.0f;
+    const Stratum cell = std::size_t(k) < strata_.size() ? strata_[std::size_t(k)] : stratum(k);
+    float jx = hashToUnit(hashKeyed(seed, cell.keyX));
+    float jy = hashToUnit(hashKeyed(seed, cell.keyY));
+    float sx = 2.0f * (cell.column + jx) / float(cols) - 1.0f;
+    float sy = 2.0f * (cell.row + jy) / float(rows) - 1.0f;
     if (sx == 0.0f && sy == 0.0f) return Vec3(0.0f);
     float r, phi;
     if (std::abs(sx) > std::abs(sy)) {

@@ -2,8 +2,10 @@
 #pragma once
 
 #include "core/math.h"
+#include "scene/document.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace rs {
 
@@ -18,8 +20,12 @@ inline uint32_t hash32(uint32_t x) {
     return x;
 }
 
+/// hashCombine's second key, worked out ahead where it is used with many first keys.
+inline uint32_t hashKey(uint32_t b) { return hash32(b) + 0x9e3779b9U; }
+/// hashCombine(a, b) given hashKey(b).
+inline uint32_t hashKeyed(uint32_t a, uint32_t key) { return hash32(a ^ key); }
 /// Hash of several keys.
-inline uint32_t hashCombine(uint32_t a, uint32_t b) { return hash32(a ^ (hash32(b) + 0x9e3779b9U)); }
+inline uint32_t hashCombine(uint32_t a, uint32_t b) { return hashKeyed(a, hashKey(b)); }
 
 /// Uniform float in [0, 1) from a hash.
 inline float hashToUnit(uint32_t h) { return float(h >> 8) * (1.0f / 16777216.0f); }
@@ -32,12 +38,23 @@ Vec3 pixelSampleOffset(int k, int n, uint32_t seed);
 /// a sub-grid with hashed jitter. Used for sphere lights: the disk faces the shading point.
 Vec3 stratifiedDiskSample(int k, int n, uint32_t seed);
 
-/// stratifiedDiskSample's grid for n samples, worked out once for all k of a light.
+/// stratifiedDiskSample's grid for n samples, worked out once for all k (and every light and
+/// shading point): each stratum's cell and the hash keys of its jitter.
 struct DiskStrata {
     explicit DiskStrata(int n);
-    /// stratifiedDiskSample(k, n, seed).
+    /// stratifiedDiskSample(k, n, seed), for 0 <= k < n.
     Vec3 sample(int k, uint32_t seed) const;
     int cols, rows;
+
+private:
+    struct Stratum {
+        float column, row;    ///< k % cols and k / cols.
+        uint32_t keyX, keyY;  ///< hashKey(2k) and hashKey(2k + 1).
+    };
+    Stratum stratum(int k) const;
+    /// Strata k < kMaxSampleCount (the format's limit); documents built in code may ask for
+    /// more, whose strata are worked out when sampled.
+    std::vector<Stratum> strata_;
 };
 
 }  // namespace rs
