@@ -10,30 +10,56 @@ namespace rs {
 
 namespace {
 
-/// Appends the sample toward light point q from p (unit normal n) unless q is p itself or lies
-/// below the horizon; true when it was appended.
+/// Samples toward light points q (one, or a lane of them) from p with unit normal n: unit
+/// direction, distance and n . dir, as glm's length, divide and dot have them.
+template <class F>
+struct TowardLight {
+    F x, y, z, dist, nl;
+
+    TowardLight(F qx, F qy, F qz, const Vec3& p, const Vec3& n) {
+        x = qx - p.x, y = qy - p.y, z = qz - p.z;
+        dist = sqrtLanes((x * x + y * y) + z * z);
+        x = x / dist, y = y / dist, z = z / dist;
+        nl = (n.x * x + n.y * y) + n.z * z;
+    }
+    /// A sample is listed unless its point is p itself or lies below the horizon: a light
+    /// there adds neither term (so no highlight leaks through from behind), and needs no
+    /// shadow ray.
+    static bool listed(float dist, float nl) { return dist > 0.0f && nl > 0.0f; }
+};
+
+/// Appends the sample toward q unless it is not listed; true when it was appended.
 inline bool appendSample(const Vec3& q, const Vec3& p, const Vec3& n,
                          std::vector<LightSample>& samples) {
-    Vec3 toLight = q - p;
-    const float dist = glm::length(toLight);
-    if (dist <= 0.0f) return false;
-    toLight = divide(toLight, dist);
-    // A light below the surface's horizon adds neither term (so no highlight leaks through
-    // from behind), and needs no shadow ray.
-    const float nl = glm::dot(n, toLight);
-    if (nl <= 0.0f) return false;
-    samples.push_back({toLight, dist, nl});
+    const TowardLight<float> t(q.x, q.y, q.z, p, n);
+    if (!TowardLight<float>::listed(t.dist, t.nl)) return false;
+    samples.push_back({Vec3(t.x, t.y, t.z), t.dist, t.nl});
     return true;
+}
+
+/// Appends the listed ones of a lane of samples toward q, in lane order; returns how many.
+inline uint32_t appendSamples(FloatLanes qx, FloatLanes qy, FloatLanes qz, const Vec3& p,
+                              const Vec3& n, std::vector<LightSample>& samples) {
+    const TowardLight<FloatLanes> t(qx, qy, qz, p, n);
+    uint32_t listed = 0;
+    for (int k = 0; k < kLaneWidth; ++k) {
+        if (!TowardLight<float>::listed(t.dist[k], t.nl[k])) continue;
+        samples.push_back({Vec3(t.x[k], t.y[k], t.z[k]), t.dist[k], t.nl[k]});
+        ++listed;
+    }
+    return listed;
 }
 
 }  // namespace
 
-LightSampler::LightSampler(const CompiledScene& scene)
-    : scene_(scene), strata_(std::max(1, scene.settings().shadowSamples)) {}
+LightSampler::LightSampler(const CompiledScene& scene, Lanes lanes)
+    : scene_(scene), strata_(std::max(1, scene.settings().shadowSamples)), lanes_(lanes) {}
 
 void LightSampler::sample(const Vec3& p, const Vec3& n, uint32_t seed, bool area,
                           std::vector<LightSample>& samples, std::vector<LightSpan>& spans) const {
     const int shadowSamples = scene_.settings().shadowSamples;
+    // Lanes of strata where the strata are tabled; the rest one by one.
+    const int laned = lanes_ == Lanes::Four ? std::min(shadowSamples, strata_.laned()) : 0;
     const auto& lights = scene_.lights();
     for (std::size_t li = 0; li < lights.size(); ++li) {
         const CompiledLight& light = lights[li];
@@ -47,11 +73,21 @@ void LightSampler::sample(const Vec3& p, const Vec3& n, uint32_t seed, bool area
                                                                    : glm::cross(w, Vec3(1, 0, 0)));
             const Vec3 axisB = glm::cross(w, axisA);
             const uint32_t lightSeed = hashCombine(seed, uint32_t(li) + 17u);
+            const Vec3& c = light.position;
+            const float r = light.radius;
             span.drawn = uint32_t(shadowSamples);
-            for (int s = 0; s < shadowSamples; ++s) {
+            // The disk point q = c + r (d.x axisA + d.y axisB), as glm evaluates it.
+            int s = 0;
+            for (; s + kLaneWidth <= laned; s += kLaneWidth) {
+                FloatLanes dx, dy;
+                strata_.sampleLanes(s, lightSeed, dx, dy);
+                span.listed += appendSamples(c.x + r * (dx * axisA.x + dy * axisB.x),
+                                             c.y + r * (dx * axisA.y + dy * axisB.y),
+                                             c.z + r * (dx * axisA.z + dy * axisB.z), p, n, samples);
+            }
+            for (; s < shadowSamples; ++s) {
                 const Vec3 d = strata_.sample(s, lightSeed);
-                const Vec3 q = light.position + light.radius * (d.x * axisA + d.y * axisB);
-                if (appendSample(q, p, n, samples)) ++span.listed;
+                if (appendSample(c + r * (d.x * axisA + d.y * axisB), p, n, samples)) ++span.listed;
             }
         }
         if (span.listed) spans.push_back(span);

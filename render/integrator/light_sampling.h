@@ -33,7 +33,11 @@ struct LightSpan {
 /// point: a trace kernel makes one and samples tens of thousands of points with it.
 class LightSampler {
 public:
-    explicit LightSampler(const CompiledScene& scene);
+    /// Four: a sphere light's samples are worked out four at a time (the bits of one at a
+    /// time, which One does; tests compare the two).
+    enum class Lanes { Four, One };
+
+    explicit LightSampler(const CompiledScene& scene, Lanes lanes = Lanes::Four);
 
     /// Appends the samples of every light seen from point `p` with unit normal `n` (facing
     /// the viewer): `shadowSamples` stratified points of each sphere light when `area`, else
@@ -44,6 +48,7 @@ public:
 private:
     const CompiledScene& scene_;
     DiskStrata strata_;  ///< The sub-grid of shadow_samples points on a sphere light's disk.
+    Lanes lanes_;
 };
 
 /// The format's inner sum over lights: Lambert plus Phong of material `m` for the listed
