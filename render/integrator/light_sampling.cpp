@@ -53,13 +53,15 @@ inline uint32_t appendSamples(FloatLanes qx, FloatLanes qy, FloatLanes qz, const
 }  // namespace
 
 LightSampler::LightSampler(const CompiledScene& scene, Lanes lanes)
-    : scene_(scene), strata_(std::max(1, scene.settings().shadowSamples)), lanes_(lanes) {}
+    : scene_(scene),
+      strata_(std::max(1, scene.settings().shadowSamples)),
+      shadowSamples_(scene.settings().shadowSamples),
+      // Lanes of strata where the strata are tabled; the rest one by one.
+      laned_(lanes == Lanes::Four ? std::min(shadowSamples_, strata_.laned()) : 0) {}
 
 void LightSampler::sample(const Vec3& p, const Vec3& n, uint32_t seed, bool area,
                           std::vector<LightSample>& samples, std::vector<LightSpan>& spans) const {
-    const int shadowSamples = scene_.settings().shadowSamples;
-    // Lanes of strata where the strata are tabled; the rest one by one.
-    const int laned = lanes_ == Lanes::Four ? std::min(shadowSamples, strata_.laned()) : 0;
+    const int shadowSamples = shadowSamples_, laned = laned_;
     const auto& lights = scene_.lights();
     for (std::size_t li = 0; li < lights.size(); ++li) {
         const CompiledLight& light = lights[li];

@@ -48,7 +48,8 @@ public:
 private:
     const CompiledScene& scene_;
     DiskStrata strata_;  ///< The sub-grid of shadow_samples points on a sphere light's disk.
-    Lanes lanes_;
+    int shadowSamples_;  ///< The scene's shadow_samples.
+    int laned_;          ///< A sphere light's samples [0, laned_) are taken in lanes.
 };
 
 /// The format's inner sum over lights: Lambert plus Phong of material `m` for the listed
