@@ -3,6 +3,7 @@
 // The trace kernel, deferred shadows and every engine's shadow queries go through these.
 #pragma once
 
+#include "integrator/sampling.h"
 #include "snapshot/compiled_scene.h"
 
 #include <cstdint>
@@ -27,11 +28,29 @@ struct LightSpan {
     uint32_t drawn;
 };
 
-/// Appends the samples of every light seen from point `p` with unit normal `n` (facing the
-/// viewer): `shadowSamples` stratified points of each sphere light when `area`, else the
-/// light's centre; `seed` decorrelates the pattern per camera sample.
-void sampleLights(const CompiledScene& scene, const Vec3& p, const Vec3& n, uint32_t seed,
-                  bool area, std::vector<LightSample>& samples, std::vector<LightSpan>& spans);
+/// Where shading points sample a scene's lights. What depends on the scene alone (the
+/// stratification of sphere lights) is worked out once, when the sampler is made, not per
+/// point: a trace kernel makes one and samples tens of thousands of points with it.
+class LightSampler {
+public:
+    /// Four: a sphere light's samples are worked out four at a time (the bits of one at a
+    /// time, which One does; tests compare the two).
+    enum class Lanes { Four, One };
+
+    explicit LightSampler(const CompiledScene& scene, Lanes lanes = Lanes::Four);
+
+    /// Appends the samples of every light seen from point `p` with unit normal `n` (facing
+    /// the viewer): `shadowSamples` stratified points of each sphere light when `area`, else
+    /// the light's centre; `seed` decorrelates the pattern per camera sample.
+    void sample(const Vec3& p, const Vec3& n, uint32_t seed, bool area,
+                std::vector<LightSample>& samples, std::vector<LightSpan>& spans) const;
+
+private:
+    const CompiledScene& scene_;
+    DiskStrata strata_;  ///< The sub-grid of shadow_samples points on a sphere light's disk.
+    int shadowSamples_;  ///< The scene's shadow_samples.
+    int laned_;          ///< A sphere light's samples [0, laned_) are taken in lanes.
+};
 
 /// The format's inner sum over lights: Lambert plus Phong of material `m` for the listed
 /// samples, each skipped when `occluded` (indexed like samples; null: none is) says so.

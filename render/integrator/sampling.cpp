@@ -1,7 +1,9 @@
 // Stratified sample patterns for supersampling and sphere lights.
 #include "integrator/sampling.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 
 namespace rs {
@@ -29,26 +31,66 @@ Vec3 pixelSampleOffset(int k, int n, uint32_t seed) {
     return Vec3((float(k) + jx) / float(n), (float(row) + jy) / float(n), 0.0f);
 }
 
+namespace {
+
+/// What stratum k of a grid `cols` wide is: its cell and the hash keys of its jitter.
+struct Stratum {
+    float column, row;
+    uint32_t keyX, keyY;
+};
+Stratum stratum(int k, int cols) {
+    return {float(k % cols), float(k / cols), hashKey(uint32_t(2 * k)), hashKey(uint32_t(2 * k + 1))};
+}
+
+}  // namespace
+
 DiskStrata::DiskStrata(int n)
-    : cols(std::max(1, int(std::ceil(std::sqrt(double(n)))))), rows((n + cols - 1) / cols) {}
+    : cols(std::max(1, int(std::ceil(std::sqrt(double(n)))))), rows((n + cols - 1) / cols) {
+    const std::size_t tabled = std::size_t(std::clamp(n, 0, kMaxSampleCount));
+    column_.resize(tabled), row_.resize(tabled), keyX_.resize(tabled), keyY_.resize(tabled);
+    for (std::size_t k = 0; k < tabled; ++k) {
+        const Stratum s = stratum(int(k), cols);
+        column_[k] = s.column, row_[k] = s.row, keyX_[k] = s.keyX, keyY_[k] = s.keyY;
+    }
+}
+
+template <class F, class U>
+void DiskStrata::point(F column, F row, U keyX, U keyY, uint32_t seed, F& x, F& y) const {
+    // Strata on a cols x rows grid covering n (the last row may be partial), then
+    // Shirley-Chiu concentric mapping keeps strata compact on the disk. Both branches of the
+    // mapping are worked out and one is selected (per lane); the centre maps to itself.
+    const F jx = unitOf(hashKeyed(seed, keyX));
+    const F jy = unitOf(hashKeyed(seed, keyY));
+    const F sx = 2.0f * (column + jx) / float(cols) - 1.0f;
+    const F sy = 2.0f * (row + jy) / float(rows) - 1.0f;
+    const auto wide = absLanes(sx) > absLanes(sy);
+    const F r = select(wide, sx, sy);
+    const F phi = select(wide, (kPi / 4.0f) * (sy / sx), (kPi / 2.0f) - (kPi / 4.0f) * (sx / sy));
+    F s, c;
+    sinCos(phi, s, c);
+    const auto centre = (sx == 0.0f) & (sy == 0.0f);
+    x = select(centre, F{}, r * c);
+    y = select(centre, F{}, r * s);
+}
 
 Vec3 DiskStrata::sample(int k, uint32_t seed) const {
-    // Strata on a cols x rows grid covering n (the last row may be partial), then
-    // Shirley-Chiu concentric mapping keeps strata compact on the disk.
-    float jx = hashToUnit(hashCombine(seed, uint32_t(2 * k)));
-    float jy = hashToUnit(hashCombine(seed, uint32_t(2 * k + 1)));
-    float sx = 2.0f * (float(k % cols) + jx) / float(cols) - 1.0f;
-    float sy = 2.0f * (float(k / cols) + jy) / float(rows) - 1.0f;
-    if (sx == 0.0f && sy == 0.0f) return Vec3(0.0f);
-    float r, phi;
-    if (std::abs(sx) > std::abs(sy)) {
-        r = sx;
-        phi = (kPi / 4.0f) * (sy / sx);
-    } else {
-        r = sy;
-        phi = (kPi / 2.0f) - (kPi / 4.0f) * (sx / sy);
-    }
-    return Vec3(r * std::cos(phi), r * std::sin(phi), 0.0f);
+    const std::size_t i = std::size_t(k);
+    const Stratum s = i < column_.size() ? Stratum{column_[i], row_[i], keyX_[i], keyY_[i]}
+                                         : stratum(k, cols);
+    float x, y;
+    point(s.column, s.row, s.keyX, s.keyY, seed, x, y);
+    return Vec3(x, y, 0.0f);
+}
+
+void DiskStrata::sampleLanes(int k, uint32_t seed, FloatLanes& x, FloatLanes& y) const {
+    const std::size_t i = std::size_t(k);
+    FloatLanes column, row;
+    UintLanes keyX, keyY;
+    std::memcpy(&column, column_.data() + i, sizeof column);
+    std::memcpy(&row, row_.data() + i, sizeof row);
+    std::memcpy(&keyX, keyX_.data() + i, sizeof keyX);
+    std::memcpy(&keyY, keyY_.data() + i, sizeof keyY);
+    point(column, row, keyX, keyY, seed, x, y);
 }
 
 Vec3 stratifiedDiskSample(int k, int n, uint32_t seed) { return DiskStrata(n).sample(k, seed); }

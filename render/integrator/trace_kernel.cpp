@@ -31,32 +31,44 @@ struct ShadePoint {
 
 }  // namespace
 
+/// One level's rays as structure of arrays. The arrays only grow (reserve), and push writes
+/// each field by index: no per-field capacity check, no allocation once they have grown.
 struct TraceKernel::Level {
     std::vector<float> ox, oy, oz, dx, dy, dz, tmax, weight;
     std::vector<uint32_t> seed, owner;
+    std::size_t count = 0;
 
-    std::size_t size() const { return ox.size(); }
-    void clear() {
-        for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tmax, &weight}) v->clear();
-        seed.clear();
-        owner.clear();
+    std::size_t size() const { return count; }
+    void clear() { count = 0; }
+    /// Room for `n` rays in all, so that push may be called until size() == n.
+    void reserve(std::size_t n) {
+        if (n <= ox.size()) return;
+        const std::size_t grown = std::max(n, 2 * ox.size());
+        for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tmax, &weight}) v->resize(grown);
+        seed.resize(grown);
+        owner.resize(grown);
     }
+    /// Appends a ray; reserve() must have made room for it.
     void push(const Vec3& o, const Vec3& d, float w, uint32_t s, uint32_t who) {
-        ox.push_back(o.x), oy.push_back(o.y), oz.push_back(o.z);
-        dx.push_back(d.x), dy.push_back(d.y), dz.push_back(d.z);
-        tmax.push_back(kInfinity);
-        weight.push_back(w);
-        seed.push_back(s);
-        owner.push_back(who);
+        const std::size_t i = count++;
+        ox[i] = o.x, oy[i] = o.y, oz[i] = o.z;
+        dx[i] = d.x, dy[i] = d.y, dz[i] = d.z;
+        tmax[i] = kInfinity;
+        weight[i] = w;
+        seed[i] = s;
+        owner[i] = who;
     }
     void append(const Level& from, std::size_t begin, std::size_t end) {
+        reserve(count + (end - begin));
         auto copy = [&](auto& to, const auto& src) {
-            to.insert(to.end(), src.begin() + std::ptrdiff_t(begin), src.begin() + std::ptrdiff_t(end));
+            std::copy(src.begin() + std::ptrdiff_t(begin), src.begin() + std::ptrdiff_t(end),
+                      to.begin() + std::ptrdiff_t(count));
         };
         copy(ox, from.ox), copy(oy, from.oy), copy(oz, from.oz);
         copy(dx, from.dx), copy(dy, from.dy), copy(dz, from.dz);
         copy(tmax, from.tmax), copy(weight, from.weight);
         copy(seed, from.seed), copy(owner, from.owner);
+        count += end - begin;
     }
     RayBatch batch(bool coherent) const {
         RayBatch b{ox.data(), oy.data(), oz.data(), dx.data(), dy.data(), dz.data(), tmax.data(), size()};
@@ -114,7 +126,7 @@ struct TraceKernel::Workspace {
 };
 
 TraceKernel::TraceKernel(const CompiledScene& scene, const TraceOptions& options)
-    : scene_(scene), options_(options), eps_(scene.epsilon()) {}
+    : scene_(scene), options_(options), eps_(scene.epsilon()), sampler_(scene) {}
 
 bool TraceKernel::trace(const CameraBatch& rays, const TraceOutput& out, TraceCounters& counters,
                         const std::function<bool()>& stale) const {
@@ -122,6 +134,7 @@ bool TraceKernel::trace(const CameraBatch& rays, const TraceOutput& out, TraceCo
     for (std::size_t start = 0; start < rays.count; start += kCameraChunk) {
         const std::size_t end = std::min(rays.count, start + kCameraChunk);
         ws.ping.clear();
+        ws.ping.reserve(end - start);
         for (std::size_t i = start; i < end; ++i) {
             out.color[i] = Color(0.0f);
             if (out.primary) out.primary[i] = PrimaryInfo{};
@@ -163,6 +176,7 @@ bool TraceKernel::traceLevels(Workspace& ws, Level& start, int depth, const Trac
 void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level& next,
                              const TraceOutput& out, TraceCounters& counters) const {
     const std::size_t n = level.size();
+    next.reserve(2 * n);  // at most a reflection and a refraction ray per hit
     const HitBatch hits = ws.hits(n);
     scene_.engine().closestHit(level.batch(depth == 0), hits);
     counters.rays += n;
@@ -257,7 +271,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         while (first + count < ws.points.size() && (count == 0 || ws.samples.size() < kSampleCap)) {
             const ShadePoint& pt = ws.points[first + count];
             ws.pointSpans.push_back(uint32_t(ws.spans.size()));
-            sampleLights(scene_, pt.p, pt.n, pt.seed, area, ws.samples, ws.spans);
+            sampler_.sample(pt.p, pt.n, pt.seed, area, ws.samples, ws.spans);
             ++count;
         }
         ws.pointSpans.push_back(uint32_t(ws.spans.size()));
@@ -320,8 +334,8 @@ void TraceKernel::resolveDeferred(const ShadingRecord* records, std::size_t coun
             ws.pointSpans.push_back(uint32_t(ws.spans.size()));
             ws.centrePointSpans.push_back(uint32_t(ws.centreSpans.size()));
             // Shadowed as a full trace samples the lights, unshadowed as the Deferred trace did.
-            sampleLights(scene_, r.p, r.n, r.seed, true, ws.samples, ws.spans);
-            sampleLights(scene_, r.p, r.n, r.seed, false, ws.centreSamples, ws.centreSpans);
+            sampler_.sample(r.p, r.n, r.seed, true, ws.samples, ws.spans);
+            sampler_.sample(r.p, r.n, r.seed, false, ws.centreSamples, ws.centreSpans);
             ++n;
         }
         ws.pointSpans.push_back(uint32_t(ws.spans.size()));
@@ -354,6 +368,7 @@ void TraceKernel::firstHits(const CameraBatch& rays, ObjectId* ids) const {
     for (std::size_t start = 0; start < rays.count; start += kCameraChunk) {
         const std::size_t end = std::min(rays.count, start + kCameraChunk);
         ws.ping.clear();
+        ws.ping.reserve(end - start);
         for (std::size_t i = start; i < end; ++i)
             ws.ping.push(rays.origin[i], rays.dir[i], 1.0f, 0u, uint32_t(i));
         const HitBatch hits = ws.hits(ws.ping.size());

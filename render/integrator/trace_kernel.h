@@ -3,6 +3,7 @@
 // of scene-format.md, written once). Full renders, every session pass and single rays use it.
 #pragma once
 
+#include "integrator/light_sampling.h"
 #include "integrator/whitted.h"
 
 #include <cstddef>
@@ -102,6 +103,7 @@ private:
     const CompiledScene& scene_;
     TraceOptions options_;
     float eps_;
+    LightSampler sampler_;
 };
 
 }  // namespace rs

@@ -1,0 +1,50 @@
+// Four float or integer lanes (GCC vector extensions: one SSE2 register, the x86-64 baseline,
+// so the lanes cost no ABI note and need no run-time dispatch) and the few operations light
+// sampling needs on them, each with a scalar overload of the same name: one template body is
+// then both the one-sample and the four-sample code. Every operation is lane-wise IEEE (or
+// integer) arithmetic, so lane k has the bits the scalar overload gives (with
+// -ffp-contract=off, which the library is built with: no multiply-add is fused).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+namespace rs {
+
+inline constexpr int kLaneWidth = 4;
+using FloatLanes = float __attribute__((vector_size(16)));
+using UintLanes = uint32_t __attribute__((vector_size(16)));
+using MaskLanes = int32_t __attribute__((vector_size(16)));  ///< A comparison's result.
+
+inline float toFloat(uint32_t v) { return float(v); }
+inline FloatLanes toFloat(UintLanes v) { return __builtin_convertvector(v, FloatLanes); }
+
+/// |v| (the sign bit cleared, as std::abs does).
+inline float absLanes(float v) { return std::abs(v); }
+inline FloatLanes absLanes(FloatLanes v) {
+    return reinterpret_cast<FloatLanes>(reinterpret_cast<UintLanes>(v) & 0x7fffffffu);
+}
+
+inline float select(bool m, float a, float b) { return m ? a : b; }
+inline FloatLanes select(MaskLanes m, FloatLanes a, FloatLanes b) { return m ? a : b; }
+
+inline float sqrtLanes(float v) { return std::sqrt(v); }
+inline FloatLanes sqrtLanes(FloatLanes v) {
+    for (int k = 0; k < kLaneWidth; ++k) v[k] = std::sqrt(v[k]);
+    return v;
+}
+
+/// sin and cos, lane by lane through the scalar library functions.
+inline void sinCos(float v, float& s, float& c) {
+    s = std::sin(v);
+    c = std::cos(v);
+}
+inline void sinCos(FloatLanes v, FloatLanes& s, FloatLanes& c) {
+    for (int k = 0; k < kLaneWidth; ++k) {
+        float sk, ck;
+        sinCos(v[k], sk, ck);
+        s[k] = sk, c[k] = ck;
+    }
+}
+
+}  // namespace rs

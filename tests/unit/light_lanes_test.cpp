@@ -1,0 +1,137 @@
+// Light sampling four samples at a time gives the bits of one at a time: the disk strata and
+// the sampler's lists, on random shading points, seeds and sphere lights.
+#include "integrator/light_sampling.h"
+#include "integrator/sampling.h"
+#include "snapshot/compiled_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <random>
+
+#include "test_scenes.h"
+
+namespace rs {
+namespace {
+
+uint32_t bitsOf(float v) { return std::bit_cast<uint32_t>(v); }
+
+TEST(DiskStrataLanes, EveryLaneHasTheBitsOfTheSingleSample) {
+    std::mt19937 rng(11);
+    for (int n : {4, 8, 9, 16, 27, 64, 100, 4096}) {
+        const DiskStrata strata(n);
+        for (int trial = 0; trial < 40; ++trial) {
+            const uint32_t seed = rng();
+            for (int k = 0; k + kLaneWidth <= strata.laned(); k += kLaneWidth) {
+                FloatLanes x, y;
+                strata.sampleLanes(k, seed, x, y);
+                for (int j = 0; j < kLaneWidth; ++j) {
+                    const Vec3 d = strata.sample(k + j, seed);
+                    ASSERT_EQ(bitsOf(x[j]), bitsOf(d.x)) << "n " << n << " k " << k + j;
+                    ASSERT_EQ(bitsOf(y[j]), bitsOf(d.y)) << "n " << n << " k " << k + j;
+                }
+            }
+        }
+    }
+}
+
+TEST(DiskStrataLanes, SamplesBeyondTheTableEqualTheFreeFunction) {
+    // Documents built in code may ask for more samples than the format allows.
+    const int n = kMaxSampleCount + 10;
+    const DiskStrata strata(n);
+    for (int k : {0, 1, kMaxSampleCount - 1, kMaxSampleCount, n - 1}) {
+        const Vec3 a = strata.sample(k, 99u), b = stratifiedDiskSample(k, n, 99u);
+        EXPECT_EQ(bitsOf(a.x), bitsOf(b.x));
+        EXPECT_EQ(bitsOf(a.y), bitsOf(b.y));
+    }
+}
+
+/// A scene of a point light and three sphere lights, `samples` shadow samples.
+SceneDocument lightsScene(std::mt19937& rng, int samples) {
+    std::uniform_real_distribution<float> u(-3.0f, 3.0f);
+    SceneDocument doc;
+    doc.render.shadowSamples = samples;
+    test::addMaterial(doc, "m", Color(0.8f), 0.9f);
+    test::addPlane(doc, "floor", Vec3(0, -3, 0), Vec3(0, 1, 0), "m");
+    test::addPointLight(doc, "point", Vec3(u(rng), u(rng), u(rng)));
+    for (int i = 0; i < 3; ++i) {
+        Light l;
+        l.name = "sphere " + std::to_string(i);
+        l.type = LightType::Sphere;
+        l.radius = 0.1f + 0.3f * std::abs(u(rng));
+        l.position = Vec3(u(rng), u(rng), u(rng));
+        doc.addLight(l);
+    }
+    return doc;
+}
+
+TEST(LightSamplerLanes, FourAtATimeListsTheBitsOfOneAtATime) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-3.0f, 3.0f);
+    std::size_t compared = 0, unlisted = 0;
+    for (int samples : {1, 3, 4, 5, 8, 16, 27, 64}) {
+        const SceneDocument doc = lightsScene(rng, samples);
+        const CompiledScene scene(doc, nullptr, EngineKind::Builtin);
+        const LightSampler four(scene, LightSampler::Lanes::Four);
+        const LightSampler one(scene, LightSampler::Lanes::One);
+        for (int trial = 0; trial < 600; ++trial) {
+            // Points anywhere, the lights' own centres included, normals any way round.
+            Vec3 p(u(rng), u(rng), u(rng));
+            if (trial % 50 == 0) p = scene.lights()[1].position;
+            const Vec3 n = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0.0f, 1e-3f, 0.0f));
+            const uint32_t seed = rng();
+            for (bool area : {true, false}) {
+                std::vector<LightSample> s4, s1;
+                std::vector<LightSpan> p4, p1;
+                four.sample(p, n, seed, area, s4, p4);
+                one.sample(p, n, seed, area, s1, p1);
+                ASSERT_EQ(s4.size(), s1.size());
+                ASSERT_EQ(p4.size(), p1.size());
+                for (std::size_t i = 0; i < p1.size(); ++i) {
+                    EXPECT_EQ(p4[i].light, p1[i].light);
+                    EXPECT_EQ(p4[i].first, p1[i].first);
+                    EXPECT_EQ(p4[i].listed, p1[i].listed);
+                    EXPECT_EQ(p4[i].drawn, p1[i].drawn);
+                    unlisted += p1[i].drawn - p1[i].listed;
+                }
+                for (std::size_t i = 0; i < s1.size(); ++i) {
+                    ASSERT_EQ(bitsOf(s4[i].dir.x), bitsOf(s1[i].dir.x)) << samples << " samples";
+                    ASSERT_EQ(bitsOf(s4[i].dir.y), bitsOf(s1[i].dir.y));
+                    ASSERT_EQ(bitsOf(s4[i].dir.z), bitsOf(s1[i].dir.z));
+                    ASSERT_EQ(bitsOf(s4[i].dist), bitsOf(s1[i].dist));
+                    ASSERT_EQ(bitsOf(s4[i].nl), bitsOf(s1[i].nl));
+                }
+                compared += s1.size();
+            }
+        }
+    }
+    // Enough samples were compared, and some were dropped below the horizon on the way.
+    EXPECT_GT(compared, 100000u);
+    EXPECT_GT(unlisted, 1000u);
+}
+
+TEST(LightSamplerLanes, SphereLightSamplesLieOnTheLightsDisk) {
+    // The lanes are not merely equal to the single samples but right: every listed sample
+    // points at a point within the light's radius of its centre.
+    std::mt19937 rng(8);
+    const SceneDocument doc = lightsScene(rng, 16);
+    const CompiledScene scene(doc, nullptr, EngineKind::Builtin);
+    const LightSampler sampler(scene);
+    std::vector<LightSample> samples;
+    std::vector<LightSpan> spans;
+    const Vec3 p(0.0f, -2.9f, 0.0f), n(0.0f, 1.0f, 0.0f);
+    sampler.sample(p, n, 1234u, true, samples, spans);
+    ASSERT_FALSE(spans.empty());
+    for (const LightSpan& span : spans) {
+        const CompiledLight& light = scene.lights()[span.light];
+        EXPECT_EQ(span.drawn, light.radius > 0.0f ? 16u : 1u);
+        for (uint32_t i = span.first; i < span.first + span.listed; ++i) {
+            const Vec3 q = p + samples[i].dir * samples[i].dist;
+            EXPECT_LE(glm::length(q - light.position), light.radius * 1.001f + 1e-5f);
+            EXPECT_GT(samples[i].nl, 0.0f);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace rs
