@@ -4,6 +4,7 @@
 
 #include "frame_view.h"
 
+#include <QElapsedTimer>
 #include <QWidget>
 
 namespace rs::ui {
@@ -31,6 +32,14 @@ private:
                        std::vector<QRect>& rects) const;
     void shadeRect(const DisplayFrame& frame, const std::vector<ObjectId>& selected,
                    const QRect& rect);
+    /// Widget pixels that show frame pixels `rect`.
+    QRect widgetRect(const QRect& rect) const;
+
+    /// Reported once the paint has reached the window system (the backing store flushes
+    /// after the paint events): queued, so a paint that covers several widgets reports once.
+    void reportPresented();
+    bool presentQueued_ = false;
+    QElapsedTimer paintEnd_;
 
     QImage image_;
     PresentedFrame shown_;  ///< The frame image_ comes from.

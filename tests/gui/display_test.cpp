@@ -1,7 +1,9 @@
 // The display path under QT_QPA_PLATFORM=offscreen (raster viewport): the frame handed over
 // tile by tile ends equal to the session's, and exposure edits reach the viewport and export.
 #include <QTemporaryDir>
+#include <QScreen>
 #include <QtTest>
+#include <cmath>
 #include <cstring>
 
 #include "gui_test_support.h"
@@ -21,6 +23,7 @@ private Q_SLOTS:
 
     void mergeRects_CoversTheSamePixels();
     void incrementalHandover_EqualsFullCopyAfterThePass();
+    void rasterView_RepaintsOnlyChangedRectangles_ScreenEqualsTheFullImage();
     void exposureEdit_ChangesShownImageAndExport_UndoRestoresThem();
     void toneMapEdit_ChangesShownImage_UndoRestoresIt();
 
@@ -125,6 +128,50 @@ void DisplayTest::incrementalHandover_EqualsFullCopyAfterThePass() {
     // The raster view re-shaded only what changed; it must still equal shading it all.
     const QImage expected = viewportImage(full, ViewMode::Color, {blue});
     QCOMPARE(shownImage(), expected.convertToFormat(QImage::Format_RGB888));
+}
+
+void DisplayTest::rasterView_RepaintsOnlyChangedRectangles_ScreenEqualsTheFullImage() {
+    MainWindow& w = *window_;
+    const ObjectId blue = idOf(w, "blue ball");
+    w.viewport()->setGizmoVisible(false);  // Its pixels are not the frame's.
+    w.editor()->setSelection(blue);
+    QVERIFY(settle(w));
+    // The view is told about a few rectangles at a time and repaints only those: what reaches
+    // the window (its backing store) must still be the whole frame, shaded afresh.
+    w.session()->beginInteraction(blue);
+    for (int k = 0; k < 10; ++k) {
+        SceneDocument doc = w.editor()->document();
+        moveBy(doc, blue, Vec3(-0.08f, 0.03f, 0.0f));
+        w.editor()->edit(QStringLiteral("Move object"), std::move(doc), MergeKind::Drag,
+                         QString::number(blue));
+        QTest::qWait(7);
+    }
+    w.session()->endInteraction();
+    QVERIFY(settle(w));
+    QTest::qWait(50);  // The last repaint and the backing store's flush.
+    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    const QImage expected =
+        viewportImage(full, ViewMode::Color, {blue}).convertToFormat(QImage::Format_RGB888);
+    const QImage screen =
+        w.screen()->grabWindow(w.winId()).toImage().convertToFormat(QImage::Format_RGB888);
+    QVERIFY(!screen.isNull());
+    const QPoint origin = w.viewport()->mapTo(&w, QPoint(0, 0));
+    auto underGlyph = [&](const QPoint& p) {
+        for (const LightGlyph& g : w.viewport()->lightGlyphs())
+            if (std::hypot(p.x() - g.centre.x(), p.y() - g.centre.y()) <= g.radius + 3.0)
+                return true;
+        return false;
+    };
+    int bad = 0, compared = 0;
+    for (int y = 0; y < full.height; ++y)
+        for (int x = 0; x < full.width; ++x) {
+            const QPoint at = w.viewport()->widgetPointOf(x, y);
+            if (underGlyph(at)) continue;
+            ++compared;
+            bad += screen.pixelColor(origin + at) != expected.pixelColor(x, y);
+        }
+    QVERIFY(compared > full.width * full.height / 2);
+    QVERIFY2(bad == 0, qPrintable(QStringLiteral("%1 pixels on screen are stale").arg(bad)));
 }
 
 void DisplayTest::exposureEdit_ChangesShownImageAndExport_UndoRestoresThem() {
