@@ -360,6 +360,8 @@ int Measurement::run() {
     o[QStringLiteral("handover_max_ms")] = handover.maxMs;
     o[QStringLiteral("handover_copy_mean_ms")] =
         handovers > 0 ? (handover.copyMs - handover0.copyMs) / handovers : 0.0;
+    o[QStringLiteral("handovers")] = handovers;
+    o[QStringLiteral("handovers_busy")] = handover.busy - handover0.busy;
     o[QStringLiteral("release_to_final_shown_ms")] = msBetween(inputs_.back().due, finalShown);
     o[QStringLiteral("viewport_full_frame_ms")] = fullPassMs;
     o[QStringLiteral("open_to_final_shown_ms")] = msBetween(openStart, openShown);
@@ -391,6 +393,8 @@ int Measurement::run() {
     std::printf(
         "  frame hand-over      mean   %6.2f ms   max %6.2f ms   (copying %.2f ms of the mean)\n",
         num("handover_mean_ms"), num("handover_max_ms"), num("handover_copy_mean_ms"));
+    std::printf("  hand-overs           %6d        %d found the frame lock held and came back\n",
+                o[QStringLiteral("handovers")].toInt(), o[QStringLiteral("handovers_busy")].toInt());
     std::printf("  mouse event handling median %6.2f ms   max %6.2f ms\n",
                 num("input_handling_median_ms"), num("input_handling_max_ms"));
     std::printf(

@@ -48,7 +48,7 @@ Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* par
     resizeSettle_.setSingleShot(true);
     resizeSettle_.setInterval(kResizeSettleMs);
     connect(&resizeSettle_, &QTimer::timeout, this, &Viewport::postView);
-    connect(session_, &SessionController::frameUpdated, this, &Viewport::refresh);
+    connect(session_, &SessionController::frameUpdated, this, &Viewport::showNewPixels);
     connect(editor_, &SceneEditor::selectionChanged, this, &Viewport::redraw);
     connect(editor_, &SceneEditor::documentReset, this, &Viewport::onDocumentReset);
     connect(editor_, &SceneEditor::documentChanged, this, &Viewport::onDocumentChanged);
@@ -80,6 +80,17 @@ void Viewport::setViewMode(ViewMode mode) {
 void Viewport::refresh() {
     const QSize before = frame_ ? QSize(frame_->width, frame_->height) : QSize();
     frame_ = session_->displayFrame();
+    showHandedOver(before);
+}
+
+void Viewport::showNewPixels() {
+    const QSize before = frame_ ? QSize(frame_->width, frame_->height) : QSize();
+    const uint64_t serial = frame_ ? frame_->serial : 0;
+    frame_ = session_->displayFrame(SessionController::FrameWait::TryOnly);
+    if (frame_->serial != serial) showHandedOver(before);  // Else the lock was busy, or nothing new.
+}
+
+void Viewport::showHandedOver(const QSize& before) {
     // New pixels alone leave the overlay as it is; a new frame size moves it.
     if (QSize(frame_->width, frame_->height) != before) {
         redraw();

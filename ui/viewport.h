@@ -57,7 +57,7 @@ public:
     static constexpr int kResizeSettleMs = 120;
     /// Widget point at the centre of frame pixel (x, y).
     QPoint widgetPointOf(int x, int y) const;
-    /// Copies the session's frame and redraws.
+    /// Copies the session's frame (waiting for its lock) and redraws.
     void refresh();
 
     // View camera: navigation moves it, never the document (Blender's model).
@@ -123,6 +123,10 @@ private:
     void finishDrag(bool cancel);
     Vec3 dragPoint(const QPoint& pos) const;
     void redraw();
+    /// frameUpdated: copies what the session committed if its frame lock is free, and draws.
+    void showNewPixels();
+    /// Shows frame_ after a hand-over that may have changed its size.
+    void showHandedOver(const QSize& before);
     /// Puts `view` in the layout, with the overlay drawn by it or over it.
     void installFrameView(FrameView* view);
     /// Light glyphs, the gizmo and the selection box, in widget coordinates.

@@ -5,6 +5,8 @@
 #include <QtTest>
 #include <cmath>
 #include <cstring>
+#include <future>
+#include <thread>
 
 #include "gui_test_support.h"
 #include "raster_frame_view.h"
@@ -24,6 +26,7 @@ private Q_SLOTS:
     void mergeRects_CoversTheSamePixels();
     void incrementalHandover_EqualsFullCopyAfterThePass();
     void rasterView_RepaintsOnlyChangedRectangles_ScreenEqualsTheFullImage();
+    void handover_WhileTheFrameLockIsHeld_ReturnsAtOnce_AndCatchesUpAfter();
     void exposureEdit_ChangesShownImageAndExport_UndoRestoresThem();
     void toneMapEdit_ChangesShownImage_UndoRestoresIt();
 
@@ -172,6 +175,42 @@ void DisplayTest::rasterView_RepaintsOnlyChangedRectangles_ScreenEqualsTheFullIm
         }
     QVERIFY(compared > full.width * full.height / 2);
     QVERIFY2(bad == 0, qPrintable(QStringLiteral("%1 pixels on screen are stale").arg(bad)));
+}
+
+void DisplayTest::handover_WhileTheFrameLockIsHeld_ReturnsAtOnce_AndCatchesUpAfter() {
+    MainWindow& w = *window_;
+    const ObjectId blue = idOf(w, "blue ball");
+    SceneDocument doc = w.editor()->document();
+    moveBy(doc, blue, Vec3(0.3f, 0.0f, 0.0f));
+    w.editor()->edit(QStringLiteral("Move object"), std::move(doc));
+    w.session()->flushUpdate();
+    // The edit's tiles are committed; the viewport has not looked (no event loop ran).
+    QVERIFY(w.session()->session().waitUntilComplete(std::chrono::seconds(60)));
+    const uint64_t shownSerial = w.viewport()->frame()->serial;
+
+    // Another thread holds the frame lock (as an edit's dirty marking does). It lets go after
+    // 20 s on its own, so a hand-over that waited would return, late, with a new frame.
+    std::promise<void> held, release;
+    std::thread holder([&] {
+        w.session()->session().withFrame([&](const DeepFrame&, const auto&) {
+            held.set_value();
+            release.get_future().wait_for(std::chrono::seconds(20));
+        });
+    });
+    held.get_future().wait();
+    const int busy = w.session()->handoverStats().busy;
+    const auto frame = w.session()->displayFrame(SessionController::FrameWait::TryOnly);
+    const bool waited = frame->serial != shownSerial;
+    release.set_value();
+    holder.join();
+    QVERIFY2(!waited, "the hand-over waited for the frame lock");
+    QCOMPARE(w.session()->handoverStats().busy, busy + 1);
+
+    // It comes back by itself: the viewport ends with the session's frame.
+    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    QTRY_VERIFY(w.viewport()->frame()->serial != shownSerial &&
+                sameBits(w.viewport()->frame()->color, full.color) &&
+                sameBits(w.viewport()->frame()->id, full.id));
 }
 
 void DisplayTest::exposureEdit_ChangesShownImageAndExport_UndoRestoresThem() {
