@@ -8,6 +8,7 @@
 #include <QPainter>
 #include <QRegion>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rs::ui {
@@ -74,6 +75,15 @@ void RasterFrameView::showFrame(std::shared_ptr<const DisplayFrame> frame, ViewM
             shown_.paintMs += timer.nsecsElapsed() / 1e6;  // The shading is this view's upload.
             shadedSerial_ = f.serial;
             return;
+        } else if (mode == ViewMode::Color && shadedFrame_ == &f && shadedSerial_ == f.serial &&
+                   shadedMode_ == mode && shadedTonemap_ == f.tonemap &&
+                   shadedExposure_ == f.exposure && image_.size() == QSize(f.width, f.height) &&
+                   shadedSelected_ != selected) {
+            // A click that selects: the outline moves, the rest of the picture stays.
+            update(widgetRect(reshadeOutline(f, selected)));
+            shadedSelected_ = selected;
+            shown_.paintMs += timer.nsecsElapsed() / 1e6;
+            return;
         } else if (shadedFrame_ != &f || shadedSerial_ != f.serial || shadedMode_ != mode ||
                    shadedSelected_ != selected || shadedTonemap_ != f.tonemap ||
                    shadedExposure_ != f.exposure) {
@@ -90,6 +100,36 @@ void RasterFrameView::showFrame(std::shared_ptr<const DisplayFrame> frame, ViewM
     shown_.generation = frame ? frame->generation : 0;
     shown_.paintMs += timer.nsecsElapsed() / 1e6;
     update();
+}
+
+QRect RasterFrameView::reshadeOutline(const DisplayFrame& f, const std::vector<ObjectId>& selected) {
+    // Only pixels of an object outlined before or now, or next to one, can change.
+    int x0 = f.width, y0 = f.height, x1 = -1, y1 = -1;
+    for (int y = 0; y < f.height; ++y) {
+        const ObjectId* row = &f.id[std::size_t(y) * f.width];
+        for (int x = 0; x < f.width; ++x)
+            if (row[x] != kNoObject &&
+                (outlined(selected, row[x]) || outlined(shadedSelected_, row[x]))) {
+                x0 = std::min(x0, x), x1 = std::max(x1, x);
+                y0 = std::min(y0, y), y1 = std::max(y1, y);
+            }
+    }
+    if (x1 < 0) return {};
+    const QRect r = QRect(QPoint(x0, y0), QPoint(x1, y1)).adjusted(-1, -1, 1, 1) &
+                    QRect(0, 0, f.width, f.height);
+    for (int y = r.top(); y <= r.bottom(); ++y) {
+        uchar* line = image_.scanLine(y);
+        for (int x = r.left(); x <= r.right(); ++x) {
+            const bool now = onOutline(f, x, y, selected);
+            if (now == onOutline(f, x, y, shadedSelected_)) continue;
+            if (now)
+                std::copy(kOutlineRgb, kOutlineRgb + 3, line + 3 * x);
+            else
+                toDisplay8(f.color[std::size_t(y) * f.width + x], f.tonemap, f.exposure,
+                           line + 3 * x);
+        }
+    }
+    return r;
 }
 
 QImage RasterFrameView::grabImage() {

@@ -32,6 +32,9 @@ private:
                        std::vector<QRect>& rects) const;
     void shadeRect(const DisplayFrame& frame, const std::vector<ObjectId>& selected,
                    const QRect& rect);
+    /// Brings image_ from shadedSelected_ to `selected` where only the outline can differ:
+    /// near the objects either selection outlines. Returns the frame rectangle it touched.
+    QRect reshadeOutline(const DisplayFrame& frame, const std::vector<ObjectId>& selected);
     /// Widget pixels that show frame pixels `rect`.
     QRect widgetRect(const QRect& rect) const;
 
