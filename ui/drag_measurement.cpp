@@ -16,6 +16,7 @@
 #include <functional>
 #include <vector>
 
+#include "display_choice.h"
 #include "error_reporter.h"
 #include "integrator/renderer.h"
 #include "main_window.h"
@@ -47,6 +48,7 @@ struct Request {
     QString object;
     int frames = 240;
     bool json = false;
+    DisplayKind display = DisplayKind::Automatic;  ///< --view: who draws the viewport.
 };
 
 /// One posted mouse event: when it was due (its event time), when the viewport had handled
@@ -240,6 +242,7 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
 
 int Measurement::run() {
     SessionController* controller = window_.session();
+    window_.viewport()->setDisplay(request_.display);
     FrameView* view = window_.viewport()->frameView();
     view->setPresentedHandler([this](const PresentedFrame& f) {
         presents_.push_back({Clock::now(), f});
@@ -429,6 +432,9 @@ void addMeasurementOptions(QCommandLineParser& parser) {
                       QStringLiteral("N"), QStringLiteral("240")});
     parser.addOption(
         {QStringLiteral("json"), QStringLiteral("Print the measurement as one JSON line.")});
+    parser.addOption({QStringLiteral("view"),
+                      QStringLiteral("Viewport display: automatic, opengl or software."),
+                      QStringLiteral("KIND"), QStringLiteral("automatic")});
 }
 
 int runRequestedMeasurement(const QCommandLineParser& parser) {
@@ -441,6 +447,11 @@ int runRequestedMeasurement(const QCommandLineParser& parser) {
     bool ok = false;
     r.frames = parser.value(QStringLiteral("frames")).toInt(&ok);
     r.json = parser.isSet(QStringLiteral("json"));
+    if (!parseDisplayKind(parser.value(QStringLiteral("view")), r.display)) {
+        std::fprintf(stderr, "raystudio: --view must be automatic, opengl or software, not \"%s\"\n",
+                     qPrintable(parser.value(QStringLiteral("view"))));
+        return 2;
+    }
     if (!ok || r.frames < 2 || (!r.orbit && r.object.isEmpty())) {
         std::fprintf(stderr,
                      "raystudio: --measure-drag needs --object NAME; --frames needs N >= 2\n");
