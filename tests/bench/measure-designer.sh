@@ -24,6 +24,10 @@
 #   longest GUI stall        243 ms      1256 ms       122 ms      220 ms        114 ms
 #   full frame/renderImage   2.60         2.28         1.51        2.94          1.64
 #
+# b6ef8fd (outline-only re-shade on selecting), 2 runs each at load 10, --view automatic vs
+# --view opengl: drag 29.8 vs 1.4 frames/s, 87 vs 1155 ms median latency, longest stall 83 vs
+# 319 ms; orbit 25.1 vs 3.5 frames/s, 53 vs 454 ms.
+#
 # Before, llvmpipe's two threads took 54 % of the process's CPU (perf): the frame shader over
 # the whole window and the whole-window swap. The README's "Designer, the display path" has
 # the breakdown. (First round, d79abcf -> 2b722c8, frame 1280x720: 4.1 -> 5.3 frames/s
