@@ -19,6 +19,8 @@ public:
                    const std::vector<ObjectId>& selected) override;
     QImage grabImage() override;
     bool usesOpenGL() const override { return false; }
+    /// The overlay is a widget of its own over this one; this paints the whole frame again.
+    void repaintOverlay() override { update(); }
     /// The shaded frame at frame resolution (what is drawn, before scaling).
     QImage frameImage() const { return image_; }
 
