@@ -28,6 +28,10 @@
 # --view opengl: drag 29.8 vs 1.4 frames/s, 87 vs 1155 ms median latency, longest stall 83 vs
 # 319 ms; orbit 25.1 vs 3.5 frames/s, 53 vs 454 ms.
 #
+# Last, 627c1c2 vs cb3af41, 3 interleaved runs each at load 8.8-10.6, medians: drag 3.5 -> 21.4
+# frames/s (best run 34.9), 510 -> 81 ms median latency (best 31), longest stall 167 -> 51 ms,
+# full frame 2.26 -> 1.17x renderImage; orbit 7.0 -> 17.7 frames/s, 424 -> 80 ms.
+#
 # Before, llvmpipe's two threads took 54 % of the process's CPU (perf): the frame shader over
 # the whole window and the whole-window swap. The README's "Designer, the display path" has
 # the breakdown. (First round, d79abcf -> 2b722c8, frame 1280x720: 4.1 -> 5.3 frames/s
