@@ -100,16 +100,18 @@ build_release() {
 }
 
 # The interactive session's threading under ThreadSanitizer: its own preset and build
-# folder, only the render unit tests (the designer is not built there).
+# folder, the render unit tests and one designer test that edits while passes and a Render
+# Image job run (tests/gui/session_threads_test.cpp; the rest of the designer's tests are
+# not built there).
 run_thread_sanitizer_tests() {
     if [[ ! -f build/tsan/CMakeCache.txt || ! -f build/tsan/build.ninja ]]; then
         say "Configuring the ThreadSanitizer build in build/tsan."
         cmake --preset tsan
     fi
-    say "Building the unit tests with ThreadSanitizer."
-    cmake --build --preset tsan --target raystudio_unit_tests
-    say "Running the session and renderer tests under ThreadSanitizer."
-    ctest --preset tsan -R 'RenderSession|Renderer|Sampling' --output-on-failure
+    say "Building the unit tests and the designer's threading test with ThreadSanitizer."
+    cmake --build --preset tsan --target raystudio_unit_tests raystudio_session_threads_test
+    say "Running the session, renderer and designer-threading tests under ThreadSanitizer."
+    ctest --preset tsan -R 'RenderSession|Renderer|Sampling|gui\.session_threads' --output-on-failure
 }
 
 # ---- Fuzzing (tests/fuzz) ----------------------------------------------------------------

@@ -1,6 +1,7 @@
 // Worker threads with atomic cancellation and queued progress (no GUI-thread waiting).
 #include "background_jobs.h"
 
+#include "gui_mailbox.h"
 #include "image/image_io.h"
 #include "image/tonemap.h"
 #include "integrator/renderer.h"
@@ -87,7 +88,7 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
         makeProgress(parent, QObject::tr("Loading %1 ...").arg(path), 0);
     auto cancelled = std::make_shared<std::atomic<bool>>(false);
     QObject::connect(dialog, &QProgressDialog::canceled, dialog, [cancelled] { *cancelled = true; });
-    QObject* receiver = parent ? static_cast<QObject*>(parent) : dialog.data();
+    const GuiMailbox toGui(parent ? static_cast<QObject*>(parent) : dialog.data());
     startWorker(dialog, cancelled, [=, file = path.toStdString()] {
         MeshLoadResult result;
         try {
@@ -95,16 +96,17 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
         } catch (...) {
             result = {nullptr, file + ": " + describeFailure(std::current_exception())};
         }
-        QMetaObject::invokeMethod(receiver, [=] {
+        toGui.post([=] {
             if (dialog) dialog->deleteLater();
             if (!*cancelled) done(result);
-        }, Qt::QueuedConnection);
+        });
     });
 }
 
 QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QString& path,
                            int threads, EngineKind engine, std::shared_ptr<std::atomic<bool>> cancel,
                            RenderReport report) {
+    const GuiMailbox toGui(receiver);
     return startWorker(receiver, cancel, [=, file = path.toStdString()] {
         std::string error = imageSizeError(doc.render.width, doc.render.height);
         bool ok = false;
@@ -116,19 +118,17 @@ QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QS
                 options.cancel = cancel.get();
                 options.ids = false;  // Only the image is written.
                 if (report.progress)
-                    options.progress = [receiver, progress = report.progress](int d, int total) {
-                        QMetaObject::invokeMethod(receiver, [=] { progress(d, total); },
-                                                  Qt::QueuedConnection);
+                    options.progress = [toGui, progress = report.progress](int d, int total) {
+                        toGui.post([=] { progress(d, total); });
                     };
                 if (report.tile)
-                    options.tileDone = [receiver, tile = report.tile, op = doc.render.tonemap,
+                    options.tileDone = [toGui, tile = report.tile, op = doc.render.tonemap,
                                         exposure = doc.render.exposure](
                                            const ImageRgb& image, int x0, int y0, int x1, int y1) {
                         // Tone-mapped here, on the worker: the GUI thread only blits.
                         const QImage pixels = displayTile(image, x0, y0, x1, y1, op, exposure);
                         const QRect where(x0, y0, x1 - x0, y1 - y0);
-                        QMetaObject::invokeMethod(receiver, [=] { tile(pixels, where); },
-                                                  Qt::QueuedConnection);
+                        toGui.post([=] { tile(pixels, where); });
                     };
                 const RenderResult result = renderImage(scene, options);
                 // Checked once more so a cancel that lands after the last tile writes nothing.
@@ -138,9 +138,9 @@ QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QS
                 error = "rendering " + file + " failed: " + describeFailure(std::current_exception());
             }
         }
-        QMetaObject::invokeMethod(receiver, [=, done = report.done] {
+        toGui.post([=, done = report.done] {
             if (done) done(ok, QString::fromStdString(error));
-        }, Qt::QueuedConnection);
+        });
     });
 }
 

@@ -1,7 +1,6 @@
 // SessionController: worker-thread callbacks to GUI-thread signals at display rate.
 #include "session_controller.h"
 
-#include <QMetaObject>
 
 #include <algorithm>
 #include <chrono>
@@ -18,7 +17,7 @@ constexpr int kBusyRetryMs = 2;
 }
 
 SessionController::SessionController(int threads, QObject* parent)
-    : QObject(parent), session_(std::make_unique<RenderSession>(threads)) {
+    : QObject(parent), session_(std::make_unique<RenderSession>(threads)), mailbox_(this) {
     qRegisterMetaType<rs::PassInfo>();
     repaintTimer_.setSingleShot(true);
     connect(&repaintTimer_, &QTimer::timeout, this, &SessionController::onRepaintTimer);
@@ -153,7 +152,7 @@ void SessionController::tileDone(int x0, int y0, int x1, int y1, uint64_t genera
         committedGeneration_ = std::max(committedGeneration_, generation);
     }
     if (framePending_.exchange(true)) return;
-    QMetaObject::invokeMethod(this, [this] { scheduleFrame(); }, Qt::QueuedConnection);
+    mailbox_.post([this] { scheduleFrame(); });
 }
 
 void SessionController::scheduleFrame() {
@@ -170,17 +169,14 @@ void SessionController::onRepaintTimer() {
 }
 
 void SessionController::passDone(const PassInfo& info) {
-    QMetaObject::invokeMethod(this, [this, info] { Q_EMIT passFinished(info); },
-                              Qt::QueuedConnection);
+    mailbox_.post([this, info] { Q_EMIT passFinished(info); });
 }
 
 void SessionController::frameComplete(uint64_t generation) {
-    QMetaObject::invokeMethod(
-        this, [this, generation] {
-            Q_EMIT frameUpdated();
-            Q_EMIT frameCompleted(generation);
-        },
-        Qt::QueuedConnection);
+    mailbox_.post([this, generation] {
+        Q_EMIT frameUpdated();
+        Q_EMIT frameCompleted(generation);
+    });
 }
 
 }  // namespace rs::ui

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "display_frame.h"
+#include "gui_mailbox.h"
 #include "session/render_session.h"
 
 #include <QObject>
@@ -95,6 +96,7 @@ private:
     void scheduleFrame();
 
     std::unique_ptr<RenderSession> session_;
+    GuiMailbox mailbox_;  ///< Worker callbacks to the GUI thread.
     std::atomic<bool> framePending_{false};
     QTimer repaintTimer_;
     QTimer updateTimer_;

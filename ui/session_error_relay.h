@@ -3,9 +3,9 @@
 // controller itself needs no change to report a failed render.
 #pragma once
 
+#include "gui_mailbox.h"
 #include "session/session_observer.h"
 
-#include <QObject>
 #include <QString>
 
 #include <functional>
@@ -13,7 +13,7 @@
 namespace rs::ui {
 
 /// A SessionObserver that forwards to `next` and queues errors to `onError` on `context`'s
-/// thread. Must outlive the session it observes (declare it before the session's owner).
+/// thread (construct it there). Must outlive the session it observes (declare it before the session's owner).
 class SessionErrorRelay : public SessionObserver {
 public:
     SessionErrorRelay(SessionObserver* next, QObject* context,
@@ -28,7 +28,7 @@ public:
 
 private:
     SessionObserver* next_;
-    QObject* context_;
+    GuiMailbox mailbox_;  ///< To context's thread.
     std::function<void(const QString&)> onError_;
 };
 
