@@ -193,11 +193,9 @@ void heat(float t, uint8_t rgb[3]) {
 
 QImage toneMappedImage(const DisplayFrame& f) {
     QImage img(f.width, f.height, QImage::Format_RGB888);
-    for (int y = 0; y < f.height; ++y) {
-        uchar* line = img.scanLine(y);
-        for (int x = 0; x < f.width; ++x)
-            toDisplay8(f.color[std::size_t(y) * f.width + x], f.tonemap, f.exposure, line + 3 * x);
-    }
+    for (int y = 0; y < f.height; ++y)
+        toDisplay8(&f.color[std::size_t(y) * f.width], std::size_t(f.width), f.tonemap, f.exposure,
+                   img.scanLine(y));
     return img;
 }
 

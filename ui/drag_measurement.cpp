@@ -16,6 +16,7 @@
 #include <functional>
 #include <vector>
 
+#include "display_choice.h"
 #include "error_reporter.h"
 #include "integrator/renderer.h"
 #include "main_window.h"
@@ -47,6 +48,7 @@ struct Request {
     QString object;
     int frames = 240;
     bool json = false;
+    DisplayKind display = DisplayKind::Automatic;  ///< --view: who draws the viewport.
 };
 
 /// One posted mouse event: when it was due (its event time), when the viewport had handled
@@ -120,7 +122,7 @@ bool Measurement::waitFinalShown(Clock::time_point* shownAt) {
     SessionController* c = window_.session();
     if (!waitUntil([&] { return completed_ >= c->session().generation(); }, 120000)) return false;
     const uint64_t serial = window_.viewport()->frame() ? window_.viewport()->frame()->serial : 0;
-    window_.viewport()->frameView()->widget()->update();
+    window_.viewport()->frameView()->repaintOverlay();  // Paints again, whichever view.
     const bool ok = waitUntil(
         [&] { return !presents_.empty() && presents_.back().frame.serial >= serial; }, 10000);
     if (ok && shownAt) *shownAt = presents_.back().time;
@@ -240,6 +242,7 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
 
 int Measurement::run() {
     SessionController* controller = window_.session();
+    window_.viewport()->setDisplay(request_.display);
     FrameView* view = window_.viewport()->frameView();
     view->setPresentedHandler([this](const PresentedFrame& f) {
         presents_.push_back({Clock::now(), f});
@@ -278,6 +281,7 @@ int Measurement::run() {
     for (int k = 0; k < 10; ++k) {
         const std::size_t seen = presents_.size();
         window_.viewport()->refresh();
+        window_.viewport()->frameView()->repaintOverlay();  // Nothing new: paint all the same.
         if (!waitUntil([&] { return presents_.size() > seen; }, 5000)) break;
         idlePaint.push_back(presents_.back().frame.paintMs);
         idleCompose.push_back(presents_.back().frame.composeMs);
@@ -360,6 +364,8 @@ int Measurement::run() {
     o[QStringLiteral("handover_max_ms")] = handover.maxMs;
     o[QStringLiteral("handover_copy_mean_ms")] =
         handovers > 0 ? (handover.copyMs - handover0.copyMs) / handovers : 0.0;
+    o[QStringLiteral("handovers")] = handovers;
+    o[QStringLiteral("handovers_busy")] = handover.busy - handover0.busy;
     o[QStringLiteral("release_to_final_shown_ms")] = msBetween(inputs_.back().due, finalShown);
     o[QStringLiteral("viewport_full_frame_ms")] = fullPassMs;
     o[QStringLiteral("open_to_final_shown_ms")] = msBetween(openStart, openShown);
@@ -391,6 +397,8 @@ int Measurement::run() {
     std::printf(
         "  frame hand-over      mean   %6.2f ms   max %6.2f ms   (copying %.2f ms of the mean)\n",
         num("handover_mean_ms"), num("handover_max_ms"), num("handover_copy_mean_ms"));
+    std::printf("  hand-overs           %6d        %d found the frame lock held and came back\n",
+                o[QStringLiteral("handovers")].toInt(), o[QStringLiteral("handovers_busy")].toInt());
     std::printf("  mouse event handling median %6.2f ms   max %6.2f ms\n",
                 num("input_handling_median_ms"), num("input_handling_max_ms"));
     std::printf(
@@ -425,6 +433,9 @@ void addMeasurementOptions(QCommandLineParser& parser) {
                       QStringLiteral("N"), QStringLiteral("240")});
     parser.addOption(
         {QStringLiteral("json"), QStringLiteral("Print the measurement as one JSON line.")});
+    parser.addOption({QStringLiteral("view"),
+                      QStringLiteral("Viewport display: automatic, opengl or software."),
+                      QStringLiteral("KIND"), QStringLiteral("automatic")});
 }
 
 int runRequestedMeasurement(const QCommandLineParser& parser) {
@@ -437,6 +448,11 @@ int runRequestedMeasurement(const QCommandLineParser& parser) {
     bool ok = false;
     r.frames = parser.value(QStringLiteral("frames")).toInt(&ok);
     r.json = parser.isSet(QStringLiteral("json"));
+    if (!parseDisplayKind(parser.value(QStringLiteral("view")), r.display)) {
+        std::fprintf(stderr, "raystudio: --view must be automatic, opengl or software, not \"%s\"\n",
+                     qPrintable(parser.value(QStringLiteral("view"))));
+        return 2;
+    }
     if (!ok || r.frames < 2 || (!r.orbit && r.object.isEmpty())) {
         std::fprintf(stderr,
                      "raystudio: --measure-drag needs --object NAME; --frames needs N >= 2\n");

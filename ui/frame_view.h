@@ -63,10 +63,4 @@ private:
 /// letterboxed (aspect kept, centred; e.g. the old frame while a resize is pending).
 QRect fitRect(const QSize& area, const QSize& frame);
 
-/// True when OpenGL views can work on this platform (not offscreen, and a context can be made).
-bool openGLAvailable();
-
-/// Makes the OpenGL view when available, else the raster view, as a child of `parent`.
-FrameView* createFrameView(QWidget* parent);
-
 }  // namespace rs::ui

@@ -32,6 +32,12 @@ public:
         overlay_ = std::move(painter);
     }
     void repaintOverlay() override { update(); }
+    /// The next paint uploads the whole frame again instead of what changed (tests compare
+    /// the two pictures).
+    void forgetUploads() {
+        color_ = ids_ = debug_ = {};
+        update();
+    }
 
 protected:
     void initializeGL() override;

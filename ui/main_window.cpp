@@ -59,7 +59,7 @@ MainWindow::MainWindow(QWidget* parent)
     sessionErrors_ = std::make_unique<SessionErrorRelay>(
         session_.get(), this, [this](const QString& message) { onSessionError(message); });
     session_->session().setObserver(sessionErrors_.get());
-    viewport_ = new Viewport(editor_, session_.get(), this);
+    viewport_ = new Viewport(editor_, session_.get(), this, prefs_.display);
     viewport_->setPreviewDivider(prefs_.previewDivider);
     setCentralWidget(viewport_);
     setAcceptDrops(true);
@@ -441,6 +441,7 @@ void MainWindow::applyPreferences(const Preferences& prefs) {
     prefs_ = prefs;
     session_->session().setPolicy(prefs.policy);
     viewport_->setPreviewDivider(prefs.previewDivider);
+    viewport_->setDisplay(prefs.display);
     if (engineChanged) {
         // The next update rebuilds the snapshot with the other engine; post one now.
         session_->session().setEngine(prefs.engine);

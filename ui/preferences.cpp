@@ -33,6 +33,8 @@ Preferences loadPreferences() {
     p.autosaveSeconds = std::max(0, s.value(QStringLiteral("autosave/seconds"), p.autosaveSeconds).toInt());
     p.previewDivider = s.value(QStringLiteral("viewport/previewDivider"), 1).toInt();
     if (!validPreviewDivider(p.previewDivider)) p.previewDivider = 1;
+    if (!parseDisplayKind(s.value(QStringLiteral("viewport/display")).toString(), p.display))
+        p.display = DisplayKind::Automatic;
     return p;
 }
 
@@ -44,6 +46,7 @@ void savePreferences(const Preferences& p) {
     s.setValue(QStringLiteral("session/engine"), QString::fromLatin1(engineName(p.engine)));
     s.setValue(QStringLiteral("autosave/seconds"), p.autosaveSeconds);
     s.setValue(QStringLiteral("viewport/previewDivider"), p.previewDivider);
+    s.setValue(QStringLiteral("viewport/display"), QString::fromLatin1(displayKindName(p.display)));
 }
 
 int governorRate(double targetMs) {
@@ -91,6 +94,18 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
         notify();
     });
     form->addRow(tr("Viewport preview scale"), preview);
+
+    auto* display = enumCombo(this, "display", {tr("Automatic"), tr("OpenGL"), tr("Software")},
+                              prefs_.display);
+    display->setToolTip(
+        tr("Automatic: OpenGL on a graphics card, Software (QPainter, only the changed "
+           "rectangles) on software OpenGL such as llvmpipe, whose drawing takes the cores "
+           "the ray tracer needs"));
+    connect(display, &QComboBox::currentIndexChanged, this, [=, this](int i) {
+        prefs_.display = DisplayKind(i);
+        notify();
+    });
+    form->addRow(tr("Display"), display);
 
     // The governor first: while it is on it decides, frame by frame, what the fixed choices
     // below would.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "accel/ray_engine.h"
+#include "display_choice.h"
 #include "session/interaction_policy.h"
 
 #include <QDialog>
@@ -18,6 +19,8 @@ struct Preferences {
     int autosaveSeconds = 60;  ///< Autosave interval while the document is modified; 0: off.
     /// The viewport traces 1 / previewDivider of its device pixels a side (1, 2 or 4).
     int previewDivider = 1;
+    /// Which frame view draws the viewport (display_choice.h has the Automatic rule).
+    DisplayKind display = DisplayKind::Automatic;
 };
 
 /// Frames per second the governor aims at for a target frame time (0: off), and back.

@@ -1,14 +1,15 @@
-// RasterFrameView and the choice between the OpenGL and raster views.
+// RasterFrameView, and fitRect, which both views use.
 #include "raster_frame_view.h"
 
-#include "gl_frame_view.h"
 #include "image/tonemap.h"
 
-#include <QGuiApplication>
-#include <QOffscreenSurface>
 #include <QElapsedTimer>
-#include <QOpenGLContext>
+#include <QPaintEvent>
 #include <QPainter>
+#include <QRegion>
+
+#include <algorithm>
+#include <cmath>
 
 namespace rs::ui {
 
@@ -23,20 +24,6 @@ QRect fitRect(const QSize& area, const QSize& frame) {
         return QRect(QPoint(0, 0), area);
     return QRect((area.width() - s.width()) / 2, (area.height() - s.height()) / 2, s.width(),
                  s.height());
-}
-
-bool openGLAvailable() {
-    if (QGuiApplication::platformName() == QLatin1String("offscreen") ||
-        QGuiApplication::platformName() == QLatin1String("minimal"))
-        return false;
-    if (qEnvironmentVariableIsSet("RAYSTUDIO_NO_OPENGL")) return false;
-    QOpenGLContext context;
-    return context.create();
-}
-
-FrameView* createFrameView(QWidget* parent) {
-    if (openGLAvailable()) return new GlFrameView(parent);
-    return new RasterFrameView(parent);
 }
 
 RasterFrameView::RasterFrameView(QWidget* parent) : QWidget(parent) {
@@ -57,13 +44,11 @@ void RasterFrameView::shadeRect(const DisplayFrame& f, const std::vector<ObjectI
     const QRect r = rect.adjusted(-1, -1, 1, 1) & QRect(0, 0, f.width, f.height);
     for (int y = r.top(); y <= r.bottom(); ++y) {
         uchar* line = image_.scanLine(y);
-        for (int x = r.left(); x <= r.right(); ++x) {
-            uchar* p = line + 3 * x;
-            if (onOutline(f, x, y, selected))
-                std::copy(kOutlineRgb, kOutlineRgb + 3, p);
-            else
-                toDisplay8(f.color[std::size_t(y) * f.width + x], f.tonemap, f.exposure, p);
-        }
+        toDisplay8(&f.color[std::size_t(y) * f.width + r.left()], std::size_t(r.width()),
+                   f.tonemap, f.exposure, line + 3 * r.left());
+        if (selected.empty()) continue;
+        for (int x = r.left(); x <= r.right(); ++x)
+            if (onOutline(f, x, y, selected)) std::copy(kOutlineRgb, kOutlineRgb + 3, line + 3 * x);
     }
 }
 
@@ -78,7 +63,27 @@ void RasterFrameView::showFrame(std::shared_ptr<const DisplayFrame> frame, ViewM
         const DisplayFrame& f = *frame;
         std::vector<QRect> rects;
         if (canShadeRects(f, mode, selected, rects)) {
-            for (const QRect& r : rects) shadeRect(f, selected, r);
+            // Only what changed is shaded, repainted and flushed to the window system.
+            QRegion dirty;
+            for (const QRect& r : rects) {
+                shadeRect(f, selected, r);
+                dirty += widgetRect(r.adjusted(-1, -1, 1, 1));
+            }
+            update(dirty);
+            shown_.serial = f.serial;
+            shown_.generation = f.generation;
+            shown_.paintMs += timer.nsecsElapsed() / 1e6;  // The shading is this view's upload.
+            shadedSerial_ = f.serial;
+            return;
+        } else if (mode == ViewMode::Color && shadedFrame_ == &f && shadedSerial_ == f.serial &&
+                   shadedMode_ == mode && shadedTonemap_ == f.tonemap &&
+                   shadedExposure_ == f.exposure && image_.size() == QSize(f.width, f.height) &&
+                   shadedSelected_ != selected) {
+            // A click that selects: the outline moves, the rest of the picture stays.
+            update(widgetRect(reshadeOutline(f, selected)));
+            shadedSelected_ = selected;
+            shown_.paintMs += timer.nsecsElapsed() / 1e6;
+            return;
         } else if (shadedFrame_ != &f || shadedSerial_ != f.serial || shadedMode_ != mode ||
                    shadedSelected_ != selected || shadedTonemap_ != f.tonemap ||
                    shadedExposure_ != f.exposure) {
@@ -91,20 +96,84 @@ void RasterFrameView::showFrame(std::shared_ptr<const DisplayFrame> frame, ViewM
         shadedTonemap_ = f.tonemap;
         shadedExposure_ = f.exposure;
     }
-    shown_ = frame ? PresentedFrame{frame->serial, frame->generation, 0.0, 0.0} : PresentedFrame{};
-    shown_.paintMs = timer.nsecsElapsed() / 1e6;  // The CPU shading is this view's upload.
+    shown_.serial = frame ? frame->serial : 0;
+    shown_.generation = frame ? frame->generation : 0;
+    shown_.paintMs += timer.nsecsElapsed() / 1e6;
     update();
+}
+
+QRect RasterFrameView::reshadeOutline(const DisplayFrame& f, const std::vector<ObjectId>& selected) {
+    // Only pixels of an object outlined before or now, or next to one, can change.
+    int x0 = f.width, y0 = f.height, x1 = -1, y1 = -1;
+    for (int y = 0; y < f.height; ++y) {
+        const ObjectId* row = &f.id[std::size_t(y) * f.width];
+        for (int x = 0; x < f.width; ++x)
+            if (row[x] != kNoObject &&
+                (outlined(selected, row[x]) || outlined(shadedSelected_, row[x]))) {
+                x0 = std::min(x0, x), x1 = std::max(x1, x);
+                y0 = std::min(y0, y), y1 = std::max(y1, y);
+            }
+    }
+    if (x1 < 0) return {};
+    const QRect r = QRect(QPoint(x0, y0), QPoint(x1, y1)).adjusted(-1, -1, 1, 1) &
+                    QRect(0, 0, f.width, f.height);
+    for (int y = r.top(); y <= r.bottom(); ++y) {
+        uchar* line = image_.scanLine(y);
+        for (int x = r.left(); x <= r.right(); ++x) {
+            const bool now = onOutline(f, x, y, selected);
+            if (now == onOutline(f, x, y, shadedSelected_)) continue;
+            if (now)
+                std::copy(kOutlineRgb, kOutlineRgb + 3, line + 3 * x);
+            else
+                toDisplay8(f.color[std::size_t(y) * f.width + x], f.tonemap, f.exposure,
+                           line + 3 * x);
+        }
+    }
+    return r;
 }
 
 QImage RasterFrameView::grabImage() {
     return grab().toImage();
 }
 
-void RasterFrameView::paintEvent(QPaintEvent*) {
+QRect RasterFrameView::widgetRect(const QRect& r) const {
+    const QRect fit = fitRect(size(), image_.size());
+    if (fit.isEmpty()) return {};
+    const double sx = double(fit.width()) / image_.width();
+    const double sy = double(fit.height()) / image_.height();
+    const int x0 = fit.x() + int(std::floor(r.left() * sx));
+    const int y0 = fit.y() + int(std::floor(r.top() * sy));
+    const int x1 = fit.x() + int(std::ceil((r.right() + 1) * sx));
+    const int y1 = fit.y() + int(std::ceil((r.bottom() + 1) * sy));
+    return QRect(QPoint(x0, y0), QPoint(x1 - 1, y1 - 1)) & rect();
+}
+
+void RasterFrameView::paintEvent(QPaintEvent* event) {
+    QElapsedTimer timer;
+    timer.start();
     QPainter p(this);
-    p.fillRect(rect(), QColor(48, 48, 48));
-    if (!image_.isNull()) p.drawImage(fitRect(size(), image_.size()), image_);
-    notifyPresented(shown_);
+    const QRect fit = image_.isNull() ? QRect() : fitRect(size(), image_.size());
+    // The letterbox bars only; the image covers the rest (clipped to what changed).
+    for (const QRect& r : QRegion(event->rect()) - QRegion(fit)) p.fillRect(r, QColor(48, 48, 48));
+    if (!image_.isNull()) p.drawImage(fit, image_);
+    shown_.paintMs += timer.nsecsElapsed() / 1e6;
+    paintEnd_.start();
+    reportPresented();
+}
+
+void RasterFrameView::reportPresented() {
+    if (presentQueued_) return;
+    presentQueued_ = true;
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            presentQueued_ = false;
+            PresentedFrame f = shown_;
+            f.composeMs = paintEnd_.nsecsElapsed() / 1e6;
+            shown_.paintMs = 0.0;  // Later paints of the same frame report their own drawing.
+            notifyPresented(f);
+        },
+        Qt::QueuedConnection);
 }
 
 }  // namespace rs::ui

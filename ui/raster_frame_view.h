@@ -4,6 +4,7 @@
 
 #include "frame_view.h"
 
+#include <QElapsedTimer>
 #include <QWidget>
 
 namespace rs::ui {
@@ -18,6 +19,8 @@ public:
                    const std::vector<ObjectId>& selected) override;
     QImage grabImage() override;
     bool usesOpenGL() const override { return false; }
+    /// The overlay is a widget of its own over this one; this paints the whole frame again.
+    void repaintOverlay() override { update(); }
     /// The shaded frame at frame resolution (what is drawn, before scaling).
     QImage frameImage() const { return image_; }
 
@@ -31,6 +34,17 @@ private:
                        std::vector<QRect>& rects) const;
     void shadeRect(const DisplayFrame& frame, const std::vector<ObjectId>& selected,
                    const QRect& rect);
+    /// Brings image_ from shadedSelected_ to `selected` where only the outline can differ:
+    /// near the objects either selection outlines. Returns the frame rectangle it touched.
+    QRect reshadeOutline(const DisplayFrame& frame, const std::vector<ObjectId>& selected);
+    /// Widget pixels that show frame pixels `rect`.
+    QRect widgetRect(const QRect& rect) const;
+
+    /// Reported once the paint has reached the window system (the backing store flushes
+    /// after the paint events): queued, so a paint that covers several widgets reports once.
+    void reportPresented();
+    bool presentQueued_ = false;
+    QElapsedTimer paintEnd_;
 
     QImage image_;
     PresentedFrame shown_;  ///< The frame image_ comes from.

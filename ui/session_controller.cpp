@@ -4,23 +4,26 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
 namespace rs::ui {
 
 namespace {
-constexpr int kDisplayIntervalMs = 16;
 /// More committed tiles than this between two looks: copy the frame whole instead.
 constexpr std::size_t kMaxListedTiles = 16384;
+/// How soon a hand-over that found the frame lock held tries again. A tile commit holds it
+/// for microseconds, an edit's dirty marking for a few milliseconds.
+constexpr int kBusyRetryMs = 2;
 }
 
 SessionController::SessionController(int threads, QObject* parent)
     : QObject(parent), session_(std::make_unique<RenderSession>(threads)), mailbox_(this) {
     qRegisterMetaType<rs::PassInfo>();
     repaintTimer_.setSingleShot(true);
-    repaintTimer_.setInterval(kDisplayIntervalMs);
     connect(&repaintTimer_, &QTimer::timeout, this, &SessionController::onRepaintTimer);
+    // Zero: fires when this event-loop pass has handled what was queued.
     updateTimer_.setSingleShot(true);
-    updateTimer_.setInterval(kDisplayIntervalMs);
+    updateTimer_.setInterval(0);
     connect(&updateTimer_, &QTimer::timeout, this, &SessionController::onUpdateTimer);
     rateTimer_.setInterval(1000);
     connect(&rateTimer_, &QTimer::timeout, this, [this] {
@@ -41,7 +44,7 @@ void SessionController::requestUpdate(const SceneDocument& doc) {
     pendingDoc_ = doc;
     ++requestSerial_;
     if (!updateTimer_.isActive()) {
-        // The first change after a quiet spell goes out at once; later ones wait for the tick.
+        // The first change of this pass goes out at once; later ones wait for its end.
         onUpdateTimer();
         updateTimer_.start();
     }
@@ -82,7 +85,7 @@ void SessionController::endInteraction() {
     session_->endInteraction();
 }
 
-std::shared_ptr<const DisplayFrame> SessionController::displayFrame() {
+std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wait) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<QRect> tiles;
     bool everything = false;
@@ -95,8 +98,12 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame() {
         tilesOverflowed_ = false;
         committed = committedGeneration_;
     }
+    tiles.insert(tiles.end(), heldTiles_.begin(), heldTiles_.end());
+    heldTiles_.clear();
+    everything = everything || std::exchange(heldEverything_, false);
+    committed = std::max(committed, std::exchange(heldGeneration_, 0));
     DisplayFrame& d = *frame_;
-    session_->withFrame([&](const DeepFrame& f, const std::shared_ptr<const CompiledScene>&) {
+    const auto copy = [&](const DeepFrame& f, const std::shared_ptr<const CompiledScene>&) {
         const auto locked = std::chrono::steady_clock::now();
         if (everything) tiles.assign(1, QRect(0, 0, f.width, f.height));
         // Edits clear the previous edit's re-traced overlay outside any tile: the flags follow
@@ -108,7 +115,19 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame() {
         handover_.copyMs +=
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - locked)
                 .count();
-    });
+    };
+    if (wait == FrameWait::Block) {
+        session_->withFrame(copy);
+    } else if (!session_->tryWithFrame(copy)) {
+        // Kept for the next look, which comes soon whether or not more tiles arrive.
+        heldTiles_ = std::move(tiles);
+        heldEverything_ = everything;
+        heldGeneration_ = committed;
+        ++handover_.busy;
+        framePending_.store(true);
+        if (!repaintTimer_.isActive()) repaintTimer_.start(kBusyRetryMs);
+        return frame_;
+    }
     if (d.tonemap != postedTonemap_ || d.exposure != postedExposure_) {
         d.tonemap = postedTonemap_;
         d.exposure = postedExposure_;
@@ -133,11 +152,19 @@ void SessionController::tileDone(int x0, int y0, int x1, int y1, uint64_t genera
         committedGeneration_ = std::max(committedGeneration_, generation);
     }
     if (framePending_.exchange(true)) return;
-    mailbox_.post([this] { if (!repaintTimer_.isActive()) repaintTimer_.start(); });
+    mailbox_.post([this] { scheduleFrame(); });
+}
+
+void SessionController::scheduleFrame() {
+    if (repaintTimer_.isActive()) return;
+    // The first tiles after a quiet spell are shown at once, later ones at the display's pace.
+    const qint64 since = lastFrame_.isValid() ? lastFrame_.elapsed() : kMinFrameIntervalMs;
+    repaintTimer_.start(int(std::max<qint64>(0, kMinFrameIntervalMs - since)));
 }
 
 void SessionController::onRepaintTimer() {
     framePending_.store(false);
+    lastFrame_.start();
     Q_EMIT frameUpdated();
 }
 

@@ -1,5 +1,5 @@
-// Qt adapter around RenderSession: observer callbacks become queued, coalesced signals, and
-// document updates are throttled to the display rate.
+// Qt adapter around RenderSession: observer callbacks become queued, coalesced signals paced
+// to the display, and the frame is handed to the display without waiting on the session.
 #pragma once
 
 #include "display_frame.h"
@@ -8,6 +8,7 @@
 
 #include <QObject>
 #include <QRect>
+#include <QElapsedTimer>
 #include <QTimer>
 
 #include <atomic>
@@ -30,8 +31,9 @@ public:
     /// The wrapped session (for withFrame, stats, policy).
     RenderSession& session() { return *session_; }
 
-    /// Queues `doc` to be shown; consecutive requests within one display interval collapse
-    /// into one session update.
+    /// Posts `doc` to the session. The first request of an event-loop pass goes at once;
+    /// further ones in the same pass (mouse events queued while the thread was busy) collapse
+    /// into one, posted when the pass ends. The session coalesces the rest (the latest wins).
     void requestUpdate(const SceneDocument& doc);
     /// Sends a pending update now (tests and drag release use it). The session applies it on
     /// its own thread: this returns at once.
@@ -47,16 +49,21 @@ public:
     /// Updates per second over the last second.
     double updatesPerSecond() const { return updatesPerSecond_; }
 
+    /// Whether displayFrame may wait for the session's frame lock.
+    enum class FrameWait { Block, TryOnly };
     /// The frame to show now (GUI thread). One frame, refreshed in place: only the tiles
     /// committed since the last call are copied, under a short lock. Exposure and tone
     /// mapping are those of the document posted last, which edits that trace nothing change.
-    std::shared_ptr<const DisplayFrame> displayFrame();
+    /// TryOnly (the repaints frameUpdated asks for): when a tile commit or an edit holds the
+    /// lock, the frame is returned as it was and frameUpdated comes again shortly.
+    std::shared_ptr<const DisplayFrame> displayFrame(FrameWait wait = FrameWait::Block);
     /// Cost of handing frames to the display, for the designer's measurement.
     struct HandoverStats {
         int count = 0;
         double totalMs = 0.0;
         double maxMs = 0.0;
         double copyMs = 0.0;  ///< Of totalMs, the part spent copying (the rest waits for the lock).
+        int busy = 0;         ///< TryOnly hand-overs that found the lock held and came back later.
     };
     const HandoverStats& handoverStats() const { return handover_; }
     /// Counts requestUpdate calls; documentPosted says which generation carried them.
@@ -68,7 +75,8 @@ public:
     void frameComplete(uint64_t generation) override;
 
 Q_SIGNALS:
-    /// New pixels are in the frame (at most about 60 per second).
+    /// New pixels are in the frame: at once after a quiet spell, then at most every
+    /// kMinFrameIntervalMs (the display's refresh; faster would only copy more often).
     void frameUpdated();
     /// A pass finished (GUI thread).
     void passFinished(const rs::PassInfo& info);
@@ -77,9 +85,15 @@ Q_SIGNALS:
     /// The document of requests up to `requestSerial` went to the session as `generation`.
     void documentPosted(quint64 requestSerial, quint64 generation);
 
+public:
+    /// Shortest time between two frameUpdated signals.
+    static constexpr int kMinFrameIntervalMs = 16;
+
 private:
     void onRepaintTimer();
     void onUpdateTimer();
+    /// Tiles were committed: frameUpdated now, or when kMinFrameIntervalMs has passed.
+    void scheduleFrame();
 
     std::unique_ptr<RenderSession> session_;
     GuiMailbox mailbox_;  ///< Worker callbacks to the GUI thread.
@@ -95,6 +109,11 @@ private:
     std::vector<QRect> committedTiles_;
     uint64_t committedGeneration_ = 0;
     bool tilesOverflowed_ = false;  ///< Too many to list: copy everything.
+    /// Tiles a TryOnly hand-over took but could not copy (GUI thread only).
+    std::vector<QRect> heldTiles_;
+    bool heldEverything_ = false;
+    uint64_t heldGeneration_ = 0;
+    QElapsedTimer lastFrame_;  ///< Since frameUpdated was last emitted.
     std::shared_ptr<DisplayFrame> frame_ = std::make_shared<DisplayFrame>();
     uint64_t frameSessionGeneration_ = 0;  ///< Session generation at the last refresh.
     /// Display settings of the document posted last.

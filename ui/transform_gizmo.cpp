@@ -132,6 +132,20 @@ std::optional<GizmoHandle> TransformGizmo::handleAt(const QPointF& p) const {
     return std::nullopt;
 }
 
+QRectF TransformGizmo::bounds() const {
+    if (!valid_) return {};
+    QRectF r(centre_, QSizeF(0.0, 0.0));
+    const auto add = [&r](const QPointF& p) { r = r.united(QRectF(p, QSizeF(0.0, 0.0))); };
+    for (const Axis& a : axes_) {
+        if (a.shown) add(a.tip), add(a.scaleBox);
+        for (const QPointF& p : a.planeSquare) add(p);
+        for (const QPointF& p : a.ring) add(p);
+    }
+    // Scale boxes, arrow heads and pens reach past the points above.
+    constexpr double kReach = 12.0;
+    return r.adjusted(-kReach, -kReach, kReach, kReach);
+}
+
 std::optional<QPointF> TransformGizmo::grabPoint(const GizmoHandle& h) const {
     if (!valid_) return std::nullopt;
     const Axis& a = axes_[h.axis];

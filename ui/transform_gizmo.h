@@ -42,6 +42,8 @@ public:
     std::optional<GizmoHandle> handleAt(const QPointF& p) const;
     /// A widget point that grabs `h` (tests press there); nullopt when it is not shown.
     std::optional<QPointF> grabPoint(const GizmoHandle& h) const;
+    /// Widget rectangle that holds everything paint() draws.
+    QRectF bounds() const;
     /// Draws the gizmo, `active` (the handle being dragged) highlighted.
     void paint(QPainter& p, const std::optional<GizmoHandle>& active) const;
 

@@ -17,6 +17,8 @@
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
+#include <cmath>
+
 namespace rs::ui {
 
 namespace {
@@ -33,30 +35,41 @@ Vec3 closestOnAxis(const Vec3& a, const Vec3& axis, const Vec3& o, const Vec3& d
 }
 }  // namespace
 
-Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* parent)
-    : QWidget(parent), editor_(editor), session_(session), view_(createFrameView(this)),
+Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* parent,
+                   DisplayKind display)
+    : QWidget(parent), editor_(editor), session_(session),
       overlay_(new ViewportOverlay([this](QPainter& p) { paintOverlay(p); }, this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(view_->widget());
-    view_->widget()->setAttribute(Qt::WA_TransparentForMouseEvents);
-    overlay_->raise();
-    if (view_->usesOpenGL()) {
-        // A native GL window covers sibling widgets: the GL view paints the overlay itself.
-        overlay_->hide();
-        view_->setOverlayPainter([this](QPainter& p) { paintOverlay(p); });
-    }
+    installFrameView(createFrameView(this, display));
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setMinimumSize(320, 180);
     resizeSettle_.setSingleShot(true);
     resizeSettle_.setInterval(kResizeSettleMs);
     connect(&resizeSettle_, &QTimer::timeout, this, &Viewport::postView);
-    connect(session_, &SessionController::frameUpdated, this, &Viewport::refresh);
+    connect(session_, &SessionController::frameUpdated, this, &Viewport::showNewPixels);
     connect(editor_, &SceneEditor::selectionChanged, this, &Viewport::redraw);
     connect(editor_, &SceneEditor::documentReset, this, &Viewport::onDocumentReset);
     connect(editor_, &SceneEditor::documentChanged, this, &Viewport::onDocumentChanged);
     connect(editor_->undoStack(), &QUndoStack::indexChanged, this, &Viewport::onUndoIndexChanged);
+}
+
+void Viewport::installFrameView(FrameView* view) {
+    view_ = view;
+    layout()->addWidget(view_->widget());
+    view_->widget()->setAttribute(Qt::WA_TransparentForMouseEvents);
+    overlay_->raise();
+    // A native GL window covers sibling widgets: the GL view paints the overlay itself.
+    overlay_->setVisible(!view_->usesOpenGL());
+    if (view_->usesOpenGL()) view_->setOverlayPainter([this](QPainter& p) { paintOverlay(p); });
+}
+
+void Viewport::setDisplay(DisplayKind display) {
+    if (useOpenGL(display, openGLRenderer()) == view_->usesOpenGL()) return;
+    delete view_->widget();  // Owns the view (the GL window is its container's).
+    installFrameView(createFrameView(this, display));
+    redraw();
 }
 
 void Viewport::setViewMode(ViewMode mode) {
@@ -65,8 +78,25 @@ void Viewport::setViewMode(ViewMode mode) {
 }
 
 void Viewport::refresh() {
+    const QSize before = frame_ ? QSize(frame_->width, frame_->height) : QSize();
     frame_ = session_->displayFrame();
-    redraw();
+    showHandedOver(before);
+}
+
+void Viewport::showNewPixels() {
+    const QSize before = frame_ ? QSize(frame_->width, frame_->height) : QSize();
+    const uint64_t serial = frame_ ? frame_->serial : 0;
+    frame_ = session_->displayFrame(SessionController::FrameWait::TryOnly);
+    if (frame_->serial != serial) showHandedOver(before);  // Else the lock was busy, or nothing new.
+}
+
+void Viewport::showHandedOver(const QSize& before) {
+    // New pixels alone leave the overlay as it is; a new frame size moves it.
+    if (QSize(frame_->width, frame_->height) != before) {
+        redraw();
+        return;
+    }
+    view_->showFrame(frame_, mode_, editor_->selectedIds());
 }
 
 void Viewport::redraw() {
@@ -76,10 +106,33 @@ void Viewport::redraw() {
 }
 
 void Viewport::repaintOverlay() {
-    if (view_->usesOpenGL())
+    if (view_->usesOpenGL()) {
         view_->repaintOverlay();
-    else
+        return;
+    }
+    // Only where the overlay was or is now drawn: the frame under the rest stays on screen.
+    const QRegion now = overlayRegion();
+    const QRectF output = throughScene_ ? projection().outputRect() : QRectF();
+    if (output != outputShown_)
         overlay_->update();
+    else
+        overlay_->update(now | overlayShown_);
+    overlayShown_ = now;
+    outputShown_ = output;
+}
+
+QRegion Viewport::overlayRegion() const {
+    // Pens, antialiasing and the highlight ring reach a few pixels past the shapes.
+    constexpr int kMargin = 4;
+    QRegion r;
+    for (const LightGlyph& g : glyphs_) {
+        const int extent = int(std::ceil(std::max(double(g.radius), 6.0))) + kMargin;
+        r += QRect(g.centre.toPoint() - QPoint(extent, extent), QSize(2 * extent, 2 * extent));
+    }
+    if (const auto g = gizmo()) r += g->bounds().toAlignedRect();
+    if (drag_ == Drag::Box)
+        r += QRect(pressPos_, lastPos_).normalized().adjusted(-kMargin, -kMargin, kMargin, kMargin);
+    return r;
 }
 
 std::optional<TransformGizmo> Viewport::gizmo() const {

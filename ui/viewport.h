@@ -3,6 +3,7 @@
 // G/R/S gestures and view navigation.
 #pragma once
 
+#include "display_choice.h"
 #include "display_frame.h"
 #include "frame_view.h"
 #include "light_overlay.h"
@@ -12,6 +13,7 @@
 #include "view_projection.h"
 
 #include <QPoint>
+#include <QRegion>
 #include <QTimer>
 #include <QWidget>
 
@@ -31,10 +33,13 @@ enum class AxisView { Front, Back, Right, Left, Top, Bottom };
 class Viewport : public QWidget {
     Q_OBJECT
 public:
-    Viewport(SceneEditor* editor, SessionController* session, QWidget* parent = nullptr);
+    Viewport(SceneEditor* editor, SessionController* session, QWidget* parent = nullptr,
+             DisplayKind display = DisplayKind::Automatic);
 
     /// The frame drawer (OpenGL or raster).
     FrameView* frameView() { return view_; }
+    /// Preferences → Display: replaces the frame drawer when `display` resolves to the other one.
+    void setDisplay(DisplayKind display);
     /// The last frame copied from the session.
     std::shared_ptr<const DisplayFrame> frame() const { return frame_; }
     void setViewMode(ViewMode mode);
@@ -52,7 +57,7 @@ public:
     static constexpr int kResizeSettleMs = 120;
     /// Widget point at the centre of frame pixel (x, y).
     QPoint widgetPointOf(int x, int y) const;
-    /// Copies the session's frame and redraws.
+    /// Copies the session's frame (waiting for its lock) and redraws.
     void refresh();
 
     // View camera: navigation moves it, never the document (Blender's model).
@@ -118,9 +123,18 @@ private:
     void finishDrag(bool cancel);
     Vec3 dragPoint(const QPoint& pos) const;
     void redraw();
+    /// frameUpdated: copies what the session committed if its frame lock is free, and draws.
+    void showNewPixels();
+    /// Shows frame_ after a hand-over that may have changed its size.
+    void showHandedOver(const QSize& before);
+    /// Puts `view` in the layout, with the overlay drawn by it or over it.
+    void installFrameView(FrameView* view);
     /// Light glyphs, the gizmo and the selection box, in widget coordinates.
     void paintOverlay(QPainter& p) const;
     void repaintOverlay();
+    /// Where paintOverlay draws glyphs, the gizmo and the selection box (not the passepartout,
+    /// which changes only with the projection): the raster view repaints just that.
+    QRegion overlayRegion() const;
     /// The box select's result: entities whose centre is drawn inside `box`.
     void finishBox(const QRect& box, bool add);
     /// An undo or redo that this viewport did not make, while a drag or gesture runs.
@@ -157,6 +171,8 @@ private:
     FrameView* view_;
     ViewportOverlay* overlay_;
     std::vector<LightGlyph> glyphs_;
+    QRegion overlayShown_;  ///< overlayRegion() when the overlay was last repainted.
+    QRectF outputShown_;    ///< The passepartout's output frame then.
     std::shared_ptr<const DisplayFrame> frame_;
     ViewMode mode_ = ViewMode::Color;
 

@@ -2,6 +2,7 @@
 #include "image/tonemap.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace rs {
@@ -38,10 +39,8 @@ float acesNarkowicz(float x) {
     return clamp01((x * (a * x + b)) / (x * (c * x + d) + e));
 }
 
-}  // namespace
-
-Color toneMap(const Color& hdr, ToneMap op, float exposure) {
-    const float gain = std::exp2(exposure);
+/// toneMap with exposure's gain (2^stops) already computed.
+Color toneMapGain(const Color& hdr, ToneMap op, float gain) {
     const Color x(sanitize(hdr.x * gain), sanitize(hdr.y * gain), sanitize(hdr.z * gain));
     switch (op) {
         case ToneMap::Clamp:
@@ -64,6 +63,49 @@ Color toneMap(const Color& hdr, ToneMap op, float exposure) {
     return clamp01(x);
 }
 
+/// The 8-bit code of display-linear `d` in [0, 1]: srgbEncode scaled and rounded.
+uint8_t encode8(float d) {
+    return static_cast<uint8_t>(std::lround(srgbEncode(d) * 255.0f));
+}
+
+/// Where encode8 steps up: steps[k - 1] is the smallest float in [0, 1] whose code is at least
+/// k. Found by bisection on the bit patterns (ordered like the values for floats >= 0), so the
+/// table is encode8 itself, evaluated 255 x 30 times once; the code is monotonic in d.
+struct Srgb8Steps {
+    float at[255];
+    Srgb8Steps() {
+        uint32_t lo = 0;  // encode8 of every pattern below lo is < k.
+        for (int k = 1; k <= 255; ++k) {
+            uint32_t hi = 0x3f800000u;  // 1.0f, code 255.
+            while (lo < hi) {
+                const uint32_t mid = lo + (hi - lo) / 2;
+                if (encode8(std::bit_cast<float>(mid)) >= k)
+                    hi = mid;
+                else
+                    lo = mid + 1;
+            }
+            at[k - 1] = std::bit_cast<float>(lo);
+        }
+    }
+    /// encode8(d) for d in [0, 1], branch-free: the number of steps at or below d.
+    uint8_t code(float d) const {
+        int i = 0;
+        for (int step = 128; step > 0; step >>= 1) i += at[i + step - 1] <= d ? step : 0;
+        return uint8_t(i);
+    }
+};
+
+const Srgb8Steps& srgb8Steps() {
+    static const Srgb8Steps steps;
+    return steps;
+}
+
+}  // namespace
+
+Color toneMap(const Color& hdr, ToneMap op, float exposure) {
+    return toneMapGain(hdr, op, std::exp2(exposure));
+}
+
 float srgbEncode(float linear) {
     const float x = std::isnan(linear) ? 0.0f : clamp01(linear);
     if (x <= 0.0031308f) return 12.92f * x;
@@ -77,10 +119,16 @@ float srgbDecode(float encoded) {
 }
 
 void toDisplay8(const Color& hdr, ToneMap op, float exposure, uint8_t rgb[3]) {
-    const Color d = toneMap(hdr, op, exposure);
-    for (int i = 0; i < 3; ++i) {
-        // srgbEncode stays in [0, 1], so the rounded value always fits a byte.
-        rgb[i] = static_cast<uint8_t>(std::lround(srgbEncode(d[i]) * 255.0f));
+    toDisplay8(&hdr, 1, op, exposure, rgb);
+}
+
+void toDisplay8(const Color* hdr, std::size_t count, ToneMap op, float exposure, uint8_t* rgb) {
+    const float gain = std::exp2(exposure);
+    const Srgb8Steps& steps = srgb8Steps();
+    for (std::size_t i = 0; i < count; ++i) {
+        // toneMap stays in [0, 1] (NaN sanitised), the table's domain.
+        const Color d = toneMapGain(hdr[i], op, gain);
+        for (int c = 0; c < 3; ++c) rgb[3 * i + std::size_t(c)] = steps.code(d[c]);
     }
 }
 

@@ -95,6 +95,15 @@ public:
         std::unique_lock lock(frameMutex_);
         f(frame_, snapshot_);
     }
+    /// withFrame if no tile commit or edit holds the frame now, else false at once and `f`
+    /// does not run: the display comes back later instead of waiting on the GUI thread.
+    template <class F>
+    bool tryWithFrame(F&& f) const {
+        std::unique_lock lock(frameMutex_, std::try_to_lock);
+        if (!lock.owns_lock()) return false;
+        f(frame_, snapshot_);
+        return true;
+    }
     SessionStats stats() const;
     uint64_t generation() const { return generation_.load(); }
     std::shared_ptr<const CompiledScene> snapshot() const;

@@ -4,25 +4,38 @@
 # and prints what `raystudio --measure-drag/--measure-orbit` reports.
 #
 #   bash tests/bench/measure-designer.sh [--frames N] [--json] [--build DIR] [--display N]
+#                                        [--view automatic|opengl|software]
 #
 # --display N runs Xvfb on :N (on a shared machine, the display you were given) instead of
-# letting it pick a free one.
+# letting it pick a free one. --view sets Preferences -> Display for the run (default
+# automatic, which on this software GL is the QPainter view; opengl measures the GL view).
 #
-# Issue 10, on the 2-core shared VM (Mesa llvmpipe, viewport 992x930, frame 1280x720, load
-# 3-6 from other builds: noisy). Medians of interleaved runs of the binary before the
-# display work (d79abcf) and after it, 6 drags / 4 orbits each, 240 moves at 60 Hz:
+# Issue 10's display work, second round (2-core shared VM, Mesa llvmpipe, viewport 992x915
+# traced at its own size, load average 9.5-10 from other builds: noisy). Medians of 3
+# interleaved runs each of main at 627c1c2 (OpenGL view), the same with RAYSTUDIO_NO_OPENGL=1
+# (QPainter view) and 2d815f5 (Display = Automatic: QPainter on software GL), 240 moves at 60 Hz:
 #
-#                          drag before   drag after   orbit before   orbit after
-#   frames shown /s            4.1           5.3           4.1           6.5
-#   input to display median  666 ms        401 ms        586 ms        400 ms
-#   input to display p90     977 ms        578 ms        727 ms        523 ms
-#   hand-over per repaint     29 ms         19 ms         36 ms         32 ms
-#   paint end to swap        127 ms         92 ms        126 ms         49 ms
-#   longest GUI stall        357 ms        191 ms        303 ms        157 ms
+#                          drag before  drag raster  drag after  orbit before  orbit after
+#   frames shown /s            2.7         12.2         22.4         5.0          15.9
+#   input to display median  833 ms       167 ms        73 ms      615 ms        116 ms
+#   input to display p90    1003 ms       997 ms       161 ms      851 ms        251 ms
+#   hand-over per frame      3.5 ms       5.5 ms       1.8 ms     28.3 ms        8.3 ms
+#   paint end to swap        165 ms        -           2.1 ms      123 ms        0.2 ms
+#   longest GUI stall        243 ms      1256 ms       122 ms      220 ms        114 ms
+#   full frame/renderImage   2.60         2.28         1.51        2.94          1.64
 #
-# The best single drag after: 11 frames/s, 190 ms median latency. What is left is mostly
-# software GL's swap (20-35 ms even with the session idle, about twice that while the
-# render threads run) and the wait for the session's frame lock in the hand-over.
+# b6ef8fd (outline-only re-shade on selecting), 2 runs each at load 10, --view automatic vs
+# --view opengl: drag 29.8 vs 1.4 frames/s, 87 vs 1155 ms median latency, longest stall 83 vs
+# 319 ms; orbit 25.1 vs 3.5 frames/s, 53 vs 454 ms.
+#
+# Last, 627c1c2 vs cb3af41, 3 interleaved runs each at load 8.8-10.6, medians: drag 3.5 -> 21.4
+# frames/s (best run 34.9), 510 -> 81 ms median latency (best 31), longest stall 167 -> 51 ms,
+# full frame 2.26 -> 1.17x renderImage; orbit 7.0 -> 17.7 frames/s, 424 -> 80 ms.
+#
+# Before, llvmpipe's two threads took 54 % of the process's CPU (perf): the frame shader over
+# the whole window and the whole-window swap. The README's "Designer, the display path" has
+# the breakdown. (First round, d79abcf -> 2b722c8, frame 1280x720: 4.1 -> 5.3 frames/s
+# dragging, 666 -> 401 ms median latency.)
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -35,7 +48,8 @@ while (($#)); do
         --display) display=${2#:}; shift 2 ;;
         --frames) args+=(--frames "$2"); shift 2 ;;
         --json) args+=(--json); shift ;;
-        *) echo "usage: $0 [--frames N] [--json] [--build DIR] [--display N]" >&2; exit 2 ;;
+        --view) args+=(--view "$2"); shift 2 ;;
+        *) echo "usage: $0 [--frames N] [--json] [--build DIR] [--display N] [--view KIND]" >&2; exit 2 ;;
     esac
 done
 exe=$build/app/raystudio

@@ -1,8 +1,12 @@
 // The display path under QT_QPA_PLATFORM=offscreen (raster viewport): the frame handed over
 // tile by tile ends equal to the session's, and exposure edits reach the viewport and export.
 #include <QTemporaryDir>
+#include <QScreen>
 #include <QtTest>
+#include <cmath>
 #include <cstring>
+#include <future>
+#include <thread>
 
 #include "gui_test_support.h"
 #include "raster_frame_view.h"
@@ -21,6 +25,8 @@ private Q_SLOTS:
 
     void mergeRects_CoversTheSamePixels();
     void incrementalHandover_EqualsFullCopyAfterThePass();
+    void rasterView_RepaintsOnlyChangedRectangles_ScreenEqualsTheFullImage();
+    void handover_WhileTheFrameLockIsHeld_ReturnsAtOnce_AndCatchesUpAfter();
     void exposureEdit_ChangesShownImageAndExport_UndoRestoresThem();
     void toneMapEdit_ChangesShownImage_UndoRestoresIt();
 
@@ -125,6 +131,92 @@ void DisplayTest::incrementalHandover_EqualsFullCopyAfterThePass() {
     // The raster view re-shaded only what changed; it must still equal shading it all.
     const QImage expected = viewportImage(full, ViewMode::Color, {blue});
     QCOMPARE(shownImage(), expected.convertToFormat(QImage::Format_RGB888));
+}
+
+void DisplayTest::rasterView_RepaintsOnlyChangedRectangles_ScreenEqualsTheFullImage() {
+    MainWindow& w = *window_;
+    const ObjectId blue = idOf(w, "blue ball");
+    w.viewport()->setGizmoVisible(false);  // Its pixels are not the frame's.
+    w.editor()->setSelection(blue);
+    QVERIFY(settle(w));
+    // The view is told about a few rectangles at a time and repaints only those: what reaches
+    // the window (its backing store) must still be the whole frame, shaded afresh.
+    w.session()->beginInteraction(blue);
+    for (int k = 0; k < 10; ++k) {
+        SceneDocument doc = w.editor()->document();
+        moveBy(doc, blue, Vec3(-0.08f, 0.03f, 0.0f));
+        w.editor()->edit(QStringLiteral("Move object"), std::move(doc), MergeKind::Drag,
+                         QString::number(blue));
+        QTest::qWait(7);
+    }
+    w.session()->endInteraction();
+    QVERIFY(settle(w));
+    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    const QPoint origin = w.viewport()->mapTo(&w, QPoint(0, 0));
+    auto underGlyph = [&](const QPoint& p) {
+        for (const LightGlyph& g : w.viewport()->lightGlyphs())
+            if (std::hypot(p.x() - g.centre.x(), p.y() - g.centre.y()) <= g.radius + 3.0)
+                return true;
+        return false;
+    };
+    // Frame pixels on screen that differ from shading the whole frame with `selected`.
+    auto stalePixels = [&](ObjectId selected) {
+        QTest::qWait(50);  // The last repaint and the backing store's flush.
+        const QImage expected = viewportImage(full, ViewMode::Color, {selected})
+                                    .convertToFormat(QImage::Format_RGB888);
+        const QImage screen =
+            w.screen()->grabWindow(w.winId()).toImage().convertToFormat(QImage::Format_RGB888);
+        int bad = 0, compared = 0;
+        for (int y = 0; y < full.height; ++y)
+            for (int x = 0; x < full.width; ++x) {
+                const QPoint at = w.viewport()->widgetPointOf(x, y);
+                if (underGlyph(at)) continue;
+                ++compared;
+                bad += screen.pixelColor(origin + at) != expected.pixelColor(x, y);
+            }
+        return compared > full.width * full.height / 2 ? bad : -1;
+    };
+    QCOMPARE(stalePixels(blue), 0);
+    // Selecting another object re-shades only near the two outlines; the screen follows.
+    const ObjectId chrome = idOf(w, "chrome ball");
+    w.editor()->setSelection(chrome);
+    QCOMPARE(stalePixels(chrome), 0);
+}
+
+void DisplayTest::handover_WhileTheFrameLockIsHeld_ReturnsAtOnce_AndCatchesUpAfter() {
+    MainWindow& w = *window_;
+    const ObjectId blue = idOf(w, "blue ball");
+    SceneDocument doc = w.editor()->document();
+    moveBy(doc, blue, Vec3(0.3f, 0.0f, 0.0f));
+    w.editor()->edit(QStringLiteral("Move object"), std::move(doc));
+    w.session()->flushUpdate();
+    // The edit's tiles are committed; the viewport has not looked (no event loop ran).
+    QVERIFY(w.session()->session().waitUntilComplete(std::chrono::seconds(60)));
+    const uint64_t shownSerial = w.viewport()->frame()->serial;
+
+    // Another thread holds the frame lock (as an edit's dirty marking does). It lets go after
+    // 20 s on its own, so a hand-over that waited would return, late, with a new frame.
+    std::promise<void> held, release;
+    std::thread holder([&] {
+        w.session()->session().withFrame([&](const DeepFrame&, const auto&) {
+            held.set_value();
+            release.get_future().wait_for(std::chrono::seconds(20));
+        });
+    });
+    held.get_future().wait();
+    const int busy = w.session()->handoverStats().busy;
+    const auto frame = w.session()->displayFrame(SessionController::FrameWait::TryOnly);
+    const bool waited = frame->serial != shownSerial;
+    release.set_value();
+    holder.join();
+    QVERIFY2(!waited, "the hand-over waited for the frame lock");
+    QCOMPARE(w.session()->handoverStats().busy, busy + 1);
+
+    // It comes back by itself: the viewport ends with the session's frame.
+    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    QTRY_VERIFY(w.viewport()->frame()->serial != shownSerial &&
+                sameBits(w.viewport()->frame()->color, full.color) &&
+                sameBits(w.viewport()->frame()->id, full.id));
 }
 
 void DisplayTest::exposureEdit_ChangesShownImageAndExport_UndoRestoresThem() {

@@ -3,7 +3,10 @@
 // transform gizmo.
 #include "gui_test_support.h"
 
+#include "display_choice.h"
+#include "gl_frame_view.h"
 #include "passepartout.h"
+#include "preferences.h"
 #include "scene_edits.h"
 
 #include <QGuiApplication>
@@ -24,6 +27,7 @@ private Q_SLOTS:
     void openGLViewport_AfterEditsUploadedByRectangles_ShowsTheSessionFrame();
     void openGLViewport_ThroughTheSceneCamera_DimsOnlyOutsideTheOutputFrame();
     void openGLViewport_DrawsTheGizmo_AndOutlinesEverySelectedObject();
+    void automaticDisplay_PicksSoftwareOnLlvmpipe_OpenGLOnAGpu();
 };
 
 namespace {
@@ -55,9 +59,18 @@ int differingPixels(MainWindow& w, const DisplayFrame& frame, ObjectId selected)
 
 }  // namespace
 
+/// Preferences → Display as a user would leave it for the next start.
+static void setDisplayPreference(DisplayKind kind) {
+    Preferences prefs = loadPreferences();
+    prefs.display = kind;
+    savePreferences(prefs);
+}
+
 void GlViewportTest::initTestCase() {
     isolateSettings();
     QCOMPARE(QGuiApplication::platformName(), QStringLiteral("xcb"));
+    // Automatic would pick the raster view on this software GL: these tests are OpenGL's.
+    setDisplayPreference(DisplayKind::OpenGL);
 }
 
 void GlViewportTest::openGLViewport_ShowsTheToneMappedFrame() {
@@ -135,6 +148,14 @@ void GlViewportTest::openGLViewport_AfterEditsUploadedByRectangles_ShowsTheSessi
     QTest::qWait(50);
     const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
     QCOMPARE(differingPixels(w, full, blue), 0);
+    // Bit for bit what uploading the whole frame at once draws.
+    auto* view = dynamic_cast<GlFrameView*>(w.viewport()->frameView());
+    QVERIFY(view);
+    const QImage incremental = view->grabImage();
+    view->forgetUploads();
+    const QImage whole = view->grabImage();
+    QVERIFY(!incremental.isNull());
+    QCOMPARE(incremental, whole);
     w.editor()->undoStack()->setClean();
 }
 
@@ -219,6 +240,44 @@ void GlViewportTest::openGLViewport_DrawsTheGizmo_AndOutlinesEverySelectedObject
                                QColor(kOutlineRgb[0], kOutlineRgb[1], kOutlineRgb[2]);
         QVERIFY2(outline > 5, qPrintable(QString::number(id)));
     }
+    w.editor()->undoStack()->setClean();
+}
+
+void GlViewportTest::automaticDisplay_PicksSoftwareOnLlvmpipe_OpenGLOnAGpu() {
+    // This machine's OpenGL is Mesa's software renderer (LIBGL_ALWAYS_SOFTWARE=1).
+    QVERIFY2(softwareRenderer(openGLRenderer()), qPrintable(openGLRenderer()));
+    setDisplayPreference(DisplayKind::Automatic);
+    {
+        MainWindow w;
+        QVERIFY(!w.viewport()->frameView()->usesOpenGL());
+    }
+    setOpenGLRendererOverride(QStringLiteral("NVIDIA GeForce RTX 3060/PCIe/SSE2"));
+    {
+        MainWindow w;
+        QVERIFY(w.viewport()->frameView()->usesOpenGL());
+    }
+    setOpenGLRendererOverride({});
+    setDisplayPreference(DisplayKind::OpenGL);
+
+    // Changed live in Preferences: the other view takes over and shows the same frame.
+    MainWindow w;
+    w.resize(1000, 700);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.viewport()->frameView()->usesOpenGL());
+    QVERIFY(w.openFile(scenePath("reference-room.scene.json")));
+    QVERIFY(traceViewport(w, QSize(320, 180), 2));
+    for (DisplayKind kind : {DisplayKind::Software, DisplayKind::OpenGL}) {
+        Preferences prefs = loadPreferences();
+        prefs.display = kind;
+        w.applyPreferences(prefs);
+        QCOMPARE(w.viewport()->frameView()->usesOpenGL(), kind == DisplayKind::OpenGL);
+        QVERIFY(settle(w));
+        QTest::qWait(50);
+        const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+        QCOMPARE(differingPixels(w, full, kNoObject), 0);
+    }
+    QCOMPARE(loadPreferences().display, DisplayKind::OpenGL);  // Remembered.
     w.editor()->undoStack()->setClean();
 }
 

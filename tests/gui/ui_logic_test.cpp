@@ -1,5 +1,6 @@
 // The designer's Qt-free-ish logic without a window: names for duplicates, the default scene.
 #include "default_scene.h"
+#include "display_choice.h"
 #include "placement.h"
 #include "scene/parameters.h"
 #include "scene_edits.h"
@@ -42,6 +43,7 @@ private Q_SLOTS:
     void materials_DeleteRefusedWhileUsed_RenameFollowsUsers_NamesValidated();
     void placement_RestsOnTheSurfaceHit_OrSnapsToTheFloorBelow();
     void fitScale_ScalesOnlyMeshesThatDoNotFitTheView();
+    void displayAutomatic_PicksSoftwareOnSoftwareGL_OpenGLOnAGpu();
 };
 
 void UiLogicTest::materials_DeleteRefusedWhileUsed_RenameFollowsUsers_NamesValidated() {
@@ -157,6 +159,37 @@ void UiLogicTest::defaultScene_Installed_PrefersShareNextToTheExecutable() {
     const QString installed = prefix.filePath(QStringLiteral("share/raystudio/scenes/reference-room.scene.json"));
     QVERIFY(QFile::copy(QStringLiteral(RAYSTUDIO_SCENES_DIR "/reference-room.scene.json"), installed));
     QCOMPARE(defaultScenePath(prefix.filePath(QStringLiteral("bin"))), QFileInfo(installed).canonicalFilePath());
+}
+
+void UiLogicTest::displayAutomatic_PicksSoftwareOnSoftwareGL_OpenGLOnAGpu() {
+    // GL_RENDERER strings as Mesa and the vendors' drivers report them.
+    const QString llvmpipe = QStringLiteral("llvmpipe (LLVM 15.0.6, 256 bits)");
+    for (const char* software : {"llvmpipe (LLVM 15.0.6, 256 bits)", "softpipe",
+                                 "Software Rasterizer", "Mesa DRI swrast"}) {
+        QVERIFY2(softwareRenderer(QString::fromLatin1(software)), software);
+        QVERIFY(!useOpenGL(DisplayKind::Automatic, QString::fromLatin1(software)));
+    }
+    for (const char* gpu : {"NVIDIA GeForce RTX 3060/PCIe/SSE2",
+                            "Mesa Intel(R) UHD Graphics 620 (KBL GT2)",
+                            "AMD Radeon RX 6600 (navi23, LLVM 15.0.6, DRM 3.49, 6.1.0-13-amd64)",
+                            "Apple M1"}) {
+        QVERIFY2(!softwareRenderer(QString::fromLatin1(gpu)), gpu);
+        QVERIFY2(useOpenGL(DisplayKind::Automatic, QString::fromLatin1(gpu)), gpu);
+    }
+    // The user's choice wins, except that OpenGL needs a context (no renderer: none).
+    QVERIFY(useOpenGL(DisplayKind::OpenGL, llvmpipe));
+    QVERIFY(!useOpenGL(DisplayKind::Software, QStringLiteral("NVIDIA GeForce RTX 3060/PCIe/SSE2")));
+    QVERIFY(!useOpenGL(DisplayKind::OpenGL, QString()));
+    QVERIFY(!useOpenGL(DisplayKind::Automatic, QString()));
+    // Stored by name; an unknown name is refused (loadPreferences falls back to Automatic).
+    for (DisplayKind k : {DisplayKind::Automatic, DisplayKind::OpenGL, DisplayKind::Software}) {
+        DisplayKind parsed = k == DisplayKind::OpenGL ? DisplayKind::Software : DisplayKind::OpenGL;
+        QVERIFY(parseDisplayKind(QString::fromLatin1(displayKindName(k)), parsed));
+        QCOMPARE(parsed, k);
+    }
+    DisplayKind untouched = DisplayKind::Software;
+    QVERIFY(!parseDisplayKind(QStringLiteral("vulkan"), untouched));
+    QCOMPARE(untouched, DisplayKind::Software);
 }
 
 QTEST_GUILESS_MAIN(UiLogicTest)

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -139,6 +140,53 @@ TEST(ToDisplay8, AppliesOperatorAndExposure) {
     EXPECT_EQ(rgb[0], 188);
     toDisplay8(Color(1.0f), ToneMap::Clamp, -1.0f, rgb);
     EXPECT_EQ(rgb[1], 188);
+}
+
+/// The 8-bit code written out from the formulas, as toDisplay8's table must reproduce it.
+static uint8_t formulaCode(float linear) {
+    return uint8_t(std::lround(srgbEncode(linear) * 255.0f));
+}
+
+TEST(ToDisplay8, TableStepsAtExactlyTheFormulasSteps) {
+    // Every 97th float in [0, 1], and both sides of each place the code changes (bisected
+    // to the ulp): the table must give the formula's code everywhere, not just nearby.
+    const uint32_t one = std::bit_cast<uint32_t>(1.0f);
+    uint8_t rgb[3];
+    auto check = [&](uint32_t bits) {
+        const float v = std::bit_cast<float>(bits);
+        toDisplay8(Color(v), ToneMap::Clamp, 0.0f, rgb);
+        return rgb[0] == formulaCode(v) && rgb[1] == rgb[0] && rgb[2] == rgb[0];
+    };
+    int mismatches = 0, steps = 0;
+    uint32_t previous = 0;
+    for (uint32_t bits = 0; bits <= one; bits = bits + 97 > one && bits != one ? one : bits + 97) {
+        mismatches += !check(bits);
+        if (bits > 0 && formulaCode(std::bit_cast<float>(previous)) !=
+                            formulaCode(std::bit_cast<float>(bits))) {
+            uint32_t lo = previous, hi = bits;  // code(lo) < code(hi): find the first step.
+            while (hi - lo > 1) {
+                const uint32_t mid = lo + (hi - lo) / 2;
+                (formulaCode(std::bit_cast<float>(mid)) ==
+                         formulaCode(std::bit_cast<float>(previous))
+                     ? lo
+                     : hi) = mid;
+            }
+            mismatches += !check(lo) + !check(hi);
+            ++steps;
+        }
+        previous = bits;
+        if (bits == one) break;
+    }
+    EXPECT_EQ(mismatches, 0);
+    EXPECT_EQ(steps, 255);
+    // The row form gives the same bytes, with exposure and an operator.
+    const Color row[3] = {Color(0.3f, 2.0f, 0.01f), Color(0.0f), Color(7.0f, 0.5f, 1e-4f)};
+    uint8_t out[9];
+    toDisplay8(row, 3, ToneMap::Aces, 0.7f, out);
+    for (int i = 0; i < 3; ++i) {
+        const Color d = toneMap(row[i], ToneMap::Aces, 0.7f);
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(out[3 * i + c], formulaCode(d[c])) << i << c;
+    }
 }
 
 }  // namespace rs
