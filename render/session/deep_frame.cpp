@@ -52,6 +52,14 @@ void DeepFrame::allocate(int w, int h) {
     tileSampled.assign(tileRecords.size(), 0);
 }
 
+void DeepFrame::markAllStale() {
+    std::fill(state.begin(), state.end(), uint8_t(kStale));
+    for (uint8_t& f : flags) f = uint8_t((f & ~(kDeferredValid | kTracedLastUpdate)) | kTracedLastUpdate);
+    for (auto& counts : tileStates) {
+        counts = {counts[0] + counts[1] + counts[2] + counts[3], 0, 0, 0};
+    }
+}
+
 std::size_t DeepFrame::countBelow(uint8_t s) const {
     std::size_t n = 0;
     for (const auto& counts : tileStates)

@@ -121,6 +121,9 @@ struct DeepFrame {
         for (uint8_t k = 0; k < s && k < 4; ++k) n += counts[k];
         return n > 0;
     }
+    /// Every pixel goes stale (an edit that changes everything): loses its deferred records
+    /// and gets the re-traced overlay flag; the counts follow.
+    void markAllStale();
     /// Pixels whose state is below s, from the tile counts.
     std::size_t countBelow(uint8_t s) const;
     /// Whether any pixel's state is below s (stops at the first tile that has one).

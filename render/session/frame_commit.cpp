@@ -91,26 +91,59 @@ public:
         add(int(x), int(y));
     }
     void add(int x, int y) {
-        marks_[std::size_t((y - r_.y0) / DeepFrame::kBlock) * std::size_t(perRow_) +
-               std::size_t((x - r_.x0) / DeepFrame::kBlock)] = 1;
+        marks_[blockOf(x, y)] = 1;
         any_ = true;
+    }
+    /// The commit rewrites every pixel of the tile (one camera ray each): the summaries are
+    /// built from what it writes (include()) instead of read back from the frame.
+    void buildWhole() {
+        sums_.assign(marks_.size(), TileSummary{});
+        whole_ = true;
+    }
+    bool whole() const { return whole_; }
+    /// Adds pixel (x, y) as summarizeBlock reads it: its hit point (radius 0), and for a
+    /// pixel whose tree met a mirror or glass, its unknown flag and its segments.
+    void include(int x, int y, const glm::vec4& hit, uint8_t flags, const TreeSegment* segs,
+                 std::size_t count) {
+        TileSummary& sum = sums_[blockOf(x, y)];
+        if (hit.w >= 0.0f) sum.hitBox.expand(Vec3(hit));
+        if (!(flags & kTouchedSpecular)) return;
+        sum.anySpecular = true;
+        if (flags & kTreeUnknown) sum.anyUnknown = true;
+        for (std::size_t k = 0; k < count; ++k) {
+            sum.segmentStarts.expand(segs[k].a);
+            if (segs[k].escapes) sum.anyEscape = true;
+            else sum.segmentEnds.expand(segs[k].b);
+        }
     }
     /// Block summaries of the marked blocks, then the tile's.
     void summarize(DeepFrame& frame, int tile) const {
         if (!any_) return;
-        for (std::size_t b = 0; b < marks_.size(); ++b)
-            if (marks_[b])
-                frame.summarizeBlock(r_.x0 + int(b % std::size_t(perRow_)) * DeepFrame::kBlock,
-                                     r_.y0 + int(b / std::size_t(perRow_)) * DeepFrame::kBlock);
+        for (std::size_t b = 0; b < marks_.size(); ++b) {
+            if (!marks_[b]) continue;
+            const int x = r_.x0 + int(b % std::size_t(perRow_)) * DeepFrame::kBlock;
+            const int y = r_.y0 + int(b / std::size_t(perRow_)) * DeepFrame::kBlock;
+            if (whole_)
+                frame.blockSummary[std::size_t(y / DeepFrame::kBlock) * std::size_t(frame.blocksX()) +
+                                   std::size_t(x / DeepFrame::kBlock)] = sums_[b];
+            else
+                frame.summarizeBlock(x, y);
+        }
         frame.uniteTileSummary(tile);
     }
 
 private:
+    std::size_t blockOf(int x, int y) const {
+        return std::size_t((y - r_.y0) / DeepFrame::kBlock) * std::size_t(perRow_) +
+               std::size_t((x - r_.x0) / DeepFrame::kBlock);
+    }
+
     int width_;
     PixelRect r_;
     int perRow_;
     std::vector<uint8_t> marks_;
-    bool any_ = false;
+    std::vector<TileSummary> sums_;
+    bool any_ = false, whole_ = false;
 };
 
 }  // namespace
@@ -122,7 +155,10 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     const int tile = t.tile;
     // Tiles that never got supersamples hold zero sums already: no need to clear them again.
     const bool clearSamples = tileSampled[std::size_t(tile)] != 0;
-    if (t.traced.size() == std::size_t(t.rect.area())) segments.restart();
+    if (t.traced.size() == std::size_t(t.rect.area())) {
+        segments.restart();
+        if (t.blocks.size() == 0 && t.resolvedPixel.empty() && t.sampled.empty()) touched.buildWhole();
+    }
 
     // Camera rays at pixel centres: every buffer of the pixel.
     const RayList& traced = t.traced;
@@ -149,7 +185,14 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         if (traced.withSegments)
             segments.add(traced.segments.of(k, kSegmentsPerPixel), traced.segments.count[k]);
         segments.end();
-        touched.add(i);
+        if (touched.whole()) {
+            const uint32_t y = uint32_t(i) / uint32_t(width), x = uint32_t(i) - y * uint32_t(width);
+            touched.add(int(x), int(y));
+            touched.include(int(x), int(y), hitBound[i], flags[i],
+                            tileSegments[std::size_t(tile)].data() + segmentStart[i], segmentCount[i]);
+        } else {
+            touched.add(i);
+        }
     }
     if (traced.withRecords) {
         // Rebuild the tile's record pool: new records for traced pixels, old ones kept for

@@ -215,6 +215,14 @@ std::size_t RenderSession::markEditLocked(const SceneEdit& traced) {
     if (pendingResize_) return std::size_t(doc_.render.width) * std::size_t(doc_.render.height);
     SceneEdit edit = traced;
     if (!policy_.dirtyRegions) edit.everything = true;
+    if (edit.everything) {
+        // Every pixel: no mask to build or read, one pass over the states and flags.
+        frame_.markAllStale();
+        touchedBlocks_.assign(std::size_t(frame_.blocksX()) * std::size_t(frame_.blocksY()), 1);
+        lastTouchedBlocks_.swap(touchedBlocks_);
+        stats_.lastMarkBlocksTested = stats_.lastMarkBlocksGrown = 0;
+        return frame_.pixelCount();
+    }
     // While dragging with shadows off or deferred, the moving object's shadow is not on
     // screen: its pixels are marked once, on release, instead of on every step.
     const bool deferShadows = interacting_ && !edit.everything &&
