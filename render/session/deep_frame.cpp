@@ -41,6 +41,66 @@ void DeepFrame::allocate(int w, int h) {
     segmentCount.assign(n, 0);
     tileLiveSegments.assign(tileRecords.size(), 0);
     blockSummary.assign(std::size_t(blocksX()) * std::size_t(blocksY()), {});
+    tileSummary.assign(tileRecords.size(), {});
+    tileStates.assign(tileRecords.size(), {});
+    for (int t = 0; t < tilesX() * tilesY(); ++t) {
+        const int tx = t % tilesX(), ty = t / tilesX();
+        const int tw = std::min(width, (tx + 1) * tileSize) - tx * tileSize;
+        const int th = std::min(height, (ty + 1) * tileSize) - ty * tileSize;
+        tileStates[std::size_t(t)][kStale] = uint32_t(tw) * uint32_t(th);
+    }
+    tileSampled.assign(tileRecords.size(), 0);
+}
+
+void DeepFrame::markAllStale() {
+    std::fill(state.begin(), state.end(), uint8_t(kStale));
+    for (uint8_t& f : flags) f = uint8_t((f & ~(kDeferredValid | kTracedLastUpdate)) | kTracedLastUpdate);
+    for (auto& counts : tileStates) {
+        counts = {counts[0] + counts[1] + counts[2] + counts[3], 0, 0, 0};
+    }
+}
+
+std::size_t DeepFrame::countBelow(uint8_t s) const {
+    std::size_t n = 0;
+    for (const auto& counts : tileStates)
+        for (uint8_t k = 0; k < s && k < 4; ++k) n += counts[k];
+    return n;
+}
+
+bool DeepFrame::anyBelow(uint8_t s) const {
+    for (int t = 0; t < int(tileStates.size()); ++t)
+        if (tileHasBelow(t, s)) return true;
+    return false;
+}
+
+namespace {
+bool sameBox(const Aabb& a, const Aabb& b) {
+    return (a.empty() && b.empty()) || (a.min == b.min && a.max == b.max);
+}
+bool sameSummary(const TileSummary& a, const TileSummary& b) {
+    return sameBox(a.hitBox, b.hitBox) && sameBox(a.segmentStarts, b.segmentStarts) &&
+           sameBox(a.segmentEnds, b.segmentEnds) && a.anySpecular == b.anySpecular &&
+           a.anyEscape == b.anyEscape && a.anyUnknown == b.anyUnknown;
+}
+}  // namespace
+
+bool DeepFrame::summariesMatchPixels() const {
+    DeepFrame copy = *this;
+    for (int t = 0; t < tilesX() * tilesY(); ++t) copy.summarizeTile(t);
+    for (std::size_t b = 0; b < blockSummary.size(); ++b)
+        if (!sameSummary(blockSummary[b], copy.blockSummary[b])) return false;
+    for (std::size_t t = 0; t < tileSummary.size(); ++t)
+        if (!sameSummary(tileSummary[t], copy.tileSummary[t])) return false;
+    std::vector<std::array<uint32_t, 4>> counts(tileStates.size(), std::array<uint32_t, 4>{});
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = index(x, y);
+            if (state[i] > kFinal) return false;
+            ++counts[std::size_t(tileOf(x, y))][state[i]];
+            if (!tileSampled[std::size_t(tileOf(x, y))] && (sampleCount[i] != 0 || sampleSum[i] != Color(0.0f)))
+                return false;
+        }
+    return counts == tileStates;
 }
 
 void DeepFrame::summarizeTile(int t) {
@@ -48,6 +108,27 @@ void DeepFrame::summarizeTile(int t) {
     const int x1 = std::min(width, (tx + 1) * tileSize), y1 = std::min(height, (ty + 1) * tileSize);
     for (int by = ty * tileSize; by < y1; by += kBlock)
         for (int bx = tx * tileSize; bx < x1; bx += kBlock) summarizeBlock(bx, by);
+    uniteTileSummary(t);
+}
+
+void DeepFrame::uniteTileSummary(int t) {
+    const int tx = t % tilesX(), ty = t / tilesX();
+    const int bx0 = tx * tileSize / kBlock, by0 = ty * tileSize / kBlock;
+    const int bx1 = std::min(blocksX(), (tx + 1) * tileSize / kBlock);
+    const int by1 = std::min(blocksY(), (ty + 1) * tileSize / kBlock);
+    TileSummary sum;
+    for (int by = by0; by < by1; ++by) {
+        for (int bx = bx0; bx < bx1; ++bx) {
+            const TileSummary& b = blockSummary[std::size_t(by) * std::size_t(blocksX()) + std::size_t(bx)];
+            sum.hitBox.expand(b.hitBox);
+            sum.segmentStarts.expand(b.segmentStarts);
+            sum.segmentEnds.expand(b.segmentEnds);
+            sum.anySpecular |= b.anySpecular;
+            sum.anyEscape |= b.anyEscape;
+            sum.anyUnknown |= b.anyUnknown;
+        }
+    }
+    tileSummary[std::size_t(t)] = sum;
 }
 
 void DeepFrame::summarizeBlock(int px, int py) {

@@ -4,6 +4,7 @@
 #include "integrator/whitted.h"
 #include "scene/document.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -48,7 +49,10 @@ struct TileResult;
 /// - a pixel's records are tileRecords[its tile][recordStart, +recordCount), valid only with
 ///   kDeferredValid; its segments are tileSegments[its tile][segmentStart, +segmentCount),
 ///   all of them unless kTreeUnknown;
-/// - the summaries of the blocks a commit wrote describe their pixels again.
+/// - the summaries of the blocks a commit wrote describe their pixels again, and so does the
+///   summary of their tile;
+/// - tileStates counts every pixel of its tile by state (setState() keeps it);
+/// - a tile whose tileSampled is 0 has no sampleSum or sampleCount other than zero.
 struct DeepFrame {
     int width = 0;
     int height = 0;
@@ -78,6 +82,13 @@ struct DeepFrame {
     /// Summaries of 8 x 8 blocks (finer than tiles: tighter boxes reject more in marking).
     std::vector<TileSummary> blockSummary;
     static constexpr int kBlock = 8;
+    /// Union of the block summaries of each tile: marking tests a tile before its blocks.
+    std::vector<TileSummary> tileSummary;
+    /// Pixels of each PixelState in each tile: planning, completeness and waiting read these
+    /// instead of scanning every pixel's state.
+    std::vector<std::array<uint32_t, 4>> tileStates;
+    /// 1 where the tile may hold supersamples (a sampleSum or sampleCount not zero).
+    std::vector<uint8_t> tileSampled;
 
     /// Allocates for w x h; every pixel starts stale and black. When an allocation fails the
     /// frame is left empty (0 x 0) and the exception passes on.
@@ -91,6 +102,34 @@ struct DeepFrame {
     int tileOf(int x, int y) const { return (y / tileSize) * tilesX() + x / tileSize; }
     int blocksX() const { return (width + kBlock - 1) / kBlock; }
     int blocksY() const { return (height + kBlock - 1) / kBlock; }
+    /// The tile holding block b (tile sides are whole blocks).
+    int tileOfBlock(std::size_t b) const {
+        const int bx = int(b % std::size_t(blocksX())), by = int(b / std::size_t(blocksX()));
+        return (by * kBlock / tileSize) * tilesX() + bx * kBlock / tileSize;
+    }
+    /// Sets pixel i, of tile `tile`, to state s and keeps the tile's counts.
+    void setState(std::size_t i, int tile, uint8_t s) {
+        auto& counts = tileStates[std::size_t(tile)];
+        --counts[state[i]];
+        ++counts[s];
+        state[i] = s;
+    }
+    /// Whether tile t has a pixel whose state is below s.
+    bool tileHasBelow(int t, uint8_t s) const {
+        const auto& counts = tileStates[std::size_t(t)];
+        uint32_t n = 0;
+        for (uint8_t k = 0; k < s && k < 4; ++k) n += counts[k];
+        return n > 0;
+    }
+    /// Every pixel goes stale (an edit that changes everything): loses its deferred records
+    /// and gets the re-traced overlay flag; the counts follow.
+    void markAllStale();
+    /// Pixels whose state is below s, from the tile counts.
+    std::size_t countBelow(uint8_t s) const;
+    /// Whether any pixel's state is below s (stops at the first tile that has one).
+    bool anyBelow(uint8_t s) const;
+    /// Whether the tile counts and summaries describe the pixels (tests check the invariant).
+    bool summariesMatchPixels() const;
     /// Writes a tile's results (tile_output.h): traced pixels get every buffer; blocks of an
     /// undersampled pass every buffer but base and segments (cleared); resolved pixels their
     /// colour, base, state and flags; finished ones state and colour (their base); sampled
@@ -101,6 +140,8 @@ struct DeepFrame {
     void summarizeTile(int t);
     /// Recomputes the summary of the block holding pixel (x, y).
     void summarizeBlock(int x, int y);
+    /// Recomputes tile t's summary from its blocks' summaries.
+    void uniteTileSummary(int t);
 };
 
 }  // namespace rs

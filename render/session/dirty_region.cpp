@@ -275,8 +275,10 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
 
 std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                             const DeepFrame& frame, std::vector<uint8_t>& mask,
-                            std::vector<uint8_t>* touchedBlocks, MarkScope scope) {
+                            std::vector<uint8_t>* touchedBlocks, MarkScope scope,
+                            MarkStats* stats) {
     const int w = frame.width, h = frame.height;
+    if (stats) *stats = MarkStats{};
     const std::size_t blockCount = std::size_t(frame.blocksX()) * std::size_t(frame.blocksY());
     mask.assign(frame.pixelCount(), 0);
     if (touchedBlocks) touchedBlocks->assign(blockCount, 0);
@@ -307,37 +309,60 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     }
 
     // Mark, then grow each mark to its 8 neighbours (a neighbour's change can flip an
-    // adaptive supersampling decision). Growing writes only around marked pixels.
-    const int blocksX = frame.blocksX(), blocks = blocksX * frame.blocksY();
-    const int B = DeepFrame::kBlock;
+    // adaptive supersampling decision). A tile whose summary (the union of its blocks') passes
+    // no test is skipped whole; growing visits only blocks next to marked ones.
+    const int blocksX = frame.blocksX(), blocksY = frame.blocksY(), blocks = blocksX * blocksY;
+    const int B = DeepFrame::kBlock, T = frame.tileSize, perTile = T / B;
     std::vector<uint8_t> blockMarked(std::size_t(blocks), 0);
     // Reused between edits; bound to a reference here because a thread_local named inside the
     // worker lambdas would be each worker's own.
     thread_local std::vector<uint8_t> coreBuffer;
     std::vector<uint8_t>& core = coreBuffer;
     core.assign(mask.size(), 0);
-    parallelForIndex(0, blocks, [&](int b) {
-        const int bx = b % blocksX, by = b / blocksX;
-        const PixelRect r{bx * B, by * B, std::min(w, (bx + 1) * B), std::min(h, (by + 1) * B)};
-        const TileTests tests = tileTests(c, r, frame.blockSummary[std::size_t(b)]);
-        if (!tests.any()) return;
-        bool any = false;
-        for (int y = r.y0; y < r.y1; ++y)
-            for (int x = r.x0; x < r.x1; ++x)
-                if (pixelMayChange(c, tests, x, y, frame.tileOf(x, y))) core[frame.index(x, y)] = any = true;
-        blockMarked[std::size_t(b)] = any;
-    });
-    std::atomic<std::size_t> count{0};
-    parallelForIndex(0, blocks, [&](int b) {
-        const int bx = b % blocksX, by = b / blocksX;
-        bool near = false;
-        for (int dy = -1; dy <= 1 && !near; ++dy)
-            for (int dx = -1; dx <= 1 && !near; ++dx) {
-                const int nx = bx + dx, ny = by + dy;
-                near = nx >= 0 && ny >= 0 && nx < blocksX && ny < frame.blocksY() &&
-                       blockMarked[std::size_t(ny * blocksX + nx)];
+    std::atomic<std::size_t> blocksTested{0};
+    parallelForIndex(0, frame.tilesX() * frame.tilesY(), [&](int t) {
+        const int tx = t % frame.tilesX(), ty = t / frame.tilesX();
+        const PixelRect tr{tx * T, ty * T, std::min(w, (tx + 1) * T), std::min(h, (ty + 1) * T)};
+        if (!tileTests(c, tr, frame.tileSummary[std::size_t(t)]).any()) return;
+        std::size_t tested = 0;
+        for (int by = ty * perTile; by < std::min(blocksY, (ty + 1) * perTile); ++by) {
+            for (int bx = tx * perTile; bx < std::min(blocksX, (tx + 1) * perTile); ++bx) {
+                const int b = by * blocksX + bx;
+                const PixelRect r{bx * B, by * B, std::min(w, (bx + 1) * B), std::min(h, (by + 1) * B)};
+                const TileTests tests = tileTests(c, r, frame.blockSummary[std::size_t(b)]);
+                ++tested;
+                if (!tests.any()) continue;
+                bool any = false;
+                for (int y = r.y0; y < r.y1; ++y)
+                    for (int x = r.x0; x < r.x1; ++x)
+                        if (pixelMayChange(c, tests, x, y, t)) core[frame.index(x, y)] = any = true;
+                blockMarked[std::size_t(b)] = any;
             }
-        if (!near) return;
+        }
+        blocksTested += tested;
+    });
+    // The blocks next to (or at) a marked one: only those can get a mark.
+    std::vector<int> nearBlocks;
+    {
+        std::vector<uint8_t> near(std::size_t(blocks), 0);
+        for (int b = 0; b < blocks; ++b) {
+            if (!blockMarked[std::size_t(b)]) continue;
+            const int bx = b % blocksX, by = b / blocksX;
+            for (int ny = std::max(0, by - 1); ny <= std::min(blocksY - 1, by + 1); ++ny)
+                for (int nx = std::max(0, bx - 1); nx <= std::min(blocksX - 1, bx + 1); ++nx)
+                    near[std::size_t(ny * blocksX + nx)] = 1;
+        }
+        for (int b = 0; b < blocks; ++b)
+            if (near[std::size_t(b)]) nearBlocks.push_back(b);
+    }
+    if (stats) {
+        stats->blocksTested = blocksTested.load();
+        stats->blocksGrown = nearBlocks.size();
+    }
+    std::atomic<std::size_t> count{0};
+    parallelForIndex(0, int(nearBlocks.size()), [&](int k) {
+        const int b = nearBlocks[std::size_t(k)];
+        const int bx = b % blocksX, by = b / blocksX;
         if (touchedBlocks) (*touchedBlocks)[std::size_t(b)] = 1;
         std::size_t local = 0;
         const int y1 = std::min(h, (by + 1) * B), x1 = std::min(w, (bx + 1) * B);

@@ -31,6 +31,13 @@ enum class MarkScope {
     ShadowsOnly,
 };
 
+/// How much of the frame one marking looked at (the session's statistics, and tests that
+/// check the work follows the edit, not the frame).
+struct MarkStats {
+    std::size_t blocksTested = 0;  ///< Blocks tested against their summaries (their tile passed).
+    std::size_t blocksGrown = 0;   ///< Blocks visited to grow the marks by a pixel.
+};
+
 /// Sets mask[i] = 1 for every pixel `edit` can change, given the frame as it was traced under
 /// `before`: the old and new footprints, pixels whose ray tree met a mirror or glass, pixels
 /// showing a retinted object (any supersampled pixel, whose samples may have seen it), and,
@@ -38,9 +45,11 @@ enum class MarkScope {
 /// the old or new bounds. Grown by one pixel so adaptive supersampling decisions stay exact.
 /// Runs in parallel; returns the number of pixels marked. `touchedBlocks` (optional) gets 1
 /// for every 8x8 block in which the mask may be non-zero, so callers can skip the others.
+/// Tiles are tested by their summaries first, then the blocks of those that pass: the work
+/// follows the edit's reach, not the frame's size (`stats`, optional, says how much).
 std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                             const DeepFrame& frame, std::vector<uint8_t>& mask,
                             std::vector<uint8_t>* touchedBlocks = nullptr,
-                            MarkScope scope = MarkScope::All);
+                            MarkScope scope = MarkScope::All, MarkStats* stats = nullptr);
 
 }  // namespace rs

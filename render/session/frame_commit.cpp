@@ -22,12 +22,19 @@ public:
     /// (several lists: call add() for each, then end()).
     void begin(std::size_t i, bool keepOld) {
         pixel_ = i;
-        oldCount_ = frame_.segmentCount[i];
+        oldCount_ = fresh_ ? 0 : frame_.segmentCount[i];
         start_ = uint32_t(pool_.size());
         if (keepOld) {
             const uint32_t oldStart = frame_.segmentStart[i];
             for (uint32_t k = 0; k < oldCount_; ++k) pool_.push_back(pool_[oldStart + k]);
         }
+    }
+    /// Drops every old segment: the commit rewrites each pixel of the tile (a full-tile pass),
+    /// so none stays referenced; the pool starts over instead of growing into garbage.
+    void restart() {
+        pool_.clear();
+        live_ = 0;
+        fresh_ = true;
     }
     void add(const TreeSegment* first, std::size_t count) { pool_.insert(pool_.end(), first, first + count); }
     void end() {
@@ -42,7 +49,7 @@ public:
         live_ = live_ - oldCount_ + uint32_t(count);
     }
     void clear(std::size_t i) {
-        live_ -= frame_.segmentCount[i];
+        if (!fresh_) live_ -= frame_.segmentCount[i];
         frame_.segmentStart[i] = uint32_t(pool_.size());
         frame_.segmentCount[i] = 0;
     }
@@ -69,6 +76,7 @@ private:
     uint32_t& live_;
     std::size_t pixel_ = 0;
     uint32_t oldCount_ = 0, start_ = 0;
+    bool fresh_ = false;
 };
 
 /// The blocks of one tile a commit wrote, so each summary is recomputed once.
@@ -78,22 +86,64 @@ public:
         : width_(frame.width), r_(r), perRow_((r.x1 - r.x0 + DeepFrame::kBlock - 1) / DeepFrame::kBlock),
           marks_(std::size_t(perRow_) * std::size_t((r.y1 - r.y0 + DeepFrame::kBlock - 1) / DeepFrame::kBlock), 0) {}
     void add(std::size_t i) {
-        const int x = int(i % std::size_t(width_)), y = int(i / std::size_t(width_));
-        marks_[std::size_t((y - r_.y0) / DeepFrame::kBlock) * std::size_t(perRow_) +
-               std::size_t((x - r_.x0) / DeepFrame::kBlock)] = 1;
+        // Frames hold at most kMaxImagePixels (< 2^32): one 32-bit division, not two 64-bit.
+        const uint32_t y = uint32_t(i) / uint32_t(width_), x = uint32_t(i) - y * uint32_t(width_);
+        add(int(x), int(y));
     }
-    void summarize(DeepFrame& frame) const {
-        for (std::size_t b = 0; b < marks_.size(); ++b)
-            if (marks_[b])
-                frame.summarizeBlock(r_.x0 + int(b % std::size_t(perRow_)) * DeepFrame::kBlock,
-                                     r_.y0 + int(b / std::size_t(perRow_)) * DeepFrame::kBlock);
+    void add(int x, int y) {
+        marks_[blockOf(x, y)] = 1;
+        any_ = true;
+    }
+    /// The commit rewrites every pixel of the tile (one camera ray each): the summaries are
+    /// built from what it writes (include()) instead of read back from the frame.
+    void buildWhole() {
+        sums_.assign(marks_.size(), TileSummary{});
+        whole_ = true;
+    }
+    bool whole() const { return whole_; }
+    /// Adds pixel (x, y) as summarizeBlock reads it: its hit point (radius 0), and for a
+    /// pixel whose tree met a mirror or glass, its unknown flag and its segments.
+    void include(int x, int y, const glm::vec4& hit, uint8_t flags, const TreeSegment* segs,
+                 std::size_t count) {
+        TileSummary& sum = sums_[blockOf(x, y)];
+        if (hit.w >= 0.0f) sum.hitBox.expand(Vec3(hit));
+        if (!(flags & kTouchedSpecular)) return;
+        sum.anySpecular = true;
+        if (flags & kTreeUnknown) sum.anyUnknown = true;
+        for (std::size_t k = 0; k < count; ++k) {
+            sum.segmentStarts.expand(segs[k].a);
+            if (segs[k].escapes) sum.anyEscape = true;
+            else sum.segmentEnds.expand(segs[k].b);
+        }
+    }
+    /// Block summaries of the marked blocks, then the tile's.
+    void summarize(DeepFrame& frame, int tile) const {
+        if (!any_) return;
+        for (std::size_t b = 0; b < marks_.size(); ++b) {
+            if (!marks_[b]) continue;
+            const int x = r_.x0 + int(b % std::size_t(perRow_)) * DeepFrame::kBlock;
+            const int y = r_.y0 + int(b / std::size_t(perRow_)) * DeepFrame::kBlock;
+            if (whole_)
+                frame.blockSummary[std::size_t(y / DeepFrame::kBlock) * std::size_t(frame.blocksX()) +
+                                   std::size_t(x / DeepFrame::kBlock)] = sums_[b];
+            else
+                frame.summarizeBlock(x, y);
+        }
+        frame.uniteTileSummary(tile);
     }
 
 private:
+    std::size_t blockOf(int x, int y) const {
+        return std::size_t((y - r_.y0) / DeepFrame::kBlock) * std::size_t(perRow_) +
+               std::size_t((x - r_.x0) / DeepFrame::kBlock);
+    }
+
     int width_;
     PixelRect r_;
     int perRow_;
     std::vector<uint8_t> marks_;
+    std::vector<TileSummary> sums_;
+    bool any_ = false, whole_ = false;
 };
 
 }  // namespace
@@ -102,6 +152,13 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     if (t.generation != liveGeneration) return false;  // Never write a stale tile.
     SegmentPool segments(*this, t.tile);
     TouchedBlocks touched(*this, t.rect);
+    const int tile = t.tile;
+    // Tiles that never got supersamples hold zero sums already: no need to clear them again.
+    const bool clearSamples = tileSampled[std::size_t(tile)] != 0;
+    if (t.traced.size() == std::size_t(t.rect.area())) {
+        segments.restart();
+        if (t.blocks.size() == 0 && t.resolvedPixel.empty() && t.sampled.empty()) touched.buildWhole();
+    }
 
     // Camera rays at pixel centres: every buffer of the pixel.
     const RayList& traced = t.traced;
@@ -114,19 +171,28 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         depth[i] = info.depth;
         normal[i] = info.normal;
         cost[i] = traced.rays[k];
-        state[i] = t.tracedState;
+        setState(i, tile, t.tracedState);
         flags[i] = uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | traced.extra[k] |
                            (complete ? kDeferredValid : 0) |
                            (traced.withSegments && traced.segments.overflow[k] ? kTreeUnknown : 0));
         hitBound[i] = traced.hitBound(k);
         if (t.tracedState >= kBase) base[i] = traced.color[k];
-        sampleSum[i] = Color(0.0f);
-        sampleCount[i] = 0;
+        if (clearSamples) {
+            sampleSum[i] = Color(0.0f);
+            sampleCount[i] = 0;
+        }
         segments.begin(i, false);
         if (traced.withSegments)
             segments.add(traced.segments.of(k, kSegmentsPerPixel), traced.segments.count[k]);
         segments.end();
-        touched.add(i);
+        if (touched.whole()) {
+            const uint32_t y = uint32_t(i) / uint32_t(width), x = uint32_t(i) - y * uint32_t(width);
+            touched.add(int(x), int(y));
+            touched.include(int(x), int(y), hitBound[i], flags[i],
+                            tileSegments[std::size_t(tile)].data() + segmentStart[i], segmentCount[i]);
+        } else {
+            touched.add(i);
+        }
     }
     if (traced.withRecords) {
         // Rebuild the tile's record pool: new records for traced pixels, old ones kept for
@@ -138,7 +204,8 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         std::vector<uint8_t> written(rw * std::size_t(r.y1 - r.y0), 0);
         for (std::size_t k = 0; k < traced.size(); ++k) {
             const std::size_t i = traced.pixel[k];
-            const int px = int(i % std::size_t(width)), py = int(i / std::size_t(width));
+            const uint32_t py32 = uint32_t(i) / uint32_t(width);
+            const int px = int(uint32_t(i) - py32 * uint32_t(width)), py = int(py32);
             written[std::size_t(py - r.y0) * rw + std::size_t(px - r.x0)] = 1;
             const uint8_t n = traced.records.overflow[k] ? 0 : traced.records.count[k];
             recordStart[i] = uint32_t(fresh.size());
@@ -166,6 +233,7 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         const uint8_t f = uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) | kTracedLastUpdate);
         const glm::vec4 bound = blocks.hitBound(k);
         const int spanX = blocks.extra[k] & 15, spanY = blocks.extra[k] >> 4;
+        touched.add(blocks.pixel[k]);  // A span (step 2 or 4, aligned) lies in one 8x8 block.
         for (int dy = 0; dy < spanY; ++dy) {
             for (int dx = 0; dx < spanX; ++dx) {
                 const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width) + std::size_t(dx);
@@ -174,13 +242,14 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
                 depth[i] = info.depth;
                 normal[i] = info.normal;
                 cost[i] = blocks.rays[k];
-                state[i] = kInteractive;
+                setState(i, tile, kInteractive);
                 flags[i] = f;
                 hitBound[i] = bound;
-                sampleSum[i] = Color(0.0f);
-                sampleCount[i] = 0;
+                if (clearSamples) {
+                    sampleSum[i] = Color(0.0f);
+                    sampleCount[i] = 0;
+                }
                 segments.clear(i);
-                touched.add(i);
             }
         }
     }
@@ -189,30 +258,35 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     for (std::size_t k = 0; k < t.resolvedPixel.size(); ++k) {
         const std::size_t i = t.resolvedPixel[k];
         color[i] = base[i] = t.resolvedColor[k];
-        state[i] = t.resolvedState;
+        setState(i, tile, t.resolvedState);
         flags[i] = t.resolvedFlags[k];
-        sampleSum[i] = Color(0.0f);
-        sampleCount[i] = 0;
+        if (clearSamples) {
+            sampleSum[i] = Color(0.0f);
+            sampleCount[i] = 0;
+        }
         touched.add(i);
     }
 
     // Nothing to supersample: the centre sample is final.
     for (const std::size_t i : t.finishedPixel) {
         color[i] = base[i];
-        state[i] = kFinal;
-        sampleSum[i] = Color(0.0f);
-        sampleCount[i] = 0;
+        setState(i, tile, kFinal);
+        if (clearSamples) {
+            sampleSum[i] = Color(0.0f);
+            sampleCount[i] = 0;
+        }
     }
 
     // More samples: new totals, and the new rays' segments after the pixel's old ones.
     const RayList& samples = t.samples;
+    if (!t.sampled.empty()) tileSampled[std::size_t(tile)] = 1;
     for (std::size_t k = 0; k < t.sampled.size(); ++k) {
         const TileResult::Sampled& s = t.sampled[k];
         const std::size_t i = s.pixel;
         color[i] = s.color;
         sampleSum[i] = s.sum;
         sampleCount[i] = s.count;
-        state[i] = s.state;
+        setState(i, tile, s.state);
         flags[i] = s.flags;
         cost[i] = s.cost;
         hitBound[i] = s.hitBound;
@@ -229,7 +303,7 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     }
 
     segments.compactIfWasteful(t.rect);
-    touched.summarize(*this);
+    touched.summarize(*this, tile);
     return true;
 }
 

@@ -24,10 +24,6 @@ namespace rs {
 namespace {
 int arenaSize(int threads) { return threads > 0 ? threads : tbb::info::default_concurrency(); }
 
-bool anyBelow(const std::vector<uint8_t>& state, uint8_t target) {
-    return std::any_of(state.begin(), state.end(), [target](uint8_t s) { return s < target; });
-}
-
 /// The observer's message for a failure of rendering or of applying a document.
 std::string failureMessage(std::exception_ptr failure) {
     try {
@@ -205,7 +201,7 @@ void RenderSession::applyPendingLocked(std::unique_lock<std::mutex>& lock) {
                 .count();
     }
     // Nothing left to trace: the frame is current for this generation (no pass will say so).
-    if (marked == 0 && !pendingResize_ && !anyBelow(frame_.state, targetStateLocked()))
+    if (marked == 0 && !pendingResize_ && !frame_.anyBelow(targetStateLocked()))
         completedPassGeneration_ = std::max(completedPassGeneration_, gen);
     frameLock.unlock();
     lock.unlock();
@@ -219,13 +215,25 @@ std::size_t RenderSession::markEditLocked(const SceneEdit& traced) {
     if (pendingResize_) return std::size_t(doc_.render.width) * std::size_t(doc_.render.height);
     SceneEdit edit = traced;
     if (!policy_.dirtyRegions) edit.everything = true;
+    if (edit.everything) {
+        // Every pixel: no mask to build or read, one pass over the states and flags.
+        frame_.markAllStale();
+        touchedBlocks_.assign(std::size_t(frame_.blocksX()) * std::size_t(frame_.blocksY()), 1);
+        lastTouchedBlocks_.swap(touchedBlocks_);
+        stats_.lastMarkBlocksTested = stats_.lastMarkBlocksGrown = 0;
+        return frame_.pixelCount();
+    }
     // While dragging with shadows off or deferred, the moving object's shadow is not on
     // screen: its pixels are marked once, on release, instead of on every step.
     const bool deferShadows = interacting_ && !edit.everything &&
                               (policy_.shadows == MovingShadows::Off ||
                                policy_.shadows == MovingShadows::Deferred);
+    MarkStats markStats;
     const std::size_t marked = markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, &touchedBlocks_,
-                                               deferShadows ? MarkScope::WithoutShadows : MarkScope::All);
+                                               deferShadows ? MarkScope::WithoutShadows : MarkScope::All,
+                                               &markStats);
+    stats_.lastMarkBlocksTested = markStats.blocksTested;
+    stats_.lastMarkBlocksGrown = markStats.blocksGrown;
     if (deferShadows) {
         deferredShadowRegions_.insert(deferredShadowRegions_.end(), edit.regions.begin(),
                                       edit.regions.end());
@@ -244,12 +252,13 @@ std::size_t RenderSession::markEditLocked(const SceneEdit& traced) {
         if (!touchedBlocks_[b] && !lastTouchedBlocks_[b]) continue;
         const int bx = int(b % std::size_t(frame_.blocksX())) * B;
         const int by = int(b / std::size_t(frame_.blocksX())) * B;
+        const int tile = frame_.tileOfBlock(b);
         for (int y = by; y < std::min(frame_.height, by + B); ++y) {
             for (int x = bx; x < std::min(frame_.width, bx + B); ++x) {
                 const std::size_t i = frame_.index(x, y);
                 uint8_t f = uint8_t(frame_.flags[i] & ~kTracedLastUpdate);
                 if (dirtyMask_[i]) {
-                    frame_.state[i] = kStale;
+                    frame_.setState(i, tile, kStale);
                     f = uint8_t((f & ~kDeferredValid) | kTracedLastUpdate);
                 }
                 frame_.flags[i] = f;
@@ -288,11 +297,21 @@ void RenderSession::markReleasedShadowsLocked() {
         std::unique_lock frameLock(frameMutex_);
         SceneEdit edit;
         edit.regions.swap(deferredShadowRegions_);
-        if (markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, nullptr, MarkScope::ShadowsOnly) > 0) {
-            for (std::size_t i = 0; i < dirtyMask_.size(); ++i) {
-                if (dirtyMask_[i] && frame_.state[i] >= kBase) {
-                    frame_.state[i] = kStale;
-                    frame_.flags[i] = uint8_t(frame_.flags[i] & ~kDeferredValid);
+        if (markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, &touchedBlocks_, MarkScope::ShadowsOnly) > 0) {
+            const int B = DeepFrame::kBlock;
+            for (std::size_t b = 0; b < touchedBlocks_.size(); ++b) {
+                if (!touchedBlocks_[b]) continue;
+                const int bx = int(b % std::size_t(frame_.blocksX())) * B;
+                const int by = int(b / std::size_t(frame_.blocksX())) * B;
+                const int tile = frame_.tileOfBlock(b);
+                for (int y = by; y < std::min(frame_.height, by + B); ++y) {
+                    for (int x = bx; x < std::min(frame_.width, bx + B); ++x) {
+                        const std::size_t i = frame_.index(x, y);
+                        if (dirtyMask_[i] && frame_.state[i] >= kBase) {
+                            frame_.setState(i, tile, kStale);
+                            frame_.flags[i] = uint8_t(frame_.flags[i] & ~kDeferredValid);
+                        }
+                    }
                 }
             }
         }
@@ -321,7 +340,7 @@ bool RenderSession::waitUntilComplete(std::chrono::milliseconds timeout) {
     std::unique_lock lock(mutex_);
     return done_.wait_for(lock, timeout, [&] {
         return hasDocument_ && !pendingDoc_ && !applying_ && !releasePending_ && !running_ &&
-               !pendingResize_ && !anyBelow(frame_.state, kFinal);
+               !pendingResize_ && !frame_.anyBelow(kFinal);
     });
 }
 
@@ -342,7 +361,7 @@ uint8_t RenderSession::targetStateLocked() const {
 bool RenderSession::hasWorkLocked() const {
     if (pendingDoc_ || releasePending_) return true;
     if (!hasDocument_) return false;
-    return pendingResize_ || anyBelow(frame_.state, targetStateLocked());
+    return pendingResize_ || frame_.anyBelow(targetStateLocked());
 }
 
 void RenderSession::run() {
@@ -398,6 +417,7 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         plan.reset();
         const auto planStart = std::chrono::steady_clock::now();
         if (!planLocked(plan)) continue;
+        stats_.lastPassTiles = plan.tiles.size();
         const double planMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planStart).count();
         running_ = true;
@@ -424,7 +444,7 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         if (plan.kind == PassKind::Interactive) stats_.lastInteractivePass = info;
         ++stats_.passes;
         const bool complete = !info.cancelled && !pendingDoc_ && !releasePending_ && !pendingResize_ &&
-                              !anyBelow(frame_.state, kFinal);
+                              !frame_.anyBelow(kFinal);
         SessionObserver* observer = observer_;
         const uint64_t gen = generation_.load();
         lock.unlock();

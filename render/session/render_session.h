@@ -37,6 +37,11 @@ struct SessionStats {
     double lastUpdateMs = 0.0;         ///< Diff, snapshot and dirty marking of the latest edit.
     uint64_t postedUpdates = 0;        ///< update() calls.
     uint64_t appliedUpdates = 0;       ///< Documents applied (posted ones coalesce).
+    /// How much of the frame the latest edit's marking looked at: blocks tested against their
+    /// summaries, and blocks visited to grow the marks (both follow the edit, not the frame).
+    std::size_t lastMarkBlocksTested = 0;
+    std::size_t lastMarkBlocksGrown = 0;
+    std::size_t lastPassTiles = 0;     ///< Tiles the latest pass was planned over.
 };
 
 /// Diffs two documents and builds the snapshot of the second (updateScene's signature).

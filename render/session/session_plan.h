@@ -22,8 +22,10 @@ struct RenderSession::TileJob {
     int tile = 0;
 };
 
-/// A pass: its kind, the snapshot and options it traces with, and copies of the per-pixel
-/// state it was planned from (workers never read the live state arrays).
+/// A pass: its kind, the snapshot and options it traces with, and its tiles. Workers read
+/// each tile's pixel states from the frame itself: edits change states only between passes
+/// (they are applied on the scheduler thread, which runs the pass), and a tile's pixels are
+/// written only by that tile's commit, after it has read them.
 struct RenderSession::Plan {
     PassKind kind = PassKind::Base;
     uint64_t generation = 0;
@@ -37,22 +39,15 @@ struct RenderSession::Plan {
     int parity = 0;
     int spp = 1;                   ///< The scene's supersampling.
     int sppChunk = 4;              ///< Samples added per supersampling pass.
-    std::vector<uint8_t> state, flags, needSupersampling;
+    bool adaptive = true;          ///< Supersample only where neighbours differ.
     std::vector<TileJob> tiles;
     int governorLevel = -1;
 
-    /// Back to a default plan, keeping the arrays' storage: a new 921,600-pixel copy would
-    /// fault in fresh pages on every pass (about 1 ms of a drag step).
+    /// Back to a default plan, keeping the tile list's storage.
     void reset() {
-        std::vector<uint8_t> keepState = std::move(state), keepFlags = std::move(flags),
-                             keepNeed = std::move(needSupersampling);
         std::vector<TileJob> keepTiles = std::move(tiles);
         *this = Plan{};
         keepTiles.clear();
-        keepNeed.clear();
-        state = std::move(keepState);
-        flags = std::move(keepFlags);
-        needSupersampling = std::move(keepNeed);
         tiles = std::move(keepTiles);
     }
 };

@@ -36,7 +36,7 @@ bool interactiveTile(const TileInput& in, TileResult& out) {
     for (int y = r.y0; y < r.y1; ++y) {
         for (int x = r.x0; x < r.x1; ++x) {
             const std::size_t i = in.index(x, y);
-            if (plan.state[i] != kStale) continue;
+            if (in.frame.state[i] != kStale) continue;
             if (plan.interleaved && ((x + y + plan.parity) & 1)) continue;
             out.traced.add(in.centreRay(x, y), pixelSeed(x, y, 0), i, kTracedLastUpdate);
         }
@@ -58,7 +58,7 @@ bool blockTile(const TileInput& in, TileResult& out) {
             if (plan.interleaved && (((x / step) + (y / step) + plan.parity) & 1)) continue;
             bool anyStale = false;
             for (int yy = y; yy < by1 && !anyStale; ++yy)
-                for (int xx = x; xx < bx1 && !anyStale; ++xx) anyStale = plan.state[in.index(xx, yy)] == kStale;
+                for (int xx = x; xx < bx1 && !anyStale; ++xx) anyStale = in.frame.state[in.index(xx, yy)] == kStale;
             if (!anyStale) continue;
             const Ray ray = in.camera.generateRay(0.5f * float(x + bx1), 0.5f * float(y + by1));
             out.blocks.add(ray, pixelSeed(x, y, 0), in.index(x, y), uint8_t((bx1 - x) | ((by1 - y) << 4)));
@@ -74,22 +74,21 @@ bool baseTile(const TileInput& in, TileResult& out) {
     thread_local std::vector<ShadingRecord> records;
     thread_local std::vector<Color> resolved;
     records.clear();
-    const RenderSession::Plan& plan = in.plan;
     const DeepFrame& f = in.frame;
     const PixelRect& r = in.job.rect;
     const auto& pool = f.tileRecords[std::size_t(in.job.tile)];
     for (int y = r.y0; y < r.y1; ++y) {
         for (int x = r.x0; x < r.x1; ++x) {
             const std::size_t i = in.index(x, y);
-            const uint8_t s = plan.state[i];
+            const uint8_t s = f.state[i];
             if (s >= kBase) continue;
-            if (s == kInteractive && (plan.flags[i] & kDeferredValid)) {
+            if (s == kInteractive && (f.flags[i] & kDeferredValid)) {
                 out.resolvedPixel.push_back(i);
                 const uint32_t start = f.recordStart[i];
                 records.insert(records.end(), pool.begin() + start, pool.begin() + start + f.recordCount[i]);
             } else {
                 out.traced.add(in.centreRay(x, y), pixelSeed(x, y, 0), i,
-                               uint8_t(plan.flags[i] & kTracedLastUpdate));
+                               uint8_t(f.flags[i] & kTracedLastUpdate));
             }
         }
     }
@@ -103,7 +102,7 @@ bool baseTile(const TileInput& in, TileResult& out) {
         Color c = f.color[i];
         for (uint32_t j = 0; j < f.recordCount[i]; ++j) c += resolved[record++];
         out.resolvedColor.push_back(c);
-        out.resolvedFlags.push_back(uint8_t(plan.flags[i] & (kTouchedSpecular | kTracedLastUpdate | kTreeUnknown)));
+        out.resolvedFlags.push_back(uint8_t(f.flags[i] & (kTouchedSpecular | kTracedLastUpdate | kTreeUnknown)));
     }
     return true;
 }
@@ -126,8 +125,11 @@ bool supersampleTile(const TileInput& in, TileResult& out) {
     for (int y = r.y0; y < r.y1; ++y) {
         for (int x = r.x0; x < r.x1; ++x) {
             const std::size_t i = in.index(x, y);
-            if (plan.state[i] != kBase) continue;
-            if (!plan.needSupersampling[i]) {
+            if (f.state[i] != kBase) continue;
+            // Decided here, per tile: the pass writes no base, id or normal, so the
+            // neighbours this reads (in other tiles too) stay as the Base pass left them.
+            if (plan.adaptive && !needsSupersampling(f.base.data(), f.id.data(), f.normal.data(),
+                                                     f.width, f.height, x, y)) {
                 out.finishedPixel.push_back(i);
                 continue;
             }
@@ -148,7 +150,7 @@ bool supersampleTile(const TileInput& in, TileResult& out) {
     const RayList& samples = out.samples;
     for (std::size_t k = 0; k < sampledPixels.size(); ++k) {
         const std::size_t i = sampledPixels[k];
-        TileResult::Sampled s{i, Color(0.0f), f.sampleSum[i], f.sampleCount[i], kBase, plan.flags[i],
+        TileResult::Sampled s{i, Color(0.0f), f.sampleSum[i], f.sampleCount[i], kBase, f.flags[i],
                               f.cost[i], f.hitBound[i]};
         int kept = 0;
         for (int j = out.sampleFirst[k]; j < out.sampleFirst[k + 1]; ++j) {

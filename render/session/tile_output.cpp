@@ -20,9 +20,4 @@ bool RayList::trace(const TraceKernel& kernel, bool keepRecords, bool keepSegmen
                         stale);
 }
 
-glm::vec4 RayList::hitBound(std::size_t k) const {
-    if (info[k].id == kNoObject) return glm::vec4(0.0f, 0.0f, 0.0f, -1.0f);
-    return glm::vec4(origin[k] + dir[k] * info[k].depth, 0.0f);
-}
-
 }  // namespace rs

@@ -45,7 +45,10 @@ struct RayList {
     bool trace(const TraceKernel& kernel, bool keepRecords, bool keepSegments,
                TraceCounters& counters, const std::function<bool()>& stale);
     /// The hit point of ray k as a bounding sphere of radius 0 (radius < 0 for a miss).
-    glm::vec4 hitBound(std::size_t k) const;
+    glm::vec4 hitBound(std::size_t k) const {
+        if (info[k].id == kNoObject) return glm::vec4(0.0f, 0.0f, 0.0f, -1.0f);
+        return glm::vec4(origin[k] + dir[k] * info[k].depth, 0.0f);
+    }
 };
 
 /// What one tile of a pass writes. Each group is one kind of write, and DeepFrame::commit

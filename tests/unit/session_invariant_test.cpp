@@ -49,6 +49,9 @@ FrameCopy copyFrame(const RenderSession& session) {
 void expectMatchesFromScratch(const RenderSession& session, const SceneDocument& doc,
                               EngineKind engine, const std::string& where) {
     const FrameCopy edited = copyFrame(session);
+    session.withFrame([&](const DeepFrame& f, const auto&) {
+        EXPECT_TRUE(f.summariesMatchPixels()) << where << ": tile counts and summaries";
+    });
     const RenderResult full = renderImage(CompiledScene(doc, nullptr, engine));
     RenderSession fresh(2);
     fresh.setEngine(engine);
