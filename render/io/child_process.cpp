@@ -80,8 +80,8 @@ int aboveStandard(int fd) {
     return moved;
 }
 
-[[noreturn]] void runChild(int fd, int messages, pid_t parent,
-                           const std::function<void(int)>& work, const ChildLimits& limits) {
+[[noreturn]] void runChild(int fd, int messages, pid_t parent, const std::function<void(int)>& work,
+                           const ChildLimits& limits) {
     fd = aboveStandard(fd);
     messages = aboveStandard(messages);
     // What the child prints (an importer's assertion text, a sanitizer's report) goes to
@@ -145,8 +145,7 @@ bool writeAllTo(int fd, const void* data, std::size_t size) {
     return true;
 }
 
-ChildOutcome runInChildProcess(const std::function<void(int fd)>& work,
-                               const ChildLimits& limits) {
+ChildOutcome runInChildProcess(const std::function<void(int fd)>& work, const ChildLimits& limits) {
     ChildOutcome outcome;
     int result[2], messages[2];
     // O_CLOEXEC: a program another thread starts meanwhile does not inherit the pipes.
@@ -185,8 +184,7 @@ ChildOutcome runInChildProcess(const std::function<void(int fd)>& work,
             stoppedBy = ChildOutcome::Ending::Cancelled;
             break;
         }
-        const auto left =
-            std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
+        const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
         if (left.count() <= 0) {
             stoppedBy = ChildOutcome::Ending::TimedOut;
             break;

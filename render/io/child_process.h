@@ -35,7 +35,7 @@ struct ChildOutcome {
     int status = 0;
     std::string output;    ///< Everything the child wrote to its pipe.
     std::string messages;  ///< The start of what it printed (stdout and stderr), 4 KiB at most.
-    std::string problem;  ///< For NotStarted, the system's reason.
+    std::string problem;   ///< For NotStarted, the system's reason.
 };
 
 /// Forks; the child applies `limits`, runs `work(fd)` (which writes its result to fd) and

@@ -46,8 +46,8 @@ void importIntoPipe(int fd, const std::string& file, bool smoothNormals,
     }
     if (childOutOfMemory) {
         result.mesh.reset();  // Its memory is what the message below needs.
-        writeMeshWireError(fd, "the import needed more than its " +
-                                   describeByteCount(memoryBytes) + " memory budget");
+        writeMeshWireError(fd, "the import needed more than its " + describeByteCount(memoryBytes) +
+                                   " memory budget");
     } else if (!result.ok()) {
         writeMeshWireError(fd, result.error);
     } else {
@@ -62,13 +62,23 @@ std::string describeSeconds(std::chrono::milliseconds time) {
     return text;
 }
 
-/// ": " and the first line the child printed (assimp's assertion text, say), or "".
+/// ": " and the first line with words that the child printed (assimp's assertion text, or a
+/// sanitizer's report under its rule of '=' signs), or "".
 std::string firstMessage(const ChildOutcome& outcome) {
     constexpr std::size_t kLongest = 300;
-    std::string line = outcome.messages.substr(0, outcome.messages.find('\n'));
-    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
-    if (line.size() > kLongest) line = line.substr(0, kLongest) + "...";
-    return line.empty() ? "" : ": " + line;
+    std::size_t start = 0;
+    while (start < outcome.messages.size()) {
+        const std::size_t end =
+            std::min(outcome.messages.find('\n', start), outcome.messages.size());
+        std::string line = outcome.messages.substr(start, end - start);
+        start = end + 1;
+        if (std::none_of(line.begin(), line.end(), [](unsigned char c) { return std::isalpha(c); }))
+            continue;
+        while (std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+        if (line.size() > kLongest) line = line.substr(0, kLongest) + "...";
+        return ": " + line;
+    }
+    return "";
 }
 
 /// Why the child's outcome is not a mesh, or "" when its output is to be decoded.
@@ -97,8 +107,8 @@ std::string describeFailure(const ChildOutcome& outcome, std::uintmax_t memoryBy
                    firstMessage(outcome);
         case Ending::Exited:
             if (outcome.status != 0)
-                return "the import process failed (exit status " +
-                       std::to_string(outcome.status) + ")" + firstMessage(outcome);
+                return "the import process failed (exit status " + std::to_string(outcome.status) +
+                       ")" + firstMessage(outcome);
             return "";
     }
     return "";

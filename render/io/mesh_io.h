@@ -22,7 +22,7 @@ struct MeshLoadResult {
 /// The budget of one import's child process; what is not set comes from the file's size
 /// (defaultMeshImportMemory, defaultMeshImportTime).
 struct MeshImportOptions {
-    std::optional<std::uintmax_t> memoryBytes;         ///< Address space on top of the parent's.
+    std::optional<std::uintmax_t> memoryBytes;          ///< Address space on top of the parent's.
     std::optional<std::chrono::milliseconds> wallTime;  ///< Also its CPU time, rounded up.
     const std::atomic<bool>* cancel = nullptr;          ///< True stops the import.
 };

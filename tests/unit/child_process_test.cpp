@@ -2,7 +2,6 @@
 #include "io/child_process.h"
 
 #include <gtest/gtest.h>
-
 #include <signal.h>
 #include <unistd.h>
 
@@ -33,8 +32,7 @@ ChildLimits limitsOf(milliseconds wall, std::size_t maxOutput = 1 << 20) {
 TEST(ChildProcess, OutputComesBackWhole) {
     const std::string big(300000, 'x');  // More than a pipe holds: the parent reads as it comes.
     const ChildOutcome out = runInChildProcess(
-        [&](int fd) { writeAllTo(fd, big.data(), big.size()); },
-        limitsOf(milliseconds(60000)));
+        [&](int fd) { writeAllTo(fd, big.data(), big.size()); }, limitsOf(milliseconds(60000)));
     EXPECT_EQ(out.ending, Ending::Exited);
     EXPECT_EQ(out.status, 0);
     EXPECT_EQ(out.output, big);
@@ -88,9 +86,11 @@ TEST(ChildProcess, Cancel_StopsTheChild) {
     std::atomic<bool> cancel{true};
     ChildLimits limits = limitsOf(milliseconds(60000));
     limits.cancel = &cancel;
-    const ChildOutcome out = runInChildProcess([](int) {
-        for (;;) ::pause();
-    }, limits);
+    const ChildOutcome out = runInChildProcess(
+        [](int) {
+            for (;;) ::pause();
+        },
+        limits);
     EXPECT_EQ(out.ending, Ending::Cancelled);
 }
 

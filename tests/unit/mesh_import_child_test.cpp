@@ -36,8 +36,9 @@ fs::path scratch(const std::string& name) {
 // Debian's assimp 5.2 fails an assertion in its triangulation on it and aborts. A fuzz input's
 // first byte picks the extension (mesh_loader_fuzz.cpp); the file is the rest.
 TEST(MeshImportChild, AssimpAbortingOnAFile_IsAnErrorNamingItAndThisProcessGoesOn) {
-    const std::string input = readBytes(std::string(RAYSTUDIO_TEST_DATA) +
-                                        "/../fuzz/corpus/mesh_loader/assimp-triangulate-assert.ply");
+    const std::string input =
+        readBytes(std::string(RAYSTUDIO_TEST_DATA) +
+                  "/../fuzz/corpus/mesh_loader/assimp-triangulate-assert.ply");
     ASSERT_GT(input.size(), 1u);
     const std::string path = scratch("triangulate-assert.ply").string();
     std::ofstream(path, std::ios::binary) << input.substr(1);
@@ -195,10 +196,10 @@ TEST_F(MeshWire, LyingCountsAndIndices_AreMalformed) {
     };
     EXPECT_FALSE(withCount(0, ~std::uint64_t(0)).ok());
     EXPECT_FALSE(withCount(0, std::uint64_t(1) << 61).ok());
-    EXPECT_FALSE(withCount(1, 3).ok());    // normals, not one per vertex
-    EXPECT_FALSE(withCount(2, 11).ok());   // not whole triangles
-    EXPECT_FALSE(withCount(2, 0).ok());    // no triangles
-    mesh.indices[7] = 4;                   // one past the vertices
+    EXPECT_FALSE(withCount(1, 3).ok());   // normals, not one per vertex
+    EXPECT_FALSE(withCount(2, 11).ok());  // not whole triangles
+    EXPECT_FALSE(withCount(2, 0).ok());   // no triangles
+    mesh.indices[7] = 4;                  // one past the vertices
     bytes = throughPipe([&](int fd) { writeMeshWire(fd, mesh); });
     const MeshLoadResult r = decodeMeshWire(bytes, "");
     EXPECT_FALSE(r.ok());
