@@ -23,8 +23,6 @@ using Clock = std::chrono::steady_clock;
 
 /// The child's exit status when `work` threw (it is meant to report its own errors).
 constexpr int kWorkThrew = 70;
-/// How much of what the child prints is kept (the start says what went wrong).
-constexpr std::size_t kMaxMessageBytes = 4096;
 /// How often the parent looks at the cancel flag while the child is quiet.
 constexpr std::chrono::milliseconds kCancelPoll{50};
 
@@ -205,7 +203,7 @@ ChildOutcome runInChildProcess(const std::function<void(int fd)>& work, const Ch
                 p.fd = -1;
                 --open;
             } else if (&p == &pipes[1]) {
-                const std::size_t room = kMaxMessageBytes - outcome.messages.size();
+                const std::size_t room = limits.maxMessageBytes - outcome.messages.size();
                 outcome.messages.append(buffer, std::min(room, std::size_t(n)));
             } else if (outcome.output.size() + std::size_t(n) > limits.maxOutputBytes) {
                 stoppedBy = ChildOutcome::Ending::OutputTooLarge;

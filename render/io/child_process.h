@@ -18,6 +18,7 @@ struct ChildLimits {
     std::uintmax_t memoryBytes = std::uintmax_t(1) << 30;
     std::chrono::milliseconds wallTime{10000};
     std::size_t maxOutputBytes = std::size_t(1) << 30;  ///< More is killed and reported.
+    std::size_t maxMessageBytes = 4096;  ///< What it prints beyond this is read and dropped.
     const std::atomic<bool>* cancel = nullptr;          ///< Polled; true kills the child.
 };
 
@@ -34,7 +35,7 @@ struct ChildOutcome {
     Ending ending = Ending::NotStarted;
     int status = 0;
     std::string output;    ///< Everything the child wrote to its pipe.
-    std::string messages;  ///< The start of what it printed (stdout and stderr), 4 KiB at most.
+    std::string messages;  ///< The start of what it printed (stdout and stderr together).
     std::string problem;   ///< For NotStarted, the system's reason.
 };
 
