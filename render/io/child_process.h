@@ -18,8 +18,8 @@ struct ChildLimits {
     std::uintmax_t memoryBytes = std::uintmax_t(1) << 30;
     std::chrono::milliseconds wallTime{10000};
     std::size_t maxOutputBytes = std::size_t(1) << 30;  ///< More is killed and reported.
-    std::size_t maxMessageBytes = 4096;  ///< What it prints beyond this is read and dropped.
-    const std::atomic<bool>* cancel = nullptr;          ///< Polled; true kills the child.
+    std::size_t maxMessageBytes = 4096;         ///< What it prints beyond this is read and dropped.
+    const std::atomic<bool>* cancel = nullptr;  ///< Polled; true kills the child.
 };
 
 /// How the child ended, and what it wrote.
