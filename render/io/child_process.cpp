@@ -70,6 +70,17 @@ void closeOtherDescriptors(int keep) {
         if (fd != keep) ::close(fd);
 }
 
+/// The parent's handlers (a fuzzer's crash reporter, a designer's) must not run in the
+/// child: a crash there is the child's death by its signal, which the parent reports.
+void defaultSignals() {
+    for (int signal :
+         {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGXCPU, SIGPIPE, SIGTERM, SIGINT, SIGHUP})
+        ::signal(signal, SIG_DFL);
+    sigset_t none;
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
+}
+
 /// `fd` moved to 3 or above (a parent with stdout closed can get a pipe at 1).
 int aboveStandard(int fd) {
     if (fd >= 3) return fd;
@@ -87,6 +98,7 @@ int aboveStandard(int fd) {
     ::dup2(messages, 1);
     ::dup2(messages, 2);
     closeOtherDescriptors(fd);
+    defaultSignals();
 #ifdef __linux__
     // Dies with the parent (the designer killed mid-import leaves no importer behind), and
     // is the one the out-of-memory killer takes first.

@@ -42,6 +42,7 @@ public:
     bool array(std::uint64_t n, std::vector<T>& values) {
         if (n > left() / sizeof(T)) return false;
         values.resize(std::size_t(n));
+        if (n == 0) return true;  // An empty vector's data() may be null, even for memcpy.
         std::memcpy(values.data(), bytes_.data() + at_, std::size_t(n) * sizeof(T));
         at_ += std::size_t(n) * sizeof(T);
         return true;

@@ -59,6 +59,21 @@ TEST(ChildProcess, AnAbortInTheChild_IsReportedWithWhatItPrinted) {
     EXPECT_EQ(describeSignal(SIGABRT).rfind("signal 6", 0), 0u) << describeSignal(SIGABRT);
 }
 
+// A handler of this process (a crash reporter, say) does not run in the child: there an
+// abort is a death by SIGABRT, whatever this process does with the signal.
+TEST(ChildProcess, AnAbortInTheChild_DoesNotRunThisProcesssHandler) {
+    struct sigaction handler {
+    }, before{};
+    handler.sa_handler = [](int) { ::_exit(42); };
+    sigemptyset(&handler.sa_mask);
+    ASSERT_EQ(::sigaction(SIGABRT, &handler, &before), 0);
+    const ChildOutcome out =
+        runInChildProcess([](int) { std::abort(); }, limitsOf(milliseconds(60000)));
+    ::sigaction(SIGABRT, &before, nullptr);
+    EXPECT_EQ(out.ending, Ending::Signalled);
+    EXPECT_EQ(out.status, SIGABRT);
+}
+
 // The child waits for a signal that never comes (pause(), not a sleep): only the parent's
 // deadline can end it, on any machine at any load.
 TEST(ChildProcess, AChildThatNeverFinishes_IsKilledAtTheDeadline) {
