@@ -188,8 +188,8 @@ ChildOutcome runInChildProcess(const std::function<void(int fd)>& work, const Ch
     ChildOutcome::Ending stoppedBy = ChildOutcome::Ending::Exited;
     char buffer[1 << 16];
     pollfd pipes[2] = {{result[0], POLLIN, 0}, {messages[0], POLLIN, 0}};
-    int open = 2;
-    while (open > 0) {
+    int openPipes = 2;
+    while (openPipes > 0) {
         if (limits.cancel && limits.cancel->load()) {
             stoppedBy = ChildOutcome::Ending::Cancelled;
             break;
@@ -213,7 +213,7 @@ ChildOutcome runInChildProcess(const std::function<void(int fd)>& work, const Ch
             if (n <= 0) {  // The child closed its end: it exited or is exiting.
                 ::close(p.fd);
                 p.fd = -1;
-                --open;
+                --openPipes;
             } else if (&p == &pipes[1]) {
                 const std::size_t room = limits.maxMessageBytes - outcome.messages.size();
                 outcome.messages.append(buffer, std::min(room, std::size_t(n)));

@@ -43,7 +43,9 @@ struct ChildOutcome {
 /// exits with status 0 without running atexit handlers or static destructors (nothing of
 /// the parent's state is torn down twice). The parent collects the output until the child
 /// closes the pipe, then reaps it. The child must not start threads; it holds no file
-/// descriptor of the parent's but stdin, and its stdout and stderr go to `messages`.
+/// descriptor of the parent's but stdin, and its stdout and stderr go to `messages`. (A lock
+/// another thread of the parent held at the fork stays held in the child; should the work
+/// need it, the child waits until the deadline kills it: a late error, never a hang.)
 ChildOutcome runInChildProcess(const std::function<void(int fd)>& work, const ChildLimits& limits);
 
 /// Writes all `size` bytes at `data` to `fd` (retrying on EINTR and short writes); false on
