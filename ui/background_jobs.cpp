@@ -92,7 +92,10 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
     startWorker(dialog, cancelled, [=, file = path.toStdString()] {
         MeshLoadResult result;
         try {
-            result = loadMesh(file, smoothNormals);
+            // Cancel stops the import child at once, not only the wait for it.
+            MeshImportOptions options;
+            options.cancel = cancelled.get();
+            result = loadMesh(file, smoothNormals, options);
         } catch (...) {
             result = {nullptr, file + ": " + describeFailure(std::current_exception())};
         }

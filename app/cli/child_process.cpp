@@ -1,11 +1,11 @@
-// fork/exec with a pipe and a deadline; no shell, so arguments need no quoting.
+// Scheduler tools run through the render library's child process (fork, deadline, pipes),
+// with exec in the child; no shell, so arguments need no quoting.
 #include "child_process.h"
 
+#include "io/child_process.h"
+
 #include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -27,49 +27,27 @@ bool onPath(const std::string& program) {
 }
 
 ChildResult runChild(const std::vector<std::string>& argv, int timeoutS) {
-    constexpr std::size_t kMaxOutput = std::size_t(1) << 20;
     ChildResult result;
-    int fds[2];
-    if (argv.empty() || ::pipe2(fds, O_CLOEXEC) != 0) return result;
+    if (argv.empty()) return result;
     std::vector<char*> args;
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
-    const pid_t pid = ::fork();
-    if (pid < 0) {
-        ::close(fds[0]), ::close(fds[1]);
-        return result;
-    }
-    if (pid == 0) {
-        const int devNull = ::open("/dev/null", O_RDONLY);
-        if (devNull >= 0) ::dup2(devNull, 0);
-        ::dup2(fds[1], 1);
-        ::dup2(fds[1], 2);
-        ::execvp(args[0], args.data());
-        const std::string msg = "cannot run " + argv[0] + "\n";
-        (void)!::write(2, msg.data(), msg.size());
-        ::_exit(127);
-    }
-    ::close(fds[1]);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeoutS);
-    char buf[4096];
-    for (;;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-                              deadline - std::chrono::steady_clock::now()).count();
-        if (left <= 0) {
-            result.timedOut = true;
-            ::kill(pid, SIGKILL);
-            break;
-        }
-        pollfd p{fds[0], POLLIN, 0};
-        if (::poll(&p, 1, int(std::min<long long>(left, 1000))) <= 0) continue;
-        const ssize_t n = ::read(fds[0], buf, sizeof buf);
-        if (n <= 0) break;
-        if (result.output.size() < kMaxOutput) result.output.append(buf, std::size_t(n));
-    }
-    ::close(fds[0]);
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    if (!result.timedOut && WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
+    ChildLimits limits;
+    limits.wallTime = std::chrono::seconds(timeoutS);
+    limits.maxMessageBytes = std::size_t(1) << 20;
+    const ChildOutcome outcome = runInChildProcess(
+        [&](int) {
+            const int devNull = ::open("/dev/null", O_RDONLY);
+            if (devNull >= 0) ::dup2(devNull, 0);
+            ::execvp(args[0], args.data());
+            const std::string msg = "cannot run " + argv[0] + "\n";
+            (void)!::write(2, msg.data(), msg.size());
+            ::_exit(127);
+        },
+        limits);
+    result.timedOut = outcome.ending == ChildOutcome::Ending::TimedOut;
+    if (outcome.ending == ChildOutcome::Ending::Exited) result.exitCode = outcome.status;
+    result.output = outcome.messages;  // What it printed, stdout and stderr together.
     return result;
 }
 

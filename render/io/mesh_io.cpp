@@ -1,18 +1,24 @@
-// Loading triangle meshes through assimp into one object-space MeshData.
+// Loading a mesh: the guards here, the assimp import (io/mesh_import.cpp) in a child process
+// under a memory and time budget, the triangles back through the mesh wire format.
 #include "io/mesh_io.h"
 
+#include "io/child_process.h"
 #include "io/input_file.h"
-#include "io/mesh_file_access.h"
 #include "io/mesh_header_check.h"
+#include "io/mesh_import.h"
+#include "io/mesh_wire.h"
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
+#include <unistd.h>
 
-#include <assimp/Importer.hpp>
-#include <cmath>
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <new>
 #include <system_error>
 
 namespace rs {
@@ -20,65 +26,109 @@ namespace rs {
 namespace {
 namespace fs = std::filesystem;
 
-bool isFinite(const aiVector3D& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+/// Set in the import child by its new-handler: an allocation failed, so the error is the
+/// budget's, whatever assimp made of the std::bad_alloc.
+std::atomic<bool> childOutOfMemory{false};
 
-glm::dvec3 toDouble(const Vec3& v) {
-    return glm::dvec3(v.x, v.y, v.z);
-}
-
-// In double, so small but valid triangles are not mistaken for zero-area ones.
-bool zeroArea(const Vec3& a, const Vec3& b, const Vec3& c) {
-    glm::dvec3 n = glm::cross(toDouble(b) - toDouble(a), toDouble(c) - toDouble(a));
-    return n == glm::dvec3(0.0);
-}
-
-// Drops vertices no kept triangle uses, so bounds() describes the surface only.
-void compact(MeshData& mesh) {
-    constexpr uint32_t kUnused = std::numeric_limits<uint32_t>::max();
-    std::vector<uint32_t> remap(mesh.positions.size(), kUnused);
-    std::vector<Vec3> positions, normals;
-    for (uint32_t& index : mesh.indices) {
-        if (remap[index] == kUnused) {
-            remap[index] = static_cast<uint32_t>(positions.size());
-            positions.push_back(mesh.positions[index]);
-            if (!mesh.normals.empty()) normals.push_back(mesh.normals[index]);
-        }
-        index = remap[index];
+/// The import child's work: assimp, then the result (mesh or message) into `fd`.
+void importIntoPipe(int fd, const std::string& file, bool smoothNormals,
+                    std::uintmax_t memoryBytes) {
+    std::set_new_handler([] {
+        childOutOfMemory = true;
+        std::set_new_handler(nullptr);
+        throw std::bad_alloc();
+    });
+    MeshLoadResult result;
+    try {
+        result = importMeshWithAssimp(file, smoothNormals);
+    } catch (const std::bad_alloc&) {
+        childOutOfMemory = true;
     }
-    mesh.positions = std::move(positions);
-    mesh.normals = std::move(normals);
+    if (childOutOfMemory) {
+        result.mesh.reset();  // Its memory is what the message below needs.
+        writeMeshWireError(fd, "the import needed more than its " + describeByteCount(memoryBytes) +
+                                   " memory budget");
+    } else if (!result.ok()) {
+        writeMeshWireError(fd, result.error);
+    } else {
+        writeMeshWire(fd, *result.mesh);
+    }
 }
 
-// Files can carry unnormalised, zero or NaN normals; shading needs unit ones. Broken ones
-// are replaced by the area-weighted average of the faces around the vertex.
-void repairNormals(MeshData& mesh) {
-    std::vector<Vec3> faceSums;
-    for (Vec3& n : mesh.normals) {
-        float length = glm::length(n);
-        if (std::isfinite(length) && length > 0.0f) {
-            n /= length;
+std::string describeSeconds(std::chrono::milliseconds time) {
+    const double seconds = double(time.count()) / 1000.0;
+    char text[32];
+    std::snprintf(text, sizeof text, seconds >= 10 ? "%.0f s" : "%.3g s", seconds);
+    return text;
+}
+
+/// ": " and the first line with words that the child printed (assimp's assertion text, or a
+/// sanitizer's report under its rule of '=' signs), or "".
+std::string firstMessage(const ChildOutcome& outcome) {
+    constexpr std::size_t kLongest = 300;
+    std::size_t start = 0;
+    while (start < outcome.messages.size()) {
+        const std::size_t end =
+            std::min(outcome.messages.find('\n', start), outcome.messages.size());
+        std::string line = outcome.messages.substr(start, end - start);
+        start = end + 1;
+        if (std::none_of(line.begin(), line.end(), [](unsigned char c) { return std::isalpha(c); }))
             continue;
-        }
-        if (faceSums.empty()) {
-            faceSums.assign(mesh.positions.size(), Vec3(0.0f));
-            for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
-                const uint32_t* i = &mesh.indices[t];
-                Vec3 area = glm::cross(mesh.positions[i[1]] - mesh.positions[i[0]],
-                                       mesh.positions[i[2]] - mesh.positions[i[0]]);
-                for (int k = 0; k < 3; ++k) faceSums[i[k]] += area;
-            }
-        }
-        Vec3 sum = faceSums[static_cast<std::size_t>(&n - mesh.normals.data())];
-        float sumLength = glm::length(sum);
-        // Faces that cancel exactly leave no direction to pick; any unit vector will do.
-        n = sumLength > 0.0f && std::isfinite(sumLength) ? sum / sumLength : Vec3(0, 0, 1);
+        while (std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+        if (line.size() > kLongest) line = line.substr(0, kLongest) + "...";
+        return ": " + line;
     }
+    return "";
+}
+
+/// Why the child's outcome is not a mesh, or "" when its output is to be decoded.
+std::string describeFailure(const ChildOutcome& outcome, std::uintmax_t memoryBytes,
+                            std::chrono::milliseconds wallTime) {
+    using Ending = ChildOutcome::Ending;
+    switch (outcome.ending) {
+        case Ending::NotStarted:
+            return "cannot run the import: " + outcome.problem;
+        case Ending::TimedOut:
+            return "the import took longer than its " + describeSeconds(wallTime) +
+                   " budget and was stopped";
+        case Ending::Cancelled:
+            return "the import was cancelled";
+        case Ending::OutputTooLarge:
+            return "the imported mesh is larger than its " + describeByteCount(memoryBytes) +
+                   " memory budget";
+        case Ending::Signalled:
+            if (outcome.status == SIGXCPU)
+                return "the import used more than its " + describeSeconds(wallTime) +
+                       " of processor time and was stopped";
+            if (outcome.status == SIGKILL)
+                return "the import process was killed (" + describeSignal(SIGKILL) +
+                       "), probably by the system for lack of memory";
+            return "assimp crashed while reading it (" + describeSignal(outcome.status) + ")" +
+                   firstMessage(outcome);
+        case Ending::Exited:
+            if (outcome.status != 0)
+                return "the import process failed (exit status " + std::to_string(outcome.status) +
+                       ")" + firstMessage(outcome);
+            return "";
+    }
+    return "";
 }
 }  // namespace
 
-MeshLoadResult loadMesh(const std::string& path, bool smoothNormals) {
+std::uintmax_t defaultMeshImportMemory(std::uintmax_t fileBytes) {
+    const std::uintmax_t wanted = (std::uintmax_t(256) << 20) + 16 * fileBytes;
+    const long pages = ::sysconf(_SC_PHYS_PAGES);
+    const long pageSize = ::sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || pageSize <= 0) return wanted;
+    return std::min(wanted, std::uintmax_t(pages) * std::uintmax_t(pageSize));
+}
+
+std::chrono::milliseconds defaultMeshImportTime(std::uintmax_t fileBytes) {
+    return std::chrono::milliseconds(10000 + fileBytes / ((std::uintmax_t(10) << 20) / 1000));
+}
+
+MeshLoadResult loadMesh(const std::string& path, bool smoothNormals,
+                        const MeshImportOptions& options) {
     MeshLoadResult result;
     std::error_code ec;
     fs::path file = fs::absolute(fs::path(path), ec);
@@ -98,62 +148,22 @@ MeshLoadResult loadMesh(const std::string& path, bool smoothNormals) {
     // A header that lies about its counts makes assimp allocate for them first.
     if (std::string why = checkMeshHeader(file.string(), size); !why.empty()) return fail(why);
 
-    // No Assimp::DefaultLogger is created: assimp then logs to its null logger, so loading
-    // never writes to stdout.
-    Assimp::Importer importer;
-    importer.SetIOHandler(new MeshFileAccess);  // Owned by the importer (assimp's API).
-    unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                     aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure;
-    // Dropping flat normals first lets identical positions join into one vertex.
-    flags |= smoothNormals ? aiProcess_GenSmoothNormals : aiProcess_DropNormals;
-    const aiScene* scene = importer.ReadFile(file.string(), flags);
-    if (!scene) {
-        std::string why = importer.GetErrorString();
-        return fail(why.empty() ? "assimp could not read it" : "assimp: " + why);
-    }
-
-    auto mesh = std::make_shared<MeshData>();
-    mesh->sourcePath = file.string();
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-        const aiMesh* in = scene->mMeshes[m];
-        const auto base = static_cast<uint32_t>(mesh->positions.size());
-        for (unsigned v = 0; v < in->mNumVertices; ++v) {
-            const aiVector3D& p = in->mVertices[v];
-            if (!isFinite(p))
-                return fail("vertex " + std::to_string(v) + " of mesh " + std::to_string(m) +
-                            " is not a finite number (NaN or infinity)");
-            mesh->positions.emplace_back(p.x, p.y, p.z);
-            if (smoothNormals) {
-                const aiVector3D n = in->HasNormals() ? in->mNormals[v] : aiVector3D(0, 0, 0);
-                mesh->normals.emplace_back(n.x, n.y, n.z);
-            }
-        }
-        for (unsigned f = 0; f < in->mNumFaces; ++f) {
-            const aiFace& face = in->mFaces[f];
-            if (face.mNumIndices != 3) continue;  // points and lines are not surfaces
-            const unsigned* i = face.mIndices;
-            if (i[0] >= in->mNumVertices || i[1] >= in->mNumVertices || i[2] >= in->mNumVertices)
-                return fail("face " + std::to_string(f) + " of mesh " + std::to_string(m) +
-                            " refers to a vertex that does not exist");
-            bool repeated = i[0] == i[1] || i[1] == i[2] || i[0] == i[2];
-            if (repeated || zeroArea(mesh->positions[base + i[0]], mesh->positions[base + i[1]],
-                                     mesh->positions[base + i[2]])) {
-                ++mesh->droppedDegenerate;
-                continue;
-            }
-            for (int k = 0; k < 3; ++k) mesh->indices.push_back(base + i[k]);
-        }
-    }
-    if (mesh->indices.empty()) {
-        if (mesh->droppedDegenerate > 0)
-            return fail("all " + std::to_string(mesh->droppedDegenerate) +
-                        " triangles are degenerate (zero area)");
-        return fail("contains no triangles");
-    }
-    compact(*mesh);
-    if (smoothNormals) repairNormals(*mesh);
-    result.mesh = std::move(mesh);
-    return result;
+    ChildLimits limits;
+    limits.memoryBytes = options.memoryBytes.value_or(defaultMeshImportMemory(size));
+    limits.wallTime = options.wallTime.value_or(defaultMeshImportTime(size));
+    // The child held the mesh in its budget, so its bytes cannot be more (plus a header).
+    limits.maxOutputBytes = std::size_t(std::min<std::uintmax_t>(
+        limits.memoryBytes + 4096, std::numeric_limits<std::size_t>::max()));
+    limits.cancel = options.cancel;
+    const ChildOutcome outcome = runInChildProcess(
+        [&](int fd) { importIntoPipe(fd, file.string(), smoothNormals, limits.memoryBytes); },
+        limits);
+    if (std::string why = describeFailure(outcome, limits.memoryBytes, limits.wallTime);
+        !why.empty())
+        return fail(why);
+    MeshLoadResult decoded = decodeMeshWire(outcome.output, file.string());
+    if (!decoded.ok()) return fail(decoded.error);
+    return decoded;
 }
 
 }  // namespace rs

@@ -3,7 +3,11 @@
 
 #include "scene/mesh_data.h"
 
+#include <atomic>
+#include <chrono>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace rs {
@@ -15,9 +19,27 @@ struct MeshLoadResult {
     bool ok() const { return mesh != nullptr; }
 };
 
+/// The budget of one import's child process; what is not set comes from the file's size
+/// (defaultMeshImportMemory, defaultMeshImportTime).
+struct MeshImportOptions {
+    std::optional<std::uintmax_t> memoryBytes;          ///< Address space on top of the parent's.
+    std::optional<std::chrono::milliseconds> wallTime;  ///< Also its CPU time, rounded up.
+    const std::atomic<bool>* cancel = nullptr;          ///< True stops the import.
+};
+
+/// 256 MiB + 16 bytes per byte of the file, at most the machine's physical memory.
+std::uintmax_t defaultMeshImportMemory(std::uintmax_t fileBytes);
+/// 10 s + 1 s per 10 MiB of the file.
+std::chrono::milliseconds defaultMeshImportTime(std::uintmax_t fileBytes);
+
 /// Loads every mesh of a file into one triangle list in object space (node transforms applied).
 /// Degenerate triangles are dropped and counted; NaN/Inf vertices or no triangles are errors.
 /// `smoothNormals` keeps or generates per-vertex normals; otherwise normals stay empty (flat).
-MeshLoadResult loadMesh(const std::string& path, bool smoothNormals);
+/// The file is checked here (a regular file within kMaxMeshFileBytes whose header counts fit
+/// its size); assimp then reads it in a child process under `options`' budget, so an importer
+/// that crashes, aborts, runs too long or allocates too much is an error naming the file, and
+/// this process goes on.
+MeshLoadResult loadMesh(const std::string& path, bool smoothNormals,
+                        const MeshImportOptions& options = {});
 
 }  // namespace rs

@@ -1,0 +1,139 @@
+// The assimp import proper: one file into one object-space MeshData. It runs in the import
+// child process (io/mesh_io.cpp), where a crash or a runaway allocation costs only that child.
+#include "io/mesh_import.h"
+
+#include "io/mesh_file_access.h"
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <limits>
+
+namespace rs {
+
+namespace {
+bool isFinite(const aiVector3D& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+glm::dvec3 toDouble(const Vec3& v) {
+    return glm::dvec3(v.x, v.y, v.z);
+}
+
+// In double, so small but valid triangles are not mistaken for zero-area ones.
+bool zeroArea(const Vec3& a, const Vec3& b, const Vec3& c) {
+    glm::dvec3 n = glm::cross(toDouble(b) - toDouble(a), toDouble(c) - toDouble(a));
+    return n == glm::dvec3(0.0);
+}
+
+// Drops vertices no kept triangle uses, so bounds() describes the surface only.
+void compact(MeshData& mesh) {
+    constexpr uint32_t kUnused = std::numeric_limits<uint32_t>::max();
+    std::vector<uint32_t> remap(mesh.positions.size(), kUnused);
+    std::vector<Vec3> positions, normals;
+    for (uint32_t& index : mesh.indices) {
+        if (remap[index] == kUnused) {
+            remap[index] = static_cast<uint32_t>(positions.size());
+            positions.push_back(mesh.positions[index]);
+            if (!mesh.normals.empty()) normals.push_back(mesh.normals[index]);
+        }
+        index = remap[index];
+    }
+    mesh.positions = std::move(positions);
+    mesh.normals = std::move(normals);
+}
+
+// Files can carry unnormalised, zero or NaN normals; shading needs unit ones. Broken ones
+// are replaced by the area-weighted average of the faces around the vertex.
+void repairNormals(MeshData& mesh) {
+    std::vector<Vec3> faceSums;
+    for (Vec3& n : mesh.normals) {
+        float length = glm::length(n);
+        if (std::isfinite(length) && length > 0.0f) {
+            n /= length;
+            continue;
+        }
+        if (faceSums.empty()) {
+            faceSums.assign(mesh.positions.size(), Vec3(0.0f));
+            for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+                const uint32_t* i = &mesh.indices[t];
+                Vec3 area = glm::cross(mesh.positions[i[1]] - mesh.positions[i[0]],
+                                       mesh.positions[i[2]] - mesh.positions[i[0]]);
+                for (int k = 0; k < 3; ++k) faceSums[i[k]] += area;
+            }
+        }
+        Vec3 sum = faceSums[static_cast<std::size_t>(&n - mesh.normals.data())];
+        float sumLength = glm::length(sum);
+        // Faces that cancel exactly leave no direction to pick; any unit vector will do.
+        n = sumLength > 0.0f && std::isfinite(sumLength) ? sum / sumLength : Vec3(0, 0, 1);
+    }
+}
+}  // namespace
+
+MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals) {
+    MeshLoadResult result;
+    auto fail = [&](const std::string& why) {
+        result.error = why;
+        return result;
+    };
+    // No Assimp::DefaultLogger is created: assimp then logs to its null logger, so loading
+    // never writes to stdout.
+    Assimp::Importer importer;
+    importer.SetIOHandler(new MeshFileAccess);  // Owned by the importer (assimp's API).
+    unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                     aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure;
+    // Dropping flat normals first lets identical positions join into one vertex.
+    flags |= smoothNormals ? aiProcess_GenSmoothNormals : aiProcess_DropNormals;
+    const aiScene* scene = importer.ReadFile(file, flags);
+    if (!scene) {
+        std::string why = importer.GetErrorString();
+        return fail(why.empty() ? "assimp could not read it" : "assimp: " + why);
+    }
+
+    auto mesh = std::make_shared<MeshData>();
+    mesh->sourcePath = file;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        const aiMesh* in = scene->mMeshes[m];
+        const auto base = static_cast<uint32_t>(mesh->positions.size());
+        for (unsigned v = 0; v < in->mNumVertices; ++v) {
+            const aiVector3D& p = in->mVertices[v];
+            if (!isFinite(p))
+                return fail("vertex " + std::to_string(v) + " of mesh " + std::to_string(m) +
+                            " is not a finite number (NaN or infinity)");
+            mesh->positions.emplace_back(p.x, p.y, p.z);
+            if (smoothNormals) {
+                const aiVector3D n = in->HasNormals() ? in->mNormals[v] : aiVector3D(0, 0, 0);
+                mesh->normals.emplace_back(n.x, n.y, n.z);
+            }
+        }
+        for (unsigned f = 0; f < in->mNumFaces; ++f) {
+            const aiFace& face = in->mFaces[f];
+            if (face.mNumIndices != 3) continue;  // points and lines are not surfaces
+            const unsigned* i = face.mIndices;
+            if (i[0] >= in->mNumVertices || i[1] >= in->mNumVertices || i[2] >= in->mNumVertices)
+                return fail("face " + std::to_string(f) + " of mesh " + std::to_string(m) +
+                            " refers to a vertex that does not exist");
+            bool repeated = i[0] == i[1] || i[1] == i[2] || i[0] == i[2];
+            if (repeated || zeroArea(mesh->positions[base + i[0]], mesh->positions[base + i[1]],
+                                     mesh->positions[base + i[2]])) {
+                ++mesh->droppedDegenerate;
+                continue;
+            }
+            for (int k = 0; k < 3; ++k) mesh->indices.push_back(base + i[k]);
+        }
+    }
+    if (mesh->indices.empty()) {
+        if (mesh->droppedDegenerate > 0)
+            return fail("all " + std::to_string(mesh->droppedDegenerate) +
+                        " triangles are degenerate (zero area)");
+        return fail("contains no triangles");
+    }
+    compact(*mesh);
+    if (smoothNormals) repairNormals(*mesh);
+    result.mesh = std::move(mesh);
+    return result;
+}
+
+}  // namespace rs

@@ -1,0 +1,127 @@
+// Mesh wire format: fixed header, then raw arrays; every count checked before it is used.
+#include "io/mesh_wire.h"
+
+#include "io/child_process.h"
+
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
+namespace rs {
+
+namespace {
+constexpr char kMagic[8] = {'R', 'S', 'M', 'E', 'S', 'H', '1', '\n'};
+constexpr std::uint64_t kMeshMarker = 0;
+constexpr std::uint64_t kErrorMarker = 1;
+/// Longest error message accepted back: far more than any message, far less than memory.
+constexpr std::uint64_t kMaxErrorBytes = 1 << 16;
+
+static_assert(sizeof(Vec3) == 3 * sizeof(float) && std::is_trivially_copyable_v<Vec3>);
+
+void putCount(std::string& out, std::uint64_t value) {
+    out.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+template <typename T>
+bool writeArray(int fd, const std::vector<T>& values) {
+    return writeAllTo(fd, values.data(), values.size() * sizeof(T));
+}
+
+/// Reads the bytes in order; every read first checks that they are there.
+class WireReader {
+public:
+    explicit WireReader(const std::string& bytes) : bytes_(bytes) {}
+    std::size_t left() const { return bytes_.size() - at_; }
+    bool count(std::uint64_t& value) {
+        if (left() < sizeof value) return false;
+        std::memcpy(&value, bytes_.data() + at_, sizeof value);
+        at_ += sizeof value;
+        return true;
+    }
+    template <typename T>
+    bool array(std::uint64_t n, std::vector<T>& values) {
+        if (n > left() / sizeof(T)) return false;
+        values.resize(std::size_t(n));
+        if (n == 0) return true;  // An empty vector's data() may be null, even for memcpy.
+        std::memcpy(values.data(), bytes_.data() + at_, std::size_t(n) * sizeof(T));
+        at_ += std::size_t(n) * sizeof(T);
+        return true;
+    }
+    bool text(std::uint64_t n, std::string& value) {
+        if (n > left()) return false;
+        value.assign(bytes_, at_, std::size_t(n));
+        at_ += std::size_t(n);
+        return true;
+    }
+    bool magic() {
+        if (left() < sizeof kMagic || std::memcmp(bytes_.data(), kMagic, sizeof kMagic) != 0)
+            return false;
+        at_ += sizeof kMagic;
+        return true;
+    }
+
+private:
+    const std::string& bytes_;
+    std::size_t at_ = 0;
+};
+
+MeshLoadResult malformed(const std::string& why) {
+    MeshLoadResult result;
+    result.error = "malformed result from the import process: " + why;
+    return result;
+}
+}  // namespace
+
+bool writeMeshWire(int fd, const MeshData& mesh) {
+    std::string header(kMagic, sizeof kMagic);
+    putCount(header, kMeshMarker);
+    putCount(header, mesh.positions.size());
+    putCount(header, mesh.normals.size());
+    putCount(header, mesh.indices.size());
+    putCount(header, mesh.droppedDegenerate);
+    return writeAllTo(fd, header.data(), header.size()) && writeArray(fd, mesh.positions) &&
+           writeArray(fd, mesh.normals) && writeArray(fd, mesh.indices);
+}
+
+bool writeMeshWireError(int fd, const std::string& error) {
+    std::string out(kMagic, sizeof kMagic);
+    putCount(out, kErrorMarker);
+    const std::string text = error.substr(0, kMaxErrorBytes);
+    putCount(out, text.size());
+    out += text;
+    return writeAllTo(fd, out.data(), out.size());
+}
+
+MeshLoadResult decodeMeshWire(const std::string& bytes, const std::string& sourcePath) {
+    WireReader in(bytes);
+    std::uint64_t marker = 0;
+    if (!in.magic() || !in.count(marker)) return malformed("no header");
+    MeshLoadResult result;
+    if (marker == kErrorMarker) {
+        std::uint64_t length = 0;
+        if (!in.count(length) || length > kMaxErrorBytes || !in.text(length, result.error) ||
+            in.left() != 0)
+            return malformed("a cut or oversized message");
+        if (result.error.empty()) return malformed("an empty message");
+        return result;
+    }
+    if (marker != kMeshMarker) return malformed("an unknown kind of result");
+    std::uint64_t positions = 0, normals = 0, indices = 0, dropped = 0;
+    if (!in.count(positions) || !in.count(normals) || !in.count(indices) || !in.count(dropped))
+        return malformed("a cut header");
+    if (normals != 0 && normals != positions) return malformed("normals that are not per vertex");
+    if (indices == 0 || indices % 3 != 0) return malformed("no whole triangles");
+    auto mesh = std::make_shared<MeshData>();
+    if (!in.array(positions, mesh->positions) || !in.array(normals, mesh->normals) ||
+        !in.array(indices, mesh->indices))
+        return malformed("counts that the bytes do not hold");
+    if (in.left() != 0) return malformed("bytes after the mesh");
+    for (std::uint32_t index : mesh->indices)
+        if (index >= positions) return malformed("an index past the vertices");
+    mesh->droppedDegenerate = std::size_t(dropped);
+    mesh->sourcePath = sourcePath;
+    result.mesh = std::move(mesh);
+    return result;
+}
+
+}  // namespace rs
