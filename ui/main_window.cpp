@@ -75,6 +75,9 @@ MainWindow::MainWindow(QWidget* parent)
             [this](bool clean) { setWindowModified(!clean); });
     connect(editor_, &SceneEditor::filePathChanged, this, &MainWindow::updateTitle);
     connect(session_.get(), &SessionController::passFinished, this, &MainWindow::onPassFinished);
+    connect(session_.get(), &SessionController::updateRateChanged, this, [this](double rate) {
+        statusUps_->setText(tr("%1 upd/s").arg(rate, 0, 'f', 0));
+    });
     connect(autosave_, &Autosave::failed, this, [this](const QString& error) {
         statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 10000);
     });
@@ -348,7 +351,6 @@ bool MainWindow::maybeCancelRenders() {
 void MainWindow::onPassFinished(const PassInfo& info) {
     static const char* const kinds[] = {"interactive", "base", "supersample"};
     statusFrame_->setText(tr("%1 ms").arg(info.ms, 0, 'f', 1));
-    statusUps_->setText(tr("%1 upd/s").arg(session_->updatesPerSecond(), 0, 'f', 0));
     const double share = info.totalPixels ? 100.0 * double(info.tracedPixels) / double(info.totalPixels) : 0.0;
     statusRetraced_->setText(tr("%1% re-traced").arg(share, 0, 'f', 1));
     statusPass_->setText(tr("pass: %1%2").arg(QString::fromLatin1(kinds[int(info.kind)]),

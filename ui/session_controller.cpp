@@ -27,8 +27,12 @@ SessionController::SessionController(int threads, QObject* parent)
     connect(&updateTimer_, &QTimer::timeout, this, &SessionController::onUpdateTimer);
     rateTimer_.setInterval(1000);
     connect(&rateTimer_, &QTimer::timeout, this, [this] {
+        const bool changed = updatesPerSecond_ != updatesThisSecond_;
         updatesPerSecond_ = updatesThisSecond_;
         updatesThisSecond_ = 0;
+        // Also when it falls to 0: passes stop when the user does, and with them
+        // passFinished, so a status bar updated only there kept the drag's rate while idle.
+        if (changed) Q_EMIT updateRateChanged(updatesPerSecond_);
     });
     rateTimer_.start();
     session_->setObserver(this);

@@ -84,6 +84,8 @@ Q_SIGNALS:
     void frameCompleted(quint64 generation);
     /// The document of requests up to `requestSerial` went to the session as `generation`.
     void documentPosted(quint64 requestSerial, quint64 generation);
+    /// updatesPerSecond() changed (checked once a second, including the fall to 0).
+    void updateRateChanged(double updatesPerSecond);
 
 public:
     /// Shortest time between two frameUpdated signals.

@@ -16,6 +16,7 @@
 #include <QTimer>
 #include <QMessageBox>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QLabel>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -36,6 +37,7 @@ private Q_SLOTS:
     void clickOnNothing_ClearsSelection();
     void dragSphere_MovesItInDocument_AndUndoRestores();
     void dragWithAxisLock_MovesAlongThatAxisOnly_AndEscapeCancels();
+    void updateRate_FallsToZeroInTheStatusBarOnceTheUserStops();
     void propertyEdit_ReRendersFrame_AndSharedMaterialIsShown();
     void outOfRangeProperty_IsRejectedWithMessage();
     void saveAndReopen_GiveTheSameScene();
@@ -134,6 +136,29 @@ void DesignerTest::dragSphere_MovesItInDocument_AndUndoRestores() {
     QVERIFY(window_->editor()->document().sameContent(before));
     window_->editor()->undoStack()->redo();
     QVERIFY(window_->editor()->document().findObject(blue)->transform.translate.x > 0.1f);
+}
+
+void DesignerTest::updateRate_FallsToZeroInTheStatusBarOnceTheUserStops() {
+    QLabel* rate = nullptr;
+    for (QLabel* l : window_->statusBar()->findChildren<QLabel*>())
+        if (l->toolTip() == QStringLiteral("Document updates sent to the renderer per second")) rate = l;
+    QVERIFY(rate);
+    double highest = 0.0;
+    connect(window_->session(), &SessionController::updateRateChanged, this,
+            [&highest](double r) { highest = std::max(highest, r); });
+    const ObjectId blue = idOf(*window_, "blue ball");
+    const auto [x, y] = pixelOf(*window_->viewport()->frame(), blue);
+    Viewport* v = window_->viewport();
+    const QPoint start = v->widgetPointOf(x, y);
+    QTest::mousePress(v, Qt::LeftButton, {}, start);
+    for (int i = 1; i <= 60; ++i) {  // About 1.5 s of dragging: at least one rate tick sees it.
+        QTest::mouseMove(v, start + QPoint(i % 20, 0));
+        QTest::qWait(25);
+    }
+    QTest::mouseRelease(v, Qt::LeftButton, {}, start);
+    QVERIFY(highest > 0.0);
+    // Idle: the session stops passing and the label must still come down.
+    QTRY_COMPARE_WITH_TIMEOUT(rate->text(), QStringLiteral("0 upd/s"), 5000);
 }
 
 void DesignerTest::dragWithAxisLock_MovesAlongThatAxisOnly_AndEscapeCancels() {
