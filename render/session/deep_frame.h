@@ -4,6 +4,7 @@
 #include "integrator/whitted.h"
 #include "scene/document.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -106,6 +107,15 @@ struct DeepFrame {
     int tileOfBlock(std::size_t b) const {
         const int bx = int(b % std::size_t(blocksX())), by = int(b / std::size_t(blocksX()));
         return (by * kBlock / tileSize) * tilesX() + bx * kBlock / tileSize;
+    }
+    /// Calls f(i, tile) for every pixel index i of block b, row by row, with b's tile.
+    template <class F>
+    void forEachPixelOfBlock(std::size_t b, F&& f) const {
+        const int bx = int(b % std::size_t(blocksX())) * kBlock;
+        const int by = int(b / std::size_t(blocksX())) * kBlock;
+        const int tile = tileOfBlock(b);
+        for (int y = by; y < std::min(height, by + kBlock); ++y)
+            for (int x = bx; x < std::min(width, bx + kBlock); ++x) f(index(x, y), tile);
     }
     /// Sets pixel i, of tile `tile`, to state s and keeps the tile's counts.
     void setState(std::size_t i, int tile, uint8_t s) {

@@ -247,23 +247,16 @@ std::size_t RenderSession::markEditLocked(const SceneEdit& traced) {
     // edit's re-traced overlay is cleared, this edit's pixels go stale.
     if (lastTouchedBlocks_.size() != touchedBlocks_.size())
         lastTouchedBlocks_.assign(touchedBlocks_.size(), 1);
-    const int B = DeepFrame::kBlock;
     for (std::size_t b = 0; b < touchedBlocks_.size(); ++b) {
         if (!touchedBlocks_[b] && !lastTouchedBlocks_[b]) continue;
-        const int bx = int(b % std::size_t(frame_.blocksX())) * B;
-        const int by = int(b / std::size_t(frame_.blocksX())) * B;
-        const int tile = frame_.tileOfBlock(b);
-        for (int y = by; y < std::min(frame_.height, by + B); ++y) {
-            for (int x = bx; x < std::min(frame_.width, bx + B); ++x) {
-                const std::size_t i = frame_.index(x, y);
-                uint8_t f = uint8_t(frame_.flags[i] & ~kTracedLastUpdate);
-                if (dirtyMask_[i]) {
-                    frame_.setState(i, tile, kStale);
-                    f = uint8_t((f & ~kDeferredValid) | kTracedLastUpdate);
-                }
-                frame_.flags[i] = f;
+        frame_.forEachPixelOfBlock(b, [&](std::size_t i, int tile) {
+            uint8_t f = uint8_t(frame_.flags[i] & ~kTracedLastUpdate);
+            if (dirtyMask_[i]) {
+                frame_.setState(i, tile, kStale);
+                f = uint8_t((f & ~kDeferredValid) | kTracedLastUpdate);
             }
-        }
+            frame_.flags[i] = f;
+        });
     }
     lastTouchedBlocks_.swap(touchedBlocks_);
     return marked;
@@ -298,21 +291,14 @@ void RenderSession::markReleasedShadowsLocked() {
         SceneEdit edit;
         edit.regions.swap(deferredShadowRegions_);
         if (markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, &touchedBlocks_, MarkScope::ShadowsOnly) > 0) {
-            const int B = DeepFrame::kBlock;
             for (std::size_t b = 0; b < touchedBlocks_.size(); ++b) {
                 if (!touchedBlocks_[b]) continue;
-                const int bx = int(b % std::size_t(frame_.blocksX())) * B;
-                const int by = int(b / std::size_t(frame_.blocksX())) * B;
-                const int tile = frame_.tileOfBlock(b);
-                for (int y = by; y < std::min(frame_.height, by + B); ++y) {
-                    for (int x = bx; x < std::min(frame_.width, bx + B); ++x) {
-                        const std::size_t i = frame_.index(x, y);
-                        if (dirtyMask_[i] && frame_.state[i] >= kBase) {
-                            frame_.setState(i, tile, kStale);
-                            frame_.flags[i] = uint8_t(frame_.flags[i] & ~kDeferredValid);
-                        }
+                frame_.forEachPixelOfBlock(b, [&](std::size_t i, int tile) {
+                    if (dirtyMask_[i] && frame_.state[i] >= kBase) {
+                        frame_.setState(i, tile, kStale);
+                        frame_.flags[i] = uint8_t(frame_.flags[i] & ~kDeferredValid);
                     }
-                }
+                });
             }
         }
     }
