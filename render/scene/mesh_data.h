@@ -3,8 +3,10 @@
 
 #include "core/math.h"
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -19,12 +21,44 @@ struct MeshData {
     std::string sourcePath;          ///< The file it came from (absolute), for messages.
 
     std::size_t triangleCount() const { return indices.size() / 3; }
-    /// Object-space bounds of all vertices.
+    /// Object-space bounds of all vertices: worked out on the first call, then kept (the
+    /// designer asks on every mouse move, and a 1M-triangle mesh took milliseconds a time).
+    /// Fill the positions before the first call; a copy works its bounds out again.
     Aabb bounds() const {
-        Aabb b;
-        for (const Vec3& p : positions) b.expand(p);
-        return b;
+        return boundsCache_.get([this] {
+            Aabb b;
+            for (const Vec3& p : positions) b.expand(p);
+            return b;
+        });
     }
+
+private:
+    /// A box computed once by whichever thread asks first; copies start without it.
+    class BoundsCache {
+    public:
+        BoundsCache() = default;
+        BoundsCache(const BoundsCache&) {}
+        BoundsCache& operator=(const BoundsCache&) {
+            known_.store(false, std::memory_order_release);
+            return *this;
+        }
+        template <class Compute>
+        Aabb get(Compute compute) const {
+            if (known_.load(std::memory_order_acquire)) return box_;
+            std::lock_guard lock(mutex_);
+            if (!known_.load(std::memory_order_relaxed)) {
+                box_ = compute();
+                known_.store(true, std::memory_order_release);
+            }
+            return box_;
+        }
+
+    private:
+        mutable std::mutex mutex_;
+        mutable std::atomic<bool> known_{false};
+        mutable Aabb box_;
+    };
+    BoundsCache boundsCache_;
 };
 
 }  // namespace rs

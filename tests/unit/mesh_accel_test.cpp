@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <random>
+#include <thread>
+#include <vector>
 
 namespace rs {
 namespace {
@@ -130,6 +132,35 @@ TEST(MeshAccel, FlatOrWithoutNormals_UsesGeometricNormal) {
         ASSERT_TRUE(
             accel.intersect(Ray::make(Vec3(0.25f, 0.25f, -2), Vec3(0, 0, 3)), 0, tmax, hit));
         EXPECT_EQ(hit.n, Vec3(0, 0, 1));  // e1 x e2, not flipped toward the ray
+    }
+}
+
+// MeshData keeps its bounds after the first call; a copy (the way an edited mesh is made)
+// works out its own, and threads asking at once all get the same box.
+TEST(MeshData, Bounds_AreKeptAndACopyWorksOutItsOwn) {
+    auto mesh = oneTriangle();
+    EXPECT_EQ(mesh->bounds().min, Vec3(0, 0, 0));
+    EXPECT_EQ(mesh->bounds().max, Vec3(1, 1, 0));
+    MeshData moved = *mesh;
+    moved.positions[1] = Vec3(4, 0, -2);
+    EXPECT_EQ(moved.bounds().max, Vec3(4, 1, 0));
+    EXPECT_EQ(moved.bounds().min, Vec3(0, 0, -2));
+    EXPECT_EQ(mesh->bounds().max, Vec3(1, 1, 0));  // the original is untouched
+    MeshData assigned;
+    EXPECT_TRUE(assigned.bounds().empty());
+    assigned = moved;
+    EXPECT_EQ(assigned.bounds().max, Vec3(4, 1, 0));  // not the empty box it kept before
+
+    const auto grid = bumpyGrid(64, 3);
+    std::vector<Aabb> seen(4);
+    std::vector<std::thread> threads;
+    for (Aabb& box : seen) threads.emplace_back([&grid, &box] { box = grid->bounds(); });
+    for (std::thread& t : threads) t.join();
+    Aabb all;
+    for (const Vec3& p : grid->positions) all.expand(p);
+    for (const Aabb& box : seen) {
+        EXPECT_EQ(box.min, all.min);
+        EXPECT_EQ(box.max, all.max);
     }
 }
 

@@ -151,7 +151,9 @@ TEST(RayEngines, BatchAnswersEqualSingleRayAnswers) {
             const Ray ray = Ray::make(Vec3(ox[i], oy[i], oz[i]), Vec3(dx[i], dy[i], dz[i]));
             const bool found = scene.engine().closestHit(ray, tmax[i], h);
             ASSERT_EQ(slot[i], found ? h.slot : kNoSlot) << engineName(kind) << " ray " << i;
-            if (found) ASSERT_EQ(t[i], h.t);
+            if (found) {
+                ASSERT_EQ(t[i], h.t);
+            }
             ASSERT_EQ(occluded[i] != 0, scene.engine().anyHit(ray, tmax[i]));
         }
     }
