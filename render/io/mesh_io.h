@@ -27,7 +27,7 @@ struct MeshImportOptions {
     const std::atomic<bool>* cancel = nullptr;          ///< True stops the import.
 };
 
-/// 256 MiB + 16 bytes per byte of the file, at most the machine's physical memory.
+/// 512 MiB + 64 bytes per byte of the file, at most the machine's physical memory.
 std::uintmax_t defaultMeshImportMemory(std::uintmax_t fileBytes);
 /// 10 s + 1 s per 10 MiB of the file.
 std::chrono::milliseconds defaultMeshImportTime(std::uintmax_t fileBytes);

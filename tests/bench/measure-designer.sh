@@ -5,7 +5,10 @@
 #
 #   bash tests/bench/measure-designer.sh [--frames N] [--json] [--build DIR] [--display N]
 #                                        [--view automatic|opengl|software]
+#                                        [--scene FILE --object NAME]
 #
+# --scene and --object measure another scene (default: the reference room and its "blue
+# ball"), e.g. the 1M-triangle mesh of tests/bench/make-bench-scenes.py and its "mesh".
 # --display N runs Xvfb on :N (on a shared machine, the display you were given) instead of
 # letting it pick a free one. --view sets Preferences -> Display for the run (default
 # automatic, which on this software GL is the QPainter view; opengl measures the GL view).
@@ -42,6 +45,8 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 build=$root/build/release
 args=()
 display=
+scene=$root/scenes/reference-room.scene.json
+object="blue ball"
 while (($#)); do
     case $1 in
         --build) build=$2; shift 2 ;;
@@ -49,11 +54,13 @@ while (($#)); do
         --frames) args+=(--frames "$2"); shift 2 ;;
         --json) args+=(--json); shift ;;
         --view) args+=(--view "$2"); shift 2 ;;
-        *) echo "usage: $0 [--frames N] [--json] [--build DIR] [--display N] [--view KIND]" >&2; exit 2 ;;
+        --scene) scene=$2; shift 2 ;;
+        --object) object=$2; shift 2 ;;
+        *) echo "usage: $0 [--frames N] [--json] [--build DIR] [--display N] [--view KIND] [--scene FILE --object NAME]" >&2; exit 2 ;;
     esac
 done
 exe=$build/app/raystudio
-scene=$root/scenes/reference-room.scene.json
+[[ -f $scene ]] || { echo "scene $scene not found" >&2; exit 2; }
 [[ -x $exe ]] || { echo "$exe not built (cmake --build --preset release --target raystudio)" >&2; exit 2; }
 for tool in Xvfb openbox; do
     command -v $tool >/dev/null || { echo "$tool not found (apt-get install xvfb openbox)" >&2; exit 2; }
@@ -91,5 +98,5 @@ wm=$!
 sleep 1
 
 export QT_QPA_PLATFORM=xcb LIBGL_ALWAYS_SOFTWARE=1
-"$exe" --measure-drag "$scene" --object "blue ball" "${args[@]}"
+"$exe" --measure-drag "$scene" --object "$object" "${args[@]}"
 "$exe" --measure-orbit "$scene" "${args[@]}"
