@@ -79,25 +79,53 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
 
 constexpr int kPacket = 8;
 
+/// One packet of Embree's own SoA layout. The fields Embree reads but never writes (tnear,
+/// time, mask, id, flags) are set once when the packet is made, not for every eight rays.
 struct alignas(32) Packet {
     int valid[kPacket];
     RTCRayHit8 rh;
+
+    Packet() {
+        for (int k = 0; k < kPacket; ++k) {
+            rh.ray.tnear[k] = 0.0f;
+            rh.ray.time[k] = 0.0f;
+            rh.ray.mask[k] = 0xffffffffu;
+            rh.ray.id[k] = unsigned(k);
+            rh.ray.flags[k] = 0;
+        }
+    }
 };
 
-/// Fills lanes [0, n) of `p` from rays [first, first + n).
-void loadPacket(Packet& p, const RayBatch& rays, std::size_t first, int n) {
+/// Fills lanes [0, n) of `p` from rays [first, first + n): a full packet is eight contiguous
+/// floats of each of the batch's arrays, copied as they lie; a short one repeats its first
+/// ray in the lanes it leaves off. `bound` (may be null) gives a ray's far end instead of
+/// tmax where `slot` holds a hit (the planes' answer, which bounds the tree's walk).
+void loadPacket(Packet& p, const RayBatch& rays, std::size_t first, int n,
+                const HitBatch* bound = nullptr) {
+    auto& r = p.rh.ray;
+    if (n == kPacket) {
+        const std::size_t bytes = kPacket * sizeof(float);
+        std::memcpy(r.org_x, rays.ox + first, bytes), std::memcpy(r.org_y, rays.oy + first, bytes);
+        std::memcpy(r.org_z, rays.oz + first, bytes), std::memcpy(r.dir_x, rays.dx + first, bytes);
+        std::memcpy(r.dir_y, rays.dy + first, bytes), std::memcpy(r.dir_z, rays.dz + first, bytes);
+        std::memcpy(r.tfar, rays.tmax + first, bytes);
+        for (int k = 0; k < kPacket; ++k) p.valid[k] = -1;
+    } else {
+        for (int k = 0; k < kPacket; ++k) {
+            const bool on = k < n;
+            p.valid[k] = on ? -1 : 0;
+            const std::size_t i = first + std::size_t(on ? k : 0);
+            r.org_x[k] = rays.ox[i], r.org_y[k] = rays.oy[i], r.org_z[k] = rays.oz[i];
+            r.dir_x[k] = rays.dx[i], r.dir_y[k] = rays.dy[i], r.dir_z[k] = rays.dz[i];
+            r.tfar[k] = rays.tmax[i];
+        }
+    }
+    if (bound)
+        for (int k = 0; k < n; ++k) {
+            const std::size_t i = first + std::size_t(k);
+            if (bound->slot[i] != kNoSlot) r.tfar[k] = bound->t[i];
+        }
     for (int k = 0; k < kPacket; ++k) {
-        const bool on = k < n;
-        p.valid[k] = on ? -1 : 0;
-        const std::size_t i = first + std::size_t(on ? k : 0);
-        p.rh.ray.org_x[k] = rays.ox[i], p.rh.ray.org_y[k] = rays.oy[i], p.rh.ray.org_z[k] = rays.oz[i];
-        p.rh.ray.dir_x[k] = rays.dx[i], p.rh.ray.dir_y[k] = rays.dy[i], p.rh.ray.dir_z[k] = rays.dz[i];
-        p.rh.ray.tnear[k] = 0.0f;
-        p.rh.ray.tfar[k] = rays.tmax[i];
-        p.rh.ray.time[k] = 0.0f;
-        p.rh.ray.mask[k] = 0xffffffffu;
-        p.rh.ray.id[k] = unsigned(k);
-        p.rh.ray.flags[k] = 0;
         p.rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
         p.rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
     }
@@ -228,11 +256,7 @@ void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const 
     Packet p;
     for (std::size_t first = 0; first < rays.count; first += kPacket) {
         const int n = int(std::min<std::size_t>(kPacket, rays.count - first));
-        loadPacket(p, rays, first, n);
-        for (int k = 0; k < n; ++k) {
-            const std::size_t i = first + std::size_t(k);
-            if (hits.slot[i] != kNoSlot) p.rh.ray.tfar[k] = hits.t[i];
-        }
+        loadPacket(p, rays, first, n, &hits);
         rtcIntersect8(p.valid, scene_, &context, &p.rh);
         for (int k = 0; k < n; ++k) {
             const std::size_t i = first + std::size_t(k);
@@ -248,9 +272,11 @@ void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const 
                 // Embree picked the triangle; its distance and barycentrics come from the
                 // project's own triangle test in the object's frame, as the built-in engine
                 // computes them (Embree's own t drifts by ~1e-5 under scaled instances).
-                const Ray local = Ray::make(
-                    Vec3(prim.frame.objectFromWorld * glm::vec4(rays.ox[i], rays.oy[i], rays.oz[i], 1.0f)),
-                    prim.frame.dirToObject * Vec3(rays.dx[i], rays.dy[i], rays.dz[i]));
+                // The triangle test reads origin and direction only: no reciprocals made.
+                Ray local{};
+                local.origin = Vec3(prim.frame.objectFromWorld *
+                                    glm::vec4(rays.ox[i], rays.oy[i], rays.oz[i], 1.0f));
+                local.dir = prim.frame.dirToObject * Vec3(rays.dx[i], rays.dy[i], rays.dz[i]);
                 float t;
                 if (mesh.intersectTriangle(tri, local, t, b1, b2)) p.rh.ray.tfar[k] = t;
                 normal = glm::normalize(prim.frame.normalToWorld * mesh.normal(tri, b1, b2));
