@@ -178,7 +178,10 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     const int tile = t.tile;
     // Tiles that never got supersamples hold zero sums already: no need to clear them again.
     const bool clearSamples = tileSampled[std::size_t(tile)] != 0;
-    if (t.traced.size() == std::size_t(t.rect.area())) {
+    // Every pixel of the tile traced again (a full pass): the tile's state counts are known
+    // without reading the old states (a dependent read-modify-write per pixel otherwise).
+    const bool wholeTile = t.traced.size() == std::size_t(t.rect.area());
+    if (wholeTile) {
         segments.restart();
         if (t.blocks.size() == 0 && t.resolvedPixel.empty() && t.sampled.empty()) touched.buildWhole();
     }
@@ -222,14 +225,14 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
             idOut[j] = info[j].id;
             depthOut[j] = info[j].depth;
             normalOut[j] = info[j].normal;
-            --counts[oldState[j]];
+            if (!wholeTile) --counts[oldState[j]];
             const bool complete = recordOverflow && !recordOverflow[j];
             flagsOut[j] = uint8_t((info[j].touchedSpecular ? kTouchedSpecular : 0) | extra[j] |
                                   (complete ? kDeferredValid : 0) |
                                   (segmentOverflow && segmentOverflow[j] ? kTreeUnknown : 0));
             boundOut[j] = traced.hitBound(k0 + j);
         }
-        counts[t.tracedState] += uint32_t(n);
+        if (!wholeTile) counts[t.tracedState] += uint32_t(n);
         std::fill_n(state.begin() + to, count, t.tracedState);
         segments.replaceRun(i0, n, traced, k0);
         touched.addRun(int(x0), int(y), int(n));
@@ -240,6 +243,11 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
                                 pool + segmentStart[i], segmentCount[i]);
         }
         k0 += n;
+    }
+    if (wholeTile && traced.size() > 0) {
+        auto& counts = tileStates[std::size_t(tile)];
+        counts = {0, 0, 0, 0};
+        counts[t.tracedState] = uint32_t(traced.size());
     }
     if (traced.withRecords) {
         // Rebuild the tile's record pool: new records for traced pixels, old ones kept for
