@@ -45,8 +45,8 @@ struct TileResult;
 /// shared frame lock, each tile its own pixels; edits (the session's dirty marking) change
 /// only `state` and `flags`, under the exclusive lock. commit() keeps these invariants:
 /// - a result of another generation than the live one writes nothing;
-/// - `base` holds the centre sample of pixels at kBase or above, `sampleSum`/`sampleCount`
-///   the supersamples added so far (zero below kBase);
+/// - `base` holds the centre sample of pixels at kBase or above when the scene supersamples
+///   (only supersampling reads it), `sampleSum`/`sampleCount` the samples (zero below kBase);
 /// - a pixel's records are tileRecords[its tile][recordStart, +recordCount), valid only with
 ///   kDeferredValid; its segments are tileSegments[its tile][segmentStart, +segmentCount),
 ///   all of them unless kTreeUnknown;
@@ -59,7 +59,7 @@ struct DeepFrame {
     int height = 0;
     int tileSize = 32;
     std::vector<Color> color;       ///< What is shown (linear HDR).
-    std::vector<Color> base;        ///< Full-quality centre sample; adaptive decisions read it.
+    std::vector<Color> base;        ///< Centre sample when supersampling; adaptive decisions read it.
     std::vector<Color> sampleSum;   ///< Running sum of supersamples (progressive refinement).
     std::vector<uint16_t> sampleCount;
     std::vector<ObjectId> id;       ///< Object seen through the pixel centre.

@@ -37,6 +37,22 @@ public:
         fresh_ = true;
     }
     void add(const TreeSegment* first, std::size_t count) { pool_.insert(pool_.end(), first, first + count); }
+    /// Pixels [i, i + n) of one row get the segments of rays [k, k + n) of `list` (none when
+    /// the trace kept none) instead of their old ones: a run of traced pixels in one go.
+    void replaceRun(std::size_t i, std::size_t n, const RayList& list, std::size_t k) {
+        uint32_t removed = 0, added = 0;
+        for (std::size_t j = 0; j < n; ++j) {
+            if (!fresh_) removed += frame_.segmentCount[i + j];
+            const uint8_t count = list.withSegments ? list.segments.count[k + j] : 0;
+            frame_.segmentStart[i + j] = uint32_t(pool_.size());
+            frame_.segmentCount[i + j] = count;  // At most kSegmentsPerPixel: always indexable.
+            if (count == 0) continue;
+            const TreeSegment* first = list.segments.of(k + j, kSegmentsPerPixel);
+            pool_.insert(pool_.end(), first, first + count);
+            added += count;
+        }
+        live_ = live_ - removed + added;
+    }
     void end() {
         std::size_t count = pool_.size() - start_;
         if (count > 255) {  // Too many to index: forget them and always re-trace.
@@ -92,6 +108,13 @@ public:
     }
     void add(int x, int y) {
         marks_[blockOf(x, y)] = 1;
+        any_ = true;
+    }
+    /// Pixels [x, x + n) of row y (inside the tile).
+    void addRun(int x, int y, int n) {
+        const std::size_t row = std::size_t((y - r_.y0) / DeepFrame::kBlock) * std::size_t(perRow_);
+        for (int b = (x - r_.x0) / DeepFrame::kBlock; b <= (x + n - 1 - r_.x0) / DeepFrame::kBlock; ++b)
+            marks_[row + std::size_t(b)] = 1;
         any_ = true;
     }
     /// The commit rewrites every pixel of the tile (one camera ray each): the summaries are
@@ -155,44 +178,76 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     const int tile = t.tile;
     // Tiles that never got supersamples hold zero sums already: no need to clear them again.
     const bool clearSamples = tileSampled[std::size_t(tile)] != 0;
-    if (t.traced.size() == std::size_t(t.rect.area())) {
+    // Every pixel of the tile traced again (a full pass): the tile's state counts are known
+    // without reading the old states (a dependent read-modify-write per pixel otherwise).
+    const bool wholeTile = t.traced.size() == std::size_t(t.rect.area());
+    if (wholeTile) {
         segments.restart();
         if (t.blocks.size() == 0 && t.resolvedPixel.empty() && t.sampled.empty()) touched.buildWhole();
     }
 
-    // Camera rays at pixel centres: every buffer of the pixel.
+    // Camera rays at pixel centres: every buffer of the pixel. Passes gather a tile's pixels
+    // row by row, so the rays come in runs of neighbouring pixels (a whole tile's rows in a
+    // full pass): each run's colours, costs and bases are copied as blocks, and the rest of a
+    // pixel's bookkeeping works from the run's row instead of dividing its index.
     const RayList& traced = t.traced;
-    for (std::size_t k = 0; k < traced.size(); ++k) {
-        const std::size_t i = traced.pixel[k];
-        const PrimaryInfo& info = traced.info[k];
-        const bool complete = traced.withRecords && !traced.records.overflow[k];
-        color[i] = traced.color[k];
-        id[i] = info.id;
-        depth[i] = info.depth;
-        normal[i] = info.normal;
-        cost[i] = traced.rays[k];
-        setState(i, tile, t.tracedState);
-        flags[i] = uint8_t((info.touchedSpecular ? kTouchedSpecular : 0) | traced.extra[k] |
-                           (complete ? kDeferredValid : 0) |
-                           (traced.withSegments && traced.segments.overflow[k] ? kTreeUnknown : 0));
-        hitBound[i] = traced.hitBound(k);
-        if (t.tracedState >= kBase) base[i] = traced.color[k];
+    const bool writeBase = t.tracedState >= kBase && t.keepBase;
+    const bool whole = touched.whole();
+    for (std::size_t k0 = 0; k0 < traced.size();) {
+        const std::size_t i0 = traced.pixel[k0];
+        // Frames hold at most kMaxImagePixels (< 2^32): one 32-bit division, not two 64-bit.
+        const uint32_t y = uint32_t(i0) / uint32_t(width), x0 = uint32_t(i0) - y * uint32_t(width);
+        const std::size_t rowLeft = std::size_t(uint32_t(width) - x0);
+        std::size_t n = 1;  // The run ends with the row.
+        while (n < rowLeft && k0 + n < traced.size() && traced.pixel[k0 + n] == i0 + n) ++n;
+        const auto from = std::ptrdiff_t(k0), to = std::ptrdiff_t(i0), count = std::ptrdiff_t(n);
+        std::copy_n(traced.color.begin() + from, count, color.begin() + to);
+        std::copy_n(traced.rays.begin() + from, count, cost.begin() + to);
+        if (writeBase) std::copy_n(traced.color.begin() + from, count, base.begin() + to);
         if (clearSamples) {
-            sampleSum[i] = Color(0.0f);
-            sampleCount[i] = 0;
+            std::fill_n(sampleSum.begin() + to, count, Color(0.0f));
+            std::fill_n(sampleCount.begin() + to, count, uint16_t(0));
         }
-        segments.begin(i, false);
-        if (traced.withSegments)
-            segments.add(traced.segments.of(k, kSegmentsPerPixel), traced.segments.count[k]);
-        segments.end();
-        if (touched.whole()) {
-            const uint32_t y = uint32_t(i) / uint32_t(width), x = uint32_t(i) - y * uint32_t(width);
-            touched.add(int(x), int(y));
-            touched.include(int(x), int(y), hitBound[i], flags[i],
-                            tileSegments[std::size_t(tile)].data() + segmentStart[i], segmentCount[i]);
-        } else {
-            touched.add(i);
+        // Through local pointers: the byte-sized stores (flags) may alias anything, which would
+        // make the compiler reload every vector's data pointer per pixel.
+        auto& counts = tileStates[std::size_t(tile)];
+        const PrimaryInfo* info = traced.info.data() + k0;
+        const uint8_t* extra = traced.extra.data() + k0;
+        const uint8_t* recordOverflow = traced.withRecords ? traced.records.overflow.data() + k0 : nullptr;
+        const uint8_t* segmentOverflow = traced.withSegments ? traced.segments.overflow.data() + k0 : nullptr;
+        ObjectId* idOut = id.data() + i0;
+        float* depthOut = depth.data() + i0;
+        Vec3* normalOut = normal.data() + i0;
+        uint8_t* flagsOut = flags.data() + i0;
+        glm::vec4* boundOut = hitBound.data() + i0;
+        const uint8_t* oldState = state.data() + i0;
+        for (std::size_t j = 0; j < n; ++j) {
+            idOut[j] = info[j].id;
+            depthOut[j] = info[j].depth;
+            normalOut[j] = info[j].normal;
+            if (!wholeTile) --counts[oldState[j]];
+            const bool complete = recordOverflow && !recordOverflow[j];
+            flagsOut[j] = uint8_t((info[j].touchedSpecular ? kTouchedSpecular : 0) | extra[j] |
+                                  (complete ? kDeferredValid : 0) |
+                                  (segmentOverflow && segmentOverflow[j] ? kTreeUnknown : 0));
+            boundOut[j] = traced.hitBound(k0 + j);
         }
+        if (!wholeTile) counts[t.tracedState] += uint32_t(n);
+        std::fill_n(state.begin() + to, count, t.tracedState);
+        segments.replaceRun(i0, n, traced, k0);
+        touched.addRun(int(x0), int(y), int(n));
+        if (whole) {
+            const TreeSegment* pool = tileSegments[std::size_t(tile)].data();
+            for (std::size_t i = i0; i < i0 + n; ++i)
+                touched.include(int(x0 + uint32_t(i - i0)), int(y), hitBound[i], flags[i],
+                                pool + segmentStart[i], segmentCount[i]);
+        }
+        k0 += n;
+    }
+    if (wholeTile && traced.size() > 0) {
+        auto& counts = tileStates[std::size_t(tile)];
+        counts = {0, 0, 0, 0};
+        counts[t.tracedState] = uint32_t(traced.size());
     }
     if (traced.withRecords) {
         // Rebuild the tile's record pool: new records for traced pixels, old ones kept for
@@ -257,7 +312,8 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     // Deferred shadows resolved: the hit, its tree and its cost stay.
     for (std::size_t k = 0; k < t.resolvedPixel.size(); ++k) {
         const std::size_t i = t.resolvedPixel[k];
-        color[i] = base[i] = t.resolvedColor[k];
+        color[i] = t.resolvedColor[k];
+        if (t.keepBase) base[i] = color[i];
         setState(i, tile, t.resolvedState);
         flags[i] = t.resolvedFlags[k];
         if (clearSamples) {

@@ -181,6 +181,7 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
     result.generation = plan.generation;
     result.tile = job.tile;
     result.rect = job.rect;
+    result.keepBase = plan.spp > 1;
     const std::function<bool()> stale = [&] {
         return generation_.load(std::memory_order_relaxed) != plan.generation;
     };

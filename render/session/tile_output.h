@@ -57,6 +57,9 @@ struct TileResult {
     uint64_t generation = 0;  ///< The pass's generation: a stale result is never written.
     int tile = 0;
     PixelRect rect;
+    /// Whether `base` is written: only supersampling reads it, so a scene that does not
+    /// supersample leaves it alone (its colour is the centre sample already).
+    bool keepBase = true;
 
     /// Camera rays at pixel centres (Interactive at full resolution, Base), in `tracedState`.
     RayList traced;

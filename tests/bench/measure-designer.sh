@@ -39,6 +39,11 @@
 # the whole window and the whole-window swap. The README's "Designer, the display path" has
 # the breakdown. (First round, d79abcf -> 2b722c8, frame 1280x720: 4.1 -> 5.3 frames/s
 # dragging, 666 -> 401 ms median latency.)
+#
+# "full frame" is measured in the steady state since the fullframe branch: four interleaved
+# rounds of a camera nudge in the viewport (the session's passes of it) and renderImage of the
+# same view document, medians and their ratio; the first pass after opening the scene, which
+# was the number before (cold, the window still busy), is printed on its own line.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)

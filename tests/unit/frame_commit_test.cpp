@@ -1,0 +1,160 @@
+// DeepFrame::commit of traced camera rays, fed by hand-made tile results: every buffer of a
+// traced pixel, the segment pools, the state counts and the block summaries, for a whole
+// tile and for scattered pixels whose frame indices run on from one row into the next, and
+// `base` written only when the result keeps it.
+#include "session/deep_frame.h"
+#include "session/tile_output.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+namespace rs {
+namespace {
+
+// One tile wide, two tiles high: the last pixel of a row and the first of the next have
+// neighbouring frame indices, so a run of indices must not be taken for a run of columns.
+constexpr int kWidth = 32, kHeight = 64;
+
+/// What ray k of a result says, made up from the pixel and a salt.
+struct Made {
+    Color color;
+    PrimaryInfo info;
+    uint32_t rays;
+    int segments;  ///< 0..3 secondary segments (escaping when the pixel is odd).
+};
+
+Made made(std::size_t i, int salt) {
+    Made m;
+    const float v = float(i) * 0.001f + float(salt);
+    m.color = Color(v, v + 0.5f, v + 0.25f);
+    m.info.id = ObjectId((i + std::size_t(salt)) % 5 == 0 ? kNoObject : (i % 7) + 1);
+    m.info.depth = m.info.id == kNoObject ? kInfinity : 1.0f + v;
+    m.info.normal = Vec3(0.0f, 1.0f, 0.0f);
+    m.info.touchedSpecular = (i + std::size_t(salt)) % 3 == 0;
+    m.rays = uint32_t(i % 11 + std::size_t(salt));
+    m.segments = m.info.touchedSpecular ? int((i + std::size_t(salt)) % 4) : 0;
+    return m;
+}
+
+TreeSegment segmentOf(std::size_t i, int salt, int s) {
+    const float v = float(i) + 0.1f * float(s) + float(salt);
+    return {Vec3(v, 1.0f, -2.0f), Vec3(v, 2.0f + float(s), -3.0f), uint32_t(i % 2)};
+}
+
+/// A result of tile 0 tracing `pixels` (in this order) as pass `salt` says.
+TileResult resultFor(const std::vector<std::size_t>& pixels, int salt, uint64_t generation) {
+    TileResult t;
+    t.generation = generation;
+    t.tile = 0;
+    t.rect = {0, 0, 32, 32};
+    t.tracedState = kBase;
+    RayList& r = t.traced;
+    for (const std::size_t i : pixels) {
+        Ray ray;
+        ray.origin = Vec3(float(i % kWidth), float(i / kWidth), 0.0f);
+        ray.dir = Vec3(0.0f, 0.0f, -1.0f);
+        r.add(ray, uint32_t(i), i, kTracedLastUpdate);
+    }
+    const std::size_t n = r.size();
+    r.color.resize(n), r.info.resize(n), r.rays.resize(n);
+    r.withSegments = true;
+    const PerRayLists<TreeSegment> lists = r.segments.lists(n, kSegmentsPerPixel);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Made m = made(r.pixel[k], salt);
+        r.color[k] = m.color;
+        r.info[k] = m.info;
+        r.rays[k] = m.rays;
+        lists.clear(k);
+        for (int s = 0; s < m.segments; ++s) lists.append(uint32_t(k), segmentOf(r.pixel[k], salt, s));
+    }
+    return t;
+}
+
+/// Checks every buffer of pixel i against what pass `salt` made for it.
+void expectPixel(const DeepFrame& f, std::size_t i, int salt, bool base) {
+    const Made m = made(i, salt);
+    SCOPED_TRACE("pixel " + std::to_string(i) + " of pass " + std::to_string(salt));
+    EXPECT_EQ(f.color[i], m.color);
+    EXPECT_EQ(f.base[i], base ? m.color : Color(0.0f));
+    EXPECT_EQ(f.id[i], m.info.id);
+    EXPECT_EQ(f.depth[i], m.info.depth);
+    EXPECT_EQ(f.normal[i], m.info.normal);
+    EXPECT_EQ(f.cost[i], m.rays);
+    EXPECT_EQ(f.state[i], kBase);
+    EXPECT_EQ(f.flags[i], uint8_t(kTracedLastUpdate | (m.info.touchedSpecular ? kTouchedSpecular : 0)));
+    const glm::vec4 bound = m.info.id == kNoObject
+                                ? glm::vec4(0.0f, 0.0f, 0.0f, -1.0f)
+                                : glm::vec4(float(i % kWidth), float(i / kWidth), -m.info.depth, 0.0f);
+    EXPECT_EQ(f.hitBound[i], bound);
+    ASSERT_EQ(int(f.segmentCount[i]), m.segments);
+    const auto& pool = f.tileSegments[0];
+    for (int s = 0; s < m.segments; ++s) {
+        const TreeSegment want = segmentOf(i, salt, s);
+        const TreeSegment& got = pool[f.segmentStart[i] + uint32_t(s)];
+        EXPECT_EQ(got.a, want.a);
+        EXPECT_EQ(got.b, want.b);
+        EXPECT_EQ(got.escapes, want.escapes);
+    }
+}
+
+/// Live segments of tile 0 as its pixels reference them.
+uint32_t referencedSegments(const DeepFrame& f) {
+    uint32_t n = 0;
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) n += f.segmentCount[f.index(x, y)];
+    return n;
+}
+
+std::vector<std::size_t> wholeTile() {
+    std::vector<std::size_t> pixels;
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) pixels.push_back(std::size_t(y) * kWidth + std::size_t(x));
+    return pixels;
+}
+
+TEST(FrameCommit, WholeTile_WritesEveryBuffer_PoolsAndSummaries) {
+    DeepFrame f;
+    f.resize(kWidth, kHeight);
+    ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));
+    for (const std::size_t i : wholeTile()) expectPixel(f, i, 1, true);
+    EXPECT_EQ(f.tileStates[0], (std::array<uint32_t, 4>{0, 0, 1024, 0}));
+    EXPECT_EQ(f.tileStates[1], (std::array<uint32_t, 4>{1024, 0, 0, 0}));
+    EXPECT_EQ(f.tileLiveSegments[0], referencedSegments(f));
+    EXPECT_TRUE(f.summariesMatchPixels());
+    // A result of another generation writes nothing.
+    EXPECT_FALSE(f.commit(resultFor(wholeTile(), 2, 6), 7));
+    for (const std::size_t i : wholeTile()) expectPixel(f, i, 1, true);
+}
+
+TEST(FrameCommit, ScatteredPixels_RunsEndWithTheirRow_OthersKept) {
+    DeepFrame f;
+    f.resize(kWidth, kHeight);
+    ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));
+    // Indices 124..131 run on from row 3 (x 28..31) into row 4 (x 0..3): different blocks.
+    std::vector<std::size_t> scattered;
+    for (std::size_t i = 124; i < 132; ++i) scattered.push_back(i);
+    for (std::size_t i = 500; i < 517; ++i) scattered.push_back(i);
+    scattered.push_back(1023);
+    ASSERT_TRUE(f.commit(resultFor(scattered, 2, 7), 7));
+    const std::set<std::size_t> again(scattered.begin(), scattered.end());
+    for (const std::size_t i : wholeTile()) expectPixel(f, i, again.count(i) ? 2 : 1, true);
+    EXPECT_EQ(f.tileStates[0], (std::array<uint32_t, 4>{0, 0, 1024, 0}));
+    EXPECT_EQ(f.tileLiveSegments[0], referencedSegments(f));
+    EXPECT_TRUE(f.summariesMatchPixels());
+}
+
+TEST(FrameCommit, BaseWrittenOnlyWhenTheResultKeepsIt) {
+    DeepFrame f;
+    f.resize(kWidth, kHeight);
+    TileResult t = resultFor(wholeTile(), 1, 3);
+    t.keepBase = false;  // A scene without supersampling: nothing reads base.
+    ASSERT_TRUE(f.commit(t, 3));
+    for (const std::size_t i : wholeTile()) expectPixel(f, i, 1, false);
+    t = resultFor(wholeTile(), 1, 3);
+    ASSERT_TRUE(f.commit(t, 3));
+    for (const std::size_t i : wholeTile()) expectPixel(f, i, 1, true);
+}
+
+}  // namespace
+}  // namespace rs
