@@ -110,6 +110,96 @@ TEST(LightSamplerLanes, FourAtATimeListsTheBitsOfOneAtATime) {
     EXPECT_GT(unlisted, 1000u);
 }
 
+/// Random Lambert + Phong terms: some without a highlight, some with a cutoff.
+SurfaceTerms<float> randomSurface(std::mt19937& rng) {
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    CompiledMaterial m{};
+    m.color = Color(u(rng), u(rng), u(rng));
+    m.diffuse = u(rng);
+    m.specular = rng() % 3 == 0 ? 0.0f : u(rng);
+    m.shininess = 1.0f + 200.0f * u(rng);
+    m.specularCutoff = rng() % 2 == 0 ? 0.0f : 0.5f * u(rng);
+    return surfaceTerms(m);
+}
+
+TEST(LightSamplerLanes, CentreLightsOfFourPointsHaveTheBitsOfOnePointAtATime) {
+    // The level batches' path (sampleCentres + addCentreLight, four points a lane group)
+    // against the one-point path (sampleLight + spanShare) on random points, normals, viewers,
+    // materials and shadow flags; a lane taken from the wrong point or light fails here.
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<float> u(-3.0f, 3.0f);
+    std::size_t compared = 0, listedCount = 0, blockedCount = 0, highlights = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const SceneDocument doc = lightsScene(rng, 1 + int(rng() % 16));
+        const CompiledScene scene(doc, nullptr, EngineKind::Builtin);
+        const LightSampler sampler(scene);
+        const std::size_t n = 1 + rng() % 61;  // whole lane groups and partial ones
+        ShadingPoints points;
+        points.resize(n);
+        SurfaceArrays surface;
+        surface.resize(n);
+        std::vector<SurfaceTerms<float>> terms;
+        for (std::size_t j = 0; j < n; ++j) {
+            Vec3 p(u(rng), u(rng), u(rng));
+            if (j % 17 == 5) p = scene.lights()[0].position;  // at the light: not listed
+            const Vec3 normal = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0.0f, 1e-3f, 0.0f));
+            const Vec3 view = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f, 0.0f, 0.0f));
+            points.set(j, p, normal, view);
+            terms.push_back(randomSurface(rng));
+            surface.set(j, terms.back());
+        }
+        std::vector<uint8_t> blocked(points.px.size());
+        for (std::size_t j = 0; j < n; ++j) blocked[j] = rng() % 3 == 0;
+        // Every light, each sampled at its centre (area false), lanes from a group boundary.
+        for (const bool withShadows : {true, false}) {
+            LightSums sums;
+            sums.zero(n);
+            std::vector<Color> expected(n, Color(0.0f));
+            for (std::size_t li = 0; li < scene.lights().size(); ++li) {
+                ASSERT_TRUE(sampler.centreOnly(li, false));
+                CentreSamples centres;
+                sampler.sampleCentres(li, points, 0, n, centres);
+                addCentreLight(scene.lights()[li], points, surface, centres,
+                               withShadows ? blocked.data() : nullptr, 0, n, sums);
+                for (std::size_t j = 0; j < n; ++j) {
+                    const Vec3 p(points.px[j], points.py[j], points.pz[j]);
+                    const Vec3 normal(points.nx[j], points.ny[j], points.nz[j]);
+                    const Vec3 view(points.vx[j], points.vy[j], points.vz[j]);
+                    std::vector<LightSample> samples;
+                    std::vector<LightSpan> spans;
+                    sampler.sampleLight(li, p, normal, 0u, false, samples, spans);
+                    ASSERT_EQ(centres.listed[j], spans.empty() ? 0 : 1) << "point " << j;
+                    if (spans.empty()) continue;
+                    ASSERT_EQ(bitsOf(centres.dx[j]), bitsOf(samples[0].dir.x)) << "point " << j;
+                    ASSERT_EQ(bitsOf(centres.dy[j]), bitsOf(samples[0].dir.y));
+                    ASSERT_EQ(bitsOf(centres.dz[j]), bitsOf(samples[0].dir.z));
+                    ASSERT_EQ(bitsOf(centres.dist[j]), bitsOf(samples[0].dist));
+                    ASSERT_EQ(bitsOf(centres.nl[j]), bitsOf(samples[0].nl));
+                    const uint8_t occluded = blocked[j];
+                    const Color share = spanShare(scene, terms[j], normal, view, spans[0],
+                                                  samples.data(), withShadows ? &occluded : nullptr);
+                    if (share.x > terms[j].r * samples[0].nl * scene.lights()[li].power.x * 1.0001f)
+                        ++highlights;
+                    expected[j] += share;
+                    ++listedCount;
+                    blockedCount += withShadows && occluded;
+                }
+            }
+            for (std::size_t j = 0; j < n; ++j) {
+                ASSERT_EQ(bitsOf(sums.r[j]), bitsOf(expected[j].x)) << "point " << j << " of " << n;
+                ASSERT_EQ(bitsOf(sums.g[j]), bitsOf(expected[j].y)) << "point " << j;
+                ASSERT_EQ(bitsOf(sums.b[j]), bitsOf(expected[j].z)) << "point " << j;
+                ++compared;
+            }
+        }
+    }
+    // Points were lit, shadowed and highlighted, not only dark.
+    EXPECT_GT(compared, 1000u);
+    EXPECT_GT(listedCount, 1000u);
+    EXPECT_GT(blockedCount, 200u);
+    EXPECT_GT(highlights, 50u);
+}
+
 TEST(LightSamplerLanes, SphereLightSamplesLieOnTheLightsDisk) {
     // The lanes are not merely equal to the single samples but right: every listed sample
     // points at a point within the light's radius of its centre.
