@@ -1,6 +1,7 @@
 // Light sampling four samples at a time gives the bits of one at a time: the disk strata and
 // the sampler's lists, on random shading points, seeds and sphere lights.
 #include "integrator/light_sampling.h"
+#include "integrator/trace_kernel.h"
 #include "integrator/sampling.h"
 #include "snapshot/compiled_scene.h"
 
@@ -219,6 +220,64 @@ TEST(LightSamplerLanes, SphereLightSamplesLieOnTheLightsDisk) {
             const Vec3 q = p + samples[i].dir * samples[i].dist;
             EXPECT_LE(glm::length(q - light.position), light.radius * 1.001f + 1e-5f);
             EXPECT_GT(samples[i].nl, 0.0f);
+        }
+    }
+}
+
+TEST(TraceKernelLanes, ABatchOfCameraRaysHasTheBitsOfEachRayAlone) {
+    // The kernel shades a level's points four at a time; a camera ray traced alone fills one
+    // lane of one group. Every pixel of a batch must have the bits of its ray alone, for
+    // every shadow mode and the policies' diffuse mirrors and glass, with two point lights and
+    // a sphere light (lights in scene order, some sampled per point, some per lane group).
+    SceneDocument doc = test::smallRoom(24, 18);
+    doc.render.shadowSamples = 4;
+    test::addPointLight(doc, "fill", Vec3(-3, 1, -1));
+    Light sphere;
+    sphere.name = "sphere";
+    sphere.type = LightType::Sphere;
+    sphere.radius = 0.4f;
+    sphere.position = Vec3(2, 2.5f, -4);
+    doc.addLight(sphere);
+    for (EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
+        const CompiledScene scene(doc, nullptr, engine);
+        const CameraModel& camera = scene.camera();
+        std::vector<Vec3> origin, dir;
+        std::vector<uint32_t> seed;
+        for (int y = 0; y < doc.render.height; ++y)
+            for (int x = 0; x < doc.render.width; ++x) {
+                const Ray r = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
+                origin.push_back(r.origin), dir.push_back(r.dir);
+                seed.push_back(hash32(uint32_t(y * doc.render.width + x)));
+            }
+        const std::size_t n = origin.size();
+        std::vector<TraceOptions> optionSets(5, TraceOptions::fromSettings(doc.render));
+        optionSets[1].shadows = ShadowQuality::HardOnly;
+        optionSets[2].shadows = ShadowQuality::Off;
+        optionSets[3].shadows = ShadowQuality::Deferred;
+        optionSets[4].reflectionAsDiffuse = optionSets[4].refractionAsDiffuse = true;
+        for (std::size_t o = 0; o < optionSets.size(); ++o) {
+            const TraceKernel kernel(scene, optionSets[o]);
+            std::vector<Color> batch(n), alone(n);
+            std::vector<uint32_t> batchRays(n), aloneRays(n);
+            TraceCounters counters;
+            TraceOutput out;
+            out.color = batch.data();
+            out.rays = batchRays.data();
+            ASSERT_TRUE(kernel.trace(CameraBatch{origin.data(), dir.data(), seed.data(), n, true},
+                                     out, counters));
+            std::size_t lit = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                TraceOutput one;
+                one.color = &alone[i];
+                one.rays = &aloneRays[i];
+                kernel.trace(CameraBatch{&origin[i], &dir[i], &seed[i], 1, true}, one, counters);
+                ASSERT_EQ(bitsOf(batch[i].x), bitsOf(alone[i].x)) << "pixel " << i << " options " << o;
+                ASSERT_EQ(bitsOf(batch[i].y), bitsOf(alone[i].y)) << "pixel " << i << " options " << o;
+                ASSERT_EQ(bitsOf(batch[i].z), bitsOf(alone[i].z)) << "pixel " << i << " options " << o;
+                ASSERT_EQ(batchRays[i], aloneRays[i]) << "pixel " << i << " options " << o;
+                lit += batch[i].x > 0.2f;
+            }
+            EXPECT_GT(lit, n / 10) << "options " << o;  // not a dark image
         }
     }
 }
