@@ -16,6 +16,9 @@ using FloatLanes = float __attribute__((vector_size(16)));
 using UintLanes = uint32_t __attribute__((vector_size(16)));
 using MaskLanes = int32_t __attribute__((vector_size(16)));  ///< A comparison's result.
 
+/// Every lane v.
+inline FloatLanes splat(float v) { return FloatLanes{v, v, v, v}; }
+
 inline float toFloat(uint32_t v) { return float(v); }
 inline FloatLanes toFloat(UintLanes v) { return __builtin_convertvector(v, FloatLanes); }
 
@@ -25,6 +28,12 @@ inline FloatLanes absLanes(FloatLanes v) {
     return reinterpret_cast<FloatLanes>(reinterpret_cast<UintLanes>(v) & 0x7fffffffu);
 }
 
+/// Whether the mask holds anywhere (the one mask, or any lane).
+inline bool anyLane(bool m) { return m; }
+inline bool anyLane(MaskLanes m) {
+    return (m[0] | m[1] | m[2] | m[3]) != 0;
+}
+
 inline float select(bool m, float a, float b) { return m ? a : b; }
 inline FloatLanes select(MaskLanes m, FloatLanes a, FloatLanes b) { return m ? a : b; }
 
@@ -32,6 +41,15 @@ inline float sqrtLanes(float v) { return std::sqrt(v); }
 inline FloatLanes sqrtLanes(FloatLanes v) {
     for (int k = 0; k < kLaneWidth; ++k) v[k] = std::sqrt(v[k]);
     return v;
+}
+
+/// m ? s * v^e : 0, lane by lane through the scalar std::pow, which runs only where m holds.
+inline float scaledPowWhere(bool m, float s, float v, float e) { return m ? s * std::pow(v, e) : 0.0f; }
+inline FloatLanes scaledPowWhere(MaskLanes m, FloatLanes s, FloatLanes v, FloatLanes e) {
+    FloatLanes r{};
+    for (int k = 0; k < kLaneWidth; ++k)
+        if (m[k]) r[k] = scaledPowWhere(true, s[k], v[k], e[k]);
+    return r;
 }
 
 /// sin and cos, lane by lane through the scalar library functions.

@@ -5,34 +5,37 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace rs {
 
 namespace {
 
-/// Samples toward light points q (one, or a lane of them) from p with unit normal n: unit
-/// direction, distance and n . dir, as glm's length, divide and dot have them.
+/// Samples toward light points q from points p with unit normals n (one of each, or a lane of
+/// them; q or p may be one for all lanes): unit direction, distance and n . dir, as glm's
+/// length, divide and dot have them.
 template <class F>
 struct TowardLight {
     F x, y, z, dist, nl;
 
-    TowardLight(F qx, F qy, F qz, const Vec3& p, const Vec3& n) {
-        x = qx - p.x, y = qy - p.y, z = qz - p.z;
+    template <class Q, class P>
+    TowardLight(Q qx, Q qy, Q qz, P px, P py, P pz, P nx, P ny, P nz) {
+        x = qx - px, y = qy - py, z = qz - pz;
         dist = sqrtLanes((x * x + y * y) + z * z);
         x = x / dist, y = y / dist, z = z / dist;
-        nl = (n.x * x + n.y * y) + n.z * z;
+        nl = (nx * x + ny * y) + nz * z;
     }
     /// A sample is listed unless its point is p itself or lies below the horizon: a light
     /// there adds neither term (so no highlight leaks through from behind), and needs no
     /// shadow ray.
-    static bool listed(float dist, float nl) { return dist > 0.0f && nl > 0.0f; }
+    auto listed() const { return (dist > 0.0f) & (nl > 0.0f); }
 };
 
 /// Appends the sample toward q unless it is not listed; true when it was appended.
 inline bool appendSample(const Vec3& q, const Vec3& p, const Vec3& n,
                          std::vector<LightSample>& samples) {
-    const TowardLight<float> t(q.x, q.y, q.z, p, n);
-    if (!TowardLight<float>::listed(t.dist, t.nl)) return false;
+    const TowardLight<float> t(q.x, q.y, q.z, p.x, p.y, p.z, n.x, n.y, n.z);
+    if (!t.listed()) return false;
     samples.push_back({Vec3(t.x, t.y, t.z), t.dist, t.nl});
     return true;
 }
@@ -40,17 +43,91 @@ inline bool appendSample(const Vec3& q, const Vec3& p, const Vec3& n,
 /// Appends the listed ones of a lane of samples toward q, in lane order; returns how many.
 inline uint32_t appendSamples(FloatLanes qx, FloatLanes qy, FloatLanes qz, const Vec3& p,
                               const Vec3& n, std::vector<LightSample>& samples) {
-    const TowardLight<FloatLanes> t(qx, qy, qz, p, n);
-    uint32_t listed = 0;
+    const TowardLight<FloatLanes> t(qx, qy, qz, p.x, p.y, p.z, n.x, n.y, n.z);
+    const MaskLanes listed = t.listed();
+    uint32_t count = 0;
     for (int k = 0; k < kLaneWidth; ++k) {
-        if (!TowardLight<float>::listed(t.dist[k], t.nl[k])) continue;
+        if (!listed[k]) continue;
         samples.push_back({Vec3(t.x[k], t.y[k], t.z[k]), t.dist[k], t.nl[k]});
-        ++listed;
+        ++count;
     }
-    return listed;
+    return count;
+}
+
+/// One light sample's Lambert + Phong term for `s` at unit normal n, seen from direction v,
+/// added to (r, g, b) where `visible` holds: diffuse colour times n . l plus the highlight
+/// specular * (R.V)^shininess, R = 2 (n . l) n - l, skipped below the cutoff.
+template <class F, class M>
+inline void addSampleTerm(const SurfaceTerms<F>& s, F nx, F ny, F nz, F vx, F vy, F vz, F dx,
+                          F dy, F dz, F nl, M visible, F& r, F& g, F& b) {
+    F spec{};
+    const auto shiny = s.specular > 0.0f;
+    if (anyLane(shiny)) {  // most surfaces of a room have no highlight
+        const F twoNl = 2.0f * nl;
+        const F rv = ((twoNl * nx - dx) * vx + (twoNl * ny - dy) * vy) + (twoNl * nz - dz) * vz;
+        spec = scaledPowWhere(shiny & (rv > s.cutoff) & (rv > 0.0f), s.specular, rv, s.shininess);
+    }
+    r += select(visible, s.r * nl + spec, F{});
+    g += select(visible, s.g * nl + spec, F{});
+    b += select(visible, s.b * nl + spec, F{});
+}
+
+/// A light's share of the sum: the sum of its samples' terms times its power, over the
+/// samples drawn.
+template <class F>
+inline F share(F termSum, float power, float drawn) {
+    return termSum * power / drawn;
+}
+
+template <class V>
+inline V load(const std::vector<float>& v, std::size_t i) {
+    V out;
+    std::memcpy(&out, v.data() + i, sizeof out);
+    return out;
+}
+inline void store(std::vector<float>& v, std::size_t i, FloatLanes x) {
+    std::memcpy(v.data() + i, &x, sizeof x);
+}
+/// Lanes of a byte flag per point: all ones where the byte is not 0.
+inline MaskLanes flags(const uint8_t* f, std::size_t i) {
+    MaskLanes m;
+    for (int k = 0; k < kLaneWidth; ++k) m[k] = f[i + std::size_t(k)] ? -1 : 0;
+    return m;
+}
+
+/// Rounded up to whole lanes, plus one lane of slack.
+std::size_t padded(std::size_t n) {
+    return (n + 2 * std::size_t(kLaneWidth) - 1) / std::size_t(kLaneWidth) * std::size_t(kLaneWidth);
 }
 
 }  // namespace
+
+void ShadingPoints::resize(std::size_t n) {
+    const std::size_t p = padded(n);
+    for (auto* v : {&px, &py, &pz, &nx, &ny, &nz, &vx, &vy, &vz})
+        if (v->size() < p) v->resize(p);
+    count = n;
+}
+
+void SurfaceArrays::resize(std::size_t n) {
+    const std::size_t p = padded(n);
+    for (auto* v : {&r, &g, &b, &specular, &cutoff, &shininess})
+        if (v->size() < p) v->resize(p);
+}
+
+void LightSums::zero(std::size_t n) {
+    const std::size_t p = padded(n);
+    for (auto* v : {&r, &g, &b}) {
+        if (v->size() < p) v->resize(p);
+        std::fill(v->begin(), v->begin() + std::ptrdiff_t(p), 0.0f);
+    }
+}
+
+SurfaceTerms<float> surfaceTerms(const CompiledMaterial& m) {
+    const Color diffuseColor = m.diffuse * m.color;
+    return {diffuseColor.x, diffuseColor.y, diffuseColor.z, m.specular, m.specularCutoff,
+            m.shininess};
+}
 
 LightSampler::LightSampler(const CompiledScene& scene, Lanes lanes)
     : scene_(scene),
@@ -61,62 +138,111 @@ LightSampler::LightSampler(const CompiledScene& scene, Lanes lanes)
 
 void LightSampler::sample(const Vec3& p, const Vec3& n, uint32_t seed, bool area,
                           std::vector<LightSample>& samples, std::vector<LightSpan>& spans) const {
+    for (std::size_t li = 0; li < scene_.lights().size(); ++li)
+        sampleLight(li, p, n, seed, area, samples, spans);
+}
+
+void LightSampler::sampleLight(std::size_t li, const Vec3& p, const Vec3& n, uint32_t seed,
+                               bool area, std::vector<LightSample>& samples,
+                               std::vector<LightSpan>& spans) const {
     const int shadowSamples = shadowSamples_, laned = laned_;
-    const auto& lights = scene_.lights();
-    for (std::size_t li = 0; li < lights.size(); ++li) {
-        const CompiledLight& light = lights[li];
-        LightSpan span{uint32_t(li), uint32_t(samples.size()), 0, 1};
-        if (!(area && light.radius > 0.0f && shadowSamples > 0)) {
-            // A point light's samples all coincide, so one stands for all of them.
-            span.listed = appendSample(light.position, p, n, samples) ? 1 : 0;
-        } else {
-            const Vec3 w = glm::normalize(light.position - p);
-            const Vec3 axisA = glm::normalize(std::abs(w.x) > 0.9f ? glm::cross(w, Vec3(0, 1, 0))
-                                                                   : glm::cross(w, Vec3(1, 0, 0)));
-            const Vec3 axisB = glm::cross(w, axisA);
-            const uint32_t lightSeed = hashCombine(seed, uint32_t(li) + 17u);
-            const Vec3& c = light.position;
-            const float r = light.radius;
-            span.drawn = uint32_t(shadowSamples);
-            // The disk point q = c + r (d.x axisA + d.y axisB), as glm evaluates it.
-            int s = 0;
-            for (; s + kLaneWidth <= laned; s += kLaneWidth) {
-                FloatLanes dx, dy;
-                strata_.sampleLanes(s, lightSeed, dx, dy);
-                span.listed += appendSamples(c.x + r * (dx * axisA.x + dy * axisB.x),
-                                             c.y + r * (dx * axisA.y + dy * axisB.y),
-                                             c.z + r * (dx * axisA.z + dy * axisB.z), p, n, samples);
-            }
-            for (; s < shadowSamples; ++s) {
-                const Vec3 d = strata_.sample(s, lightSeed);
-                if (appendSample(c + r * (d.x * axisA + d.y * axisB), p, n, samples)) ++span.listed;
-            }
+    const CompiledLight& light = scene_.lights()[li];
+    LightSpan span{uint32_t(li), uint32_t(samples.size()), 0, 1};
+    if (centreOnly(li, area)) {
+        // A point light's samples all coincide, so one stands for all of them.
+        span.listed = appendSample(light.position, p, n, samples) ? 1 : 0;
+    } else {
+        const Vec3 w = glm::normalize(light.position - p);
+        const Vec3 axisA = glm::normalize(std::abs(w.x) > 0.9f ? glm::cross(w, Vec3(0, 1, 0))
+                                                               : glm::cross(w, Vec3(1, 0, 0)));
+        const Vec3 axisB = glm::cross(w, axisA);
+        const uint32_t lightSeed = hashCombine(seed, uint32_t(li) + 17u);
+        const Vec3& c = light.position;
+        const float r = light.radius;
+        span.drawn = uint32_t(shadowSamples);
+        // The disk point q = c + r (d.x axisA + d.y axisB), as glm evaluates it.
+        int s = 0;
+        for (; s + kLaneWidth <= laned; s += kLaneWidth) {
+            FloatLanes dx, dy;
+            strata_.sampleLanes(s, lightSeed, dx, dy);
+            span.listed += appendSamples(c.x + r * (dx * axisA.x + dy * axisB.x),
+                                         c.y + r * (dx * axisA.y + dy * axisB.y),
+                                         c.z + r * (dx * axisA.z + dy * axisB.z), p, n, samples);
         }
-        if (span.listed) spans.push_back(span);
+        for (; s < shadowSamples; ++s) {
+            const Vec3 d = strata_.sample(s, lightSeed);
+            if (appendSample(c + r * (d.x * axisA + d.y * axisB), p, n, samples)) ++span.listed;
+        }
     }
+    if (span.listed) spans.push_back(span);
+}
+
+void LightSampler::sampleCentres(std::size_t li, const ShadingPoints& pts, std::size_t first,
+                                 std::size_t end, CentreSamples& out) const {
+    const Vec3& c = scene_.lights()[li].position;
+    const FloatLanes qx = splat(c.x), qy = splat(c.y), qz = splat(c.z);
+    const std::size_t p = padded(pts.count);
+    for (auto* v : {&out.dx, &out.dy, &out.dz, &out.dist, &out.nl})
+        if (v->size() < p) v->resize(p);
+    if (out.listed.size() < p) out.listed.resize(p);
+    for (std::size_t i = first; i < end; i += kLaneWidth) {
+        using L = FloatLanes;
+        const TowardLight<L> t(qx, qy, qz, load<L>(pts.px, i), load<L>(pts.py, i),
+                               load<L>(pts.pz, i), load<L>(pts.nx, i), load<L>(pts.ny, i),
+                               load<L>(pts.nz, i));
+        store(out.dx, i, t.x), store(out.dy, i, t.y), store(out.dz, i, t.z);
+        store(out.dist, i, t.dist), store(out.nl, i, t.nl);
+        const MaskLanes listed = t.listed();
+        for (int k = 0; k < kLaneWidth; ++k) out.listed[i + std::size_t(k)] = listed[k] ? 1 : 0;
+    }
+}
+
+Color spanShare(const CompiledScene& scene, const SurfaceTerms<float>& surface, const Vec3& n,
+                const Vec3& toViewer, const LightSpan& span, const LightSample* samples,
+                const uint8_t* occluded) {
+    float r = 0.0f, g = 0.0f, b = 0.0f;
+    for (uint32_t i = span.first; i < span.first + span.listed; ++i) {
+        if (occluded && occluded[i]) continue;
+        const LightSample& s = samples[i];
+        addSampleTerm(surface, n.x, n.y, n.z, toViewer.x, toViewer.y, toViewer.z, s.dir.x,
+                      s.dir.y, s.dir.z, s.nl, true, r, g, b);
+    }
+    const Color& power = scene.lights()[span.light].power;
+    const float drawn = float(span.drawn);
+    return Color(share(r, power.x, drawn), share(g, power.y, drawn), share(b, power.z, drawn));
 }
 
 Color shadeLights(const CompiledScene& scene, const CompiledMaterial& m, const Vec3& n,
                   const Vec3& toViewer, const LightSpan* spans, std::size_t spanCount,
                   const LightSample* samples, const uint8_t* occluded) {
-    const Color diffuseColor = m.diffuse * m.color;
+    const SurfaceTerms<float> surface = surfaceTerms(m);
     Color sum(0.0f);
-    for (std::size_t k = 0; k < spanCount; ++k) {
-        const LightSpan& span = spans[k];
-        Color lightSum(0.0f);
-        for (uint32_t i = span.first; i < span.first + span.listed; ++i) {
-            if (occluded && occluded[i]) continue;
-            const LightSample& s = samples[i];
-            float spec = 0.0f;
-            if (m.specular > 0.0f) {
-                const float rv = glm::dot(2.0f * s.nl * n - s.dir, toViewer);
-                if (rv > m.specularCutoff && rv > 0.0f) spec = m.specular * std::pow(rv, m.shininess);
-            }
-            lightSum += diffuseColor * s.nl + Color(spec);
-        }
-        sum += lightSum * scene.lights()[span.light].power / float(span.drawn);
-    }
+    for (std::size_t k = 0; k < spanCount; ++k)
+        sum += spanShare(scene, surface, n, toViewer, spans[k], samples, occluded);
     return sum;
+}
+
+void addCentreLight(const CompiledLight& light, const ShadingPoints& pts,
+                    const SurfaceArrays& surface, const CentreSamples& centres,
+                    const uint8_t* blocked, std::size_t first, std::size_t end, LightSums& sums) {
+    using L = FloatLanes;
+    for (std::size_t i = first; i < end; i += kLaneWidth) {
+        const SurfaceTerms<L> s{load<L>(surface.r, i),        load<L>(surface.g, i),
+                                load<L>(surface.b, i),        load<L>(surface.specular, i),
+                                load<L>(surface.cutoff, i),   load<L>(surface.shininess, i)};
+        const MaskLanes listed = flags(centres.listed.data(), i);
+        const MaskLanes visible = blocked ? listed & ~flags(blocked, i) : listed;
+        L r{}, g{}, b{};
+        addSampleTerm(s, load<L>(pts.nx, i), load<L>(pts.ny, i), load<L>(pts.nz, i),
+                      load<L>(pts.vx, i), load<L>(pts.vy, i), load<L>(pts.vz, i),
+                      load<L>(centres.dx, i), load<L>(centres.dy, i), load<L>(centres.dz, i),
+                      load<L>(centres.nl, i), visible, r, g, b);
+        // A light with no listed sample has no span: nothing is added (spanShare's callers).
+        const L sr = load<L>(sums.r, i), sg = load<L>(sums.g, i), sb = load<L>(sums.b, i);
+        store(sums.r, i, select(listed, sr + share(r, light.power.x, 1.0f), sr));
+        store(sums.g, i, select(listed, sg + share(g, light.power.y, 1.0f), sg));
+        store(sums.b, i, select(listed, sb + share(b, light.power.z, 1.0f), sb));
+    }
 }
 
 }  // namespace rs

@@ -28,6 +28,55 @@ struct LightSpan {
     uint32_t drawn;
 };
 
+/// Shading points as structure of arrays, padded to whole lanes (so lane loops may read the
+/// last group whole): position, unit normal facing the viewer, unit direction to the viewer.
+struct ShadingPoints {
+    std::vector<float> px, py, pz, nx, ny, nz, vx, vy, vz;
+    std::size_t count = 0;
+
+    /// Room for n points (and the padding); count becomes n, the contents are to be written.
+    void resize(std::size_t n);
+    void set(std::size_t i, const Vec3& p, const Vec3& n, const Vec3& toViewer) {
+        px[i] = p.x, py[i] = p.y, pz[i] = p.z;
+        nx[i] = n.x, ny[i] = n.y, nz[i] = n.z;
+        vx[i] = toViewer.x, vy[i] = toViewer.y, vz[i] = toViewer.z;
+    }
+};
+
+/// What Lambert + Phong need of a material (one, or a lane of them): diffuse * colour, the
+/// specular coefficient, the R.V below which the highlight is skipped, and the shininess.
+template <class F>
+struct SurfaceTerms {
+    F r, g, b, specular, cutoff, shininess;
+};
+SurfaceTerms<float> surfaceTerms(const CompiledMaterial& m);
+
+/// SurfaceTerms of each shading point of a ShadingPoints, structure of arrays, padded alike.
+struct SurfaceArrays {
+    std::vector<float> r, g, b, specular, cutoff, shininess;
+
+    void resize(std::size_t n);
+    void set(std::size_t i, const SurfaceTerms<float>& t) {
+        r[i] = t.r, g[i] = t.g, b[i] = t.b;
+        specular[i] = t.specular, cutoff[i] = t.cutoff, shininess[i] = t.shininess;
+    }
+};
+
+/// One light's sample toward its centre from each of a ShadingPoints' points (a point light,
+/// or any light when sphere lights are not sampled): LightSample's fields and whether it is
+/// listed, structure of arrays.
+struct CentreSamples {
+    std::vector<float> dx, dy, dz, dist, nl;
+    std::vector<uint8_t> listed;
+};
+
+/// Sums of light terms (r, g, b) of each point of a ShadingPoints, padded alike.
+struct LightSums {
+    std::vector<float> r, g, b;
+    /// n points, all sums 0.
+    void zero(std::size_t n);
+};
+
 /// Where shading points sample a scene's lights. What depends on the scene alone (the
 /// stratification of sphere lights) is worked out once, when the sampler is made, not per
 /// point: a trace kernel makes one and samples tens of thousands of points with it.
@@ -45,6 +94,19 @@ public:
     void sample(const Vec3& p, const Vec3& n, uint32_t seed, bool area,
                 std::vector<LightSample>& samples, std::vector<LightSpan>& spans) const;
 
+    /// True when light `li` is sampled at its centre alone (sample()'s rule): a point light,
+    /// or any light when not `area` or when the scene asks for no shadow samples.
+    bool centreOnly(std::size_t li, bool area) const {
+        return !(area && scene_.lights()[li].radius > 0.0f && shadowSamples_ > 0);
+    }
+    /// sample()'s samples of light `li` alone, appended with their span when any is listed.
+    void sampleLight(std::size_t li, const Vec3& p, const Vec3& n, uint32_t seed, bool area,
+                     std::vector<LightSample>& samples, std::vector<LightSpan>& spans) const;
+    /// Light `li`'s centre sample from points [first, end) of `points` (first a multiple of
+    /// kLaneWidth), four points at a time: the bits sample() gives for each point alone.
+    void sampleCentres(std::size_t li, const ShadingPoints& points, std::size_t first,
+                       std::size_t end, CentreSamples& out) const;
+
 private:
     const CompiledScene& scene_;
     DiskStrata strata_;  ///< The sub-grid of shadow_samples points on a sphere light's disk.
@@ -58,9 +120,23 @@ Color shadeLights(const CompiledScene& scene, const CompiledMaterial& m, const V
                   const Vec3& toViewer, const LightSpan* spans, std::size_t spanCount,
                   const LightSample* samples, const uint8_t* occluded);
 
+/// What one span of samples adds to shadeLights' sum: its unshadowed samples' Lambert + Phong
+/// terms for `surface`, times the light's power, over the samples drawn.
+Color spanShare(const CompiledScene& scene, const SurfaceTerms<float>& surface, const Vec3& n,
+                const Vec3& toViewer, const LightSpan& span, const LightSample* samples,
+                const uint8_t* occluded);
+
+/// shadeLights' term of centre-sampled light `light` for points [first, end) of `points`
+/// (first a multiple of kLaneWidth), four at a time, added to `sums`: the samples `centres`,
+/// each skipped where `blocked` (indexed by point; null: none is). The bits of spanShare.
+void addCentreLight(const CompiledLight& light, const ShadingPoints& points,
+                    const SurfaceArrays& surface, const CentreSamples& centres,
+                    const uint8_t* blocked, std::size_t first, std::size_t end, LightSums& sums);
+
 /// Where a shadow ray toward `s` starts (off the surface along n) and how far it goes: it
 /// stops epsilon short of the light's point.
 inline Vec3 shadowOrigin(const Vec3& p, const Vec3& n, float eps) { return p + n * eps; }
-inline float shadowLength(const LightSample& s, float eps) { return s.dist - eps; }
+inline float shadowLength(float dist, float eps) { return dist - eps; }
+inline float shadowLength(const LightSample& s, float eps) { return shadowLength(s.dist, eps); }
 
 }  // namespace rs

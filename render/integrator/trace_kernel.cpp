@@ -90,6 +90,13 @@ struct TraceKernel::Workspace {
     std::vector<float> sox, soy, soz, sdx, sdy, sdz, stmax;
     std::vector<uint32_t> slight;
     std::vector<uint8_t> occluded;
+    std::size_t shadowCount = 0;  ///< Shadow rays written by pushShadow.
+    ShadingPoints shading;          ///< The points of a level being shaded, lane by lane.
+    SurfaceArrays surface, lambert;  ///< Their materials' terms, and as plain Lambert.
+    std::vector<CentreSamples> centres;         ///< Per centre-sampled light.
+    std::vector<std::vector<uint8_t>> blocked;  ///< Per centre-sampled light and point.
+    LightSums sums, lambertSums;
+    std::vector<uint32_t> cursor;  ///< Each point's next sphere-light span.
 
     HitBatch hits(std::size_t n) {
         for (auto* v : {&t, &nx, &ny, &nz}) v->resize(n);
@@ -97,28 +104,49 @@ struct TraceKernel::Workspace {
         return {t.data(), nx.data(), ny.data(), nz.data(), slot.data()};
     }
     /// Shadow rays for samples [0, samples.size()) of points whose spans pointSpans lists.
+    /// The rays go from index `base` on, after those pushShadow wrote.
     void shadowRays(const std::vector<ShadePoint>& pts, std::size_t first, std::size_t count,
-                    float eps) {
-        const std::size_t n = samples.size();
-        for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n);
-        slight.resize(n);
+                    float eps, std::size_t base = 0) {
+        const std::size_t n = base + samples.size();
+        if (sox.size() < n)
+            for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n);
+        if (slight.size() < n) slight.resize(n);
+        shadowCount = n;
+        float *ox = sox.data() + base, *oy = soy.data() + base, *oz = soz.data() + base;
+        float *dx = sdx.data() + base, *dy = sdy.data() + base, *dz = sdz.data() + base;
+        float* tmax = stmax.data() + base;
+        uint32_t* light = slight.data() + base;
         for (std::size_t j = 0; j < count; ++j) {
             const ShadePoint& pt = pts[first + j];
             const Vec3 o = shadowOrigin(pt.p, pt.n, eps);
             for (uint32_t k = pointSpans[j]; k < pointSpans[j + 1]; ++k) {
                 const LightSpan& span = spans[k];
                 for (uint32_t i = span.first; i < span.first + span.listed; ++i) {
-                    sox[i] = o.x, soy[i] = o.y, soz[i] = o.z;
-                    sdx[i] = samples[i].dir.x, sdy[i] = samples[i].dir.y, sdz[i] = samples[i].dir.z;
-                    stmax[i] = shadowLength(samples[i], eps);
-                    slight[i] = span.light;
+                    ox[i] = o.x, oy[i] = o.y, oz[i] = o.z;
+                    dx[i] = samples[i].dir.x, dy[i] = samples[i].dir.y, dz[i] = samples[i].dir.z;
+                    tmax[i] = shadowLength(samples[i], eps);
+                    light[i] = span.light;
                 }
             }
         }
     }
+    /// Room for n shadow rays written by pushShadow; none written yet.
+    void shadows(std::size_t n) {
+        if (sox.size() < n)
+            for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n);
+        if (slight.size() < n) slight.resize(n);
+        shadowCount = 0;
+    }
+    void pushShadow(const Vec3& o, float dx, float dy, float dz, float tmax, uint32_t light) {
+        const std::size_t i = shadowCount++;
+        sox[i] = o.x, soy[i] = o.y, soz[i] = o.z;
+        sdx[i] = dx, sdy[i] = dy, sdz[i] = dz;
+        stmax[i] = tmax;
+        slight[i] = light;
+    }
     RayBatch shadowBatch(bool coherent) const {
         RayBatch b{sox.data(), soy.data(), soz.data(), sdx.data(), sdy.data(), sdz.data(),
-                   stmax.data(), samples.size()};
+                   stmax.data(), shadowCount};
         b.light = slight.data();
         b.coherent = coherent;
         return b;
@@ -126,7 +154,15 @@ struct TraceKernel::Workspace {
 };
 
 TraceKernel::TraceKernel(const CompiledScene& scene, const TraceOptions& options)
-    : scene_(scene), options_(options), eps_(scene.epsilon()), sampler_(scene) {}
+    : scene_(scene), options_(options), eps_(scene.epsilon()), sampler_(scene) {
+    for (const CompiledMaterial& m : scene.materials()) {
+        surfaces_.push_back(surfaceTerms(m));
+        CompiledMaterial lambert{};
+        lambert.color = m.color;
+        lambert.diffuse = 1.0f;
+        lamberts_.push_back(surfaceTerms(lambert));
+    }
+}
 
 bool TraceKernel::trace(const CameraBatch& rays, const TraceOutput& out, TraceCounters& counters,
                         const std::function<bool()>& stale) const {
@@ -257,43 +293,117 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         }
     }
 
-    // The local terms, with the shadow rays of as many points as fit one batch.
+    // The local terms, light by light over as many points as fit one shadow batch.
     const int shadowSamples = settings.shadowSamples;
     const bool deferred = options_.shadows == ShadowQuality::Deferred;
     const bool traceShadows = shadowSamples > 0 && (options_.shadows == ShadowQuality::Full ||
                                                     options_.shadows == ShadowQuality::HardOnly);
     const bool area = shadowSamples > 0 && options_.shadows == ShadowQuality::Full;
-    for (std::size_t first = 0; first < ws.points.size();) {
+    const bool asDiffuse = options_.reflectionAsDiffuse || options_.refractionAsDiffuse;
+    const std::size_t lightCount = scene_.lights().size();
+    std::size_t perPoint = 0;  // the most samples a point draws
+    for (std::size_t li = 0; li < lightCount; ++li)
+        perPoint += sampler_.centreOnly(li, area) ? 1 : std::size_t(shadowSamples);
+    const std::size_t lane = std::size_t(kLaneWidth);
+    const std::size_t chunk = std::max(lane, kSampleCap / std::max<std::size_t>(1, perPoint) / lane * lane);
+    if (ws.centres.size() < lightCount) ws.centres.resize(lightCount), ws.blocked.resize(lightCount);
+    for (std::size_t first = 0; first < ws.points.size(); first += chunk) {
+        const std::size_t count = std::min(ws.points.size() - first, chunk);
+        ShadingPoints& sp = ws.shading;
+        sp.resize(count);
+        ws.surface.resize(count);
+        if (asDiffuse) ws.lambert.resize(count);
         ws.samples.clear();
         ws.spans.clear();
-        ws.pointSpans.clear();
-        std::size_t count = 0;
-        while (first + count < ws.points.size() && (count == 0 || ws.samples.size() < kSampleCap)) {
-            const ShadePoint& pt = ws.points[first + count];
-            ws.pointSpans.push_back(uint32_t(ws.spans.size()));
-            sampler_.sample(pt.p, pt.n, pt.seed, area, ws.samples, ws.spans);
-            ++count;
-        }
-        ws.pointSpans.push_back(uint32_t(ws.spans.size()));
-        const uint8_t* occluded = nullptr;
-        if (traceShadows && !ws.samples.empty()) {
-            ws.shadowRays(ws.points, first, count, eps_);
-            ws.occluded.resize(ws.samples.size());
-            scene_.engine().anyHit(ws.shadowBatch(area), ws.occluded.data());
-            occluded = ws.occluded.data();
-            counters.shadowRays += ws.samples.size();
-        }
+        ws.pointSpans.resize(count + 1);
         for (std::size_t j = 0; j < count; ++j) {
             const ShadePoint& pt = ws.points[first + j];
-            const LightSpan* spans = ws.spans.data() + ws.pointSpans[j];
-            const std::size_t spanCount = ws.pointSpans[j + 1] - ws.pointSpans[j];
-            if (out.rays && occluded)
-                for (std::size_t k = 0; k < spanCount; ++k) out.rays[pt.owner] += spans[k].listed;
+            sp.set(j, pt.p, pt.n, pt.toViewer);
+            ws.surface.set(j, surfaces_[pt.material]);
+            if (asDiffuse) ws.lambert.set(j, lamberts_[pt.material]);
+            // Sphere lights' samples, point by point (lanes of samples), in light order.
+            ws.pointSpans[j] = uint32_t(ws.spans.size());
+            for (std::size_t li = 0; li < lightCount; ++li)
+                if (!sampler_.centreOnly(li, area))
+                    sampler_.sampleLight(li, pt.p, pt.n, pt.seed, area, ws.samples, ws.spans);
+        }
+        ws.pointSpans[count] = uint32_t(ws.spans.size());
+        for (std::size_t li = 0; li < lightCount; ++li)
+            if (sampler_.centreOnly(li, area)) sampler_.sampleCentres(li, sp, 0, count, ws.centres[li]);
+
+        // One shadow batch: every centre-sampled light's listed rays, light by light, then
+        // the sphere lights' samples in list order.
+        const uint8_t* areaOccluded = nullptr;
+        if (traceShadows) {
+            ws.shadows(count * perPoint);
+            for (std::size_t li = 0; li < lightCount; ++li) {
+                if (!sampler_.centreOnly(li, area)) continue;
+                const CentreSamples& c = ws.centres[li];
+                for (std::size_t j = 0; j < count; ++j)
+                    if (c.listed[j])
+                        ws.pushShadow(shadowOrigin(ws.points[first + j].p, ws.points[first + j].n, eps_),
+                                      c.dx[j], c.dy[j], c.dz[j], shadowLength(c.dist[j], eps_), uint32_t(li));
+            }
+            const std::size_t areaBase = ws.shadowCount;
+            ws.shadowRays(ws.points, first, count, eps_, areaBase);
+            if (ws.shadowCount > 0) {
+                ws.occluded.resize(ws.shadowCount);
+                scene_.engine().anyHit(ws.shadowBatch(area), ws.occluded.data());
+                counters.shadowRays += ws.shadowCount;
+            }
+            // Each centre ray's answer back to its point.
+            std::size_t r = 0;
+            for (std::size_t li = 0; li < lightCount; ++li) {
+                if (!sampler_.centreOnly(li, area)) continue;
+                const CentreSamples& c = ws.centres[li];
+                std::vector<uint8_t>& blocked = ws.blocked[li];
+                blocked.resize(sp.px.size());
+                for (std::size_t j = 0; j < count; ++j) blocked[j] = c.listed[j] ? ws.occluded[r++] : 0;
+                if (out.rays)
+                    for (std::size_t j = 0; j < count; ++j) out.rays[ws.points[first + j].owner] += c.listed[j];
+            }
+            areaOccluded = ws.occluded.data() + areaBase;
+            if (out.rays)
+                for (std::size_t j = 0; j < count; ++j)
+                    for (uint32_t k = ws.pointSpans[j]; k < ws.pointSpans[j + 1]; ++k)
+                        out.rays[ws.points[first + j].owner] += ws.spans[k].listed;
+        }
+
+        // Light by light, so each point's sum takes the lights in the scene's order.
+        ws.sums.zero(count);
+        if (asDiffuse) ws.lambertSums.zero(count);
+        ws.cursor.assign(ws.pointSpans.begin(), ws.pointSpans.end() - 1);
+        for (std::size_t li = 0; li < lightCount; ++li) {
+            if (sampler_.centreOnly(li, area)) {
+                const CompiledLight& light = scene_.lights()[li];
+                const uint8_t* blocked = traceShadows ? ws.blocked[li].data() : nullptr;
+                addCentreLight(light, sp, ws.surface, ws.centres[li], blocked, 0, count, ws.sums);
+                if (asDiffuse)
+                    addCentreLight(light, sp, ws.lambert, ws.centres[li], blocked, 0, count, ws.lambertSums);
+                continue;
+            }
+            for (std::size_t j = 0; j < count; ++j) {
+                uint32_t& k = ws.cursor[j];
+                if (k == ws.pointSpans[j + 1] || ws.spans[k].light != li) continue;
+                const ShadePoint& pt = ws.points[first + j];
+                const LightSpan& span = ws.spans[k++];
+                const Color c = spanShare(scene_, surfaces_[pt.material], pt.n, pt.toViewer, span,
+                                          ws.samples.data(), areaOccluded);
+                ws.sums.r[j] += c.x, ws.sums.g[j] += c.y, ws.sums.b[j] += c.z;
+                if (asDiffuse) {
+                    const Color l = spanShare(scene_, lamberts_[pt.material], pt.n, pt.toViewer,
+                                              span, ws.samples.data(), areaOccluded);
+                    ws.lambertSums.r[j] += l.x, ws.lambertSums.g[j] += l.y, ws.lambertSums.b[j] += l.z;
+                }
+            }
+        }
+
+        for (std::size_t j = 0; j < count; ++j) {
+            const ShadePoint& pt = ws.points[first + j];
             const CompiledMaterial& m = materials[pt.material];
             if (m.localWeight > 0.0f) {
                 const Color ambient = settings.ambient * m.color * m.diffuse;
-                const Color direct = shadeLights(scene_, m, pt.n, pt.toViewer, spans, spanCount,
-                                                 ws.samples.data(), occluded);
+                const Color direct(ws.sums.r[j], ws.sums.g[j], ws.sums.b[j]);
                 out.color[pt.owner] += pt.weight * (m.localWeight * (ambient + direct));
                 // Shown unshadowed while moving; the record lets the shadows be added later.
                 if (deferred && out.records)
@@ -302,15 +412,10 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                                                                pt.material, pt.seed});
             }
             if (pt.asDiffuse > 0.0f) {
-                CompiledMaterial lambert{};
-                lambert.color = m.color;
-                lambert.diffuse = 1.0f;
-                const Color direct = shadeLights(scene_, lambert, pt.n, pt.toViewer, spans,
-                                                 spanCount, ws.samples.data(), occluded);
+                const Color direct(ws.lambertSums.r[j], ws.lambertSums.g[j], ws.lambertSums.b[j]);
                 out.color[pt.owner] += pt.weight * (pt.asDiffuse * (settings.ambient * m.color + direct));
             }
         }
-        first += count;
     }
 }
 

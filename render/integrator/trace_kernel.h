@@ -104,6 +104,9 @@ private:
     TraceOptions options_;
     float eps_;
     LightSampler sampler_;
+    /// Each material's Lambert + Phong terms, and as plain Lambert in its colour (the
+    /// interaction policies' mirror and glass shown as diffuse).
+    std::vector<SurfaceTerms<float>> surfaces_, lamberts_;
 };
 
 }  // namespace rs

@@ -1,6 +1,7 @@
 // Light sampling four samples at a time gives the bits of one at a time: the disk strata and
 // the sampler's lists, on random shading points, seeds and sphere lights.
 #include "integrator/light_sampling.h"
+#include "integrator/trace_kernel.h"
 #include "integrator/sampling.h"
 #include "snapshot/compiled_scene.h"
 
@@ -110,6 +111,96 @@ TEST(LightSamplerLanes, FourAtATimeListsTheBitsOfOneAtATime) {
     EXPECT_GT(unlisted, 1000u);
 }
 
+/// Random Lambert + Phong terms: some without a highlight, some with a cutoff.
+SurfaceTerms<float> randomSurface(std::mt19937& rng) {
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    CompiledMaterial m{};
+    m.color = Color(u(rng), u(rng), u(rng));
+    m.diffuse = u(rng);
+    m.specular = rng() % 3 == 0 ? 0.0f : u(rng);
+    m.shininess = 1.0f + 200.0f * u(rng);
+    m.specularCutoff = rng() % 2 == 0 ? 0.0f : 0.5f * u(rng);
+    return surfaceTerms(m);
+}
+
+TEST(LightSamplerLanes, CentreLightsOfFourPointsHaveTheBitsOfOnePointAtATime) {
+    // The level batches' path (sampleCentres + addCentreLight, four points a lane group)
+    // against the one-point path (sampleLight + spanShare) on random points, normals, viewers,
+    // materials and shadow flags; a lane taken from the wrong point or light fails here.
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<float> u(-3.0f, 3.0f);
+    std::size_t compared = 0, listedCount = 0, blockedCount = 0, highlights = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const SceneDocument doc = lightsScene(rng, 1 + int(rng() % 16));
+        const CompiledScene scene(doc, nullptr, EngineKind::Builtin);
+        const LightSampler sampler(scene);
+        const std::size_t n = 1 + rng() % 61;  // whole lane groups and partial ones
+        ShadingPoints points;
+        points.resize(n);
+        SurfaceArrays surface;
+        surface.resize(n);
+        std::vector<SurfaceTerms<float>> terms;
+        for (std::size_t j = 0; j < n; ++j) {
+            Vec3 p(u(rng), u(rng), u(rng));
+            if (j % 17 == 5) p = scene.lights()[0].position;  // at the light: not listed
+            const Vec3 normal = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0.0f, 1e-3f, 0.0f));
+            const Vec3 view = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f, 0.0f, 0.0f));
+            points.set(j, p, normal, view);
+            terms.push_back(randomSurface(rng));
+            surface.set(j, terms.back());
+        }
+        std::vector<uint8_t> blocked(points.px.size());
+        for (std::size_t j = 0; j < n; ++j) blocked[j] = rng() % 3 == 0;
+        // Every light, each sampled at its centre (area false), lanes from a group boundary.
+        for (const bool withShadows : {true, false}) {
+            LightSums sums;
+            sums.zero(n);
+            std::vector<Color> expected(n, Color(0.0f));
+            for (std::size_t li = 0; li < scene.lights().size(); ++li) {
+                ASSERT_TRUE(sampler.centreOnly(li, false));
+                CentreSamples centres;
+                sampler.sampleCentres(li, points, 0, n, centres);
+                addCentreLight(scene.lights()[li], points, surface, centres,
+                               withShadows ? blocked.data() : nullptr, 0, n, sums);
+                for (std::size_t j = 0; j < n; ++j) {
+                    const Vec3 p(points.px[j], points.py[j], points.pz[j]);
+                    const Vec3 normal(points.nx[j], points.ny[j], points.nz[j]);
+                    const Vec3 view(points.vx[j], points.vy[j], points.vz[j]);
+                    std::vector<LightSample> samples;
+                    std::vector<LightSpan> spans;
+                    sampler.sampleLight(li, p, normal, 0u, false, samples, spans);
+                    ASSERT_EQ(centres.listed[j], spans.empty() ? 0 : 1) << "point " << j;
+                    if (spans.empty()) continue;
+                    ASSERT_EQ(bitsOf(centres.dx[j]), bitsOf(samples[0].dir.x)) << "point " << j;
+                    ASSERT_EQ(bitsOf(centres.dy[j]), bitsOf(samples[0].dir.y));
+                    ASSERT_EQ(bitsOf(centres.dz[j]), bitsOf(samples[0].dir.z));
+                    ASSERT_EQ(bitsOf(centres.dist[j]), bitsOf(samples[0].dist));
+                    ASSERT_EQ(bitsOf(centres.nl[j]), bitsOf(samples[0].nl));
+                    const uint8_t occluded = blocked[j];
+                    const Color share = spanShare(scene, terms[j], normal, view, spans[0],
+                                                  samples.data(), withShadows ? &occluded : nullptr);
+                    if (share.x > terms[j].r * samples[0].nl * scene.lights()[li].power.x * 1.0001f)
+                        ++highlights;
+                    expected[j] += share;
+                    ++listedCount;
+                    blockedCount += withShadows && occluded;
+                }
+            }
+            for (std::size_t j = 0; j < n; ++j) {
+                ASSERT_EQ(bitsOf(sums.r[j]), bitsOf(expected[j].x)) << "point " << j << " of " << n;
+                ASSERT_EQ(bitsOf(sums.g[j]), bitsOf(expected[j].y)) << "point " << j;
+                ASSERT_EQ(bitsOf(sums.b[j]), bitsOf(expected[j].z)) << "point " << j;
+                ++compared;
+            }
+        }
+    }
+    // Points were lit, shadowed and highlighted, not only dark.
+    EXPECT_GT(compared, 1000u);
+    EXPECT_GT(listedCount, 1000u);
+    EXPECT_GT(blockedCount, 200u);
+    EXPECT_GT(highlights, 50u);
+}
+
 TEST(LightSamplerLanes, SphereLightSamplesLieOnTheLightsDisk) {
     // The lanes are not merely equal to the single samples but right: every listed sample
     // points at a point within the light's radius of its centre.
@@ -129,6 +220,64 @@ TEST(LightSamplerLanes, SphereLightSamplesLieOnTheLightsDisk) {
             const Vec3 q = p + samples[i].dir * samples[i].dist;
             EXPECT_LE(glm::length(q - light.position), light.radius * 1.001f + 1e-5f);
             EXPECT_GT(samples[i].nl, 0.0f);
+        }
+    }
+}
+
+TEST(TraceKernelLanes, ABatchOfCameraRaysHasTheBitsOfEachRayAlone) {
+    // The kernel shades a level's points four at a time; a camera ray traced alone fills one
+    // lane of one group. Every pixel of a batch must have the bits of its ray alone, for
+    // every shadow mode and the policies' diffuse mirrors and glass, with two point lights and
+    // a sphere light (lights in scene order, some sampled per point, some per lane group).
+    SceneDocument doc = test::smallRoom(24, 18);
+    doc.render.shadowSamples = 4;
+    test::addPointLight(doc, "fill", Vec3(-3, 1, -1));
+    Light sphere;
+    sphere.name = "sphere";
+    sphere.type = LightType::Sphere;
+    sphere.radius = 0.4f;
+    sphere.position = Vec3(2, 2.5f, -4);
+    doc.addLight(sphere);
+    for (EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
+        const CompiledScene scene(doc, nullptr, engine);
+        const CameraModel& camera = scene.camera();
+        std::vector<Vec3> origin, dir;
+        std::vector<uint32_t> seed;
+        for (int y = 0; y < doc.render.height; ++y)
+            for (int x = 0; x < doc.render.width; ++x) {
+                const Ray r = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
+                origin.push_back(r.origin), dir.push_back(r.dir);
+                seed.push_back(hash32(uint32_t(y * doc.render.width + x)));
+            }
+        const std::size_t n = origin.size();
+        std::vector<TraceOptions> optionSets(5, TraceOptions::fromSettings(doc.render));
+        optionSets[1].shadows = ShadowQuality::HardOnly;
+        optionSets[2].shadows = ShadowQuality::Off;
+        optionSets[3].shadows = ShadowQuality::Deferred;
+        optionSets[4].reflectionAsDiffuse = optionSets[4].refractionAsDiffuse = true;
+        for (std::size_t o = 0; o < optionSets.size(); ++o) {
+            const TraceKernel kernel(scene, optionSets[o]);
+            std::vector<Color> batch(n), alone(n);
+            std::vector<uint32_t> batchRays(n), aloneRays(n);
+            TraceCounters counters;
+            TraceOutput out;
+            out.color = batch.data();
+            out.rays = batchRays.data();
+            ASSERT_TRUE(kernel.trace(CameraBatch{origin.data(), dir.data(), seed.data(), n, true},
+                                     out, counters));
+            std::size_t lit = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                TraceOutput one;
+                one.color = &alone[i];
+                one.rays = &aloneRays[i];
+                kernel.trace(CameraBatch{&origin[i], &dir[i], &seed[i], 1, true}, one, counters);
+                ASSERT_EQ(bitsOf(batch[i].x), bitsOf(alone[i].x)) << "pixel " << i << " options " << o;
+                ASSERT_EQ(bitsOf(batch[i].y), bitsOf(alone[i].y)) << "pixel " << i << " options " << o;
+                ASSERT_EQ(bitsOf(batch[i].z), bitsOf(alone[i].z)) << "pixel " << i << " options " << o;
+                ASSERT_EQ(batchRays[i], aloneRays[i]) << "pixel " << i << " options " << o;
+                lit += batch[i].x > 0.2f;
+            }
+            EXPECT_GT(lit, n / 10) << "options " << o;  // not a dark image
         }
     }
 }
