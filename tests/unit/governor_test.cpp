@@ -3,6 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+#include <vector>
+
 namespace rs {
 namespace {
 
@@ -88,6 +95,193 @@ TEST(Governor, AtTheDefaultTarget_ADragStaysFullQuality_AWholeFrameOnlyHalvesThe
     // Only a measured cost that really forces it goes further.
     g.record(2, 60.0, 250000);
     EXPECT_GE(g.choose(defaults, 1000000, defaults.governorTargetMs), 3);
+}
+
+/// Edits the document from inside a pass, as mouse events arriving mid-pass do: on a tile
+/// of each of `rounds` passes it posts `perRound` camera nudges (they coalesce), and tiles of
+/// the generations before the last one posted cost `tileCost` more (as on a loaded machine).
+class EditingObserver : public SessionObserver {
+public:
+    EditingObserver(SceneDocument doc, int rounds, int perRound, std::chrono::milliseconds tileCost)
+        : rounds_(rounds), perRound_(perRound), tileCost_(tileCost), doc_(std::move(doc)) {}
+    RenderSession* session = nullptr;
+    std::atomic<bool> armed{false};
+
+    void tileDone(int, int, int, int, uint64_t generation) override {
+        if (!armed.load()) return;
+        {
+            std::lock_guard lock(mutex_);
+            if (generation == postedFrom_) ++tilesAfterPost_;
+            if (rounds_ > 0 && generation != postedFrom_) {
+                for (int k = 0; k < perRound_; ++k) {
+                    doc_.camera.target.x += 0.01f;  // An orbit step: every pixel goes stale.
+                    last_ = session->update(doc_);
+                    posted_.push_back(last_);
+                }
+                postedFrom_ = generation;
+                --rounds_;
+            }
+        }
+        if (generation < lastPosted()) std::this_thread::sleep_for(tileCost_);
+    }
+    void passDone(const PassInfo& info) override {
+        {
+            std::lock_guard lock(mutex_);
+            if (info.kind == PassKind::Interactive) interactive_.push_back(info);
+        }
+        seen_.notify_all();
+    }
+    /// Waits until passDone has reported an uncut interactive pass of `generation`.
+    bool waitForPassReported(uint64_t generation) {
+        std::unique_lock lock(mutex_);
+        return seen_.wait_for(lock, std::chrono::seconds(60), [&] {
+            return std::any_of(interactive_.begin(), interactive_.end(), [&](const PassInfo& p) {
+                return p.generation == generation && !p.cancelled;
+            });
+        });
+    }
+    bool done() {
+        std::lock_guard lock(mutex_);
+        return rounds_ == 0;
+    }
+    uint64_t lastPosted() {
+        std::lock_guard lock(mutex_);
+        return last_;
+    }
+    SceneDocument document() {
+        std::lock_guard lock(mutex_);
+        return doc_;
+    }
+    std::vector<uint64_t> posted() {
+        std::lock_guard lock(mutex_);
+        return posted_;
+    }
+    std::vector<PassInfo> interactivePasses() {
+        std::lock_guard lock(mutex_);
+        return interactive_;
+    }
+    /// Tiles the last pass an edit was posted from committed after that.
+    int tilesAfterPost() {
+        std::lock_guard lock(mutex_);
+        return tilesAfterPost_;
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable seen_;
+    int rounds_, perRound_;
+    std::chrono::milliseconds tileCost_;
+    SceneDocument doc_;
+    uint64_t last_ = 0, postedFrom_ = 0;
+    int tilesAfterPost_ = 0;
+    std::vector<uint64_t> posted_;
+    std::vector<PassInfo> interactive_;
+};
+
+/// testRoom at 128x96 (12 tiles) under InteractionPolicy::none() and a governor aiming at
+/// `targetMs`, rendered complete; then an orbit begins and `observer` edits from inside the
+/// passes that follow the first camera move. Returns that move's generation.
+uint64_t orbitWhileObserved(RenderSession& session, EditingObserver& observer, double targetMs) {
+    using namespace std::chrono_literals;
+    InteractionPolicy policy = InteractionPolicy::none();
+    policy.governorTargetMs = targetMs;
+    session.setPolicy(policy);
+    observer.session = &session;
+    session.setObserver(&observer);
+    SceneDocument doc = observer.document();
+    session.update(doc);
+    EXPECT_TRUE(session.waitUntilComplete(60s));  // Its base pass calibrates the governor.
+    session.beginInteraction(kNoObject);
+    doc.camera.target.x -= 0.01f;
+    observer.armed = true;
+    const uint64_t first = session.update(doc);
+    for (int i = 0; i < 60000 && !observer.done(); ++i) std::this_thread::sleep_for(1ms);
+    EXPECT_TRUE(observer.done());
+    EXPECT_TRUE(session.waitForPass(observer.lastPosted(), 60s));
+    EXPECT_TRUE(observer.waitForPassReported(observer.lastPosted()));
+    return first;
+}
+
+/// Ends the orbit; the frame must equal a full render of the last document posted.
+void endOrbitExact(RenderSession& session, EditingObserver& observer) {
+    using namespace std::chrono_literals;
+    session.endInteraction();
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    session.setObserver(nullptr);
+    EXPECT_LE(test::maxDiffToFullRender(session, observer.document()), 1e-5f);
+}
+
+SceneDocument orbitRoom() {
+    SceneDocument doc = test::testRoom();
+    doc.render.width = 128;
+    doc.render.height = 96;
+    return doc;
+}
+
+TEST(Governor, StepsDownAfterCutPassesThatWereTooSlow_AndTheFrameEndsExact) {
+    // Every pass gets the next move at its first tile and then costs 100 ms a tile: past its
+    // 45 ms budget, at whose end the move cuts it. The governor must learn from passes that
+    // never finish.
+    constexpr int kCuts = 8;
+    EditingObserver observer(orbitRoom(), kCuts, 1, std::chrono::milliseconds(100));
+    RenderSession session(2);
+    orbitWhileObserved(session, observer, 50.0);
+    const std::vector<PassInfo> passes = observer.interactivePasses();
+    ASSERT_GE(passes.size(), 4u);
+    int highest = 0;
+    for (const PassInfo& p : passes) {
+        // The levels predicted from the quick base pass are tried, cut and dropped one after
+        // the other (once every level is measured too slow, the cheapest may finish).
+        if (highest < 3) {
+            EXPECT_TRUE(p.cancelled) << "level " << p.governorLevel;
+        }
+        highest = std::max(highest, p.governorLevel);
+    }
+    EXPECT_GT(highest, passes.front().governorLevel);
+    EXPECT_GE(highest, 3);
+    // The uncut pass after the last move is the one that shows; it is governed as well.
+    EXPECT_FALSE(passes.back().cancelled);
+    EXPECT_GE(passes.back().governorLevel, 3);
+    endOrbitExact(session, observer);
+}
+
+TEST(RenderSession, EditsDuringAGovernedPassWithinItsBudget_LetItFinish_TheLatestWins_EndExact) {
+    // A budget of a minute: the pass the first move started finishes although two more moves
+    // arrive at its first tile; they coalesce into one pass after it.
+    EditingObserver observer(orbitRoom(), 1, 2, std::chrono::milliseconds(0));
+    RenderSession session(2);
+    const uint64_t appliedBefore = session.stats().appliedUpdates;
+    const uint64_t first = orbitWhileObserved(session, observer, 60000.0);
+    const std::vector<uint64_t> posted = observer.posted();
+    ASSERT_EQ(posted.size(), 2u);
+    const std::vector<PassInfo> passes = observer.interactivePasses();
+    ASSERT_GE(passes.size(), 2u);
+    EXPECT_EQ(passes.front().generation, first);
+    EXPECT_FALSE(passes.front().cancelled);
+    EXPECT_EQ(passes.front().tracedPixels, passes.front().totalPixels);  // The whole view.
+    for (const PassInfo& p : passes) EXPECT_NE(p.generation, posted[0]);  // Coalesced away.
+    EXPECT_EQ(passes.back().generation, posted[1]);
+    EXPECT_FALSE(passes.back().cancelled);
+    // The opening document, the first move and the latest of the two: three applied.
+    EXPECT_EQ(session.stats().appliedUpdates - appliedBefore, 3u);
+    endOrbitExact(session, observer);
+}
+
+TEST(RenderSession, AnEditHeldBackByAGovernedPass_CutsItAtTheEndOfItsBudget_EndExact) {
+    // A 900 ms budget, a move at the first tile, then 250 ms a tile: the pass keeps going
+    // after the move (it is within its budget) and is cut at the budget's end, with tiles of
+    // its 12 still to do.
+    EditingObserver observer(orbitRoom(), 1, 1, std::chrono::milliseconds(250));
+    RenderSession session(2);
+    const uint64_t first = orbitWhileObserved(session, observer, 1000.0);
+    const std::vector<PassInfo> passes = observer.interactivePasses();
+    ASSERT_GE(passes.size(), 2u);
+    EXPECT_EQ(passes.front().generation, first);
+    EXPECT_TRUE(passes.front().cancelled);
+    EXPECT_GE(observer.tilesAfterPost(), 1);  // Held back: the pass went on.
+    EXPECT_EQ(passes.back().generation, observer.lastPosted());
+    EXPECT_FALSE(passes.back().cancelled);
+    endOrbitExact(session, observer);
 }
 
 }  // namespace
