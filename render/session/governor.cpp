@@ -58,26 +58,17 @@ double Governor::predictedMs(const InteractionPolicy& base, int level,
 
 int Governor::choose(const InteractionPolicy& base, std::size_t stalePixels,
                      double targetMs) const {
-    std::array<double, kLevels> predicted;
-    predicted.fill(-1.0);
-    double cheapest = 0.0;
+    int cheapest = 0;
     InteractionPolicy previous;
     for (int level = 0; level < kLevels; ++level) {
         const InteractionPolicy p = policyForLevel(base, level);
         if (level > 0 && p == previous) continue;  // Nothing more turned down.
         previous = p;
-        const double ms = predictedMs(base, level, stalePixels);
-        if (ms <= targetMs) return level;
-        predicted[std::size_t(level)] = ms;
-        cheapest = level == 0 || ms < cheapest ? ms : cheapest;
-    }
-    // None meets the target: the least-reduced level about as cheap as the cheapest. A level
-    // that changes the picture is no bargain when it costs the same (a quarter-resolution
-    // pass still fills and commits every pixel of the frame).
-    for (int level = 0; level < kLevels; ++level)
-        if (predicted[std::size_t(level)] >= 0.0 && predicted[std::size_t(level)] <= 1.1 * cheapest)
+        cheapest = level;
+        if (predictedMs(base, level, stalePixels) <= targetMs)
             return level;
-    return kLevels - 1;
+    }
+    return cheapest;
 }
 
 void Governor::record(int level, double ms, std::size_t tracedPixels) {

@@ -28,8 +28,8 @@ public:
     /// measurements (4.2), for levels not measured yet.
     static double relativePixelCost(const InteractionPolicy& p);
 
-    /// Picks the least-reduced level whose predicted frame time meets `targetMs`; when none
-    /// does, the least-reduced one predicted within 10 % of the cheapest.
+    /// Picks the least-reduced level whose predicted frame time meets `targetMs`, or the
+    /// cheapest level when none does.
     int choose(const InteractionPolicy& base, std::size_t stalePixels, double targetMs) const;
     /// Feeds back a measured interactive pass at `level`: `ms` to trace `tracedPixels`. Passes
     /// an edit cut count too (the time to their last committed tile, and the pixels they

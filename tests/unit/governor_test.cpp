@@ -45,26 +45,6 @@ TEST(Governor, LowerTargetsPickCheaperLevels) {
     EXPECT_GT(g.choose(base, 100000, 60.0), 1);
 }
 
-TEST(Governor, WhenNoLevelMeetsTheTarget_ALevelThatChangesThePictureMustBeCheaper) {
-    Governor g;
-    g.calibrate(1e-4);
-    const InteractionPolicy defaults;  // Deferred shadows: level 1 is skipped.
-    // Measured: half resolution 60 ms, and the picture-changing levels hardly cheaper (a
-    // quarter-resolution pass still fills and commits every pixel).
-    g.record(0, 200.0, 1000000);
-    g.record(2, 60.0, 250000);
-    g.record(3, 58.0, 250000);
-    g.record(4, 57.0, 62500);
-    g.record(5, 56.0, 62500);
-    EXPECT_EQ(g.choose(defaults, 1000000, 30.0), 2);
-    // When one really is much cheaper, it is taken.
-    g.record(4, 20.0, 62500);
-    g.record(4, 20.0, 62500);
-    g.record(4, 20.0, 62500);
-    g.record(4, 20.0, 62500);
-    EXPECT_EQ(g.choose(defaults, 1000000, 10.0), 4);
-}
-
 TEST(Governor, LevelsThatChangeThePictureComeLast) {
     // The default aims at what a 30 Hz display shows.
     EXPECT_DOUBLE_EQ(InteractionPolicy{}.governorTargetMs, 1000.0 / 30.0);
@@ -251,7 +231,7 @@ TEST(Governor, StepsDownAfterCutPassesThatWereTooSlow_AndTheFrameEndsExact) {
     int highest = 0;
     for (const PassInfo& p : passes) {
         // The levels predicted from the quick base pass are tried, cut and dropped one after
-        // the other.
+        // the other (once every level is measured too slow, the cheapest may finish).
         if (highest < 3) {
             EXPECT_TRUE(p.cancelled) << "level " << p.governorLevel;
         }
@@ -259,8 +239,9 @@ TEST(Governor, StepsDownAfterCutPassesThatWereTooSlow_AndTheFrameEndsExact) {
     }
     EXPECT_GT(highest, passes.front().governorLevel);
     EXPECT_GE(highest, 3);
-    // The pass after the last move is the one that shows: not cut.
+    // The uncut pass after the last move is the one that shows; it is governed as well.
     EXPECT_FALSE(passes.back().cancelled);
+    EXPECT_GE(passes.back().governorLevel, 3);
     endOrbitExact(session, observer);
 }
 
