@@ -51,11 +51,6 @@ double Governor::predictedMsPerPixel(const InteractionPolicy& base, int level) c
     return msPerFullPixel_ * relativePixelCost(policyForLevel(base, level));
 }
 
-double Governor::predictedMs(const InteractionPolicy& base, int level,
-                             std::size_t stalePixels) const {
-    return tracedPixels(policyForLevel(base, level), stalePixels) * predictedMsPerPixel(base, level);
-}
-
 int Governor::choose(const InteractionPolicy& base, std::size_t stalePixels,
                      double targetMs) const {
     int cheapest = 0;
@@ -65,7 +60,7 @@ int Governor::choose(const InteractionPolicy& base, std::size_t stalePixels,
         if (level > 0 && p == previous) continue;  // Nothing more turned down.
         previous = p;
         cheapest = level;
-        if (predictedMs(base, level, stalePixels) <= targetMs)
+        if (tracedPixels(p, stalePixels) * predictedMsPerPixel(base, level) <= targetMs)
             return level;
     }
     return cheapest;

@@ -31,13 +31,8 @@ public:
     /// Picks the least-reduced level whose predicted frame time meets `targetMs`, or the
     /// cheapest level when none does.
     int choose(const InteractionPolicy& base, std::size_t stalePixels, double targetMs) const;
-    /// Feeds back a measured interactive pass at `level`: `ms` to trace `tracedPixels`. Passes
-    /// an edit cut count too (the time to their last committed tile, and the pixels they
-    /// committed): while the view moves most passes are cut, and a governor that learned only
-    /// from the others kept predicting levels it never saw finish.
+    /// Feeds back a measured interactive frame at `level`.
     void record(int level, double ms, std::size_t tracedPixels);
-    /// Predicted ms of an interactive pass at `level` over `stalePixels`.
-    double predictedMs(const InteractionPolicy& base, int level, std::size_t stalePixels) const;
     /// Sets the cost of a full-quality pixel (ms), which predicts the levels not measured yet.
     void calibrate(double msPerFullQualityPixel);
     /// Predicted ms per traced pixel of `level` under `base`: measured, else calibrated.

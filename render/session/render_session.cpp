@@ -39,11 +39,6 @@ std::string failureMessage(std::exception_ptr failure) {
 
 /// More regions than this are merged into their bounding box (a long, winding drag).
 constexpr std::size_t kMaxDeferredShadowRegions = 64;
-
-int64_t elapsedNs(std::chrono::steady_clock::time_point since) {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - since)
-        .count();
-}
 }  // namespace
 
 RenderSession::RenderSession(int threads)
@@ -112,7 +107,7 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
         {
             std::lock_guard lock(mutex_);
             observer = observer_;
-            current = postedGeneration_;
+            current = generation_;
         }
         if (observer) observer->error(failureMessage(std::current_exception()));
         return current;
@@ -122,27 +117,14 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
         std::lock_guard lock(mutex_);
         // The bump alone stops running tiles; the old document's frame is out of date anyway.
         // Tiles that commit before the scheduler applies this document are marked with the rest.
-        // A pass allowed to finish keeps going until its deadline (then a worker bumps it).
-        gen = postedGeneration_.load() + 1;
-        postedGeneration_.store(gen);
+        gen = ++generation_;
         pendingDoc_ = std::move(*copy);  // A document not yet applied is dropped: the latest wins.
         pendingGeneration_ = gen;
-        const auto now = std::chrono::steady_clock::now();
-        if (running_ && holdsEdits_ && now < holdDeadline_)
-            heldGeneration_.store(gen);
-        else
-            raiseGeneration(gen);
-        editTime_ = now;
+        editTime_ = std::chrono::steady_clock::now();
         ++stats_.postedUpdates;
     }
     wake_.notify_all();
     return gen;
-}
-
-void RenderSession::raiseGeneration(uint64_t g) {
-    uint64_t current = generation_.load();
-    while (current < g && !generation_.compare_exchange_weak(current, g)) {
-    }
 }
 
 void RenderSession::setSceneUpdater(SceneUpdater updater) {
@@ -162,9 +144,6 @@ void RenderSession::applyPendingLocked(std::unique_lock<std::mutex>& lock) {
     SceneDocument doc = std::move(*pendingDoc_);
     pendingDoc_.reset();
     const uint64_t gen = pendingGeneration_;
-    // No pass runs now: an edit a pass held back is the current generation from here on.
-    raiseGeneration(gen);
-    heldGeneration_.store(0);
     const auto start = std::chrono::steady_clock::now();
     applying_ = true;
     const std::shared_ptr<const CompiledScene> before = hasDocument_ ? snapshot_ : nullptr;
@@ -336,7 +315,7 @@ bool RenderSession::waitForPass(uint64_t generation, std::chrono::milliseconds t
                                 PassInfo* info) {
     std::unique_lock lock(mutex_);
     const bool ok = done_.wait_for(lock, timeout, [&] {
-        return completedPassGeneration_ >= generation || postedGeneration_.load() > generation ||
+        return completedPassGeneration_ >= generation || generation_.load() > generation ||
                failedGeneration_ >= generation;
     });
     if (info) *info = stats_.lastPass;
@@ -428,22 +407,13 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         const double planMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planStart).count();
         running_ = true;
-        holdsEdits_ = plan.holdMs > 0.0;
-        holdDeadline_ = std::chrono::steady_clock::now() +
-                        std::chrono::microseconds(int64_t(plan.holdMs * 1000.0));
         lock.unlock();
         PassInfo info;
         execute(plan, info);
         info.planMs = planMs;
         lock.lock();
         running_ = false;
-        holdsEdits_ = false;
         const auto now = std::chrono::steady_clock::now();
-        // A cut pass's cost per pixel counts as well (up to its last commit: the tiles the
-        // edit stopped committed nothing); while orbiting most passes used to be cut.
-        if (plan.kind == PassKind::Interactive)
-            governor_.record(plan.governorLevel, info.cancelled ? plan.lastCommitMs : info.ms,
-                             info.tracedPixels);
         if (info.cancelled) {
             stats_.lastCancelLatencyMs =
                 std::chrono::duration<double, std::milli>(now - editTime_).count();
@@ -451,6 +421,7 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
             completedPassGeneration_ = std::max(completedPassGeneration_, plan.generation);
             if (plan.kind == PassKind::Interactive) {
                 if (plan.interleaved) interleaveParity_ ^= 1;
+                governor_.record(plan.governorLevel, info.ms, info.tracedPixels);
             } else if (plan.kind == PassKind::Base && info.tracedPixels > 4096) {
                 governor_.calibrate(info.ms / double(info.tracedPixels));
             }
@@ -461,7 +432,7 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         const bool complete = !info.cancelled && !pendingDoc_ && !releasePending_ && !pendingResize_ &&
                               !frame_.anyBelow(kFinal);
         SessionObserver* observer = observer_;
-        const uint64_t gen = postedGeneration_.load();
+        const uint64_t gen = generation_.load();
         lock.unlock();
         done_.notify_all();
         if (observer) {
@@ -474,26 +445,14 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
 
 void RenderSession::execute(Plan& plan, PassInfo& info) {
     const auto start = std::chrono::steady_clock::now();
-    const auto holdDeadline = start + std::chrono::microseconds(int64_t(plan.holdMs * 1000.0));
     PassCounters counters;
-    std::atomic<int64_t> lastCommit{0};  // ns from the start to the latest committed tile.
     arenaExecute(*arena_, [&] {
         parallelFor(
             tbb::blocked_range<std::size_t>(0, plan.tiles.size(), 1),
             [&](const tbb::blocked_range<std::size_t>& r) {
                 for (std::size_t t = r.begin(); t != r.end(); ++t) {
-                    // An edit held back past the pass's budget cuts it now.
-                    if (const uint64_t held = heldGeneration_.load(std::memory_order_relaxed);
-                        held > plan.generation && std::chrono::steady_clock::now() >= holdDeadline)
-                        raiseGeneration(held);
                     if (generation_.load(std::memory_order_relaxed) != plan.generation) return;
                     processTile(plan, plan.tiles[t], counters);
-                    if (generation_.load(std::memory_order_relaxed) == plan.generation) {
-                        int64_t seen = lastCommit.load();
-                        const int64_t now = elapsedNs(start);
-                        while (seen < now && !lastCommit.compare_exchange_weak(seen, now)) {
-                        }
-                    }
                 }
             },
             tbb::simple_partitioner());
@@ -506,7 +465,6 @@ void RenderSession::execute(Plan& plan, PassInfo& info) {
     info.rays = counters.rays.load();
     info.totalPixels = std::size_t(plan.width) * std::size_t(plan.height);
     info.cancelled = generation_.load() != plan.generation;
-    plan.lastCommitMs = double(lastCommit.load()) / 1e6;
     info.governorLevel = plan.governorLevel;
 }
 

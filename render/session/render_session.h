@@ -74,9 +74,6 @@ public:
     /// marks the pixels the edit can change. Documents posted while one is being applied
     /// coalesce: only the latest is applied. Failures (a bad scene, bad_alloc) go to the
     /// observer's error(); the session keeps the document applied last.
-    /// A governed interactive pass still within its budget is not stopped: it finishes (a pass
-    /// cut half way leaves half the frame at the old view), and the edits posted meanwhile
-    /// coalesce into one applied after it; at the end of the budget they cut it.
     uint64_t update(const SceneDocument& doc);
     /// Waits until the document of `generation` (or a later one) is applied: snapshot() and
     /// stats() describe it. False on timeout or when applying it failed.
@@ -113,8 +110,7 @@ public:
         return true;
     }
     SessionStats stats() const;
-    /// The generation update() gave the document posted last.
-    uint64_t generation() const { return postedGeneration_.load(); }
+    uint64_t generation() const { return generation_.load(); }
     std::shared_ptr<const CompiledScene> snapshot() const;
 
     /// Internal: a planned pass and one of its tiles (session_plan.h).
@@ -132,8 +128,6 @@ private:
     void execute(Plan& plan, PassInfo& info);
     void processTile(const Plan& plan, const TileJob& job, PassCounters& counters);
     bool fullQualityWhileMoving() const;
-    /// Makes generation_ at least `g` (tiles of older plans stop).
-    void raiseGeneration(uint64_t g);
     uint8_t targetStateLocked() const;
 
     mutable std::mutex mutex_;  ///< Scheduler state; taken before frameMutex_.
@@ -143,18 +137,7 @@ private:
     mutable std::shared_mutex frameMutex_;
     std::condition_variable wake_;
     std::condition_variable done_;
-    /// The generation tiles are traced and committed for; a tile whose plan has another one
-    /// stops. Only ever grows (raiseGeneration).
     std::atomic<uint64_t> generation_{0};
-    /// The generation of the document posted last: generation_, or ahead of it while a pass
-    /// allowed to finish holds the edit back.
-    std::atomic<uint64_t> postedGeneration_{0};
-    /// The posted generation a running pass holds back (0: none); at the pass's hold deadline
-    /// a worker raises generation_ to it, which cuts the pass.
-    std::atomic<uint64_t> heldGeneration_{0};
-    /// Whether the running pass may hold edits back, and until when.
-    bool holdsEdits_ = false;
-    std::chrono::steady_clock::time_point holdDeadline_;
 
     /// The document applied last; only the scheduler thread writes it (under mutex_) and
     /// reads it without the lock while applying the next.

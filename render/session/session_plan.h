@@ -42,10 +42,6 @@ struct RenderSession::Plan {
     bool adaptive = true;          ///< Supersample only where neighbours differ.
     std::vector<TileJob> tiles;
     int governorLevel = -1;
-    /// A governed interactive pass: how long it may take (ms). Edits posted while it runs
-    /// wait until then instead of cutting it. 0: every edit cuts the pass at once.
-    double holdMs = 0.0;
-    double lastCommitMs = 0.0;  ///< From the start to its last committed tile (execute).
 
     /// Back to a default plan, keeping the tile list's storage.
     void reset() {

@@ -68,10 +68,6 @@ bool RenderSession::planLocked(Plan& plan) {
                 std::max(0.0, 0.9 * policy_.governorTargetMs - stats_.lastUpdateMs -
                                   stats_.lastInteractivePass.planMs);
             plan.governorLevel = governor_.choose(policy_, stale, budget);
-            // Edits posted meanwhile wait for the pass until the budget is spent; when even the
-            // cheapest level is predicted to overrun it, until a quarter past its prediction
-            // (cut, it would start again at the same cost and show only its first tiles).
-            plan.holdMs = std::max(budget, 1.25 * governor_.predictedMs(policy_, plan.governorLevel, stale));
             effective = Governor::policyForLevel(policy_, plan.governorLevel);
         }
         plan.options = effective.movingTraceOptions(settings, moving_);
