@@ -23,6 +23,7 @@ DisplayFrame DisplayFrame::fromSession(const RenderSession& session) {
         d.depth = f.depth;
         d.cost = f.cost;
         d.flags = f.flags;
+        d.debugBuffers = true;
         if (s) {
             d.tonemap = s->settings().tonemap;
             d.exposure = s->settings().exposure;
@@ -60,16 +61,26 @@ bool differs(const std::vector<T>& a, const std::vector<T>& b, int width, const 
 
 }  // namespace
 
+bool showsDebugBuffers(ViewMode mode) { return mode == ViewMode::Normals || mode == ViewMode::Cost; }
+
 void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, bool allFlags) {
     const QRect all(0, 0, f.width, f.height);
-    if (f.width != width || f.height != height || color.size() != f.color.size()) {
+    if (!debugBuffers && (!normal.empty() || !cost.empty())) {
+        // No view shows them any more: nothing keeps them current.
+        normal = {};
+        cost = {};
+    }
+    if (f.width != width || f.height != height || color.size() != f.color.size() ||
+        (debugBuffers && (normal.size() != f.normal.size() || cost.size() != f.cost.size()))) {
         width = f.width;
         height = f.height;
         color = f.color;
         id = f.id;
-        normal = f.normal;
         depth = f.depth;
-        cost = f.cost;
+        if (debugBuffers) {
+            normal = f.normal;
+            cost = f.cost;
+        }
         flags = f.flags;
         ++serial;
         damage.clear();
@@ -94,14 +105,17 @@ void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, 
             for (int bx = bx0; bx <= r.right(); bx += kDamageBlock) {
                 const QRect b = QRect(bx, by, kDamageBlock, kDamageBlock) & r;
                 if (!differs(color, f.color, width, b) && !differs(id, f.id, width, b) &&
-                    !differs(depth, f.depth, width, b) && !differs(normal, f.normal, width, b) &&
-                    !differs(cost, f.cost, width, b))
+                    !differs(depth, f.depth, width, b) &&
+                    !(debugBuffers && (differs(normal, f.normal, width, b) ||
+                                       differs(cost, f.cost, width, b))))
                     continue;
                 copyRect(color, f.color, width, b);
                 copyRect(id, f.id, width, b);
-                copyRect(normal, f.normal, width, b);
                 copyRect(depth, f.depth, width, b);
-                copyRect(cost, f.cost, width, b);
+                if (debugBuffers) {
+                    copyRect(normal, f.normal, width, b);
+                    copyRect(cost, f.cost, width, b);
+                }
                 changed.push_back(b);
             }
         }
@@ -202,12 +216,16 @@ QImage toneMappedImage(const DisplayFrame& f) {
 QImage debugImage(const DisplayFrame& f, ViewMode mode) {
     if (mode == ViewMode::Color) return toneMappedImage(f);
     QImage img(f.width, f.height, QImage::Format_RGB888);
+    // Normals and costs are handed over only while a debug view shows them: a frame without
+    // them (DisplayFrame::debugBuffers off) shows black there instead of reading past the end.
+    const std::size_t pixels = std::size_t(f.width) * std::size_t(f.height);
+    const bool hasNormals = f.normal.size() == pixels, hasCosts = f.cost.size() == pixels;
     float maxDepth = 0.0f;
     uint32_t maxCost = 1;
-    for (std::size_t i = 0; i < f.depth.size(); ++i) {
+    for (std::size_t i = 0; i < f.depth.size(); ++i)
         if (std::isfinite(f.depth[i])) maxDepth = std::max(maxDepth, f.depth[i]);
-        maxCost = std::max(maxCost, f.cost[i]);
-    }
+    if (hasCosts)
+        for (uint32_t c : f.cost) maxCost = std::max(maxCost, c);
     for (int y = 0; y < f.height; ++y) {
         uchar* line = img.scanLine(y);
         for (int x = 0; x < f.width; ++x) {
@@ -217,7 +235,7 @@ QImage debugImage(const DisplayFrame& f, ViewMode mode) {
                 case ViewMode::ObjectIds: idColor(f.id[i], p); break;
                 case ViewMode::Normals:
                     for (int c = 0; c < 3; ++c)
-                        p[c] = f.id[i] == kNoObject
+                        p[c] = f.id[i] == kNoObject || !hasNormals
                                    ? 0
                                    : uint8_t(std::clamp(0.5f + 0.5f * f.normal[i][c], 0.0f, 1.0f) * 255.0f);
                     break;
@@ -229,6 +247,10 @@ QImage debugImage(const DisplayFrame& f, ViewMode mode) {
                     break;
                 }
                 case ViewMode::Cost:
+                    if (!hasCosts) {
+                        p[0] = p[1] = p[2] = 0;
+                        break;
+                    }
                     heat(std::log1p(float(f.cost[i])) / std::log1p(float(maxCost)), p);
                     break;
                 case ViewMode::Retraced: {

@@ -19,8 +19,14 @@ namespace rs::ui {
 /// What the viewport shows of the deep frame.
 enum class ViewMode { Color, ObjectIds, Normals, Depth, Cost, Retraced };
 
+/// Whether `mode` shows normals or ray costs, which are handed over only while shown.
+bool showsDebugBuffers(ViewMode mode);
+
 /// The buffers the viewport needs, copied out under the frame lock. The controller keeps one
 /// and refreshes it in place, rectangle by rectangle; `damage` tells views what changed.
+/// Colour, ids (picking, the outline), depth (picking, orbit pivots) and flags are always
+/// there; normals and costs only with `debugBuffers`, else empty: an orbit changes every
+/// pixel, and copying buffers no view shows was 16 of every 37 bytes a pixel handed over.
 struct DisplayFrame {
     int width = 0;
     int height = 0;
@@ -34,6 +40,9 @@ struct DisplayFrame {
     float exposure = 0.0f;
     uint64_t generation = 0;  ///< Newest edit whose traced pixels this frame holds.
     uint64_t serial = 0;      ///< Bumped whenever the content changes.
+    /// Whether refresh copies `normal` and `cost`; turning it on makes the next refresh copy
+    /// them whole.
+    bool debugBuffers = false;
 
     /// Pixels a refresh changed, tagged with the serial it gave the frame.
     struct Damage {
@@ -53,8 +62,8 @@ struct DisplayFrame {
     /// it). Tone map and exposure are the snapshot's, which edits that trace nothing may keep.
     static DisplayFrame fromSession(const RenderSession& session);
 
-    /// Copies `rects` of `f` into this frame (all of it when the sizes differ) and records them
-    /// as damage of a new serial; `flags` (1 byte a pixel, changed by edits outside any tile) is
+    /// Copies `rects` of `f` into this frame (all of it when the sizes differ, or normals and
+    /// costs are wanted and missing) and records them as damage of a new serial; `flags` (1 byte a pixel, changed by edits outside any tile) is
     /// copied whole when `allFlags`. Call with the frame lock held.
     void refresh(const DeepFrame& f, const std::vector<QRect>& rects, bool allFlags);
     /// The rectangles that changed after `seen`, or false when that serial is too old to say.

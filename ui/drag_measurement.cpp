@@ -249,10 +249,11 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
     }
     std::vector<double> handling;
     for (const Input& in : inputs_) handling.push_back(msBetween(in.dispatched, in.handled));
-    std::vector<double> passMs;
+    std::vector<double> passMs, levels;
     int cancelled = 0;
     for (const auto& [t, info] : passes_) {
         if (t < begin || t > end || info.kind != PassKind::Interactive) continue;
+        levels.push_back(info.governorLevel);
         if (info.cancelled)
             ++cancelled;
         else
@@ -269,6 +270,8 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
     o[QStringLiteral("interactive_pass_median_ms")] = quantile(passMs, 0.5);
     o[QStringLiteral("interactive_passes")] = int(passMs.size());
     o[QStringLiteral("interactive_passes_cancelled")] = cancelled;
+    o[QStringLiteral("governor_level_median")] = quantile(levels, 0.5);
+    o[QStringLiteral("governor_level_max")] = quantile(levels, 1.0);
     o[QStringLiteral("input_handling_median_ms")] = quantile(handling, 0.5);
     o[QStringLiteral("input_handling_max_ms")] = quantile(handling, 1.0);
     o[QStringLiteral("paint_median_ms")] = quantile(paint, 0.5);
@@ -445,6 +448,8 @@ int Measurement::run() {
     std::printf("  interactive pass     median %6.1f ms   (%d passes, %d cancelled)\n",
                 num("interactive_pass_median_ms"), o[QStringLiteral("interactive_passes")].toInt(),
                 o[QStringLiteral("interactive_passes_cancelled")].toInt());
+    std::printf("  governor level       median %4.0f (%s)   max %.0f\n", num("governor_level_median"),
+                Governor::levelName(int(num("governor_level_median"))), num("governor_level_max"));
     std::printf(
         "  frame hand-over      mean   %6.2f ms   max %6.2f ms   (copying %.2f ms of the mean)\n",
         num("handover_mean_ms"), num("handover_max_ms"), num("handover_copy_mean_ms"));

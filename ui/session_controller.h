@@ -57,6 +57,10 @@ public:
     /// TryOnly (the repaints frameUpdated asks for): when a tile commit or an edit holds the
     /// lock, the frame is returned as it was and frameUpdated comes again shortly.
     std::shared_ptr<const DisplayFrame> displayFrame(FrameWait wait = FrameWait::Block);
+    /// Whether displayFrame hands over normals and ray costs too (only while a debug view
+    /// shows them). Turning it on makes the next displayFrame copy them whole: call it with
+    /// FrameWait::Block then.
+    void setDebugBuffers(bool on) { frame_->debugBuffers = on; }
     /// Cost of handing frames to the display, for the designer's measurement.
     struct HandoverStats {
         int count = 0;

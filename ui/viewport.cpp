@@ -74,6 +74,9 @@ void Viewport::setDisplay(DisplayKind display) {
 
 void Viewport::setViewMode(ViewMode mode) {
     mode_ = mode;
+    // Normals and ray costs are handed over only while a view shows them: fetched now.
+    session_->setDebugBuffers(showsDebugBuffers(mode));
+    if (showsDebugBuffers(mode)) frame_ = session_->displayFrame();
     redraw();
 }
 

@@ -386,7 +386,12 @@ void DesignerTest::addSphereLight_UndoRedo() {
 }
 
 void DesignerTest::debugViews_ProduceImages() {
+    // Normals and ray costs are handed over only while a view shows them.
+    QVERIFY(window_->viewport()->frame()->normal.empty());
+    window_->viewport()->setViewMode(ViewMode::Normals);
     const DisplayFrame shown = *window_->viewport()->frame();  // a copy: the view updates its own
+    window_->viewport()->setViewMode(ViewMode::Color);
+    QCOMPARE(shown.normal.size(), shown.color.size());
     const DisplayFrame* frame = &shown;
     const ObjectId blue = idOf(*window_, "blue ball"), glass = idOf(*window_, "glass ball");
     const ObjectId floor = idOf(*window_, "floor"), back = idOf(*window_, "back wall");

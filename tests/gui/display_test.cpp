@@ -25,6 +25,7 @@ private Q_SLOTS:
 
     void mergeRects_CoversTheSamePixels();
     void incrementalHandover_EqualsFullCopyAfterThePass();
+    void debugBuffers_HandedOverOnlyWhileShown_ThenIncrementallyEqual();
     void rasterView_RepaintsOnlyChangedRectangles_ScreenEqualsTheFullImage();
     void handover_WhileTheFrameLockIsHeld_ReturnsAtOnce_AndCatchesUpAfter();
     void exposureEdit_ChangesShownImageAndExport_UndoRestoresThem();
@@ -125,12 +126,59 @@ void DisplayTest::incrementalHandover_EqualsFullCopyAfterThePass() {
     QVERIFY(sameBits(shown->color, full.color));
     QVERIFY(sameBits(shown->id, full.id));
     QVERIFY(sameBits(shown->depth, full.depth));
-    QVERIFY(sameBits(shown->normal, full.normal));
-    QVERIFY(sameBits(shown->cost, full.cost));
     QVERIFY(sameBits(shown->flags, full.flags));
+    // No view shows normals or ray costs: they were not handed over.
+    QVERIFY(shown->normal.empty());
+    QVERIFY(shown->cost.empty());
     // The raster view re-shaded only what changed; it must still equal shading it all.
     const QImage expected = viewportImage(full, ViewMode::Color, {blue});
     QCOMPARE(shownImage(), expected.convertToFormat(QImage::Format_RGB888));
+}
+
+void DisplayTest::debugBuffers_HandedOverOnlyWhileShown_ThenIncrementallyEqual() {
+    MainWindow& w = *window_;
+    Viewport* v = w.viewport();
+    const ObjectId blue = idOf(w, "blue ball");
+    QVERIFY(v->frame()->normal.empty());
+    QVERIFY(v->frame()->cost.empty());
+    // Switching to a view that shows them copies them at once, whole.
+    v->setViewMode(ViewMode::Cost);
+    {
+        const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+        QVERIFY(sameBits(v->frame()->normal, full.normal));
+        QVERIFY(sameBits(v->frame()->cost, full.cost));
+    }
+    // While it is shown they follow the edits tile by tile.
+    w.session()->beginInteraction(blue);
+    for (int k = 0; k < 8; ++k) {
+        SceneDocument doc = w.editor()->document();
+        moveBy(doc, blue, Vec3(0.08f, 0.02f, 0.0f));
+        w.editor()->edit(QStringLiteral("Move object"), std::move(doc), MergeKind::Drag,
+                         QString::number(blue));
+        QTest::qWait(7);
+    }
+    w.session()->endInteraction();
+    QVERIFY(settle(w));
+    {
+        const auto shown = v->frame();
+        const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+        QVERIFY(sameBits(shown->color, full.color));
+        QVERIFY(sameBits(shown->normal, full.normal));
+        QVERIFY(sameBits(shown->cost, full.cost));
+        QVERIFY(sameBits(shown->depth, full.depth));
+        QVERIFY(sameBits(shown->id, full.id));
+    }
+    // Back to colour: the next hand-over drops them.
+    v->setViewMode(ViewMode::Color);
+    SceneDocument doc = w.editor()->document();
+    moveBy(doc, blue, Vec3(-0.2f, 0.0f, 0.0f));
+    w.editor()->edit(QStringLiteral("Move object"), std::move(doc));
+    QVERIFY(settle(w));
+    QVERIFY(v->frame()->normal.empty());
+    QVERIFY(v->frame()->cost.empty());
+    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    QVERIFY(sameBits(v->frame()->color, full.color));
+    QVERIFY(sameBits(v->frame()->depth, full.depth));
 }
 
 void DisplayTest::rasterView_RepaintsOnlyChangedRectangles_ScreenEqualsTheFullImage() {
