@@ -68,15 +68,20 @@ uint8_t encode8(float d) {
     return static_cast<uint8_t>(std::lround(srgbEncode(d) * 255.0f));
 }
 
-/// Where encode8 steps up: steps[k - 1] is the smallest float in [0, 1] whose code is at least
+/// Where encode8 steps up: at[k - 1] is the smallest float in [0, 1] whose code is at least
 /// k. Found by bisection on the bit patterns (ordered like the values for floats >= 0), so the
 /// table is encode8 itself, evaluated 255 x 30 times once; the code is monotonic in d.
 struct Srgb8Steps {
+    static constexpr uint32_t kOne = 0x3f800000u;  // 1.0f, code 255.
+    static constexpr int kBucketShift = 16;          // buckets of 2^16 patterns: 1/128 apart
     float at[255];
+    /// The code of each bucket's first pattern. Within a bucket (a relative width of 1/128)
+    /// the code rises by at most one, so code() takes one or two compares.
+    uint8_t bucketStart[(kOne >> kBucketShift) + 1];
     Srgb8Steps() {
         uint32_t lo = 0;  // encode8 of every pattern below lo is < k.
         for (int k = 1; k <= 255; ++k) {
-            uint32_t hi = 0x3f800000u;  // 1.0f, code 255.
+            uint32_t hi = kOne;
             while (lo < hi) {
                 const uint32_t mid = lo + (hi - lo) / 2;
                 if (encode8(std::bit_cast<float>(mid)) >= k)
@@ -86,11 +91,19 @@ struct Srgb8Steps {
             }
             at[k - 1] = std::bit_cast<float>(lo);
         }
+        int code = 0;
+        for (uint32_t b = 0; b <= (kOne >> kBucketShift); ++b) {
+            const float first = std::bit_cast<float>(b << kBucketShift);
+            while (code < 255 && at[code] <= first) ++code;
+            bucketStart[b] = uint8_t(code);
+        }
     }
-    /// encode8(d) for d in [0, 1], branch-free: the number of steps at or below d.
+    /// encode8(d) for d in [0, 1]: the number of steps at or below d, counted on from the
+    /// code of d's bucket (-0.0 is bucket 0).
     uint8_t code(float d) const {
-        int i = 0;
-        for (int step = 128; step > 0; step >>= 1) i += at[i + step - 1] <= d ? step : 0;
+        const uint32_t bits = std::min(std::bit_cast<uint32_t>(d) & 0x7fffffffu, kOne);
+        int i = bucketStart[bits >> kBucketShift];
+        while (i < 255 && at[i] <= d) ++i;
         return uint8_t(i);
     }
 };
