@@ -39,6 +39,20 @@ private:
     QTemporaryDir dir_;
 };
 
+/// Drags `id` in `steps` small moves that arrive while passes run, so the viewport copies
+/// partial passes, then lets go.
+static void dragWhilePassesRun(MainWindow& w, ObjectId id, int steps) {
+    w.session()->beginInteraction(id);
+    for (int k = 0; k < steps; ++k) {
+        SceneDocument doc = w.editor()->document();
+        moveBy(doc, id, Vec3(0.08f, 0.02f, 0.0f));
+        w.editor()->edit(QStringLiteral("Move object"), std::move(doc), MergeKind::Drag,
+                         QString::number(id));
+        QTest::qWait(7);
+    }
+    w.session()->endInteraction();
+}
+
 void DisplayTest::init() {
     window_ = std::make_unique<MainWindow>();
     window_->resize(1000, 700);
@@ -107,16 +121,7 @@ void DisplayTest::incrementalHandover_EqualsFullCopyAfterThePass() {
     MainWindow& w = *window_;
     const ObjectId blue = idOf(w, "blue ball");
     w.editor()->setSelection(blue);
-    // A drag whose steps arrive while passes run, so the viewport copies partial passes.
-    w.session()->beginInteraction(blue);
-    for (int k = 0; k < 12; ++k) {
-        SceneDocument doc = w.editor()->document();
-        moveBy(doc, blue, Vec3(0.08f, 0.02f, 0.0f));
-        w.editor()->edit(QStringLiteral("Move object"), std::move(doc), MergeKind::Drag,
-                         QString::number(blue));
-        QTest::qWait(7);
-    }
-    w.session()->endInteraction();
+    dragWhilePassesRun(w, blue, 12);
     QVERIFY(settle(w));
 
     const auto shown = w.viewport()->frame();
@@ -149,15 +154,7 @@ void DisplayTest::debugBuffers_HandedOverOnlyWhileShown_ThenIncrementallyEqual()
         QVERIFY(sameBits(v->frame()->cost, full.cost));
     }
     // While it is shown they follow the edits tile by tile.
-    w.session()->beginInteraction(blue);
-    for (int k = 0; k < 8; ++k) {
-        SceneDocument doc = w.editor()->document();
-        moveBy(doc, blue, Vec3(0.08f, 0.02f, 0.0f));
-        w.editor()->edit(QStringLiteral("Move object"), std::move(doc), MergeKind::Drag,
-                         QString::number(blue));
-        QTest::qWait(7);
-    }
-    w.session()->endInteraction();
+    dragWhilePassesRun(w, blue, 8);
     QVERIFY(settle(w));
     {
         const auto shown = v->frame();
