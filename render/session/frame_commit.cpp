@@ -95,6 +95,51 @@ private:
     bool fresh_ = false;
 };
 
+/// A tile's record pool, append-only like its segment pool: a traced pixel's records go to
+/// the end and its old ones become garbage, so a commit costs what it traces, not the tile.
+/// Records stop being referenced in several places (a pixel losing kDeferredValid), so the
+/// pool does not count what is live: it is compacted once it has grown by more than it held
+/// after the last compaction plus one record a pixel, which bounds it at twice that and
+/// keeps a compaction's scan of the tile amortized over as many appended records.
+class RecordPool {
+public:
+    RecordPool(DeepFrame& frame, int tile)
+        : frame_(frame), pool_(frame.tileRecords[std::size_t(tile)]),
+          kept_(frame.tileRecordsKept[std::size_t(tile)]) {}
+
+    /// Every pixel of the tile is traced again: no old record stays referenced.
+    void restart() {
+        pool_.clear();
+        kept_ = 0;
+    }
+    void append(std::size_t i, const ShadingRecord* first, uint8_t count) {
+        frame_.recordStart[i] = uint32_t(pool_.size());
+        frame_.recordCount[i] = count;
+        pool_.insert(pool_.end(), first, first + count);
+    }
+    /// Keeps only the records of the pixels of `r` that still wait for deferred shadows.
+    void compactIfWasteful(const PixelRect& r) {
+        if (pool_.size() <= 2 * std::size_t(kept_) + std::size_t(r.area())) return;
+        std::vector<ShadingRecord> fresh;
+        for (int y = r.y0; y < r.y1; ++y) {
+            for (int x = r.x0; x < r.x1; ++x) {
+                const std::size_t i = frame_.index(x, y);
+                if (!(frame_.flags[i] & kDeferredValid)) continue;
+                const uint32_t start = frame_.recordStart[i];
+                frame_.recordStart[i] = uint32_t(fresh.size());
+                fresh.insert(fresh.end(), pool_.begin() + start, pool_.begin() + start + frame_.recordCount[i]);
+            }
+        }
+        pool_.swap(fresh);
+        kept_ = uint32_t(pool_.size());
+    }
+
+private:
+    DeepFrame& frame_;
+    std::vector<ShadingRecord>& pool_;
+    uint32_t& kept_;
+};
+
 /// The blocks of one tile a commit wrote, so each summary is recomputed once.
 class TouchedBlocks {
 public:
@@ -250,35 +295,15 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         counts[t.tracedState] = uint32_t(traced.size());
     }
     if (traced.withRecords) {
-        // Rebuild the tile's record pool: new records for traced pixels, old ones kept for
-        // untouched pixels that still wait for their deferred shadows.
-        auto& pool = tileRecords[std::size_t(t.tile)];
-        const PixelRect& r = t.rect;
-        const std::size_t rw = std::size_t(r.x1 - r.x0);
-        std::vector<ShadingRecord> fresh;
-        std::vector<uint8_t> written(rw * std::size_t(r.y1 - r.y0), 0);
+        // Traced pixels get new records at the end of the tile's pool; untouched pixels that
+        // still wait for their deferred shadows keep theirs where they are.
+        RecordPool records(*this, tile);
+        if (wholeTile) records.restart();
         for (std::size_t k = 0; k < traced.size(); ++k) {
-            const std::size_t i = traced.pixel[k];
-            const uint32_t py32 = uint32_t(i) / uint32_t(width);
-            const int px = int(uint32_t(i) - py32 * uint32_t(width)), py = int(py32);
-            written[std::size_t(py - r.y0) * rw + std::size_t(px - r.x0)] = 1;
             const uint8_t n = traced.records.overflow[k] ? 0 : traced.records.count[k];
-            recordStart[i] = uint32_t(fresh.size());
-            recordCount[i] = n;
-            const ShadingRecord* first = traced.records.of(k, kRecordsPerPixel);
-            fresh.insert(fresh.end(), first, first + n);
+            records.append(traced.pixel[k], traced.records.of(k, kRecordsPerPixel), n);
         }
-        for (int y = r.y0; y < r.y1; ++y) {
-            for (int x = r.x0; x < r.x1; ++x) {
-                const std::size_t i = index(x, y);
-                if (written[std::size_t(y - r.y0) * rw + std::size_t(x - r.x0)]) continue;
-                if (!(flags[i] & kDeferredValid)) continue;
-                const uint32_t start = recordStart[i];
-                recordStart[i] = uint32_t(fresh.size());
-                fresh.insert(fresh.end(), pool.begin() + start, pool.begin() + start + recordCount[i]);
-            }
-        }
-        pool.swap(fresh);
+        records.compactIfWasteful(t.rect);
     }
 
     // Undersampled blocks: the block's ray over all its pixels, which keep no segments.
