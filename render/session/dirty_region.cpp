@@ -331,12 +331,12 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     thread_local std::vector<uint8_t> coreBuffer;
     std::vector<uint8_t>& core = coreBuffer;
     core.assign(mask.size(), 0);
-    std::atomic<std::size_t> blocksTested{0};
+    std::atomic<std::size_t> blocksTested{0}, pixelsTested{0};
     parallelForIndex(0, frame.tilesX() * frame.tilesY(), [&](int t) {
         const int tx = t % frame.tilesX(), ty = t / frame.tilesX();
         const PixelRect tr{tx * T, ty * T, std::min(w, (tx + 1) * T), std::min(h, (ty + 1) * T)};
         if (!tileTests(c, tr, frame.tileSummary[std::size_t(t)]).any()) return;
-        std::size_t tested = 0;
+        std::size_t tested = 0, pixels = 0;
         for (int by = ty * perTile; by < std::min(blocksY, (ty + 1) * perTile); ++by) {
             for (int bx = tx * perTile; bx < std::min(blocksX, (tx + 1) * perTile); ++bx) {
                 const int b = by * blocksX + bx;
@@ -352,6 +352,7 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                     continue;
                 }
                 bool any = false;
+                pixels += std::size_t(r.area());
                 for (int y = r.y0; y < r.y1; ++y)
                     for (int x = r.x0; x < r.x1; ++x)
                         if (pixelMayChange(c, tests, x, y, t)) core[frame.index(x, y)] = any = true;
@@ -359,6 +360,7 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
             }
         }
         blocksTested += tested;
+        pixelsTested += pixels;
     });
     // The blocks next to (or at) a marked one: only those can get a mark.
     std::vector<int> nearBlocks;
@@ -374,11 +376,7 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
         for (int b = 0; b < blocks; ++b)
             if (near[std::size_t(b)]) nearBlocks.push_back(b);
     }
-    if (stats) {
-        stats->blocksTested = blocksTested.load();
-        stats->blocksGrown = nearBlocks.size();
-    }
-    std::atomic<std::size_t> count{0};
+    std::atomic<std::size_t> count{0}, pixelsGrown{0};
     parallelForIndex(0, int(nearBlocks.size()), [&](int k) {
         const int b = nearBlocks[std::size_t(k)];
         const int bx = b % blocksX, by = b / blocksX;
@@ -403,7 +401,14 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
             }
         }
         count += local;
+        pixelsGrown += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
     });
+    if (stats) {
+        stats->blocksTested = blocksTested.load();
+        stats->blocksGrown = nearBlocks.size();
+        stats->pixelsTested = pixelsTested.load();
+        stats->pixelsGrown = pixelsGrown.load();
+    }
     return count.load();
 }
 
