@@ -64,10 +64,13 @@ public:
         frame_.segmentCount[pixel_] = uint8_t(count);
         live_ = live_ - oldCount_ + uint32_t(count);
     }
-    void clear(std::size_t i) {
-        if (!fresh_) live_ -= frame_.segmentCount[i];
-        frame_.segmentStart[i] = uint32_t(pool_.size());
-        frame_.segmentCount[i] = 0;
+    /// Pixels [i, i + n) of one row keep no segments.
+    void clearRun(std::size_t i, std::size_t n) {
+        uint32_t removed = 0;
+        for (std::size_t j = 0; j < n; ++j) removed += frame_.segmentCount[i + j];
+        if (!fresh_) live_ -= removed;
+        std::fill_n(frame_.segmentStart.begin() + std::ptrdiff_t(i), n, uint32_t(pool_.size()));
+        std::fill_n(frame_.segmentCount.begin() + std::ptrdiff_t(i), n, uint8_t(0));
     }
     /// Rewrites the pool with only the segments pixels of `r` still reference, when it is
     /// mostly garbage.
@@ -306,8 +309,11 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         records.compactIfWasteful(t.rect);
     }
 
-    // Undersampled blocks: the block's ray over all its pixels, which keep no segments.
+    // Undersampled blocks: the block's ray over all its pixels, which keep no segments. A
+    // span's rows are filled as runs, and the old states are counted in registers (a
+    // read-modify-write of the tile's counts per pixel otherwise).
     const RayList& blocks = t.blocks;
+    uint32_t wasState[3] = {0, 0, 0}, spanPixels = 0;
     for (std::size_t k = 0; k < blocks.size(); ++k) {
         const PrimaryInfo& info = blocks.info[k];
         const uint8_t f = uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) | kTracedLastUpdate);
@@ -315,23 +321,36 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         const int spanX = blocks.extra[k] & 15, spanY = blocks.extra[k] >> 4;
         touched.add(blocks.pixel[k]);  // A span (step 2 or 4, aligned) lies in one 8x8 block.
         for (int dy = 0; dy < spanY; ++dy) {
+            const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width);
+            const auto to = std::ptrdiff_t(i);
             for (int dx = 0; dx < spanX; ++dx) {
-                const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width) + std::size_t(dx);
-                color[i] = blocks.color[k];
-                id[i] = info.id;
-                depth[i] = info.depth;
-                normal[i] = info.normal;
-                cost[i] = blocks.rays[k];
-                setState(i, tile, kInteractive);
-                flags[i] = f;
-                hitBound[i] = bound;
-                if (clearSamples) {
-                    sampleSum[i] = Color(0.0f);
-                    sampleCount[i] = 0;
-                }
-                segments.clear(i);
+                const uint8_t s = state[i + std::size_t(dx)];
+                wasState[0] += s == kStale;
+                wasState[1] += s == kInteractive;
+                wasState[2] += s == kBase;
             }
+            spanPixels += uint32_t(spanX);
+            std::fill_n(color.begin() + to, spanX, blocks.color[k]);
+            std::fill_n(id.begin() + to, spanX, info.id);
+            std::fill_n(depth.begin() + to, spanX, info.depth);
+            std::fill_n(normal.begin() + to, spanX, info.normal);
+            std::fill_n(cost.begin() + to, spanX, blocks.rays[k]);
+            std::fill_n(state.begin() + to, spanX, uint8_t(kInteractive));
+            std::fill_n(flags.begin() + to, spanX, f);
+            std::fill_n(hitBound.begin() + to, spanX, bound);
+            if (clearSamples) {
+                std::fill_n(sampleSum.begin() + to, spanX, Color(0.0f));
+                std::fill_n(sampleCount.begin() + to, spanX, uint16_t(0));
+            }
+            segments.clearRun(i, std::size_t(spanX));
         }
+    }
+    if (spanPixels > 0) {
+        auto& counts = tileStates[std::size_t(tile)];
+        counts[kStale] -= wasState[0];
+        counts[kInteractive] += spanPixels - wasState[1];
+        counts[kBase] -= wasState[2];
+        counts[kFinal] -= spanPixels - wasState[0] - wasState[1] - wasState[2];
     }
 
     // Deferred shadows resolved: the hit, its tree and its cost stay.

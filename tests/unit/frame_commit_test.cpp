@@ -2,7 +2,8 @@
 // traced pixel, the segment pools, the state counts and the block summaries, for a whole
 // tile and for scattered pixels whose frame indices run on from one row into the next, and
 // `base` written only when the result keeps it; deferred records appended (untouched pixels'
-// records stay where they are) with the pool bounded by its compaction.
+// records stay where they are) with the pool bounded by its compaction; undersampled blocks
+// filling their spans, with the state counts of pixels in every state.
 #include "session/deep_frame.h"
 #include "session/tile_output.h"
 
@@ -242,6 +243,72 @@ TEST(FrameCommit, SparseRecords_AppendedWithoutMovingTheTilesOthers_PoolBounded)
     }
     EXPECT_LT(f.tileRecords[0].size(), wholeSize);
     for (std::size_t i = 1; i < 1024; i += 2) expectRecords(f, i, latest[i]);
+}
+
+TEST(FrameCommit, UndersampledBlocks_FillTheirSpans_CountsFollowMixedStates) {
+    DeepFrame f;
+    f.resize(kWidth, kHeight);
+    ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // every pixel at kBase
+    // Mixed old states: some final, some stale, some interactive.
+    for (std::size_t i = 0; i < 1024; i += 3) f.setState(i, 0, kFinal);
+    for (std::size_t i = 1; i < 1024; i += 5) f.setState(i, 0, kStale);
+    for (std::size_t i = 2; i < 1024; i += 7) f.setState(i, 0, kInteractive);
+    TileResult t;
+    t.generation = 7;
+    t.rect = {0, 0, 32, 32};
+    RayList& b = t.blocks;
+    // 4x4 spans at (4, 0), (8, 8) and (28, 28); a 2x4 span at (0, 16).
+    const std::vector<std::array<int, 4>> spans = {{4, 0, 4, 4}, {8, 8, 4, 4}, {28, 28, 4, 4}, {0, 16, 2, 4}};
+    for (const auto& sp : spans) {
+        Ray ray;
+        ray.origin = Vec3(float(sp[0]), float(sp[1]), 0.0f);
+        ray.dir = Vec3(0.0f, 0.0f, -1.0f);
+        b.add(ray, 0, std::size_t(sp[1]) * kWidth + std::size_t(sp[0]), uint8_t(sp[2] | (sp[3] << 4)));
+    }
+    b.color.resize(b.size()), b.info.resize(b.size()), b.rays.resize(b.size());
+    for (std::size_t k = 0; k < b.size(); ++k) {
+        b.color[k] = Color(float(k) + 0.5f);
+        b.info[k].id = ObjectId(k + 1);
+        b.info[k].depth = 2.0f + float(k);
+        b.info[k].normal = Vec3(1.0f, 0.0f, 0.0f);
+        b.info[k].touchedSpecular = k == 1;
+        b.rays[k] = uint32_t(10 + k);
+    }
+    std::array<uint32_t, 4> want = f.tileStates[0];
+    std::set<std::size_t> covered;
+    for (const auto& sp : spans)
+        for (int y = sp[1]; y < sp[1] + sp[3]; ++y)
+            for (int x = sp[0]; x < sp[0] + sp[2]; ++x) {
+                const std::size_t i = f.index(x, y);
+                covered.insert(i);
+                --want[f.state[i]];
+                ++want[kInteractive];
+            }
+    ASSERT_TRUE(f.commit(t, 7));
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+        const auto& sp = spans[k];
+        for (int y = sp[1]; y < sp[1] + sp[3]; ++y)
+            for (int x = sp[0]; x < sp[0] + sp[2]; ++x) {
+                const std::size_t i = f.index(x, y);
+                SCOPED_TRACE("pixel " + std::to_string(i));
+                EXPECT_EQ(f.color[i], b.color[k]);
+                EXPECT_EQ(f.id[i], b.info[k].id);
+                EXPECT_EQ(f.depth[i], b.info[k].depth);
+                EXPECT_EQ(f.normal[i], b.info[k].normal);
+                EXPECT_EQ(f.cost[i], b.rays[k]);
+                EXPECT_EQ(f.state[i], kInteractive);
+                EXPECT_EQ(f.flags[i], uint8_t(kTracedLastUpdate | (k == 1 ? kTouchedSpecular | kTreeUnknown : 0)));
+                EXPECT_EQ(f.hitBound[i], glm::vec4(float(sp[0]), float(sp[1]), -b.info[k].depth, 0.0f));
+                EXPECT_EQ(f.segmentCount[i], 0);
+            }
+    }
+    for (const std::size_t i : wholeTile())
+        if (!covered.count(i)) {
+            ASSERT_EQ(f.color[i], made(i, 1).color) << "pixel " << i << " outside every span";
+        }
+    EXPECT_EQ(f.tileStates[0], want);
+    EXPECT_EQ(f.tileLiveSegments[0], referencedSegments(f));
+    EXPECT_TRUE(f.summariesMatchPixels());
 }
 
 }  // namespace
