@@ -309,9 +309,9 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         records.compactIfWasteful(t.rect);
     }
 
-    // Undersampled blocks: the block's ray over all its pixels, which keep no segments. A
-    // span's rows are filled as runs, and the old states are counted in registers (a
-    // read-modify-write of the tile's counts per pixel otherwise).
+    // Undersampled blocks: the block's ray over all its pixels, which keep no segments. The
+    // old states are counted in registers (a read-modify-write of the tile's counts per pixel
+    // otherwise) and the segments cleared a span row at a time.
     const RayList& blocks = t.blocks;
     uint32_t wasState[3] = {0, 0, 0}, spanPixels = 0;
     for (std::size_t k = 0; k < blocks.size(); ++k) {
@@ -322,26 +322,26 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         touched.add(blocks.pixel[k]);  // A span (step 2 or 4, aligned) lies in one 8x8 block.
         for (int dy = 0; dy < spanY; ++dy) {
             const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width);
-            const auto to = std::ptrdiff_t(i);
             for (int dx = 0; dx < spanX; ++dx) {
-                const uint8_t s = state[i + std::size_t(dx)];
+                const std::size_t p = i + std::size_t(dx);
+                const uint8_t s = state[p];
                 wasState[0] += s == kStale;
                 wasState[1] += s == kInteractive;
                 wasState[2] += s == kBase;
+                color[p] = blocks.color[k];
+                id[p] = info.id;
+                depth[p] = info.depth;
+                normal[p] = info.normal;
+                cost[p] = blocks.rays[k];
+                state[p] = kInteractive;
+                flags[p] = f;
+                hitBound[p] = bound;
+                if (clearSamples) {
+                    sampleSum[p] = Color(0.0f);
+                    sampleCount[p] = 0;
+                }
             }
             spanPixels += uint32_t(spanX);
-            std::fill_n(color.begin() + to, spanX, blocks.color[k]);
-            std::fill_n(id.begin() + to, spanX, info.id);
-            std::fill_n(depth.begin() + to, spanX, info.depth);
-            std::fill_n(normal.begin() + to, spanX, info.normal);
-            std::fill_n(cost.begin() + to, spanX, blocks.rays[k]);
-            std::fill_n(state.begin() + to, spanX, uint8_t(kInteractive));
-            std::fill_n(flags.begin() + to, spanX, f);
-            std::fill_n(hitBound.begin() + to, spanX, bound);
-            if (clearSamples) {
-                std::fill_n(sampleSum.begin() + to, spanX, Color(0.0f));
-                std::fill_n(sampleCount.begin() + to, spanX, uint16_t(0));
-            }
             segments.clearRun(i, std::size_t(spanX));
         }
     }
