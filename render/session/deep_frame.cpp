@@ -36,6 +36,7 @@ void DeepFrame::allocate(int w, int h) {
     tileRecords.assign(std::size_t(tilesX()) * std::size_t(tilesY()), {});
     recordStart.assign(n, 0);
     recordCount.assign(n, 0);
+    tileRecordsKept.assign(tileRecords.size(), 0);
     tileSegments.assign(tileRecords.size(), {});
     segmentStart.assign(n, 0);
     segmentCount.assign(n, 0);

@@ -75,6 +75,8 @@ struct DeepFrame {
     std::vector<std::vector<ShadingRecord>> tileRecords;
     std::vector<uint32_t> recordStart;
     std::vector<uint8_t> recordCount;
+    /// Size of each record pool after its last compaction (commit appends and compacts).
+    std::vector<uint32_t> tileRecordsKept;
     /// Secondary ray segments of each pixel's ray tree, pooled per tile like the records.
     std::vector<std::vector<TreeSegment>> tileSegments;
     std::vector<uint32_t> segmentStart;

@@ -237,6 +237,18 @@ TileTests tileTests(const MarkContext& c, const PixelRect& r, const TileSummary&
     return tests;
 }
 
+/// Whether block `r` lies wholly inside one of the edit's footprints (each of its pixels may
+/// change, whatever its other tests say).
+bool insideFootprint(const MarkContext& c, const PixelRect& r) {
+    for (const PixelRect& f : c.footprints)
+        if (f.x0 <= r.x0 && r.x1 <= f.x1 && f.y0 <= r.y0 && r.y1 <= f.y1) return true;
+    return false;
+}
+
+/// What marking found in a block: no pixel, some, or every pixel (then growing needs no look
+/// at its neighbours).
+enum BlockMarks : uint8_t { kNone = 0, kSome = 1, kWhole = 2 };
+
 bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, int tile) {
     const std::size_t i = c.frame.index(x, y);
     if (tests.footprint)
@@ -319,12 +331,12 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     thread_local std::vector<uint8_t> coreBuffer;
     std::vector<uint8_t>& core = coreBuffer;
     core.assign(mask.size(), 0);
-    std::atomic<std::size_t> blocksTested{0};
+    std::atomic<std::size_t> blocksTested{0}, pixelsTested{0};
     parallelForIndex(0, frame.tilesX() * frame.tilesY(), [&](int t) {
         const int tx = t % frame.tilesX(), ty = t / frame.tilesX();
         const PixelRect tr{tx * T, ty * T, std::min(w, (tx + 1) * T), std::min(h, (ty + 1) * T)};
         if (!tileTests(c, tr, frame.tileSummary[std::size_t(t)]).any()) return;
-        std::size_t tested = 0;
+        std::size_t tested = 0, pixels = 0;
         for (int by = ty * perTile; by < std::min(blocksY, (ty + 1) * perTile); ++by) {
             for (int bx = tx * perTile; bx < std::min(blocksX, (tx + 1) * perTile); ++bx) {
                 const int b = by * blocksX + bx;
@@ -332,14 +344,23 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                 const TileTests tests = tileTests(c, r, frame.blockSummary[std::size_t(b)]);
                 ++tested;
                 if (!tests.any()) continue;
+                if (tests.footprint && insideFootprint(c, r)) {
+                    // Every pixel passes its first test: no need to ask each one.
+                    for (int y = r.y0; y < r.y1; ++y)
+                        std::fill_n(core.begin() + std::ptrdiff_t(frame.index(r.x0, y)), r.x1 - r.x0, uint8_t(1));
+                    blockMarked[std::size_t(b)] = kWhole;
+                    continue;
+                }
                 bool any = false;
+                pixels += std::size_t(r.area());
                 for (int y = r.y0; y < r.y1; ++y)
                     for (int x = r.x0; x < r.x1; ++x)
                         if (pixelMayChange(c, tests, x, y, t)) core[frame.index(x, y)] = any = true;
-                blockMarked[std::size_t(b)] = any;
+                blockMarked[std::size_t(b)] = any ? kSome : kNone;
             }
         }
         blocksTested += tested;
+        pixelsTested += pixels;
     });
     // The blocks next to (or at) a marked one: only those can get a mark.
     std::vector<int> nearBlocks;
@@ -355,17 +376,20 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
         for (int b = 0; b < blocks; ++b)
             if (near[std::size_t(b)]) nearBlocks.push_back(b);
     }
-    if (stats) {
-        stats->blocksTested = blocksTested.load();
-        stats->blocksGrown = nearBlocks.size();
-    }
-    std::atomic<std::size_t> count{0};
+    std::atomic<std::size_t> count{0}, pixelsGrown{0};
     parallelForIndex(0, int(nearBlocks.size()), [&](int k) {
         const int b = nearBlocks[std::size_t(k)];
         const int bx = b % blocksX, by = b / blocksX;
         if (touchedBlocks) (*touchedBlocks)[std::size_t(b)] = 1;
         std::size_t local = 0;
         const int y1 = std::min(h, (by + 1) * B), x1 = std::min(w, (bx + 1) * B);
+        if (blockMarked[std::size_t(b)] == kWhole) {
+            // Every pixel is marked itself, so its grown mark is too.
+            for (int y = by * B; y < y1; ++y)
+                std::fill_n(mask.begin() + std::ptrdiff_t(frame.index(bx * B, y)), x1 - bx * B, uint8_t(1));
+            count += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
+            return;
+        }
         for (int y = by * B; y < y1; ++y) {
             for (int x = bx * B; x < x1; ++x) {
                 uint8_t d = 0;
@@ -377,7 +401,14 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
             }
         }
         count += local;
+        pixelsGrown += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
     });
+    if (stats) {
+        stats->blocksTested = blocksTested.load();
+        stats->blocksGrown = nearBlocks.size();
+        stats->pixelsTested = pixelsTested.load();
+        stats->pixelsGrown = pixelsGrown.load();
+    }
     return count.load();
 }
 

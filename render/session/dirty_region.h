@@ -36,6 +36,10 @@ enum class MarkScope {
 struct MarkStats {
     std::size_t blocksTested = 0;  ///< Blocks tested against their summaries (their tile passed).
     std::size_t blocksGrown = 0;   ///< Blocks visited to grow the marks by a pixel.
+    /// Pixels tested one by one, and pixels grown by looking at their neighbours: blocks that
+    /// lie wholly inside a footprint are marked and grown whole, without either.
+    std::size_t pixelsTested = 0;
+    std::size_t pixelsGrown = 0;
 };
 
 /// Sets mask[i] = 1 for every pixel `edit` can change, given the frame as it was traced under

@@ -64,10 +64,13 @@ public:
         frame_.segmentCount[pixel_] = uint8_t(count);
         live_ = live_ - oldCount_ + uint32_t(count);
     }
-    void clear(std::size_t i) {
-        if (!fresh_) live_ -= frame_.segmentCount[i];
-        frame_.segmentStart[i] = uint32_t(pool_.size());
-        frame_.segmentCount[i] = 0;
+    /// Pixels [i, i + n) of one row keep no segments.
+    void clearRun(std::size_t i, std::size_t n) {
+        uint32_t removed = 0;
+        for (std::size_t j = 0; j < n; ++j) removed += frame_.segmentCount[i + j];
+        if (!fresh_) live_ -= removed;
+        std::fill_n(frame_.segmentStart.begin() + std::ptrdiff_t(i), n, uint32_t(pool_.size()));
+        std::fill_n(frame_.segmentCount.begin() + std::ptrdiff_t(i), n, uint8_t(0));
     }
     /// Rewrites the pool with only the segments pixels of `r` still reference, when it is
     /// mostly garbage.
@@ -93,6 +96,51 @@ private:
     std::size_t pixel_ = 0;
     uint32_t oldCount_ = 0, start_ = 0;
     bool fresh_ = false;
+};
+
+/// A tile's record pool, append-only like its segment pool: a traced pixel's records go to
+/// the end and its old ones become garbage, so a commit costs what it traces, not the tile.
+/// Records stop being referenced in several places (a pixel losing kDeferredValid), so the
+/// pool does not count what is live: it is compacted once it has grown by more than it held
+/// after the last compaction plus one record a pixel, which bounds it at twice that and
+/// keeps a compaction's scan of the tile amortized over as many appended records.
+class RecordPool {
+public:
+    RecordPool(DeepFrame& frame, int tile)
+        : frame_(frame), pool_(frame.tileRecords[std::size_t(tile)]),
+          kept_(frame.tileRecordsKept[std::size_t(tile)]) {}
+
+    /// Every pixel of the tile is traced again: no old record stays referenced.
+    void restart() {
+        pool_.clear();
+        kept_ = 0;
+    }
+    void append(std::size_t i, const ShadingRecord* first, uint8_t count) {
+        frame_.recordStart[i] = uint32_t(pool_.size());
+        frame_.recordCount[i] = count;
+        pool_.insert(pool_.end(), first, first + count);
+    }
+    /// Keeps only the records of the pixels of `r` that still wait for deferred shadows.
+    void compactIfWasteful(const PixelRect& r) {
+        if (pool_.size() <= 2 * std::size_t(kept_) + std::size_t(r.area())) return;
+        std::vector<ShadingRecord> fresh;
+        for (int y = r.y0; y < r.y1; ++y) {
+            for (int x = r.x0; x < r.x1; ++x) {
+                const std::size_t i = frame_.index(x, y);
+                if (!(frame_.flags[i] & kDeferredValid)) continue;
+                const uint32_t start = frame_.recordStart[i];
+                frame_.recordStart[i] = uint32_t(fresh.size());
+                fresh.insert(fresh.end(), pool_.begin() + start, pool_.begin() + start + frame_.recordCount[i]);
+            }
+        }
+        pool_.swap(fresh);
+        kept_ = uint32_t(pool_.size());
+    }
+
+private:
+    DeepFrame& frame_;
+    std::vector<ShadingRecord>& pool_;
+    uint32_t& kept_;
 };
 
 /// The blocks of one tile a commit wrote, so each summary is recomputed once.
@@ -250,39 +298,22 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         counts[t.tracedState] = uint32_t(traced.size());
     }
     if (traced.withRecords) {
-        // Rebuild the tile's record pool: new records for traced pixels, old ones kept for
-        // untouched pixels that still wait for their deferred shadows.
-        auto& pool = tileRecords[std::size_t(t.tile)];
-        const PixelRect& r = t.rect;
-        const std::size_t rw = std::size_t(r.x1 - r.x0);
-        std::vector<ShadingRecord> fresh;
-        std::vector<uint8_t> written(rw * std::size_t(r.y1 - r.y0), 0);
+        // Traced pixels get new records at the end of the tile's pool; untouched pixels that
+        // still wait for their deferred shadows keep theirs where they are.
+        RecordPool records(*this, tile);
+        if (wholeTile) records.restart();
         for (std::size_t k = 0; k < traced.size(); ++k) {
-            const std::size_t i = traced.pixel[k];
-            const uint32_t py32 = uint32_t(i) / uint32_t(width);
-            const int px = int(uint32_t(i) - py32 * uint32_t(width)), py = int(py32);
-            written[std::size_t(py - r.y0) * rw + std::size_t(px - r.x0)] = 1;
             const uint8_t n = traced.records.overflow[k] ? 0 : traced.records.count[k];
-            recordStart[i] = uint32_t(fresh.size());
-            recordCount[i] = n;
-            const ShadingRecord* first = traced.records.of(k, kRecordsPerPixel);
-            fresh.insert(fresh.end(), first, first + n);
+            records.append(traced.pixel[k], traced.records.of(k, kRecordsPerPixel), n);
         }
-        for (int y = r.y0; y < r.y1; ++y) {
-            for (int x = r.x0; x < r.x1; ++x) {
-                const std::size_t i = index(x, y);
-                if (written[std::size_t(y - r.y0) * rw + std::size_t(x - r.x0)]) continue;
-                if (!(flags[i] & kDeferredValid)) continue;
-                const uint32_t start = recordStart[i];
-                recordStart[i] = uint32_t(fresh.size());
-                fresh.insert(fresh.end(), pool.begin() + start, pool.begin() + start + recordCount[i]);
-            }
-        }
-        pool.swap(fresh);
+        records.compactIfWasteful(t.rect);
     }
 
-    // Undersampled blocks: the block's ray over all its pixels, which keep no segments.
+    // Undersampled blocks: the block's ray over all its pixels, which keep no segments. The
+    // old states are counted in registers (a read-modify-write of the tile's counts per pixel
+    // otherwise) and the segments cleared a span row at a time.
     const RayList& blocks = t.blocks;
+    uint32_t wasState[3] = {0, 0, 0}, spanPixels = 0;
     for (std::size_t k = 0; k < blocks.size(); ++k) {
         const PrimaryInfo& info = blocks.info[k];
         const uint8_t f = uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) | kTracedLastUpdate);
@@ -290,23 +321,36 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         const int spanX = blocks.extra[k] & 15, spanY = blocks.extra[k] >> 4;
         touched.add(blocks.pixel[k]);  // A span (step 2 or 4, aligned) lies in one 8x8 block.
         for (int dy = 0; dy < spanY; ++dy) {
+            const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width);
             for (int dx = 0; dx < spanX; ++dx) {
-                const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width) + std::size_t(dx);
-                color[i] = blocks.color[k];
-                id[i] = info.id;
-                depth[i] = info.depth;
-                normal[i] = info.normal;
-                cost[i] = blocks.rays[k];
-                setState(i, tile, kInteractive);
-                flags[i] = f;
-                hitBound[i] = bound;
+                const std::size_t p = i + std::size_t(dx);
+                const uint8_t s = state[p];
+                wasState[0] += s == kStale;
+                wasState[1] += s == kInteractive;
+                wasState[2] += s == kBase;
+                color[p] = blocks.color[k];
+                id[p] = info.id;
+                depth[p] = info.depth;
+                normal[p] = info.normal;
+                cost[p] = blocks.rays[k];
+                state[p] = kInteractive;
+                flags[p] = f;
+                hitBound[p] = bound;
                 if (clearSamples) {
-                    sampleSum[i] = Color(0.0f);
-                    sampleCount[i] = 0;
+                    sampleSum[p] = Color(0.0f);
+                    sampleCount[p] = 0;
                 }
-                segments.clear(i);
             }
+            spanPixels += uint32_t(spanX);
+            segments.clearRun(i, std::size_t(spanX));
         }
+    }
+    if (spanPixels > 0) {
+        auto& counts = tileStates[std::size_t(tile)];
+        counts[kStale] -= wasState[0];
+        counts[kInteractive] += spanPixels - wasState[1];
+        counts[kBase] -= wasState[2];
+        counts[kFinal] -= spanPixels - wasState[0] - wasState[1] - wasState[2];
     }
 
     // Deferred shadows resolved: the hit, its tree and its cost stay.

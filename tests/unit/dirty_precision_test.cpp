@@ -130,5 +130,39 @@ TEST(DirtyPrecision, ExposureAndToneMap_MarkNothing) {
     EXPECT_EQ(c.marked, 0u);
 }
 
+// A large object's move (a 1M-triangle mesh fills a third of the frame): blocks wholly inside
+// the footprint are marked and grown whole, so marking asks far fewer pixels than it marks,
+// and still marks every pixel of the footprint.
+TEST(DirtyPrecision, LargeFootprint_InnerBlocksMarkedWholeWithoutTestingTheirPixels) {
+    SceneDocument doc = test::editRoom(160, 120);
+    RenderSession session(2);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    const std::shared_ptr<const CompiledScene> snapshot = session.snapshot();
+    const ObjectId box = object(doc, "box").id;
+    Aabb region = snapshot->objectBounds(box);
+    region = Aabb{region.min - Vec3(0.6f), region.max + Vec3(0.6f)};
+    SceneEdit edit;
+    edit.regions = {region};
+    const PixelRect foot = screenFootprint(snapshot->camera(), region);
+    ASSERT_GE(foot.x1 - foot.x0, 40);
+    ASSERT_GE(foot.y1 - foot.y0, 40);
+    ASSERT_LT(foot.area(), 160 * 120 / 2);
+    std::vector<uint8_t> mask;
+    MarkStats stats;
+    session.withFrame([&](const DeepFrame& frame, const auto&) {
+        markDirtyPixels(edit, *snapshot, frame, mask, nullptr, MarkScope::WithoutShadows, &stats);
+    });
+    for (int y = foot.y0; y < foot.y1; ++y)
+        for (int x = foot.x0; x < foot.x1; ++x) ASSERT_TRUE(mask[std::size_t(y) * 160 + std::size_t(x)]) << x << "," << y;
+    // The 8x8 blocks wholly inside the footprint are neither tested nor grown pixel by pixel:
+    // only those its edges cross (and those the mirror and glass balls' trees send to it).
+    const std::size_t inner = std::size_t(foot.x1 / 8 - (foot.x0 + 7) / 8) * std::size_t(foot.y1 / 8 - (foot.y0 + 7) / 8);
+    ASSERT_GE(inner, 16u);
+    EXPECT_LE(stats.pixelsTested + 64 * inner, 64 * stats.blocksTested);
+    EXPECT_EQ(stats.pixelsGrown + 64 * inner, 64 * stats.blocksGrown);
+    EXPECT_LT(stats.pixelsTested, std::size_t(foot.area()) / 2) << stats.pixelsTested << " of " << foot.area();
+}
+
 }  // namespace
 }  // namespace rs

@@ -1,12 +1,15 @@
 // DeepFrame::commit of traced camera rays, fed by hand-made tile results: every buffer of a
 // traced pixel, the segment pools, the state counts and the block summaries, for a whole
 // tile and for scattered pixels whose frame indices run on from one row into the next, and
-// `base` written only when the result keeps it.
+// `base` written only when the result keeps it; deferred records appended (untouched pixels'
+// records stay where they are) with the pool bounded by its compaction; undersampled blocks
+// filling their spans, with the state counts of pixels in every state.
 #include "session/deep_frame.h"
 #include "session/tile_output.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 namespace rs {
@@ -154,6 +157,158 @@ TEST(FrameCommit, BaseWrittenOnlyWhenTheResultKeepsIt) {
     t = resultFor(wholeTile(), 1, 3);
     ASSERT_TRUE(f.commit(t, 3));
     for (const std::size_t i : wholeTile()) expectPixel(f, i, 1, true);
+}
+
+/// Record r of pixel i as pass `salt` made it.
+ShadingRecord recordOf(std::size_t i, int salt, int r) {
+    ShadingRecord rec{};
+    rec.p = Vec3(float(i), float(salt), float(r));
+    rec.weight = 0.5f + float(r);
+    rec.seed = uint32_t(i * 31 + std::size_t(salt) * 7 + std::size_t(r));
+    return rec;
+}
+
+/// resultFor() with 1..3 complete deferred records a pixel (an interactive pass's trace).
+TileResult withRecords(const std::vector<std::size_t>& pixels, int salt, uint64_t generation) {
+    TileResult t = resultFor(pixels, salt, generation);
+    t.tracedState = kInteractive;
+    RayList& r = t.traced;
+    r.withRecords = true;
+    const PerRayLists<ShadingRecord> lists = r.records.lists(r.size(), kRecordsPerPixel);
+    for (std::size_t k = 0; k < r.size(); ++k) {
+        lists.clear(k);
+        for (int j = 0; j < int(r.pixel[k] % 3) + 1; ++j) lists.append(uint32_t(k), recordOf(r.pixel[k], salt, j));
+    }
+    return t;
+}
+
+void expectRecords(const DeepFrame& f, std::size_t i, int salt) {
+    SCOPED_TRACE("records of pixel " + std::to_string(i) + " of pass " + std::to_string(salt));
+    ASSERT_TRUE(f.flags[i] & kDeferredValid);
+    ASSERT_EQ(int(f.recordCount[i]), int(i % 3) + 1);
+    const auto& pool = f.tileRecords[0];
+    for (int j = 0; j < int(f.recordCount[i]); ++j) {
+        ASSERT_LT(f.recordStart[i] + uint32_t(j), pool.size());
+        const ShadingRecord& got = pool[f.recordStart[i] + uint32_t(j)];
+        const ShadingRecord want = recordOf(i, salt, j);
+        EXPECT_EQ(got.p, want.p);
+        EXPECT_EQ(got.weight, want.weight);
+        EXPECT_EQ(got.seed, want.seed);
+    }
+}
+
+TEST(FrameCommit, SparseRecords_AppendedWithoutMovingTheTilesOthers_PoolBounded) {
+    DeepFrame f;
+    f.resize(kWidth, kHeight);
+    ASSERT_TRUE(f.commit(withRecords(wholeTile(), 1, 7), 7));
+    for (const std::size_t i : wholeTile()) expectRecords(f, i, 1);
+    const std::size_t wholeSize = f.tileRecords[0].size();
+    // A sparse commit writes its pixels' records only: every other pixel's stay where they
+    // were (a commit that rebuilt the pool would cost the tile, not what it traced).
+    const std::vector<uint32_t> startsBefore(f.recordStart.begin(), f.recordStart.begin() + 1024);
+    const std::vector<std::size_t> few = {5, 6, 7, 300, 1000};
+    ASSERT_TRUE(f.commit(withRecords(few, 2, 7), 7));
+    std::size_t appended = 0;
+    for (const std::size_t i : few) appended += i % 3 + 1;
+    EXPECT_EQ(f.tileRecords[0].size(), wholeSize + appended);
+    const std::set<std::size_t> fewSet(few.begin(), few.end());
+    int latest[1024];
+    for (const std::size_t i : wholeTile()) {
+        latest[i] = fewSet.count(i) ? 2 : 1;
+        if (!fewSet.count(i)) {
+            EXPECT_EQ(f.recordStart[i], startsBefore[i]) << "pixel " << i;
+        }
+        expectRecords(f, i, latest[i]);
+    }
+    // Many sparse commits: the garbage is compacted away, so the pool stays within twice what
+    // it kept after its last compaction plus one record a pixel, and every record is right.
+    for (int pass = 3; pass < 400; ++pass) {
+        std::vector<std::size_t> some;
+        for (int k = 0; k < 7; ++k) some.push_back(std::size_t((pass * 131 + k * 37) % 1024));
+        std::sort(some.begin(), some.end());
+        some.erase(std::unique(some.begin(), some.end()), some.end());
+        ASSERT_TRUE(f.commit(withRecords(some, pass, 7), 7));
+        for (const std::size_t i : some) latest[i] = pass;
+        EXPECT_LE(f.tileRecords[0].size(), 2 * std::size_t(f.tileRecordsKept[0]) + 1024 + 7 * 3);
+    }
+    EXPECT_LT(f.tileRecords[0].size(), 3 * wholeSize);
+    for (const std::size_t i : wholeTile()) expectRecords(f, i, latest[i]);
+    // Pixels that stop waiting for shadows (an edit clears kDeferredValid) free their records at
+    // the next compaction, and the others keep theirs.
+    for (std::size_t i = 0; i < 1024; i += 2) f.flags[i] = uint8_t(f.flags[i] & ~kDeferredValid);
+    for (int pass = 400; pass < 800; ++pass) {
+        const std::vector<std::size_t> one = {std::size_t(pass % 512) * 2 + 1};
+        ASSERT_TRUE(f.commit(withRecords(one, pass, 7), 7));
+        latest[one[0]] = pass;
+    }
+    EXPECT_LT(f.tileRecords[0].size(), wholeSize);
+    for (std::size_t i = 1; i < 1024; i += 2) expectRecords(f, i, latest[i]);
+}
+
+TEST(FrameCommit, UndersampledBlocks_FillTheirSpans_CountsFollowMixedStates) {
+    DeepFrame f;
+    f.resize(kWidth, kHeight);
+    ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // every pixel at kBase
+    // Mixed old states: some final, some stale, some interactive.
+    for (std::size_t i = 0; i < 1024; i += 3) f.setState(i, 0, kFinal);
+    for (std::size_t i = 1; i < 1024; i += 5) f.setState(i, 0, kStale);
+    for (std::size_t i = 2; i < 1024; i += 7) f.setState(i, 0, kInteractive);
+    TileResult t;
+    t.generation = 7;
+    t.rect = {0, 0, 32, 32};
+    RayList& b = t.blocks;
+    // 4x4 spans at (4, 0), (8, 8) and (28, 28); a 2x4 span at (0, 16).
+    const std::vector<std::array<int, 4>> spans = {{4, 0, 4, 4}, {8, 8, 4, 4}, {28, 28, 4, 4}, {0, 16, 2, 4}};
+    for (const auto& sp : spans) {
+        Ray ray;
+        ray.origin = Vec3(float(sp[0]), float(sp[1]), 0.0f);
+        ray.dir = Vec3(0.0f, 0.0f, -1.0f);
+        b.add(ray, 0, std::size_t(sp[1]) * kWidth + std::size_t(sp[0]), uint8_t(sp[2] | (sp[3] << 4)));
+    }
+    b.color.resize(b.size()), b.info.resize(b.size()), b.rays.resize(b.size());
+    for (std::size_t k = 0; k < b.size(); ++k) {
+        b.color[k] = Color(float(k) + 0.5f);
+        b.info[k].id = ObjectId(k + 1);
+        b.info[k].depth = 2.0f + float(k);
+        b.info[k].normal = Vec3(1.0f, 0.0f, 0.0f);
+        b.info[k].touchedSpecular = k == 1;
+        b.rays[k] = uint32_t(10 + k);
+    }
+    std::array<uint32_t, 4> want = f.tileStates[0];
+    std::set<std::size_t> covered;
+    for (const auto& sp : spans)
+        for (int y = sp[1]; y < sp[1] + sp[3]; ++y)
+            for (int x = sp[0]; x < sp[0] + sp[2]; ++x) {
+                const std::size_t i = f.index(x, y);
+                covered.insert(i);
+                --want[f.state[i]];
+                ++want[kInteractive];
+            }
+    ASSERT_TRUE(f.commit(t, 7));
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+        const auto& sp = spans[k];
+        for (int y = sp[1]; y < sp[1] + sp[3]; ++y)
+            for (int x = sp[0]; x < sp[0] + sp[2]; ++x) {
+                const std::size_t i = f.index(x, y);
+                SCOPED_TRACE("pixel " + std::to_string(i));
+                EXPECT_EQ(f.color[i], b.color[k]);
+                EXPECT_EQ(f.id[i], b.info[k].id);
+                EXPECT_EQ(f.depth[i], b.info[k].depth);
+                EXPECT_EQ(f.normal[i], b.info[k].normal);
+                EXPECT_EQ(f.cost[i], b.rays[k]);
+                EXPECT_EQ(f.state[i], kInteractive);
+                EXPECT_EQ(f.flags[i], uint8_t(kTracedLastUpdate | (k == 1 ? kTouchedSpecular | kTreeUnknown : 0)));
+                EXPECT_EQ(f.hitBound[i], glm::vec4(float(sp[0]), float(sp[1]), -b.info[k].depth, 0.0f));
+                EXPECT_EQ(f.segmentCount[i], 0);
+            }
+    }
+    for (const std::size_t i : wholeTile())
+        if (!covered.count(i)) {
+            ASSERT_EQ(f.color[i], made(i, 1).color) << "pixel " << i << " outside every span";
+        }
+    EXPECT_EQ(f.tileStates[0], want);
+    EXPECT_EQ(f.tileLiveSegments[0], referencedSegments(f));
+    EXPECT_TRUE(f.summariesMatchPixels());
 }
 
 }  // namespace
