@@ -21,6 +21,11 @@ inline FloatLanes splat(float v) { return FloatLanes{v, v, v, v}; }
 
 inline float toFloat(uint32_t v) { return float(v); }
 inline FloatLanes toFloat(UintLanes v) { return __builtin_convertvector(v, FloatLanes); }
+/// toFloat of values below 2^31 (the same as signed integers): one conversion per lane.
+inline float toFloat31(uint32_t v) { return float(int32_t(v)); }
+inline FloatLanes toFloat31(UintLanes v) {
+    return __builtin_convertvector(reinterpret_cast<MaskLanes>(v), FloatLanes);
+}
 
 /// |v| (the sign bit cleared, as std::abs does).
 inline float absLanes(float v) { return std::abs(v); }
