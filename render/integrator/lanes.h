@@ -21,6 +21,11 @@ inline FloatLanes splat(float v) { return FloatLanes{v, v, v, v}; }
 
 inline float toFloat(uint32_t v) { return float(v); }
 inline FloatLanes toFloat(UintLanes v) { return __builtin_convertvector(v, FloatLanes); }
+/// toFloat of values below 2^31 (the same as signed integers): one conversion per lane.
+inline float toFloat31(uint32_t v) { return float(int32_t(v)); }
+inline FloatLanes toFloat31(UintLanes v) {
+    return __builtin_convertvector(reinterpret_cast<MaskLanes>(v), FloatLanes);
+}
 
 /// |v| (the sign bit cleared, as std::abs does).
 inline float absLanes(float v) { return std::abs(v); }
@@ -52,17 +57,15 @@ inline FloatLanes scaledPowWhere(MaskLanes m, FloatLanes s, FloatLanes v, FloatL
     return r;
 }
 
-/// sin and cos, lane by lane through the scalar library functions.
-inline void sinCos(float v, float& s, float& c) {
-    s = std::sin(v);
-    c = std::cos(v);
-}
-inline void sinCos(FloatLanes v, FloatLanes& s, FloatLanes& c) {
-    for (int k = 0; k < kLaneWidth; ++k) {
-        float sk, ck;
-        sinCos(v[k], sk, ck);
-        s[k] = sk, c[k] = ck;
-    }
+/// sin and cos of a in [-pi/4, pi/4] (one, or each lane): Cephes' sinf and cosf polynomials
+/// for that range (no range reduction), within 2 ulp of the library functions there. One
+/// template body, lane-wise arithmetic only, so lane k has the bits of the scalar call.
+template <class F>
+inline void sinCosQuarter(F a, F& s, F& c) {
+    const F z = a * a;
+    s = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z * a + a;
+    c = (((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
+         0.5f * z) + 1.0f;
 }
 
 }  // namespace rs

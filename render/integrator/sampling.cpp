@@ -65,12 +65,14 @@ void DiskStrata::point(F column, F row, U keyX, U keyY, uint32_t seed, F& x, F& 
     const F sy = 2.0f * (row + jy) / float(rows) - 1.0f;
     const auto wide = absLanes(sx) > absLanes(sy);
     const F r = select(wide, sx, sy);
-    const F phi = select(wide, (kPi / 4.0f) * (sy / sx), (kPi / 2.0f) - (kPi / 4.0f) * (sx / sy));
+    // phi = pi/4 (sy / sx) where wide, else pi/2 - a with a = pi/4 (sx / sy), whose cos and
+    // sin are a's sin and cos: one polynomial on [-pi/4, pi/4] serves both branches.
+    const F a = (kPi / 4.0f) * select(wide, sy / sx, sx / sy);
     F s, c;
-    sinCos(phi, s, c);
+    sinCosQuarter(a, s, c);
     const auto centre = (sx == 0.0f) & (sy == 0.0f);
-    x = select(centre, F{}, r * c);
-    y = select(centre, F{}, r * s);
+    x = select(centre, F{}, r * select(wide, c, s));
+    y = select(centre, F{}, r * select(wide, s, c));
 }
 
 Vec3 DiskStrata::sample(int k, uint32_t seed) const {

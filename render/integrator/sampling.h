@@ -33,9 +33,10 @@ inline U hashKeyed(uint32_t a, U key) { return hashBits(a ^ key); }
 /// Hash of several keys.
 inline uint32_t hashCombine(uint32_t a, uint32_t b) { return hashKeyed(a, hashKey(b)); }
 
-/// hashToUnit of one hash or of each lane.
+/// hashToUnit of one hash or of each lane. h >> 8 < 2^24 converts exactly as signed, which
+/// SSE2 does in one instruction (unsigned lanes take several).
 template <class U>
-inline auto unitOf(U h) { return toFloat(h >> 8) * (1.0f / 16777216.0f); }
+inline auto unitOf(U h) { return toFloat31(h >> 8) * (1.0f / 16777216.0f); }
 /// Uniform float in [0, 1) from a hash.
 inline float hashToUnit(uint32_t h) { return unitOf(h); }
 
