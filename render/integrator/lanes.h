@@ -19,9 +19,8 @@ using MaskLanes = int32_t __attribute__((vector_size(16)));  ///< A comparison's
 /// Every lane v.
 inline FloatLanes splat(float v) { return FloatLanes{v, v, v, v}; }
 
-inline float toFloat(uint32_t v) { return float(v); }
-inline FloatLanes toFloat(UintLanes v) { return __builtin_convertvector(v, FloatLanes); }
-/// toFloat of values below 2^31 (the same as signed integers): one conversion per lane.
+/// float of values below 2^31 (converted as the signed integers they equal): one SSE2
+/// conversion per lane, where unsigned lanes take several.
 inline float toFloat31(uint32_t v) { return float(int32_t(v)); }
 inline FloatLanes toFloat31(UintLanes v) {
     return __builtin_convertvector(reinterpret_cast<MaskLanes>(v), FloatLanes);
