@@ -50,7 +50,10 @@ std::string renderScript(const FarmJob& job) {
     text += "exec " + shellQuote(job.cli) + " render " + shellQuote(job.scene) + " --tile \"$SLURM_ARRAY_TASK_ID/" +
             std::to_string(job.parts) + "\" -o " + shellQuote(job.partsDir + "/part-") +
             "\"$part\".exr --threads " + std::to_string(job.cpusPerTask);
-    for (const std::string& arg : job.renderArgs) text += " " + shellQuote(arg);
+    for (const std::string& arg : job.renderArgs) {
+        text += ' ';  // Not `" " + shellQuote(arg)`: that temporary trips GCC 12's -Wrestrict.
+        text += shellQuote(arg);
+    }
     return text + "\n";
 }
 
