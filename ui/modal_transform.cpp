@@ -190,7 +190,7 @@ SceneDocument ModalTransform::result(const ViewProjection& view) const {
         }
         case TransformKind::Scale: {
             const Vec3 f = scaleFactors(view);
-            if (f != Vec3(1.0f)) scaleAll(doc, ids_, pivot_, f);
+            if (f != Vec3(1.0f)) scaleAll(doc, ids_, pivot_, f, axes_);
             break;
         }
     }

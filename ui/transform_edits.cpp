@@ -120,10 +120,12 @@ void rotateAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3&
 }
 
 void scaleAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3& pivot,
-              const Vec3& factors) {
+              const Vec3& factors, const Mat3& axes) {
+    // The scale as a world matrix: `factors` along the columns of the orthonormal `axes`.
+    const Mat3 scale = axes * Mat3(glm::scale(Mat4(1.0f), factors)) * glm::transpose(axes);
     for (ObjectId id : ids) {
         if (Light* l = doc.findLight(id)) {
-            l->position = pivot + factors * (l->position - pivot);
+            l->position = pivot + scale * (l->position - pivot);
             if (l->type == LightType::Sphere)
                 l->radius *=
                     std::max({std::abs(factors.x), std::abs(factors.y), std::abs(factors.z)});
@@ -132,12 +134,16 @@ void scaleAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3& 
         Object* o = doc.findObject(id);
         if (!o) continue;
         if (auto* p = std::get_if<PlaneGeometry>(&o->geometry)) {
-            p->point = pivot + factors * (p->point - pivot);
+            p->point = pivot + scale * (p->point - pivot);
             continue;
         }
-        // Exact for unrotated objects; a rotated one scales along its own axes.
-        o->transform.translate = pivot + factors * (o->transform.translate - pivot);
-        o->transform.scale *= factors;
+        o->transform.translate = pivot + scale * (o->transform.translate - pivot);
+        // Each of the object's own axes stretches by how much the scale lengthens it; its
+        // rotation stays. Exact when the scale's axes are the object's (local gizmo) or the
+        // scale is uniform or the object turned by right angles; otherwise the shear a
+        // transform cannot hold is dropped, as Blender does for objects.
+        const Mat3 rotation(rotationOf(o->transform.rotate));
+        for (int i = 0; i < 3; ++i) o->transform.scale[i] *= glm::length(scale * rotation[i]);
     }
 }
 

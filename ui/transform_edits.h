@@ -20,10 +20,11 @@ void translateAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Ve
 /// Rotates every entity by `degrees` about the line through `pivot` along unit `axis`.
 void rotateAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3& pivot,
                const Vec3& axis, float degrees);
-/// Scales every entity by `factors` (world axes) about `pivot`; sphere lights scale their
-/// radius by the largest factor; planes only move.
+/// Scales every entity about `pivot` by `factors` along the columns of the orthonormal
+/// `axes` (the world's, or the gizmo's local ones); sphere lights scale their radius by the
+/// largest factor; planes only move.
 void scaleAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3& pivot,
-              const Vec3& factors);
+              const Vec3& factors, const Mat3& axes = Mat3(1.0f));
 /// Euler angles in degrees (X, then Y, then Z, as Transform::rotate) of rotation matrix `r`.
 Vec3 eulerDegreesOf(const Mat4& r);
 

@@ -7,6 +7,8 @@
 #include "snapshot/compiled_scene.h"
 #include "transform_edits.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -44,6 +46,8 @@ private Q_SLOTS:
     void placement_RestsOnTheSurfaceHit_OrSnapsToTheFloorBelow();
     void fitScale_ScalesOnlyMeshesThatDoNotFitTheView();
     void displayAutomatic_PicksSoftwareOnSoftwareGL_OpenGLOnAGpu();
+    void scaleAlongWorldX_StretchesTheAxisOfARotatedObjectThatLiesAlongX();
+    void scaleAlongLocalAxes_MovesOtherObjectsAlongThoseAxes();
 };
 
 void UiLogicTest::materials_DeleteRefusedWhileUsed_RenameFollowsUsers_NamesValidated() {
@@ -190,6 +194,43 @@ void UiLogicTest::displayAutomatic_PicksSoftwareOnSoftwareGL_OpenGLOnAGpu() {
     DisplayKind untouched = DisplayKind::Software;
     QVERIFY(!parseDisplayKind(QStringLiteral("vulkan"), untouched));
     QCOMPARE(untouched, DisplayKind::Software);
+}
+
+namespace {
+
+bool near(const Vec3& a, const Vec3& b) { return glm::length(a - b) < 1e-4f; }
+
+}  // namespace
+
+void UiLogicTest::scaleAlongWorldX_StretchesTheAxisOfARotatedObjectThatLiesAlongX() {
+    SceneDocument doc;
+    const ObjectId ball = addBall(doc, "ball");
+    doc.findObject(ball)->transform.rotate = Vec3(0.0f, 0.0f, 90.0f);  // local y lies along -x
+    scaleAll(doc, {ball}, Vec3(0.0f), Vec3(2.0f, 1.0f, 1.0f));
+    const Transform& t = doc.findObject(ball)->transform;
+    // The world's x is the object's y: that is the axis that doubles.
+    QVERIFY2(near(t.scale, Vec3(1.0f, 2.0f, 1.0f)),
+             qPrintable(QString("%1 %2 %3").arg(t.scale.x).arg(t.scale.y).arg(t.scale.z)));
+    QCOMPARE(t.rotate, Vec3(0.0f, 0.0f, 90.0f));
+    // And its world matrix is the scale applied to the old one.
+    const Mat4 expected = glm::scale(Mat4(1.0f), Vec3(2.0f, 1.0f, 1.0f)) *
+                          Transform{Vec3(0.0f), Vec3(0.0f, 0.0f, 90.0f), Vec3(1.0f)}.matrix();
+    const Mat4 got = t.matrix();
+    for (int c = 0; c < 4; ++c) QVERIFY(near(Vec3(got[c]), Vec3(expected[c])));
+}
+
+void UiLogicTest::scaleAlongLocalAxes_MovesOtherObjectsAlongThoseAxes() {
+    SceneDocument doc;
+    const ObjectId a = addBall(doc, "a");
+    const ObjectId b = addBall(doc, "b");
+    doc.findObject(b)->transform.translate = Vec3(0.0f, 1.0f, 0.0f);
+    // The gizmo's local axes turned 90 degrees about z: its x is the world's y.
+    const Mat3 axes(Vec3(0.0f, 1.0f, 0.0f), Vec3(-1.0f, 0.0f, 0.0f), Vec3(0.0f, 0.0f, 1.0f));
+    scaleAll(doc, {a, b}, Vec3(0.0f), Vec3(3.0f, 1.0f, 1.0f), axes);
+    QVERIFY(near(doc.findObject(b)->transform.translate, Vec3(0.0f, 3.0f, 0.0f)));
+    // Unrotated balls stretch along the world axis that the gizmo's x is.
+    QVERIFY(near(doc.findObject(a)->transform.scale, Vec3(1.0f, 3.0f, 1.0f)));
+    QVERIFY(near(doc.findObject(a)->transform.translate, Vec3(0.0f)));
 }
 
 QTEST_GUILESS_MAIN(UiLogicTest)
