@@ -21,14 +21,6 @@ constexpr std::size_t kLevelCap = std::size_t(1) << 18;
 /// Light samples (so shadow rays) gathered before the batch is sent to the engine.
 constexpr std::size_t kSampleCap = 16384;
 
-/// A hit to shade: where, facing which way, with what, for which camera ray and weight.
-struct ShadePoint {
-    Vec3 p, n, toViewer;
-    uint32_t material, seed, owner;
-    float weight;     ///< Accumulated weight of the ray that hit here.
-    float asDiffuse;  ///< Mirror/glass share shown as Lambert while moving (0 otherwise).
-};
-
 }  // namespace
 
 /// One level's rays as structure of arrays. The arrays only grow (reserve), and push writes
@@ -77,12 +69,33 @@ struct TraceKernel::Level {
     }
 };
 
+/// A level's shading points as structure of arrays: where and how each is lit (the light
+/// lanes read these), and what its sum goes back to.
+struct LevelPoints {
+    ShadingPoints shading;           ///< Position, faced normal, direction to the viewer.
+    SurfaceArrays surface, lambert;  ///< Their materials' terms, and as plain Lambert.
+    std::vector<uint32_t> material, seed, owner;
+    std::vector<float> weight;     ///< Accumulated weight of the ray that hit there.
+    std::vector<float> asDiffuse;  ///< Mirror/glass share shown as Lambert while moving.
+
+    /// Room for n points; none written yet (count() is 0 until finish()).
+    void reserve(std::size_t n, bool lamberts) {
+        shading.resize(n);
+        surface.resize(n);
+        if (lamberts) lambert.resize(n);
+        if (material.size() < n)
+            for (auto* v : {&material, &seed, &owner}) v->resize(n);
+        if (weight.size() < n) weight.resize(n), asDiffuse.resize(n);
+    }
+    std::size_t count() const { return shading.count; }
+};
+
 /// Per-thread storage reused from call to call: no allocation once it has grown.
 struct TraceKernel::Workspace {
     Level ping, pong;
     std::vector<float> t, nx, ny, nz;
     std::vector<uint32_t> slot;
-    std::vector<ShadePoint> points;
+    LevelPoints points;  ///< The points of a level being shaded, lane by lane.
     std::vector<LightSample> samples, centreSamples;
     std::vector<LightSpan> spans, centreSpans;
     std::vector<uint32_t> pointSpans;  ///< First span of each point of a group, plus an end.
@@ -91,8 +104,6 @@ struct TraceKernel::Workspace {
     std::vector<uint32_t> slight;
     std::vector<uint8_t> occluded;
     std::size_t shadowCount = 0;  ///< Shadow rays written by pushShadow.
-    ShadingPoints shading;          ///< The points of a level being shaded, lane by lane.
-    SurfaceArrays surface, lambert;  ///< Their materials' terms, and as plain Lambert.
     std::vector<CentreSamples> centres;         ///< Per centre-sampled light.
     std::vector<std::vector<uint8_t>> blocked;  ///< Per centre-sampled light and point.
     LightSums sums, lambertSums;
@@ -103,10 +114,11 @@ struct TraceKernel::Workspace {
         slot.resize(n);
         return {t.data(), nx.data(), ny.data(), nz.data(), slot.data()};
     }
-    /// Shadow rays for samples [0, samples.size()) of points whose spans pointSpans lists.
-    /// The rays go from index `base` on, after those pushShadow wrote.
-    void shadowRays(const std::vector<ShadePoint>& pts, std::size_t first, std::size_t count,
-                    float eps, std::size_t base = 0) {
+    /// Shadow rays for samples [0, samples.size()) of points [first, first + count) of `pts`,
+    /// whose spans pointSpans lists. The rays go from index `base` on, after those
+    /// pushShadow wrote.
+    void shadowRays(const ShadingPoints& pts, std::size_t first, std::size_t count, float eps,
+                    std::size_t base = 0) {
         const std::size_t n = base + samples.size();
         if (sox.size() < n)
             for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n);
@@ -117,8 +129,9 @@ struct TraceKernel::Workspace {
         float* tmax = stmax.data() + base;
         uint32_t* light = slight.data() + base;
         for (std::size_t j = 0; j < count; ++j) {
-            const ShadePoint& pt = pts[first + j];
-            const Vec3 o = shadowOrigin(pt.p, pt.n, eps);
+            const std::size_t q = first + j;
+            const Vec3 o = shadowOrigin(Vec3(pts.px[q], pts.py[q], pts.pz[q]),
+                                        Vec3(pts.nx[q], pts.ny[q], pts.nz[q]), eps);
             for (uint32_t k = pointSpans[j]; k < pointSpans[j + 1]; ++k) {
                 const LightSpan& span = spans[k];
                 for (uint32_t i = span.first; i < span.first + span.listed; ++i) {
@@ -155,12 +168,27 @@ struct TraceKernel::Workspace {
 
 TraceKernel::TraceKernel(const CompiledScene& scene, const TraceOptions& options)
     : scene_(scene), options_(options), eps_(scene.epsilon()), sampler_(scene) {
+    const RenderSettings& settings = scene.settings();
     for (const CompiledMaterial& m : scene.materials()) {
         surfaces_.push_back(surfaceTerms(m));
         CompiledMaterial lambert{};
         lambert.color = m.color;
         lambert.diffuse = 1.0f;
         lamberts_.push_back(surfaceTerms(lambert));
+        ambients_.push_back(settings.ambient * m.color * m.diffuse);
+        lambertAmbients_.push_back(settings.ambient * m.color);
+    }
+    // What the options fix for every level: which lights are sampled at their centre alone
+    // (four points at a time) and which over their disk (point by point), and how many
+    // samples a point draws at most.
+    const int shadowSamples = settings.shadowSamples;
+    area_ = shadowSamples > 0 && options_.shadows == ShadowQuality::Full;
+    traceShadows_ = shadowSamples > 0 && (options_.shadows == ShadowQuality::Full ||
+                                          options_.shadows == ShadowQuality::HardOnly);
+    for (std::size_t li = 0; li < scene.lights().size(); ++li) {
+        const bool centre = sampler_.centreOnly(li, area_);
+        (centre ? centreLights_ : sampledLights_).push_back(uint32_t(li));
+        perPoint_ += centre ? 1 : std::size_t(shadowSamples);
     }
 }
 
@@ -186,6 +214,13 @@ bool TraceKernel::trace(const CameraBatch& rays, const TraceOutput& out, TraceCo
 
 bool TraceKernel::traceLevels(Workspace& ws, Level& start, int depth, const TraceOutput& out,
                               TraceCounters& counters, const std::function<bool()>& stale) const {
+    // Settings constant for the whole call pick the instance: no per-hit branch on them.
+    const bool bookkeeping = out.rays || out.segments || out.records;
+    const bool asDiffuse = options_.reflectionAsDiffuse || options_.refractionAsDiffuse;
+    const auto shade = bookkeeping ? (asDiffuse ? &TraceKernel::shadeLevel<true, true>
+                                                : &TraceKernel::shadeLevel<true, false>)
+                                   : (asDiffuse ? &TraceKernel::shadeLevel<false, true>
+                                                : &TraceKernel::shadeLevel<false, false>);
     Level* cur = &start;
     while (cur->size() > 0) {
         if (stale && stale()) return false;
@@ -202,13 +237,14 @@ bool TraceKernel::traceLevels(Workspace& ws, Level& start, int depth, const Trac
         }
         Level* next = cur == &ws.ping ? &ws.pong : &ws.ping;
         next->clear();
-        shadeLevel(ws, *cur, depth, *next, out, counters);
+        (this->*shade)(ws, *cur, depth, *next, out, counters);
         cur = next;
         ++depth;
     }
     return true;
 }
 
+template <bool Bookkeeping, bool AsDiffuse>
 void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level& next,
                              const TraceOutput& out, TraceCounters& counters) const {
     const std::size_t n = level.size();
@@ -218,15 +254,19 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
     counters.rays += n;
     const RenderSettings& settings = scene_.settings();
     const auto& materials = scene_.materials();
-    ws.points.clear();
+    LevelPoints& pts = ws.points;
+    pts.reserve(n, AsDiffuse);
+    ShadingPoints& sp = pts.shading;
+    std::size_t count = 0;  // shading points written
+    const bool leaves = depth >= options_.maxDepth;
     for (std::size_t i = 0; i < n; ++i) {
         const uint32_t owner = level.owner[i];
         const float weight = level.weight[i];
-        if (out.rays) ++out.rays[owner];
+        if (Bookkeeping && out.rays) ++out.rays[owner];
         const Vec3 o(level.ox[i], level.oy[i], level.oz[i]);
         const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
         const bool found = hits.slot[i] != kNoSlot;
-        if (out.segments && depth > 0) {
+        if (Bookkeeping && out.segments && depth > 0) {
             const TreeSegment s = found ? TreeSegment{o, o + d * hits.t[i], 0u} : TreeSegment{o, d, 1u};
             out.segments.append(owner, s);
         }
@@ -256,18 +296,26 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
 
         // While moving, mirror and glass shares may be shown as plain Lambert (thesis 4.2).
         float reflectivity = m.reflectivity, transparency = m.transparency, asDiffuse = 0.0f;
-        if (options_.reflectionAsDiffuse && reflectivity > 0.0f) {
-            asDiffuse += reflectivity;
-            reflectivity = 0.0f;
+        if (AsDiffuse) {
+            if (options_.reflectionAsDiffuse && reflectivity > 0.0f) {
+                asDiffuse += reflectivity;
+                reflectivity = 0.0f;
+            }
+            if (options_.refractionAsDiffuse && transparency > 0.0f && id != options_.refractionExempt) {
+                asDiffuse += transparency;
+                transparency = 0.0f;
+            }
         }
-        if (options_.refractionAsDiffuse && transparency > 0.0f && id != options_.refractionExempt) {
-            asDiffuse += transparency;
-            transparency = 0.0f;
+        if (m.localWeight > 0.0f || (AsDiffuse && asDiffuse > 0.0f)) {
+            const std::size_t j = count++;
+            sp.set(j, p, nf, -d);
+            pts.surface.set(j, surfaces_[materialIndex]);
+            if (AsDiffuse) pts.lambert.set(j, lamberts_[materialIndex]), pts.asDiffuse[j] = asDiffuse;
+            pts.material[j] = materialIndex, pts.seed[j] = level.seed[i], pts.owner[j] = owner;
+            pts.weight[j] = weight;
         }
-        if (m.localWeight > 0.0f || asDiffuse > 0.0f)
-            ws.points.push_back({p, nf, -d, materialIndex, level.seed[i], owner, weight, asDiffuse});
 
-        if (depth >= options_.maxDepth || (reflectivity <= 0.0f && transparency <= 0.0f)) continue;
+        if (leaves || (reflectivity <= 0.0f && transparency <= 0.0f)) continue;
         // Reflection is traced once and weighted by the mirror part plus the glass part's
         // Fresnel (or all of the glass part on total internal reflection). A child whose
         // accumulated weight falls below min_weight is not traced (scene-format.md).
@@ -292,60 +340,51 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                           hashCombine(level.seed[i], 1u), owner);
         }
     }
+    sp.count = count;
+    if (count == 0) return;
 
     // The local terms, light by light over as many points as fit one shadow batch.
-    const int shadowSamples = settings.shadowSamples;
     const bool deferred = options_.shadows == ShadowQuality::Deferred;
-    const bool traceShadows = shadowSamples > 0 && (options_.shadows == ShadowQuality::Full ||
-                                                    options_.shadows == ShadowQuality::HardOnly);
-    const bool area = shadowSamples > 0 && options_.shadows == ShadowQuality::Full;
-    const bool asDiffuse = options_.reflectionAsDiffuse || options_.refractionAsDiffuse;
-    const std::size_t lightCount = scene_.lights().size();
-    std::size_t perPoint = 0;  // the most samples a point draws
-    for (std::size_t li = 0; li < lightCount; ++li)
-        perPoint += sampler_.centreOnly(li, area) ? 1 : std::size_t(shadowSamples);
+    const bool area = area_, traceShadows = traceShadows_;
     const std::size_t lane = std::size_t(kLaneWidth);
-    const std::size_t chunk = std::max(lane, kSampleCap / std::max<std::size_t>(1, perPoint) / lane * lane);
+    const std::size_t chunk = std::max(lane, kSampleCap / std::max<std::size_t>(1, perPoint_) / lane * lane);
+    const std::size_t lightCount = scene_.lights().size();
     if (ws.centres.size() < lightCount) ws.centres.resize(lightCount), ws.blocked.resize(lightCount);
-    for (std::size_t first = 0; first < ws.points.size(); first += chunk) {
-        const std::size_t count = std::min(ws.points.size() - first, chunk);
-        ShadingPoints& sp = ws.shading;
-        sp.resize(count);
-        ws.surface.resize(count);
-        if (asDiffuse) ws.lambert.resize(count);
+    ws.sums.zero(count);
+    if (AsDiffuse) ws.lambertSums.zero(count);
+    for (std::size_t first = 0; first < count; first += chunk) {
+        const std::size_t end = std::min(count, first + chunk), group = end - first;
+        // Sphere lights' samples, point by point (lanes of samples), in light order.
         ws.samples.clear();
         ws.spans.clear();
-        ws.pointSpans.resize(count + 1);
-        for (std::size_t j = 0; j < count; ++j) {
-            const ShadePoint& pt = ws.points[first + j];
-            sp.set(j, pt.p, pt.n, pt.toViewer);
-            ws.surface.set(j, surfaces_[pt.material]);
-            if (asDiffuse) ws.lambert.set(j, lamberts_[pt.material]);
-            // Sphere lights' samples, point by point (lanes of samples), in light order.
-            ws.pointSpans[j] = uint32_t(ws.spans.size());
-            for (std::size_t li = 0; li < lightCount; ++li)
-                if (!sampler_.centreOnly(li, area))
-                    sampler_.sampleLight(li, pt.p, pt.n, pt.seed, area, ws.samples, ws.spans);
+        const bool sampled = !sampledLights_.empty();
+        if (sampled) {
+            ws.pointSpans.resize(group + 1);
+            for (std::size_t j = first; j < end; ++j) {
+                ws.pointSpans[j - first] = uint32_t(ws.spans.size());
+                const Vec3 p(sp.px[j], sp.py[j], sp.pz[j]), nf(sp.nx[j], sp.ny[j], sp.nz[j]);
+                for (const uint32_t li : sampledLights_)
+                    sampler_.sampleLight(li, p, nf, pts.seed[j], area, ws.samples, ws.spans);
+            }
+            ws.pointSpans[group] = uint32_t(ws.spans.size());
         }
-        ws.pointSpans[count] = uint32_t(ws.spans.size());
-        for (std::size_t li = 0; li < lightCount; ++li)
-            if (sampler_.centreOnly(li, area)) sampler_.sampleCentres(li, sp, 0, count, ws.centres[li]);
+        for (const uint32_t li : centreLights_) sampler_.sampleCentres(li, sp, first, end, ws.centres[li]);
 
         // One shadow batch: every centre-sampled light's listed rays, light by light, then
         // the sphere lights' samples in list order.
         const uint8_t* areaOccluded = nullptr;
         if (traceShadows) {
-            ws.shadows(count * perPoint);
-            for (std::size_t li = 0; li < lightCount; ++li) {
-                if (!sampler_.centreOnly(li, area)) continue;
+            ws.shadows(group * perPoint_);
+            for (const uint32_t li : centreLights_) {
                 const CentreSamples& c = ws.centres[li];
-                for (std::size_t j = 0; j < count; ++j)
+                for (std::size_t j = first; j < end; ++j)
                     if (c.listed[j])
-                        ws.pushShadow(shadowOrigin(ws.points[first + j].p, ws.points[first + j].n, eps_),
-                                      c.dx[j], c.dy[j], c.dz[j], shadowLength(c.dist[j], eps_), uint32_t(li));
+                        ws.pushShadow(shadowOrigin(Vec3(sp.px[j], sp.py[j], sp.pz[j]),
+                                                   Vec3(sp.nx[j], sp.ny[j], sp.nz[j]), eps_),
+                                      c.dx[j], c.dy[j], c.dz[j], shadowLength(c.dist[j], eps_), li);
             }
             const std::size_t areaBase = ws.shadowCount;
-            ws.shadowRays(ws.points, first, count, eps_, areaBase);
+            if (sampled) ws.shadowRays(sp, first, group, eps_, areaBase);
             if (ws.shadowCount > 0) {
                 ws.occluded.resize(ws.shadowCount);
                 scene_.engine().anyHit(ws.shadowBatch(area), ws.occluded.data());
@@ -353,67 +392,63 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             }
             // Each centre ray's answer back to its point.
             std::size_t r = 0;
-            for (std::size_t li = 0; li < lightCount; ++li) {
-                if (!sampler_.centreOnly(li, area)) continue;
+            for (const uint32_t li : centreLights_) {
                 const CentreSamples& c = ws.centres[li];
                 std::vector<uint8_t>& blocked = ws.blocked[li];
-                blocked.resize(sp.px.size());
-                for (std::size_t j = 0; j < count; ++j) blocked[j] = c.listed[j] ? ws.occluded[r++] : 0;
-                if (out.rays)
-                    for (std::size_t j = 0; j < count; ++j) out.rays[ws.points[first + j].owner] += c.listed[j];
+                if (blocked.size() < sp.px.size()) blocked.resize(sp.px.size());
+                for (std::size_t j = first; j < end; ++j) blocked[j] = c.listed[j] ? ws.occluded[r++] : 0;
+                if (Bookkeeping && out.rays)
+                    for (std::size_t j = first; j < end; ++j) out.rays[pts.owner[j]] += c.listed[j];
             }
             areaOccluded = ws.occluded.data() + areaBase;
-            if (out.rays)
-                for (std::size_t j = 0; j < count; ++j)
-                    for (uint32_t k = ws.pointSpans[j]; k < ws.pointSpans[j + 1]; ++k)
-                        out.rays[ws.points[first + j].owner] += ws.spans[k].listed;
+            if (Bookkeeping && out.rays && sampled)
+                for (std::size_t j = first; j < end; ++j)
+                    for (uint32_t k = ws.pointSpans[j - first]; k < ws.pointSpans[j - first + 1]; ++k)
+                        out.rays[pts.owner[j]] += ws.spans[k].listed;
         }
 
         // Light by light, so each point's sum takes the lights in the scene's order.
-        ws.sums.zero(count);
-        if (asDiffuse) ws.lambertSums.zero(count);
-        ws.cursor.assign(ws.pointSpans.begin(), ws.pointSpans.end() - 1);
+        if (sampled) ws.cursor.assign(ws.pointSpans.begin(), ws.pointSpans.end() - 1);
         for (std::size_t li = 0; li < lightCount; ++li) {
             if (sampler_.centreOnly(li, area)) {
                 const CompiledLight& light = scene_.lights()[li];
                 const uint8_t* blocked = traceShadows ? ws.blocked[li].data() : nullptr;
-                addCentreLight(light, sp, ws.surface, ws.centres[li], blocked, 0, count, ws.sums);
-                if (asDiffuse)
-                    addCentreLight(light, sp, ws.lambert, ws.centres[li], blocked, 0, count, ws.lambertSums);
+                addCentreLight(light, sp, pts.surface, ws.centres[li], blocked, first, end, ws.sums);
+                if (AsDiffuse)
+                    addCentreLight(light, sp, pts.lambert, ws.centres[li], blocked, first, end, ws.lambertSums);
                 continue;
             }
-            for (std::size_t j = 0; j < count; ++j) {
-                uint32_t& k = ws.cursor[j];
-                if (k == ws.pointSpans[j + 1] || ws.spans[k].light != li) continue;
-                const ShadePoint& pt = ws.points[first + j];
+            for (std::size_t j = first; j < end; ++j) {
+                uint32_t& k = ws.cursor[j - first];
+                if (k == ws.pointSpans[j - first + 1] || ws.spans[k].light != li) continue;
                 const LightSpan& span = ws.spans[k++];
-                const Color c = spanShare(scene_, surfaces_[pt.material], pt.n, pt.toViewer, span,
-                                          ws.samples.data(), areaOccluded);
+                const Vec3 nf(sp.nx[j], sp.ny[j], sp.nz[j]), v(sp.vx[j], sp.vy[j], sp.vz[j]);
+                const uint32_t mi = pts.material[j];
+                const Color c = spanShare(scene_, surfaces_[mi], nf, v, span, ws.samples.data(), areaOccluded);
                 ws.sums.r[j] += c.x, ws.sums.g[j] += c.y, ws.sums.b[j] += c.z;
-                if (asDiffuse) {
-                    const Color l = spanShare(scene_, lamberts_[pt.material], pt.n, pt.toViewer,
-                                              span, ws.samples.data(), areaOccluded);
+                if (AsDiffuse) {
+                    const Color l = spanShare(scene_, lamberts_[mi], nf, v, span, ws.samples.data(), areaOccluded);
                     ws.lambertSums.r[j] += l.x, ws.lambertSums.g[j] += l.y, ws.lambertSums.b[j] += l.z;
                 }
             }
         }
 
-        for (std::size_t j = 0; j < count; ++j) {
-            const ShadePoint& pt = ws.points[first + j];
-            const CompiledMaterial& m = materials[pt.material];
-            if (m.localWeight > 0.0f) {
-                const Color ambient = settings.ambient * m.color * m.diffuse;
+        for (std::size_t j = first; j < end; ++j) {
+            const uint32_t mi = pts.material[j], owner = pts.owner[j];
+            const float weight = pts.weight[j], localWeight = materials[mi].localWeight;
+            if (localWeight > 0.0f) {
                 const Color direct(ws.sums.r[j], ws.sums.g[j], ws.sums.b[j]);
-                out.color[pt.owner] += pt.weight * (m.localWeight * (ambient + direct));
+                out.color[owner] += weight * (localWeight * (ambients_[mi] + direct));
                 // Shown unshadowed while moving; the record lets the shadows be added later.
-                if (deferred && out.records)
-                    out.records.append(pt.owner, ShadingRecord{pt.p, pt.n, pt.toViewer,
-                                                               pt.weight * m.localWeight,
-                                                               pt.material, pt.seed});
+                if (Bookkeeping && deferred && out.records)
+                    out.records.append(owner, ShadingRecord{Vec3(sp.px[j], sp.py[j], sp.pz[j]),
+                                                            Vec3(sp.nx[j], sp.ny[j], sp.nz[j]),
+                                                            Vec3(sp.vx[j], sp.vy[j], sp.vz[j]),
+                                                            weight * localWeight, mi, pts.seed[j]});
             }
-            if (pt.asDiffuse > 0.0f) {
+            if (AsDiffuse && pts.asDiffuse[j] > 0.0f) {
                 const Color direct(ws.lambertSums.r[j], ws.lambertSums.g[j], ws.lambertSums.b[j]);
-                out.color[pt.owner] += pt.weight * (pt.asDiffuse * (settings.ambient * m.color + direct));
+                out.color[owner] += weight * (pts.asDiffuse[j] * (lambertAmbients_[mi] + direct));
             }
         }
     }
@@ -422,7 +457,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
 void TraceKernel::resolveDeferred(const ShadingRecord* records, std::size_t count, Color* out,
                                   TraceCounters& counters) const {
     thread_local Workspace ws;
-    thread_local std::vector<ShadePoint> points;
+    ShadingPoints& pts = ws.points.shading;
     const bool shadows = scene_.settings().shadowSamples > 0;
     for (std::size_t first = 0; first < count;) {
         ws.samples.clear();
@@ -431,11 +466,9 @@ void TraceKernel::resolveDeferred(const ShadingRecord* records, std::size_t coun
         ws.centreSamples.clear();
         ws.centreSpans.clear();
         ws.centrePointSpans.clear();
-        points.clear();
         std::size_t n = 0;
         while (first + n < count && (n == 0 || ws.samples.size() < kSampleCap)) {
             const ShadingRecord& r = records[first + n];
-            points.push_back({r.p, r.n, r.toViewer, r.material, r.seed, 0, r.weight, 0.0f});
             ws.pointSpans.push_back(uint32_t(ws.spans.size()));
             ws.centrePointSpans.push_back(uint32_t(ws.centreSpans.size()));
             // Shadowed as a full trace samples the lights, unshadowed as the Deferred trace did.
@@ -447,22 +480,27 @@ void TraceKernel::resolveDeferred(const ShadingRecord* records, std::size_t coun
         ws.centrePointSpans.push_back(uint32_t(ws.centreSpans.size()));
         const uint8_t* occluded = nullptr;
         if (shadows && !ws.samples.empty()) {
-            ws.shadowRays(points, 0, n, eps_);
+            pts.resize(n);
+            for (std::size_t j = 0; j < n; ++j) {
+                const ShadingRecord& r = records[first + j];
+                pts.set(j, r.p, r.n, r.toViewer);
+            }
+            ws.shadowRays(pts, 0, n, eps_);
             ws.occluded.resize(ws.samples.size());
             scene_.engine().anyHit(ws.shadowBatch(true), ws.occluded.data());
             occluded = ws.occluded.data();
             counters.shadowRays += ws.samples.size();
         }
         for (std::size_t j = 0; j < n; ++j) {
-            const ShadePoint& pt = points[j];
-            const CompiledMaterial& m = scene_.materials()[pt.material];
+            const ShadingRecord& r = records[first + j];
+            const CompiledMaterial& m = scene_.materials()[r.material];
             const Color shadowed = shadeLights(
-                scene_, m, pt.n, pt.toViewer, ws.spans.data() + ws.pointSpans[j],
+                scene_, m, r.n, r.toViewer, ws.spans.data() + ws.pointSpans[j],
                 ws.pointSpans[j + 1] - ws.pointSpans[j], ws.samples.data(), occluded);
             const Color unshadowed = shadeLights(
-                scene_, m, pt.n, pt.toViewer, ws.centreSpans.data() + ws.centrePointSpans[j],
+                scene_, m, r.n, r.toViewer, ws.centreSpans.data() + ws.centrePointSpans[j],
                 ws.centrePointSpans[j + 1] - ws.centrePointSpans[j], ws.centreSamples.data(), nullptr);
-            out[first + j] = pt.weight * (shadowed - unshadowed);
+            out[first + j] = r.weight * (shadowed - unshadowed);
         }
         first += n;
     }
