@@ -385,18 +385,24 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             }
             const std::size_t areaBase = ws.shadowCount;
             if (sampled) ws.shadowRays(sp, first, group, eps_, areaBase);
+            // One answer past the rays, so the loop below may read it without a branch.
+            ws.occluded.resize(ws.shadowCount + 1);
+            ws.occluded[ws.shadowCount] = 0;
             if (ws.shadowCount > 0) {
-                ws.occluded.resize(ws.shadowCount);
                 scene_.engine().anyHit(ws.shadowBatch(area), ws.occluded.data());
                 counters.shadowRays += ws.shadowCount;
             }
-            // Each centre ray's answer back to its point.
+            // Each centre ray's answer back to its point (flags are 0 or 1).
             std::size_t r = 0;
             for (const uint32_t li : centreLights_) {
                 const CentreSamples& c = ws.centres[li];
                 std::vector<uint8_t>& blocked = ws.blocked[li];
                 if (blocked.size() < sp.px.size()) blocked.resize(sp.px.size());
-                for (std::size_t j = first; j < end; ++j) blocked[j] = c.listed[j] ? ws.occluded[r++] : 0;
+                for (std::size_t j = first; j < end; ++j) {
+                    const uint8_t listed = c.listed[j];
+                    blocked[j] = uint8_t(listed & ws.occluded[r]);
+                    r += listed;
+                }
                 if (Bookkeeping && out.rays)
                     for (std::size_t j = first; j < end; ++j) out.rays[pts.owner[j]] += c.listed[j];
             }
