@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace rs {
 
@@ -20,6 +21,50 @@ constexpr std::size_t kCameraChunk = 1024;
 constexpr std::size_t kLevelCap = std::size_t(1) << 18;
 /// Light samples (so shadow rays) gathered before the batch is sent to the engine.
 constexpr std::size_t kSampleCap = 16384;
+
+/// Where a hit lies and which way it faces (one ray, or a lane of rays): p = o + t d, the
+/// normal h turned toward the ray, the direction -d to the viewer, as glm's vector
+/// expressions have them (so lane k has the bits of the one-ray call); returns whether h
+/// had to be turned (the ray is inside: thesis Algorithm 6).
+template <class F>
+inline auto faceHit(F ox, F oy, F oz, F dx, F dy, F dz, F t, F hx, F hy, F hz, F* p, F* n, F* v) {
+    p[0] = ox + dx * t, p[1] = oy + dy * t, p[2] = oz + dz * t;
+    const auto inside = ((hx * dx + hy * dy) + hz * dz) > 0.0f;
+    n[0] = select(inside, -hx, hx), n[1] = select(inside, -hy, hy), n[2] = select(inside, -hz, hz);
+    v[0] = -dx, v[1] = -dy, v[2] = -dz;
+    return inside;
+}
+
+/// faceHit of rays [0, n) of a level into the points' arrays, four rays at a time, and
+/// whether each is inside.
+void faceHits(const float* ox, const float* oy, const float* oz, const float* dx, const float* dy,
+              const float* dz, const HitBatch& hits, std::size_t n, ShadingPoints& sp,
+              uint8_t* inside) {
+    using L = FloatLanes;
+    constexpr std::size_t w = std::size_t(kLaneWidth);
+    auto at = [](const float* a, std::size_t i) {
+        L v;
+        std::memcpy(&v, a + i, sizeof v);
+        return v;
+    };
+    auto put = [](std::vector<float>& a, std::size_t i, L v) { std::memcpy(a.data() + i, &v, sizeof v); };
+    std::size_t i = 0;
+    for (; i + w <= n; i += w) {
+        L p[3], nf[3], v[3];
+        const MaskLanes in = faceHit(at(ox, i), at(oy, i), at(oz, i), at(dx, i), at(dy, i), at(dz, i),
+                                     at(hits.t, i), at(hits.nx, i), at(hits.ny, i), at(hits.nz, i), p, nf, v);
+        put(sp.px, i, p[0]), put(sp.py, i, p[1]), put(sp.pz, i, p[2]);
+        put(sp.nx, i, nf[0]), put(sp.ny, i, nf[1]), put(sp.nz, i, nf[2]);
+        put(sp.vx, i, v[0]), put(sp.vy, i, v[1]), put(sp.vz, i, v[2]);
+        for (std::size_t k = 0; k < w; ++k) inside[i + k] = in[k] ? 1 : 0;
+    }
+    for (; i < n; ++i) {
+        float p[3], nf[3], v[3];
+        inside[i] = faceHit(ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], hits.t[i], hits.nx[i],
+                            hits.ny[i], hits.nz[i], p, nf, v);
+        sp.set(i, Vec3(p[0], p[1], p[2]), Vec3(nf[0], nf[1], nf[2]), Vec3(v[0], v[1], v[2]));
+    }
+}
 
 }  // namespace
 
@@ -77,6 +122,8 @@ struct LevelPoints {
     std::vector<uint32_t> material, seed, owner;
     std::vector<float> weight;     ///< Accumulated weight of the ray that hit there.
     std::vector<float> asDiffuse;  ///< Mirror/glass share shown as Lambert while moving.
+    /// Per ray of the level: whether its normal was turned, and whether its hit is shaded.
+    std::vector<uint8_t> inside, shade;
 
     /// Room for n points; none written yet (count() is 0 until finish()).
     void reserve(std::size_t n, bool lamberts) {
@@ -86,6 +133,7 @@ struct LevelPoints {
         if (material.size() < n)
             for (auto* v : {&material, &seed, &owner}) v->resize(n);
         if (weight.size() < n) weight.resize(n), asDiffuse.resize(n);
+        if (inside.size() < n) inside.resize(n), shade.resize(n);
     }
     std::size_t count() const { return shading.count; }
 };
@@ -257,19 +305,26 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
     LevelPoints& pts = ws.points;
     pts.reserve(n, AsDiffuse);
     ShadingPoints& sp = pts.shading;
+    // Where each hit lies and which way it faces, four rays at a time into the points'
+    // arrays at the ray's index; what its material makes of it, hit by hit, with the other
+    // arrays written at the point's index; then, if some hits are not shaded (misses,
+    // surfaces with no local share), the lanes' arrays closed up to match.
+    faceHits(level.ox.data(), level.oy.data(), level.oz.data(), level.dx.data(), level.dy.data(),
+             level.dz.data(), hits, n, sp, pts.inside.data());
     std::size_t count = 0;  // shading points written
     const bool leaves = depth >= options_.maxDepth;
     for (std::size_t i = 0; i < n; ++i) {
         const uint32_t owner = level.owner[i];
         const float weight = level.weight[i];
         if (Bookkeeping && out.rays) ++out.rays[owner];
-        const Vec3 o(level.ox[i], level.oy[i], level.oz[i]);
-        const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
         const bool found = hits.slot[i] != kNoSlot;
         if (Bookkeeping && out.segments && depth > 0) {
+            const Vec3 o(level.ox[i], level.oy[i], level.oz[i]);
+            const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
             const TreeSegment s = found ? TreeSegment{o, o + d * hits.t[i], 0u} : TreeSegment{o, d, 1u};
             out.segments.append(owner, s);
         }
+        pts.shade[i] = 0;
         if (!found) {
             out.color[owner] += weight * settings.background;
             continue;
@@ -278,21 +333,15 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         ObjectId id;
         scene_.describe(hits.slot[i], materialIndex, id);
         const CompiledMaterial& m = materials[materialIndex];
-        const Vec3 normal(hits.nx[i], hits.ny[i], hits.nz[i]);
         if (out.primary) {
             PrimaryInfo& info = out.primary[owner];
             if (depth == 0) {
                 info.id = id;
                 info.depth = hits.t[i];
-                info.normal = normal;
+                info.normal = Vec3(hits.nx[i], hits.ny[i], hits.nz[i]);
             }
             if (m.reflectivity > 0.0f || m.transparency > 0.0f) info.touchedSpecular = true;
         }
-        const Vec3 p = o + d * hits.t[i];
-        // Face the normal toward the incoming ray; `inside` tells glass which way the ratio
-        // goes (thesis Algorithm 6).
-        const bool inside = glm::dot(normal, d) > 0.0f;
-        const Vec3 nf = inside ? -normal : normal;
 
         // While moving, mirror and glass shares may be shown as plain Lambert (thesis 4.2).
         float reflectivity = m.reflectivity, transparency = m.transparency, asDiffuse = 0.0f;
@@ -308,7 +357,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         }
         if (m.localWeight > 0.0f || (AsDiffuse && asDiffuse > 0.0f)) {
             const std::size_t j = count++;
-            sp.set(j, p, nf, -d);
+            pts.shade[i] = 1;
             pts.surface.set(j, surfaces_[materialIndex]);
             if (AsDiffuse) pts.lambert.set(j, lamberts_[materialIndex]), pts.asDiffuse[j] = asDiffuse;
             pts.material[j] = materialIndex, pts.seed[j] = level.seed[i], pts.owner[j] = owner;
@@ -316,12 +365,14 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         }
 
         if (leaves || (reflectivity <= 0.0f && transparency <= 0.0f)) continue;
+        const Vec3 p(sp.px[i], sp.py[i], sp.pz[i]), nf(sp.nx[i], sp.ny[i], sp.nz[i]);
+        const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
         // Reflection is traced once and weighted by the mirror part plus the glass part's
         // Fresnel (or all of the glass part on total internal reflection). A child whose
         // accumulated weight falls below min_weight is not traced (scene-format.md).
         float reflectWeight = reflectivity;
         if (transparency > 0.0f) {
-            const float eta = inside ? m.ior : 1.0f / m.ior;
+            const float eta = pts.inside[i] ? m.ior : 1.0f / m.ior;
             Vec3 t;
             if (refractDir(d, nf, eta, t)) {
                 const float f = schlick(-glm::dot(nf, d), m.ior);
@@ -338,6 +389,16 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             if (w >= options_.minWeight)
                 next.push(p + nf * eps_, d - 2.0f * glm::dot(d, nf) * nf, w,
                           hashCombine(level.seed[i], 1u), owner);
+        }
+    }
+    if (count < n) {  // close up: point j is the j-th shaded hit (j <= i, so in place)
+        std::size_t j = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!pts.shade[i]) continue;
+            if (j != i)
+                sp.set(j, Vec3(sp.px[i], sp.py[i], sp.pz[i]), Vec3(sp.nx[i], sp.ny[i], sp.nz[i]),
+                       Vec3(sp.vx[i], sp.vy[i], sp.vz[i]));
+            ++j;
         }
     }
     sp.count = count;
