@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace rs {
 
@@ -21,13 +22,49 @@ constexpr std::size_t kLevelCap = std::size_t(1) << 18;
 /// Light samples (so shadow rays) gathered before the batch is sent to the engine.
 constexpr std::size_t kSampleCap = 16384;
 
-/// A hit to shade: where, facing which way, with what, for which camera ray and weight.
-struct ShadePoint {
-    Vec3 p, n, toViewer;
-    uint32_t material, seed, owner;
-    float weight;     ///< Accumulated weight of the ray that hit here.
-    float asDiffuse;  ///< Mirror/glass share shown as Lambert while moving (0 otherwise).
-};
+/// Where a hit lies and which way it faces (one ray, or a lane of rays): p = o + t d, the
+/// normal h turned toward the ray, the direction -d to the viewer, as glm's vector
+/// expressions have them (so lane k has the bits of the one-ray call); returns whether h
+/// had to be turned (the ray is inside: thesis Algorithm 6).
+template <class F>
+inline auto faceHit(F ox, F oy, F oz, F dx, F dy, F dz, F t, F hx, F hy, F hz, F* p, F* n, F* v) {
+    p[0] = ox + dx * t, p[1] = oy + dy * t, p[2] = oz + dz * t;
+    const auto inside = ((hx * dx + hy * dy) + hz * dz) > 0.0f;
+    n[0] = select(inside, -hx, hx), n[1] = select(inside, -hy, hy), n[2] = select(inside, -hz, hz);
+    v[0] = -dx, v[1] = -dy, v[2] = -dz;
+    return inside;
+}
+
+/// faceHit of rays [0, n) of a level into the points' arrays, four rays at a time, and
+/// whether each is inside.
+void faceHits(const float* ox, const float* oy, const float* oz, const float* dx, const float* dy,
+              const float* dz, const HitBatch& hits, std::size_t n, ShadingPoints& sp,
+              uint8_t* inside) {
+    using L = FloatLanes;
+    constexpr std::size_t w = std::size_t(kLaneWidth);
+    auto at = [](const float* a, std::size_t i) {
+        L v;
+        std::memcpy(&v, a + i, sizeof v);
+        return v;
+    };
+    auto put = [](std::vector<float>& a, std::size_t i, L v) { std::memcpy(a.data() + i, &v, sizeof v); };
+    std::size_t i = 0;
+    for (; i + w <= n; i += w) {
+        L p[3], nf[3], v[3];
+        const MaskLanes in = faceHit(at(ox, i), at(oy, i), at(oz, i), at(dx, i), at(dy, i), at(dz, i),
+                                     at(hits.t, i), at(hits.nx, i), at(hits.ny, i), at(hits.nz, i), p, nf, v);
+        put(sp.px, i, p[0]), put(sp.py, i, p[1]), put(sp.pz, i, p[2]);
+        put(sp.nx, i, nf[0]), put(sp.ny, i, nf[1]), put(sp.nz, i, nf[2]);
+        put(sp.vx, i, v[0]), put(sp.vy, i, v[1]), put(sp.vz, i, v[2]);
+        for (std::size_t k = 0; k < w; ++k) inside[i + k] = in[k] ? 1 : 0;
+    }
+    for (; i < n; ++i) {
+        float p[3], nf[3], v[3];
+        inside[i] = faceHit(ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], hits.t[i], hits.nx[i],
+                            hits.ny[i], hits.nz[i], p, nf, v);
+        sp.set(i, Vec3(p[0], p[1], p[2]), Vec3(nf[0], nf[1], nf[2]), Vec3(v[0], v[1], v[2]));
+    }
+}
 
 }  // namespace
 
@@ -77,12 +114,36 @@ struct TraceKernel::Level {
     }
 };
 
+/// A level's shading points as structure of arrays: where and how each is lit (the light
+/// lanes read these), and what its sum goes back to.
+struct LevelPoints {
+    ShadingPoints shading;           ///< Position, faced normal, direction to the viewer.
+    SurfaceArrays surface, lambert;  ///< Their materials' terms, and as plain Lambert.
+    std::vector<uint32_t> material, seed, owner;
+    std::vector<float> weight;     ///< Accumulated weight of the ray that hit there.
+    std::vector<float> asDiffuse;  ///< Mirror/glass share shown as Lambert while moving.
+    /// Per ray of the level: whether its normal was turned, and whether its hit is shaded.
+    std::vector<uint8_t> inside, shade;
+
+    /// Room for n points; none written yet (count() is 0 until finish()).
+    void reserve(std::size_t n, bool lamberts) {
+        shading.resize(n);
+        surface.resize(n);
+        if (lamberts) lambert.resize(n);
+        if (material.size() < n)
+            for (auto* v : {&material, &seed, &owner}) v->resize(n);
+        if (weight.size() < n) weight.resize(n), asDiffuse.resize(n);
+        if (inside.size() < n) inside.resize(n), shade.resize(n);
+    }
+    std::size_t count() const { return shading.count; }
+};
+
 /// Per-thread storage reused from call to call: no allocation once it has grown.
 struct TraceKernel::Workspace {
     Level ping, pong;
     std::vector<float> t, nx, ny, nz;
     std::vector<uint32_t> slot;
-    std::vector<ShadePoint> points;
+    LevelPoints points;  ///< The points of a level being shaded, lane by lane.
     std::vector<LightSample> samples, centreSamples;
     std::vector<LightSpan> spans, centreSpans;
     std::vector<uint32_t> pointSpans;  ///< First span of each point of a group, plus an end.
@@ -91,8 +152,6 @@ struct TraceKernel::Workspace {
     std::vector<uint32_t> slight;
     std::vector<uint8_t> occluded;
     std::size_t shadowCount = 0;  ///< Shadow rays written by pushShadow.
-    ShadingPoints shading;          ///< The points of a level being shaded, lane by lane.
-    SurfaceArrays surface, lambert;  ///< Their materials' terms, and as plain Lambert.
     std::vector<CentreSamples> centres;         ///< Per centre-sampled light.
     std::vector<std::vector<uint8_t>> blocked;  ///< Per centre-sampled light and point.
     LightSums sums, lambertSums;
@@ -103,10 +162,11 @@ struct TraceKernel::Workspace {
         slot.resize(n);
         return {t.data(), nx.data(), ny.data(), nz.data(), slot.data()};
     }
-    /// Shadow rays for samples [0, samples.size()) of points whose spans pointSpans lists.
-    /// The rays go from index `base` on, after those pushShadow wrote.
-    void shadowRays(const std::vector<ShadePoint>& pts, std::size_t first, std::size_t count,
-                    float eps, std::size_t base = 0) {
+    /// Shadow rays for samples [0, samples.size()) of points [first, first + count) of `pts`,
+    /// whose spans pointSpans lists. The rays go from index `base` on, after those
+    /// pushShadow wrote.
+    void shadowRays(const ShadingPoints& pts, std::size_t first, std::size_t count, float eps,
+                    std::size_t base = 0) {
         const std::size_t n = base + samples.size();
         if (sox.size() < n)
             for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n);
@@ -117,8 +177,9 @@ struct TraceKernel::Workspace {
         float* tmax = stmax.data() + base;
         uint32_t* light = slight.data() + base;
         for (std::size_t j = 0; j < count; ++j) {
-            const ShadePoint& pt = pts[first + j];
-            const Vec3 o = shadowOrigin(pt.p, pt.n, eps);
+            const std::size_t q = first + j;
+            const Vec3 o = shadowOrigin(Vec3(pts.px[q], pts.py[q], pts.pz[q]),
+                                        Vec3(pts.nx[q], pts.ny[q], pts.nz[q]), eps);
             for (uint32_t k = pointSpans[j]; k < pointSpans[j + 1]; ++k) {
                 const LightSpan& span = spans[k];
                 for (uint32_t i = span.first; i < span.first + span.listed; ++i) {
@@ -155,12 +216,27 @@ struct TraceKernel::Workspace {
 
 TraceKernel::TraceKernel(const CompiledScene& scene, const TraceOptions& options)
     : scene_(scene), options_(options), eps_(scene.epsilon()), sampler_(scene) {
+    const RenderSettings& settings = scene.settings();
     for (const CompiledMaterial& m : scene.materials()) {
         surfaces_.push_back(surfaceTerms(m));
         CompiledMaterial lambert{};
         lambert.color = m.color;
         lambert.diffuse = 1.0f;
         lamberts_.push_back(surfaceTerms(lambert));
+        ambients_.push_back(settings.ambient * m.color * m.diffuse);
+        lambertAmbients_.push_back(settings.ambient * m.color);
+    }
+    // What the options fix for every level: which lights are sampled at their centre alone
+    // (four points at a time) and which over their disk (point by point), and how many
+    // samples a point draws at most.
+    const int shadowSamples = settings.shadowSamples;
+    area_ = shadowSamples > 0 && options_.shadows == ShadowQuality::Full;
+    traceShadows_ = shadowSamples > 0 && (options_.shadows == ShadowQuality::Full ||
+                                          options_.shadows == ShadowQuality::HardOnly);
+    for (std::size_t li = 0; li < scene.lights().size(); ++li) {
+        const bool centre = sampler_.centreOnly(li, area_);
+        (centre ? centreLights_ : sampledLights_).push_back(uint32_t(li));
+        perPoint_ += centre ? 1 : std::size_t(shadowSamples);
     }
 }
 
@@ -186,6 +262,13 @@ bool TraceKernel::trace(const CameraBatch& rays, const TraceOutput& out, TraceCo
 
 bool TraceKernel::traceLevels(Workspace& ws, Level& start, int depth, const TraceOutput& out,
                               TraceCounters& counters, const std::function<bool()>& stale) const {
+    // Settings constant for the whole call pick the instance: no per-hit branch on them.
+    const bool bookkeeping = out.rays || out.segments || out.records;
+    const bool asDiffuse = options_.reflectionAsDiffuse || options_.refractionAsDiffuse;
+    const auto shade = bookkeeping ? (asDiffuse ? &TraceKernel::shadeLevel<true, true>
+                                                : &TraceKernel::shadeLevel<true, false>)
+                                   : (asDiffuse ? &TraceKernel::shadeLevel<false, true>
+                                                : &TraceKernel::shadeLevel<false, false>);
     Level* cur = &start;
     while (cur->size() > 0) {
         if (stale && stale()) return false;
@@ -202,13 +285,14 @@ bool TraceKernel::traceLevels(Workspace& ws, Level& start, int depth, const Trac
         }
         Level* next = cur == &ws.ping ? &ws.pong : &ws.ping;
         next->clear();
-        shadeLevel(ws, *cur, depth, *next, out, counters);
+        (this->*shade)(ws, *cur, depth, *next, out, counters);
         cur = next;
         ++depth;
     }
     return true;
 }
 
+template <bool Bookkeeping, bool AsDiffuse>
 void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level& next,
                              const TraceOutput& out, TraceCounters& counters) const {
     const std::size_t n = level.size();
@@ -218,18 +302,29 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
     counters.rays += n;
     const RenderSettings& settings = scene_.settings();
     const auto& materials = scene_.materials();
-    ws.points.clear();
+    LevelPoints& pts = ws.points;
+    pts.reserve(n, AsDiffuse);
+    ShadingPoints& sp = pts.shading;
+    // Where each hit lies and which way it faces, four rays at a time into the points'
+    // arrays at the ray's index; what its material makes of it, hit by hit, with the other
+    // arrays written at the point's index; then, if some hits are not shaded (misses,
+    // surfaces with no local share), the lanes' arrays closed up to match.
+    faceHits(level.ox.data(), level.oy.data(), level.oz.data(), level.dx.data(), level.dy.data(),
+             level.dz.data(), hits, n, sp, pts.inside.data());
+    std::size_t count = 0;  // shading points written
+    const bool leaves = depth >= options_.maxDepth;
     for (std::size_t i = 0; i < n; ++i) {
         const uint32_t owner = level.owner[i];
         const float weight = level.weight[i];
-        if (out.rays) ++out.rays[owner];
-        const Vec3 o(level.ox[i], level.oy[i], level.oz[i]);
-        const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
+        if (Bookkeeping && out.rays) ++out.rays[owner];
         const bool found = hits.slot[i] != kNoSlot;
-        if (out.segments && depth > 0) {
+        if (Bookkeeping && out.segments && depth > 0) {
+            const Vec3 o(level.ox[i], level.oy[i], level.oz[i]);
+            const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
             const TreeSegment s = found ? TreeSegment{o, o + d * hits.t[i], 0u} : TreeSegment{o, d, 1u};
             out.segments.append(owner, s);
         }
+        pts.shade[i] = 0;
         if (!found) {
             out.color[owner] += weight * settings.background;
             continue;
@@ -238,42 +333,46 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         ObjectId id;
         scene_.describe(hits.slot[i], materialIndex, id);
         const CompiledMaterial& m = materials[materialIndex];
-        const Vec3 normal(hits.nx[i], hits.ny[i], hits.nz[i]);
         if (out.primary) {
             PrimaryInfo& info = out.primary[owner];
             if (depth == 0) {
                 info.id = id;
                 info.depth = hits.t[i];
-                info.normal = normal;
+                info.normal = Vec3(hits.nx[i], hits.ny[i], hits.nz[i]);
             }
             if (m.reflectivity > 0.0f || m.transparency > 0.0f) info.touchedSpecular = true;
         }
-        const Vec3 p = o + d * hits.t[i];
-        // Face the normal toward the incoming ray; `inside` tells glass which way the ratio
-        // goes (thesis Algorithm 6).
-        const bool inside = glm::dot(normal, d) > 0.0f;
-        const Vec3 nf = inside ? -normal : normal;
 
         // While moving, mirror and glass shares may be shown as plain Lambert (thesis 4.2).
         float reflectivity = m.reflectivity, transparency = m.transparency, asDiffuse = 0.0f;
-        if (options_.reflectionAsDiffuse && reflectivity > 0.0f) {
-            asDiffuse += reflectivity;
-            reflectivity = 0.0f;
+        if (AsDiffuse) {
+            if (options_.reflectionAsDiffuse && reflectivity > 0.0f) {
+                asDiffuse += reflectivity;
+                reflectivity = 0.0f;
+            }
+            if (options_.refractionAsDiffuse && transparency > 0.0f && id != options_.refractionExempt) {
+                asDiffuse += transparency;
+                transparency = 0.0f;
+            }
         }
-        if (options_.refractionAsDiffuse && transparency > 0.0f && id != options_.refractionExempt) {
-            asDiffuse += transparency;
-            transparency = 0.0f;
+        if (m.localWeight > 0.0f || (AsDiffuse && asDiffuse > 0.0f)) {
+            const std::size_t j = count++;
+            pts.shade[i] = 1;
+            pts.surface.set(j, surfaces_[materialIndex]);
+            if (AsDiffuse) pts.lambert.set(j, lamberts_[materialIndex]), pts.asDiffuse[j] = asDiffuse;
+            pts.material[j] = materialIndex, pts.seed[j] = level.seed[i], pts.owner[j] = owner;
+            pts.weight[j] = weight;
         }
-        if (m.localWeight > 0.0f || asDiffuse > 0.0f)
-            ws.points.push_back({p, nf, -d, materialIndex, level.seed[i], owner, weight, asDiffuse});
 
-        if (depth >= options_.maxDepth || (reflectivity <= 0.0f && transparency <= 0.0f)) continue;
+        if (leaves || (reflectivity <= 0.0f && transparency <= 0.0f)) continue;
+        const Vec3 p(sp.px[i], sp.py[i], sp.pz[i]), nf(sp.nx[i], sp.ny[i], sp.nz[i]);
+        const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
         // Reflection is traced once and weighted by the mirror part plus the glass part's
         // Fresnel (or all of the glass part on total internal reflection). A child whose
         // accumulated weight falls below min_weight is not traced (scene-format.md).
         float reflectWeight = reflectivity;
         if (transparency > 0.0f) {
-            const float eta = inside ? m.ior : 1.0f / m.ior;
+            const float eta = pts.inside[i] ? m.ior : 1.0f / m.ior;
             Vec3 t;
             if (refractDir(d, nf, eta, t)) {
                 const float f = schlick(-glm::dot(nf, d), m.ior);
@@ -292,128 +391,131 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                           hashCombine(level.seed[i], 1u), owner);
         }
     }
+    if (count < n) {  // close up: point j is the j-th shaded hit (j <= i, so in place)
+        std::size_t j = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!pts.shade[i]) continue;
+            if (j != i)
+                sp.set(j, Vec3(sp.px[i], sp.py[i], sp.pz[i]), Vec3(sp.nx[i], sp.ny[i], sp.nz[i]),
+                       Vec3(sp.vx[i], sp.vy[i], sp.vz[i]));
+            ++j;
+        }
+    }
+    sp.count = count;
+    if (count == 0) return;
 
     // The local terms, light by light over as many points as fit one shadow batch.
-    const int shadowSamples = settings.shadowSamples;
     const bool deferred = options_.shadows == ShadowQuality::Deferred;
-    const bool traceShadows = shadowSamples > 0 && (options_.shadows == ShadowQuality::Full ||
-                                                    options_.shadows == ShadowQuality::HardOnly);
-    const bool area = shadowSamples > 0 && options_.shadows == ShadowQuality::Full;
-    const bool asDiffuse = options_.reflectionAsDiffuse || options_.refractionAsDiffuse;
-    const std::size_t lightCount = scene_.lights().size();
-    std::size_t perPoint = 0;  // the most samples a point draws
-    for (std::size_t li = 0; li < lightCount; ++li)
-        perPoint += sampler_.centreOnly(li, area) ? 1 : std::size_t(shadowSamples);
+    const bool area = area_, traceShadows = traceShadows_;
     const std::size_t lane = std::size_t(kLaneWidth);
-    const std::size_t chunk = std::max(lane, kSampleCap / std::max<std::size_t>(1, perPoint) / lane * lane);
+    const std::size_t chunk = std::max(lane, kSampleCap / std::max<std::size_t>(1, perPoint_) / lane * lane);
+    const std::size_t lightCount = scene_.lights().size();
     if (ws.centres.size() < lightCount) ws.centres.resize(lightCount), ws.blocked.resize(lightCount);
-    for (std::size_t first = 0; first < ws.points.size(); first += chunk) {
-        const std::size_t count = std::min(ws.points.size() - first, chunk);
-        ShadingPoints& sp = ws.shading;
-        sp.resize(count);
-        ws.surface.resize(count);
-        if (asDiffuse) ws.lambert.resize(count);
+    ws.sums.zero(count);
+    if (AsDiffuse) ws.lambertSums.zero(count);
+    for (std::size_t first = 0; first < count; first += chunk) {
+        const std::size_t end = std::min(count, first + chunk), group = end - first;
+        // Sphere lights' samples, point by point (lanes of samples), in light order.
         ws.samples.clear();
         ws.spans.clear();
-        ws.pointSpans.resize(count + 1);
-        for (std::size_t j = 0; j < count; ++j) {
-            const ShadePoint& pt = ws.points[first + j];
-            sp.set(j, pt.p, pt.n, pt.toViewer);
-            ws.surface.set(j, surfaces_[pt.material]);
-            if (asDiffuse) ws.lambert.set(j, lamberts_[pt.material]);
-            // Sphere lights' samples, point by point (lanes of samples), in light order.
-            ws.pointSpans[j] = uint32_t(ws.spans.size());
-            for (std::size_t li = 0; li < lightCount; ++li)
-                if (!sampler_.centreOnly(li, area))
-                    sampler_.sampleLight(li, pt.p, pt.n, pt.seed, area, ws.samples, ws.spans);
+        const bool sampled = !sampledLights_.empty();
+        if (sampled) {
+            ws.pointSpans.resize(group + 1);
+            for (std::size_t j = first; j < end; ++j) {
+                ws.pointSpans[j - first] = uint32_t(ws.spans.size());
+                const Vec3 p(sp.px[j], sp.py[j], sp.pz[j]), nf(sp.nx[j], sp.ny[j], sp.nz[j]);
+                for (const uint32_t li : sampledLights_)
+                    sampler_.sampleLight(li, p, nf, pts.seed[j], area, ws.samples, ws.spans);
+            }
+            ws.pointSpans[group] = uint32_t(ws.spans.size());
         }
-        ws.pointSpans[count] = uint32_t(ws.spans.size());
-        for (std::size_t li = 0; li < lightCount; ++li)
-            if (sampler_.centreOnly(li, area)) sampler_.sampleCentres(li, sp, 0, count, ws.centres[li]);
+        for (const uint32_t li : centreLights_) sampler_.sampleCentres(li, sp, first, end, ws.centres[li]);
 
         // One shadow batch: every centre-sampled light's listed rays, light by light, then
         // the sphere lights' samples in list order.
         const uint8_t* areaOccluded = nullptr;
         if (traceShadows) {
-            ws.shadows(count * perPoint);
-            for (std::size_t li = 0; li < lightCount; ++li) {
-                if (!sampler_.centreOnly(li, area)) continue;
+            ws.shadows(group * perPoint_);
+            for (const uint32_t li : centreLights_) {
                 const CentreSamples& c = ws.centres[li];
-                for (std::size_t j = 0; j < count; ++j)
+                for (std::size_t j = first; j < end; ++j)
                     if (c.listed[j])
-                        ws.pushShadow(shadowOrigin(ws.points[first + j].p, ws.points[first + j].n, eps_),
-                                      c.dx[j], c.dy[j], c.dz[j], shadowLength(c.dist[j], eps_), uint32_t(li));
+                        ws.pushShadow(shadowOrigin(Vec3(sp.px[j], sp.py[j], sp.pz[j]),
+                                                   Vec3(sp.nx[j], sp.ny[j], sp.nz[j]), eps_),
+                                      c.dx[j], c.dy[j], c.dz[j], shadowLength(c.dist[j], eps_), li);
             }
             const std::size_t areaBase = ws.shadowCount;
-            ws.shadowRays(ws.points, first, count, eps_, areaBase);
+            if (sampled) ws.shadowRays(sp, first, group, eps_, areaBase);
+            // One answer past the rays, so the loop below may read it without a branch.
+            ws.occluded.resize(ws.shadowCount + 1);
+            ws.occluded[ws.shadowCount] = 0;
             if (ws.shadowCount > 0) {
-                ws.occluded.resize(ws.shadowCount);
                 scene_.engine().anyHit(ws.shadowBatch(area), ws.occluded.data());
                 counters.shadowRays += ws.shadowCount;
             }
-            // Each centre ray's answer back to its point.
+            // Each centre ray's answer back to its point (flags are 0 or 1).
             std::size_t r = 0;
-            for (std::size_t li = 0; li < lightCount; ++li) {
-                if (!sampler_.centreOnly(li, area)) continue;
+            for (const uint32_t li : centreLights_) {
                 const CentreSamples& c = ws.centres[li];
                 std::vector<uint8_t>& blocked = ws.blocked[li];
-                blocked.resize(sp.px.size());
-                for (std::size_t j = 0; j < count; ++j) blocked[j] = c.listed[j] ? ws.occluded[r++] : 0;
-                if (out.rays)
-                    for (std::size_t j = 0; j < count; ++j) out.rays[ws.points[first + j].owner] += c.listed[j];
+                if (blocked.size() < sp.px.size()) blocked.resize(sp.px.size());
+                for (std::size_t j = first; j < end; ++j) {
+                    const uint8_t listed = c.listed[j];
+                    blocked[j] = uint8_t(listed & ws.occluded[r]);
+                    r += listed;
+                }
+                if (Bookkeeping && out.rays)
+                    for (std::size_t j = first; j < end; ++j) out.rays[pts.owner[j]] += c.listed[j];
             }
             areaOccluded = ws.occluded.data() + areaBase;
-            if (out.rays)
-                for (std::size_t j = 0; j < count; ++j)
-                    for (uint32_t k = ws.pointSpans[j]; k < ws.pointSpans[j + 1]; ++k)
-                        out.rays[ws.points[first + j].owner] += ws.spans[k].listed;
+            if (Bookkeeping && out.rays && sampled)
+                for (std::size_t j = first; j < end; ++j)
+                    for (uint32_t k = ws.pointSpans[j - first]; k < ws.pointSpans[j - first + 1]; ++k)
+                        out.rays[pts.owner[j]] += ws.spans[k].listed;
         }
 
         // Light by light, so each point's sum takes the lights in the scene's order.
-        ws.sums.zero(count);
-        if (asDiffuse) ws.lambertSums.zero(count);
-        ws.cursor.assign(ws.pointSpans.begin(), ws.pointSpans.end() - 1);
+        if (sampled) ws.cursor.assign(ws.pointSpans.begin(), ws.pointSpans.end() - 1);
         for (std::size_t li = 0; li < lightCount; ++li) {
             if (sampler_.centreOnly(li, area)) {
                 const CompiledLight& light = scene_.lights()[li];
                 const uint8_t* blocked = traceShadows ? ws.blocked[li].data() : nullptr;
-                addCentreLight(light, sp, ws.surface, ws.centres[li], blocked, 0, count, ws.sums);
-                if (asDiffuse)
-                    addCentreLight(light, sp, ws.lambert, ws.centres[li], blocked, 0, count, ws.lambertSums);
+                addCentreLight(light, sp, pts.surface, ws.centres[li], blocked, first, end, ws.sums);
+                if (AsDiffuse)
+                    addCentreLight(light, sp, pts.lambert, ws.centres[li], blocked, first, end, ws.lambertSums);
                 continue;
             }
-            for (std::size_t j = 0; j < count; ++j) {
-                uint32_t& k = ws.cursor[j];
-                if (k == ws.pointSpans[j + 1] || ws.spans[k].light != li) continue;
-                const ShadePoint& pt = ws.points[first + j];
+            for (std::size_t j = first; j < end; ++j) {
+                uint32_t& k = ws.cursor[j - first];
+                if (k == ws.pointSpans[j - first + 1] || ws.spans[k].light != li) continue;
                 const LightSpan& span = ws.spans[k++];
-                const Color c = spanShare(scene_, surfaces_[pt.material], pt.n, pt.toViewer, span,
-                                          ws.samples.data(), areaOccluded);
+                const Vec3 nf(sp.nx[j], sp.ny[j], sp.nz[j]), v(sp.vx[j], sp.vy[j], sp.vz[j]);
+                const uint32_t mi = pts.material[j];
+                const Color c = spanShare(scene_, surfaces_[mi], nf, v, span, ws.samples.data(), areaOccluded);
                 ws.sums.r[j] += c.x, ws.sums.g[j] += c.y, ws.sums.b[j] += c.z;
-                if (asDiffuse) {
-                    const Color l = spanShare(scene_, lamberts_[pt.material], pt.n, pt.toViewer,
-                                              span, ws.samples.data(), areaOccluded);
+                if (AsDiffuse) {
+                    const Color l = spanShare(scene_, lamberts_[mi], nf, v, span, ws.samples.data(), areaOccluded);
                     ws.lambertSums.r[j] += l.x, ws.lambertSums.g[j] += l.y, ws.lambertSums.b[j] += l.z;
                 }
             }
         }
 
-        for (std::size_t j = 0; j < count; ++j) {
-            const ShadePoint& pt = ws.points[first + j];
-            const CompiledMaterial& m = materials[pt.material];
-            if (m.localWeight > 0.0f) {
-                const Color ambient = settings.ambient * m.color * m.diffuse;
+        for (std::size_t j = first; j < end; ++j) {
+            const uint32_t mi = pts.material[j], owner = pts.owner[j];
+            const float weight = pts.weight[j], localWeight = materials[mi].localWeight;
+            if (localWeight > 0.0f) {
                 const Color direct(ws.sums.r[j], ws.sums.g[j], ws.sums.b[j]);
-                out.color[pt.owner] += pt.weight * (m.localWeight * (ambient + direct));
+                out.color[owner] += weight * (localWeight * (ambients_[mi] + direct));
                 // Shown unshadowed while moving; the record lets the shadows be added later.
-                if (deferred && out.records)
-                    out.records.append(pt.owner, ShadingRecord{pt.p, pt.n, pt.toViewer,
-                                                               pt.weight * m.localWeight,
-                                                               pt.material, pt.seed});
+                if (Bookkeeping && deferred && out.records)
+                    out.records.append(owner, ShadingRecord{Vec3(sp.px[j], sp.py[j], sp.pz[j]),
+                                                            Vec3(sp.nx[j], sp.ny[j], sp.nz[j]),
+                                                            Vec3(sp.vx[j], sp.vy[j], sp.vz[j]),
+                                                            weight * localWeight, mi, pts.seed[j]});
             }
-            if (pt.asDiffuse > 0.0f) {
+            if (AsDiffuse && pts.asDiffuse[j] > 0.0f) {
                 const Color direct(ws.lambertSums.r[j], ws.lambertSums.g[j], ws.lambertSums.b[j]);
-                out.color[pt.owner] += pt.weight * (pt.asDiffuse * (settings.ambient * m.color + direct));
+                out.color[owner] += weight * (pts.asDiffuse[j] * (lambertAmbients_[mi] + direct));
             }
         }
     }
@@ -422,7 +524,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
 void TraceKernel::resolveDeferred(const ShadingRecord* records, std::size_t count, Color* out,
                                   TraceCounters& counters) const {
     thread_local Workspace ws;
-    thread_local std::vector<ShadePoint> points;
+    ShadingPoints& pts = ws.points.shading;
     const bool shadows = scene_.settings().shadowSamples > 0;
     for (std::size_t first = 0; first < count;) {
         ws.samples.clear();
@@ -431,11 +533,9 @@ void TraceKernel::resolveDeferred(const ShadingRecord* records, std::size_t coun
         ws.centreSamples.clear();
         ws.centreSpans.clear();
         ws.centrePointSpans.clear();
-        points.clear();
         std::size_t n = 0;
         while (first + n < count && (n == 0 || ws.samples.size() < kSampleCap)) {
             const ShadingRecord& r = records[first + n];
-            points.push_back({r.p, r.n, r.toViewer, r.material, r.seed, 0, r.weight, 0.0f});
             ws.pointSpans.push_back(uint32_t(ws.spans.size()));
             ws.centrePointSpans.push_back(uint32_t(ws.centreSpans.size()));
             // Shadowed as a full trace samples the lights, unshadowed as the Deferred trace did.
@@ -447,22 +547,27 @@ void TraceKernel::resolveDeferred(const ShadingRecord* records, std::size_t coun
         ws.centrePointSpans.push_back(uint32_t(ws.centreSpans.size()));
         const uint8_t* occluded = nullptr;
         if (shadows && !ws.samples.empty()) {
-            ws.shadowRays(points, 0, n, eps_);
+            pts.resize(n);
+            for (std::size_t j = 0; j < n; ++j) {
+                const ShadingRecord& r = records[first + j];
+                pts.set(j, r.p, r.n, r.toViewer);
+            }
+            ws.shadowRays(pts, 0, n, eps_);
             ws.occluded.resize(ws.samples.size());
             scene_.engine().anyHit(ws.shadowBatch(true), ws.occluded.data());
             occluded = ws.occluded.data();
             counters.shadowRays += ws.samples.size();
         }
         for (std::size_t j = 0; j < n; ++j) {
-            const ShadePoint& pt = points[j];
-            const CompiledMaterial& m = scene_.materials()[pt.material];
+            const ShadingRecord& r = records[first + j];
+            const CompiledMaterial& m = scene_.materials()[r.material];
             const Color shadowed = shadeLights(
-                scene_, m, pt.n, pt.toViewer, ws.spans.data() + ws.pointSpans[j],
+                scene_, m, r.n, r.toViewer, ws.spans.data() + ws.pointSpans[j],
                 ws.pointSpans[j + 1] - ws.pointSpans[j], ws.samples.data(), occluded);
             const Color unshadowed = shadeLights(
-                scene_, m, pt.n, pt.toViewer, ws.centreSpans.data() + ws.centrePointSpans[j],
+                scene_, m, r.n, r.toViewer, ws.centreSpans.data() + ws.centrePointSpans[j],
                 ws.centrePointSpans[j + 1] - ws.centrePointSpans[j], ws.centreSamples.data(), nullptr);
-            out[first + j] = pt.weight * (shadowed - unshadowed);
+            out[first + j] = r.weight * (shadowed - unshadowed);
         }
         first += n;
     }

@@ -97,6 +97,10 @@ private:
     struct Level;
     bool traceLevels(Workspace& ws, Level& level, int depth, const TraceOutput& out,
                      TraceCounters& counters, const std::function<bool()>& stale) const;
+    /// One level: its closest hits, their shading, the next level's rays. Bookkeeping: any
+    /// of out.rays, segments, records is asked for; AsDiffuse: the options show mirror or
+    /// glass as Lambert. Both are fixed for a call, so they are template parameters.
+    template <bool Bookkeeping, bool AsDiffuse>
     void shadeLevel(Workspace& ws, const Level& level, int depth, Level& next,
                     const TraceOutput& out, TraceCounters& counters) const;
 
@@ -107,6 +111,15 @@ private:
     /// Each material's Lambert + Phong terms, and as plain Lambert in its colour (the
     /// interaction policies' mirror and glass shown as diffuse).
     std::vector<SurfaceTerms<float>> surfaces_, lamberts_;
+    /// Each material's ambient term (the scene's ambient times colour times diffuse), and
+    /// as plain Lambert (ambient times colour).
+    std::vector<Color> ambients_, lambertAmbients_;
+    bool area_ = false;          ///< Sphere lights are sampled over their disk.
+    bool traceShadows_ = false;  ///< Shadow rays are traced now (not Off, not Deferred).
+    /// Lights sampled at their centre (four points at a time) and over their disk, in the
+    /// scene's order; the most samples one point draws.
+    std::vector<uint32_t> centreLights_, sampledLights_;
+    std::size_t perPoint_ = 0;
 };
 
 }  // namespace rs
