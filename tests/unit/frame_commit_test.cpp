@@ -3,7 +3,8 @@
 // tile and for scattered pixels whose frame indices run on from one row into the next, and
 // `base` written only when the result keeps it; deferred records appended (untouched pixels'
 // records stay where they are) with the pool bounded by its compaction; undersampled blocks
-// filling their spans, with the state counts of pixels in every state.
+// filling their spans, with the state counts of pixels in every state, and the summaries of
+// blocks spans cover whole built from the block rays.
 #include "session/deep_frame.h"
 #include "session/tile_output.h"
 
@@ -309,6 +310,45 @@ TEST(FrameCommit, UndersampledBlocks_FillTheirSpans_CountsFollowMixedStates) {
     EXPECT_EQ(f.tileStates[0], want);
     EXPECT_EQ(f.tileLiveSegments[0], referencedSegments(f));
     EXPECT_TRUE(f.summariesMatchPixels());
+}
+
+// A quarter-resolution pass over a whole tile: 4x4 spans cover every 8x8 block, so each block's
+// summary is built from the block rays instead of read back; it must still describe the
+// pixels (hits, misses, specular rays whose trees are not kept) after a pass that kept
+// segments, and the blocks' old segments must no longer count.
+TEST(FrameCommit, SpansCoveringWholeBlocks_SummariesFromTheRays_MatchThePixels) {
+    DeepFrame f;
+    f.resize(kWidth, kHeight);
+    ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // segments and hits everywhere
+    const TileSummary before = f.tileSummary[0];
+    ASSERT_TRUE(before.anySpecular);
+    ASSERT_FALSE(before.segmentStarts.empty());
+    TileResult t;
+    t.generation = 7;
+    t.rect = {0, 0, 32, 32};
+    RayList& b = t.blocks;
+    for (int y = 0; y < 32; y += 4)
+        for (int x = 0; x < 32; x += 4) {
+            Ray ray;
+            ray.origin = Vec3(float(x), float(y), 0.0f);
+            ray.dir = Vec3(0.0f, 0.0f, -1.0f);
+            b.add(ray, 0, f.index(x, y), uint8_t(4 | (4 << 4)));
+        }
+    b.color.resize(b.size()), b.info.resize(b.size()), b.rays.resize(b.size());
+    for (std::size_t k = 0; k < b.size(); ++k) {
+        b.color[k] = Color(float(k));
+        b.info[k].id = k % 5 == 0 ? kNoObject : ObjectId(k % 3 + 1);  // some misses
+        b.info[k].depth = b.info[k].id == kNoObject ? kInfinity : 1.0f + 0.25f * float(k);
+        b.info[k].normal = Vec3(0.0f, 0.0f, 1.0f);
+        b.info[k].touchedSpecular = k % 7 == 3;  // some blocks specular, most not
+        b.rays[k] = 1;
+    }
+    ASSERT_TRUE(f.commit(t, 7));
+    EXPECT_TRUE(f.summariesMatchPixels());
+    EXPECT_EQ(f.tileLiveSegments[0], 0u);
+    EXPECT_TRUE(f.tileSummary[0].segmentStarts.empty());  // the old trees are gone
+    EXPECT_TRUE(f.tileSummary[0].anyUnknown);
+    EXPECT_EQ(f.tileStates[0][kInteractive], 1024u);
 }
 
 }  // namespace
