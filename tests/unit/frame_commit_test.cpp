@@ -4,7 +4,7 @@
 // `base` written only when the result keeps it; deferred records appended (untouched pixels'
 // records stay where they are) with the pool bounded by its compaction; undersampled blocks
 // filling their spans, with the state counts of pixels in every state, and the summaries of
-// blocks spans cover whole built from the block rays.
+// blocks spans cover whole built from the block rays; an edit's marks applied to one block.
 #include "session/deep_frame.h"
 #include "session/tile_output.h"
 
@@ -349,6 +349,45 @@ TEST(FrameCommit, SpansCoveringWholeBlocks_SummariesFromTheRays_MatchThePixels) 
     EXPECT_TRUE(f.tileSummary[0].segmentStarts.empty());  // the old trees are gone
     EXPECT_TRUE(f.tileSummary[0].anyUnknown);
     EXPECT_EQ(f.tileStates[0][kInteractive], 1024u);
+}
+
+// An edit's marks in one block: marked pixels go stale, lose their deferred records and get
+// the re-traced overlay; the others only lose the overlay; the tile's counts follow, and
+// other blocks are left alone.
+TEST(FrameCommit, MarkBlock_MarkedPixelsGoStale_OthersLoseTheOverlay_CountsFollow) {
+    DeepFrame f;
+    f.resize(kWidth, kHeight);
+    ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // kBase, overlay flag set
+    for (std::size_t i = 0; i < 1024; i += 3) f.setState(i, 0, kFinal);
+    for (std::size_t i = 2; i < 1024; i += 7) f.setState(i, 0, kInteractive);
+    for (std::size_t i = 0; i < 1024; i += 2) f.flags[i] |= kDeferredValid;
+    const DeepFrame before = f;
+    std::vector<uint8_t> mask(f.pixelCount(), 0);
+    for (std::size_t i = 0; i < mask.size(); i += 5) mask[i] = 1;  // also outside the block
+    const std::size_t block = 1 * std::size_t(f.blocksX()) + 2;  // pixels x 16..23, y 8..15
+    f.markBlock(block, mask);
+    std::array<uint32_t, 4> want = before.tileStates[0];
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const std::size_t i = f.index(x, y);
+            SCOPED_TRACE("pixel " + std::to_string(i));
+            const bool inBlock = x >= 16 && x < 24 && y >= 8 && y < 16;
+            if (!inBlock) {
+                EXPECT_EQ(f.state[i], before.state[i]);
+                EXPECT_EQ(f.flags[i], before.flags[i]);
+            } else if (mask[i]) {
+                EXPECT_EQ(f.state[i], kStale);
+                EXPECT_EQ(f.flags[i], uint8_t((before.flags[i] & ~kDeferredValid) | kTracedLastUpdate));
+                --want[before.state[i]];
+                ++want[kStale];
+            } else {
+                EXPECT_EQ(f.state[i], before.state[i]);
+                EXPECT_EQ(f.flags[i], uint8_t(before.flags[i] & ~kTracedLastUpdate));
+            }
+        }
+    EXPECT_EQ(f.tileStates[0], want);
+    EXPECT_EQ(f.tileStates[1], before.tileStates[1]);
+    EXPECT_TRUE(f.summariesMatchPixels());
 }
 
 }  // namespace
