@@ -61,36 +61,6 @@ void DeepFrame::markAllStale() {
     }
 }
 
-void DeepFrame::markBlock(std::size_t b, const std::vector<uint8_t>& mask) {
-    const int bx = int(b % std::size_t(blocksX())) * kBlock;
-    const int by = int(b / std::size_t(blocksX())) * kBlock;
-    const std::size_t n = std::size_t(std::min(width, bx + kBlock) - bx);
-    uint32_t was[4] = {0, 0, 0, 0}, marked = 0;
-    // Row by row through local pointers: the byte-sized stores may alias anything, which would
-    // make the compiler reload each vector's data pointer per pixel.
-    for (int y = by; y < std::min(height, by + kBlock); ++y) {
-        const std::size_t i = index(bx, y);
-        const uint8_t* m = mask.data() + i;
-        uint8_t* s = state.data() + i;
-        uint8_t* f = flags.data() + i;
-        for (std::size_t k = 0; k < n; ++k) {
-            const uint8_t kept = uint8_t(f[k] & ~kTracedLastUpdate);
-            if (m[k]) {
-                ++was[s[k] & 3];  // States are <= kFinal.
-                ++marked;
-                s[k] = kStale;
-                f[k] = uint8_t((kept & ~kDeferredValid) | kTracedLastUpdate);
-            } else {
-                f[k] = kept;
-            }
-        }
-    }
-    if (marked == 0) return;
-    auto& counts = tileStates[std::size_t(tileOfBlock(b))];
-    for (int s = 0; s < 4; ++s) counts[std::size_t(s)] -= was[s];
-    counts[kStale] += marked;
-}
-
 std::size_t DeepFrame::countBelow(uint8_t s) const {
     std::size_t n = 0;
     for (const auto& counts : tileStates)

@@ -136,10 +136,6 @@ struct DeepFrame {
     /// Every pixel goes stale (an edit that changes everything): loses its deferred records
     /// and gets the re-traced overlay flag; the counts follow.
     void markAllStale();
-    /// An edit's marks in block b: pixels whose mask entry is set go stale, lose their deferred
-    /// records and get the re-traced overlay flag; the others lose that flag. The tile's
-    /// counts follow, updated once for the block.
-    void markBlock(std::size_t b, const std::vector<uint8_t>& mask);
     /// Pixels whose state is below s, from the tile counts.
     std::size_t countBelow(uint8_t s) const;
     /// Whether any pixel's state is below s (stops at the first tile that has one).

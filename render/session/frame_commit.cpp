@@ -143,6 +143,65 @@ private:
     uint32_t& kept_;
 };
 
+/// What a block ray writes into every pixel of its span.
+struct SpanValue {
+    Color color;
+    ObjectId id;
+    float depth;
+    Vec3 normal;
+    uint32_t cost;
+    uint8_t flags;
+    glm::vec4 bound;
+};
+
+/// The frame's columns a span writes, through local pointers: the byte-sized stores may alias
+/// anything, which would make the compiler reload every vector's data pointer per pixel. The
+/// old states are counted here (a read-modify-write of the tile's counts per pixel otherwise).
+struct SpanWriter {
+    Color* color;
+    ObjectId* id;
+    float* depth;
+    Vec3* normal;
+    uint32_t* cost;
+    uint8_t* state;
+    uint8_t* flags;
+    glm::vec4* bound;
+    Color* sampleSum;
+    uint16_t* sampleCount;
+    bool clearSamples;
+    uint32_t wasState[4] = {0, 0, 0, 0};
+
+    /// Pixels [i, i + n) of one row get v; N > 0 says n == N, so the loops unroll.
+    template <std::size_t N>
+    void row(std::size_t i, std::size_t n, const SpanValue& v) {
+        if constexpr (N > 0) n = N;
+        const SpanValue w = v;  // Local: not reloaded after each byte store.
+        Color* const colorOut = color + i;
+        ObjectId* const idOut = id + i;
+        float* const depthOut = depth + i;
+        Vec3* const normalOut = normal + i;
+        uint32_t* const costOut = cost + i;
+        uint8_t* const stateOut = state + i;
+        uint8_t* const flagsOut = flags + i;
+        glm::vec4* const boundOut = bound + i;
+        uint32_t was[4] = {0, 0, 0, 0};
+        for (std::size_t k = 0; k < n; ++k) ++was[stateOut[k] & 3];  // States are <= kFinal.
+        for (std::size_t k = 0; k < n; ++k) colorOut[k] = w.color;
+        for (std::size_t k = 0; k < n; ++k) idOut[k] = w.id;
+        for (std::size_t k = 0; k < n; ++k) depthOut[k] = w.depth;
+        for (std::size_t k = 0; k < n; ++k) normalOut[k] = w.normal;
+        for (std::size_t k = 0; k < n; ++k) costOut[k] = w.cost;
+        for (std::size_t k = 0; k < n; ++k) boundOut[k] = w.bound;
+        for (std::size_t k = 0; k < n; ++k) stateOut[k] = kInteractive;
+        for (std::size_t k = 0; k < n; ++k) flagsOut[k] = w.flags;
+        if (clearSamples) {
+            for (std::size_t k = 0; k < n; ++k) sampleSum[i + k] = Color(0.0f);
+            for (std::size_t k = 0; k < n; ++k) sampleCount[i + k] = 0;
+        }
+        for (int s = 0; s < 4; ++s) wasState[s] += was[s];
+    }
+};
+
 /// The blocks of one tile a commit wrote, so each summary is recomputed once.
 class TouchedBlocks {
 public:
@@ -341,60 +400,39 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     }
 
     // Undersampled blocks: the block's ray over all its pixels, which keep no segments. Each
-    // span row is a run of neighbouring pixels: every buffer gets the ray's value as one fill
-    // through local pointers (the byte-sized stores may alias anything, which would make the
-    // compiler reload every vector's data pointer per pixel), the old states are counted in
-    // registers (a read-modify-write of the tile's counts per pixel otherwise) and the
+    // span row is a run of neighbouring pixels that SpanWriter fills buffer by buffer; the
     // segments are cleared a span row at a time.
     const RayList& blocks = t.blocks;
     if (blocks.size() > 0) {
-        uint32_t wasState[4] = {0, 0, 0, 0}, spanPixels = 0;
-        Color* colorOut = color.data();
-        ObjectId* idOut = id.data();
-        float* depthOut = depth.data();
-        Vec3* normalOut = normal.data();
-        uint32_t* costOut = cost.data();
-        uint8_t* stateOut = state.data();
-        uint8_t* flagsOut = flags.data();
-        glm::vec4* boundOut = hitBound.data();
-        Color* sumOut = sampleSum.data();
-        uint16_t* countOut = sampleCount.data();
+        SpanWriter spans{color.data(), id.data(), depth.data(), normal.data(), cost.data(),
+                         state.data(), flags.data(), hitBound.data(), sampleSum.data(),
+                         sampleCount.data(), clearSamples};
+        uint32_t spanPixels = 0;
         for (std::size_t k = 0; k < blocks.size(); ++k) {
             const PrimaryInfo& info = blocks.info[k];
-            const uint8_t f = uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) | kTracedLastUpdate);
-            const glm::vec4 bound = blocks.hitBound(k);
-            const Color c = blocks.color[k];
-            const uint32_t rays = blocks.rays[k];
+            const SpanValue v{blocks.color[k], info.id, info.depth, info.normal, blocks.rays[k],
+                              uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) | kTracedLastUpdate),
+                              blocks.hitBound(k)};
             const int spanX = blocks.extra[k] & 15, spanY = blocks.extra[k] >> 4;
             {
                 // A span (step 2 or 4, aligned) lies in one 8x8 block. Frames hold at most
                 // kMaxImagePixels (< 2^32): one 32-bit division, not two 64-bit.
                 const uint32_t y = uint32_t(blocks.pixel[k]) / uint32_t(width);
                 const uint32_t x = uint32_t(blocks.pixel[k]) - y * uint32_t(width);
-                touched.addSpan(int(x), int(y), spanX * spanY, bound, f);
+                touched.addSpan(int(x), int(y), spanX * spanY, v.bound, v.flags);
             }
             for (int dy = 0; dy < spanY; ++dy) {
                 const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width);
                 const std::size_t n = std::size_t(spanX);
-                for (std::size_t dx = 0; dx < n; ++dx) ++wasState[stateOut[i + dx] & 3];  // States are <= kFinal.
-                std::fill_n(colorOut + i, n, c);
-                std::fill_n(idOut + i, n, info.id);
-                std::fill_n(depthOut + i, n, info.depth);
-                std::fill_n(normalOut + i, n, info.normal);
-                std::fill_n(costOut + i, n, rays);
-                std::fill_n(stateOut + i, n, uint8_t(kInteractive));
-                std::fill_n(flagsOut + i, n, f);
-                std::fill_n(boundOut + i, n, bound);
-                if (clearSamples) {
-                    std::fill_n(sumOut + i, n, Color(0.0f));
-                    std::fill_n(countOut + i, n, uint16_t(0));
-                }
+                if (n == 4) spans.row<4>(i, n, v);  // Quarter and half resolution: unrolled.
+                else if (n == 2) spans.row<2>(i, n, v);
+                else spans.row<0>(i, n, v);
                 spanPixels += uint32_t(spanX);
                 segments.clearRun(i, n);
             }
         }
         auto& counts = tileStates[std::size_t(tile)];
-        for (int s = 0; s < 4; ++s) counts[std::size_t(s)] -= wasState[s];
+        for (int s = 0; s < 4; ++s) counts[std::size_t(s)] -= spans.wasState[s];
         counts[kInteractive] += spanPixels;
     }
 

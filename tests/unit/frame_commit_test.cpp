@@ -6,6 +6,7 @@
 // filling their spans, with the state counts of pixels in every state, and the summaries of
 // blocks spans cover whole built from the block rays; an edit's marks applied to one block.
 #include "session/deep_frame.h"
+#include "session/edit_marks.h"
 #include "session/tile_output.h"
 
 #include <gtest/gtest.h>
@@ -354,7 +355,7 @@ TEST(FrameCommit, SpansCoveringWholeBlocks_SummariesFromTheRays_MatchThePixels) 
 // An edit's marks in one block: marked pixels go stale, lose their deferred records and get
 // the re-traced overlay; the others only lose the overlay; the tile's counts follow, and
 // other blocks are left alone.
-TEST(FrameCommit, MarkBlock_MarkedPixelsGoStale_OthersLoseTheOverlay_CountsFollow) {
+TEST(FrameCommit, ApplyBlockMarks_MarkedPixelsGoStale_OthersLoseTheOverlay_CountsFollow) {
     DeepFrame f;
     f.resize(kWidth, kHeight);
     ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // kBase, overlay flag set
@@ -365,7 +366,7 @@ TEST(FrameCommit, MarkBlock_MarkedPixelsGoStale_OthersLoseTheOverlay_CountsFollo
     std::vector<uint8_t> mask(f.pixelCount(), 0);
     for (std::size_t i = 0; i < mask.size(); i += 5) mask[i] = 1;  // also outside the block
     const std::size_t block = 1 * std::size_t(f.blocksX()) + 2;  // pixels x 16..23, y 8..15
-    f.markBlock(block, mask);
+    applyBlockMarks(f, block, mask);
     std::array<uint32_t, 4> want = before.tileStates[0];
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
