@@ -60,6 +60,7 @@ InteractionPolicy parsePolicy(const std::string& name) {
 struct Step {
     double ms;
     std::size_t traced;
+    int level;  ///< The governor's level for the step's pass (-1: off).
 };
 
 }  // namespace
@@ -109,7 +110,8 @@ int runDrag(int argc, char** argv) {
         const uint64_t gen = session.update(doc);
         PassInfo info;
         if (!session.waitForPass(gen, 600s, &info)) throw std::runtime_error("drag step timed out");
-        log.push_back({msSince(start), info.generation == gen ? info.tracedPixels : 0});
+        const bool own = info.generation == gen;
+        log.push_back({msSince(start), own ? info.tracedPixels : 0, own ? info.governorLevel : -1});
     }
     session.endInteraction();
     const auto refineStart = Clock::now();
@@ -151,28 +153,34 @@ int runDrag(int argc, char** argv) {
     const double sessionFrameMs = medianOf(sessionFrames), imageFrameMs = medianOf(imageFrames);
 
     const std::size_t total = std::size_t(doc.render.width) * std::size_t(doc.render.height);
-    std::vector<double> times, fractions;
+    std::vector<double> times, fractions, levels;
     for (const Step& s : log) {
         times.push_back(s.ms);
         fractions.push_back(double(s.traced) / double(total));
+        levels.push_back(double(s.level));
     }
     const double stepMedian = medianOf(times), fractionMedian = medianOf(fractions);
+    const double levelMedian = medianOf(levels);
     if (args.has("--json")) {
         std::printf("{\"steps\": [");
         for (std::size_t i = 0; i < log.size(); ++i)
-            std::printf("%s{\"ms\": %.3f, \"traced_pixels\": %zu, \"total_pixels\": %zu}",
-                        i ? ", " : "", log[i].ms, log[i].traced, total);
+            std::printf("%s{\"ms\": %.3f, \"traced_pixels\": %zu, \"total_pixels\": %zu, "
+                        "\"governor_level\": %d}",
+                        i ? ", " : "", log[i].ms, log[i].traced, total, log[i].level);
         std::printf("], \"step_ms_median\": %.3f, \"traced_fraction_median\": %.5f, "
                     "\"refine_ms\": %.3f, \"full_frame_ms\": %.3f, \"final_max_abs_diff\": %.3g, "
                     "\"cancel_latency_ms\": %.3f, \"session_frame_ms\": %.3f, "
-                    "\"render_image_ms\": %.3f}\n",
+                    "\"render_image_ms\": %.3f, \"governor_level_median\": %.1f}\n",
                     stepMedian, fractionMedian, refineMs, full.ms, double(maxDiff), cancelMs,
-                    sessionFrameMs, imageFrameMs);
+                    sessionFrameMs, imageFrameMs, levelMedian);
     } else {
         std::printf("dragged '%s' in %d steps (%dx%d)\n", objectName->c_str(), steps,
                     doc.render.width, doc.render.height);
         std::printf("  step time median      %10.2f ms\n", stepMedian);
         std::printf("  traced fraction median %9.2f %%\n", 100.0 * fractionMedian);
+        if (levelMedian >= 0.0)
+            std::printf("  governor level median %10.1f  (%s)\n", levelMedian,
+                        Governor::levelName(int(levelMedian)));
         std::printf("  refinement            %10.2f ms\n", refineMs);
         std::printf("  full frame            %10.2f ms  (ratio step/full %.3f)\n", full.ms,
                     full.ms > 0 ? stepMedian / full.ms : 0.0);

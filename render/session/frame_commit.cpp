@@ -143,6 +143,65 @@ private:
     uint32_t& kept_;
 };
 
+/// What a block ray writes into every pixel of its span.
+struct SpanValue {
+    Color color;
+    ObjectId id;
+    float depth;
+    Vec3 normal;
+    uint32_t cost;
+    uint8_t flags;
+    glm::vec4 bound;
+};
+
+/// The frame's columns a span writes, through local pointers: the byte-sized stores may alias
+/// anything, which would make the compiler reload every vector's data pointer per pixel. The
+/// old states are counted here (a read-modify-write of the tile's counts per pixel otherwise).
+struct SpanWriter {
+    Color* color;
+    ObjectId* id;
+    float* depth;
+    Vec3* normal;
+    uint32_t* cost;
+    uint8_t* state;
+    uint8_t* flags;
+    glm::vec4* bound;
+    Color* sampleSum;
+    uint16_t* sampleCount;
+    bool clearSamples;
+    uint32_t wasState[4] = {0, 0, 0, 0};
+
+    /// Pixels [i, i + n) of one row get v; N > 0 says n == N, so the loops unroll.
+    template <std::size_t N>
+    void row(std::size_t i, std::size_t n, const SpanValue& v) {
+        if constexpr (N > 0) n = N;
+        const SpanValue w = v;  // Local: not reloaded after each byte store.
+        Color* const colorOut = color + i;
+        ObjectId* const idOut = id + i;
+        float* const depthOut = depth + i;
+        Vec3* const normalOut = normal + i;
+        uint32_t* const costOut = cost + i;
+        uint8_t* const stateOut = state + i;
+        uint8_t* const flagsOut = flags + i;
+        glm::vec4* const boundOut = bound + i;
+        uint32_t was[4] = {0, 0, 0, 0};
+        for (std::size_t k = 0; k < n; ++k) ++was[stateOut[k] & 3];  // States are <= kFinal.
+        for (std::size_t k = 0; k < n; ++k) colorOut[k] = w.color;
+        for (std::size_t k = 0; k < n; ++k) idOut[k] = w.id;
+        for (std::size_t k = 0; k < n; ++k) depthOut[k] = w.depth;
+        for (std::size_t k = 0; k < n; ++k) normalOut[k] = w.normal;
+        for (std::size_t k = 0; k < n; ++k) costOut[k] = w.cost;
+        for (std::size_t k = 0; k < n; ++k) boundOut[k] = w.bound;
+        for (std::size_t k = 0; k < n; ++k) stateOut[k] = kInteractive;
+        for (std::size_t k = 0; k < n; ++k) flagsOut[k] = w.flags;
+        if (clearSamples) {
+            for (std::size_t k = 0; k < n; ++k) sampleSum[i + k] = Color(0.0f);
+            for (std::size_t k = 0; k < n; ++k) sampleCount[i + k] = 0;
+        }
+        for (int s = 0; s < 4; ++s) wasState[s] += was[s];
+    }
+};
+
 /// The blocks of one tile a commit wrote, so each summary is recomputed once.
 class TouchedBlocks {
 public:
@@ -155,15 +214,35 @@ public:
         add(int(x), int(y));
     }
     void add(int x, int y) {
-        marks_[blockOf(x, y)] = 1;
+        marks_[blockOf(x, y)] = kReadBack;
         any_ = true;
     }
     /// Pixels [x, x + n) of row y (inside the tile).
     void addRun(int x, int y, int n) {
         const std::size_t row = std::size_t((y - r_.y0) / DeepFrame::kBlock) * std::size_t(perRow_);
         for (int b = (x - r_.x0) / DeepFrame::kBlock; b <= (x + n - 1 - r_.x0) / DeepFrame::kBlock; ++b)
-            marks_[row + std::size_t(b)] = 1;
+            marks_[row + std::size_t(b)] = kReadBack;
         any_ = true;
+    }
+    /// The span of a block ray at pixel (x, y) (`pixels` of them, in one block), each pixel
+    /// with the ray's hit point (radius 0) and flags and no segments. A block that spans cover
+    /// whole, and nothing else of the commit wrote, gets its summary from them instead of
+    /// reading its pixels back.
+    void addSpan(int x, int y, int pixels, const glm::vec4& hit, uint8_t flags) {
+        const std::size_t b = blockOf(x, y);
+        if (spanPixels_.empty()) {
+            spanPixels_.assign(marks_.size(), 0);
+            spanSums_.assign(marks_.size(), TileSummary{});
+        }
+        if (marks_[b] != kReadBack) marks_[b] = kSpans;
+        any_ = true;
+        spanPixels_[b] += pixels;
+        TileSummary& sum = spanSums_[b];
+        if (hit.w >= 0.0f) sum.hitBox.expand(Vec3(hit));
+        if (flags & kTouchedSpecular) {
+            sum.anySpecular = true;
+            if (flags & kTreeUnknown) sum.anyUnknown = true;
+        }
     }
     /// The commit rewrites every pixel of the tile (one camera ray each): the summaries are
     /// built from what it writes (include()) instead of read back from the frame.
@@ -194,9 +273,14 @@ public:
             if (!marks_[b]) continue;
             const int x = r_.x0 + int(b % std::size_t(perRow_)) * DeepFrame::kBlock;
             const int y = r_.y0 + int(b / std::size_t(perRow_)) * DeepFrame::kBlock;
-            if (whole_)
+            TileSummary& summary =
                 frame.blockSummary[std::size_t(y / DeepFrame::kBlock) * std::size_t(frame.blocksX()) +
-                                   std::size_t(x / DeepFrame::kBlock)] = sums_[b];
+                                   std::size_t(x / DeepFrame::kBlock)];
+            const int area = (std::min(r_.x1, x + DeepFrame::kBlock) - x) * (std::min(r_.y1, y + DeepFrame::kBlock) - y);
+            if (whole_)
+                summary = sums_[b];
+            else if (marks_[b] == kSpans && spanPixels_[b] == area)
+                summary = spanSums_[b];
             else
                 frame.summarizeBlock(x, y);
         }
@@ -209,11 +293,17 @@ private:
                std::size_t((x - r_.x0) / DeepFrame::kBlock);
     }
 
+    /// marks_: a block the commit did not write, one read back from its pixels, or one only
+    /// block rays' spans wrote.
+    enum : uint8_t { kUntouched = 0, kReadBack = 1, kSpans = 2 };
+
     int width_;
     PixelRect r_;
     int perRow_;
     std::vector<uint8_t> marks_;
     std::vector<TileSummary> sums_;
+    std::vector<int> spanPixels_;        ///< Pixels spans wrote in each block.
+    std::vector<TileSummary> spanSums_;  ///< Their summary.
     bool any_ = false, whole_ = false;
 };
 
@@ -309,48 +399,41 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         records.compactIfWasteful(t.rect);
     }
 
-    // Undersampled blocks: the block's ray over all its pixels, which keep no segments. The
-    // old states are counted in registers (a read-modify-write of the tile's counts per pixel
-    // otherwise) and the segments cleared a span row at a time.
+    // Undersampled blocks: the block's ray over all its pixels, which keep no segments. Each
+    // span row is a run of neighbouring pixels that SpanWriter fills buffer by buffer; the
+    // segments are cleared a span row at a time.
     const RayList& blocks = t.blocks;
-    uint32_t wasState[3] = {0, 0, 0}, spanPixels = 0;
-    for (std::size_t k = 0; k < blocks.size(); ++k) {
-        const PrimaryInfo& info = blocks.info[k];
-        const uint8_t f = uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) | kTracedLastUpdate);
-        const glm::vec4 bound = blocks.hitBound(k);
-        const int spanX = blocks.extra[k] & 15, spanY = blocks.extra[k] >> 4;
-        touched.add(blocks.pixel[k]);  // A span (step 2 or 4, aligned) lies in one 8x8 block.
-        for (int dy = 0; dy < spanY; ++dy) {
-            const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width);
-            for (int dx = 0; dx < spanX; ++dx) {
-                const std::size_t p = i + std::size_t(dx);
-                const uint8_t s = state[p];
-                wasState[0] += s == kStale;
-                wasState[1] += s == kInteractive;
-                wasState[2] += s == kBase;
-                color[p] = blocks.color[k];
-                id[p] = info.id;
-                depth[p] = info.depth;
-                normal[p] = info.normal;
-                cost[p] = blocks.rays[k];
-                state[p] = kInteractive;
-                flags[p] = f;
-                hitBound[p] = bound;
-                if (clearSamples) {
-                    sampleSum[p] = Color(0.0f);
-                    sampleCount[p] = 0;
-                }
+    if (blocks.size() > 0) {
+        SpanWriter spans{color.data(), id.data(), depth.data(), normal.data(), cost.data(),
+                         state.data(), flags.data(), hitBound.data(), sampleSum.data(),
+                         sampleCount.data(), clearSamples};
+        uint32_t spanPixels = 0;
+        for (std::size_t k = 0; k < blocks.size(); ++k) {
+            const PrimaryInfo& info = blocks.info[k];
+            const SpanValue v{blocks.color[k], info.id, info.depth, info.normal, blocks.rays[k],
+                              uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) | kTracedLastUpdate),
+                              blocks.hitBound(k)};
+            const int spanX = blocks.extra[k] & 15, spanY = blocks.extra[k] >> 4;
+            {
+                // A span (step 2 or 4, aligned) lies in one 8x8 block. Frames hold at most
+                // kMaxImagePixels (< 2^32): one 32-bit division, not two 64-bit.
+                const uint32_t y = uint32_t(blocks.pixel[k]) / uint32_t(width);
+                const uint32_t x = uint32_t(blocks.pixel[k]) - y * uint32_t(width);
+                touched.addSpan(int(x), int(y), spanX * spanY, v.bound, v.flags);
             }
-            spanPixels += uint32_t(spanX);
-            segments.clearRun(i, std::size_t(spanX));
+            for (int dy = 0; dy < spanY; ++dy) {
+                const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width);
+                const std::size_t n = std::size_t(spanX);
+                if (n == 4) spans.row<4>(i, n, v);  // Quarter and half resolution: unrolled.
+                else if (n == 2) spans.row<2>(i, n, v);
+                else spans.row<0>(i, n, v);
+                spanPixels += uint32_t(spanX);
+                segments.clearRun(i, n);
+            }
         }
-    }
-    if (spanPixels > 0) {
         auto& counts = tileStates[std::size_t(tile)];
-        counts[kStale] -= wasState[0];
-        counts[kInteractive] += spanPixels - wasState[1];
-        counts[kBase] -= wasState[2];
-        counts[kFinal] -= spanPixels - wasState[0] - wasState[1] - wasState[2];
+        for (int s = 0; s < 4; ++s) counts[std::size_t(s)] -= spans.wasState[s];
+        counts[kInteractive] += spanPixels;
     }
 
     // Deferred shadows resolved: the hit, its tree and its cost stay.

@@ -4,6 +4,7 @@
 #include "core/parallel.h"
 
 #include "session/dirty_region.h"
+#include "session/edit_marks.h"
 #include "session/session_plan.h"
 
 #include <tbb/info.h>
@@ -248,15 +249,7 @@ std::size_t RenderSession::markEditLocked(const SceneEdit& traced) {
     if (lastTouchedBlocks_.size() != touchedBlocks_.size())
         lastTouchedBlocks_.assign(touchedBlocks_.size(), 1);
     for (std::size_t b = 0; b < touchedBlocks_.size(); ++b) {
-        if (!touchedBlocks_[b] && !lastTouchedBlocks_[b]) continue;
-        frame_.forEachPixelOfBlock(b, [&](std::size_t i, int tile) {
-            uint8_t f = uint8_t(frame_.flags[i] & ~kTracedLastUpdate);
-            if (dirtyMask_[i]) {
-                frame_.setState(i, tile, kStale);
-                f = uint8_t((f & ~kDeferredValid) | kTracedLastUpdate);
-            }
-            frame_.flags[i] = f;
-        });
+        if (touchedBlocks_[b] || lastTouchedBlocks_[b]) applyBlockMarks(frame_, b, dirtyMask_);
     }
     lastTouchedBlocks_.swap(touchedBlocks_);
     return marked;

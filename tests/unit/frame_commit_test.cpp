@@ -3,8 +3,10 @@
 // tile and for scattered pixels whose frame indices run on from one row into the next, and
 // `base` written only when the result keeps it; deferred records appended (untouched pixels'
 // records stay where they are) with the pool bounded by its compaction; undersampled blocks
-// filling their spans, with the state counts of pixels in every state.
+// filling their spans, with the state counts of pixels in every state, and the summaries of
+// blocks spans cover whole built from the block rays; an edit's marks applied to one block.
 #include "session/deep_frame.h"
+#include "session/edit_marks.h"
 #include "session/tile_output.h"
 
 #include <gtest/gtest.h>
@@ -308,6 +310,84 @@ TEST(FrameCommit, UndersampledBlocks_FillTheirSpans_CountsFollowMixedStates) {
         }
     EXPECT_EQ(f.tileStates[0], want);
     EXPECT_EQ(f.tileLiveSegments[0], referencedSegments(f));
+    EXPECT_TRUE(f.summariesMatchPixels());
+}
+
+// A quarter-resolution pass over a whole tile: 4x4 spans cover every 8x8 block, so each block's
+// summary is built from the block rays instead of read back; it must still describe the
+// pixels (hits, misses, specular rays whose trees are not kept) after a pass that kept
+// segments, and the blocks' old segments must no longer count.
+TEST(FrameCommit, SpansCoveringWholeBlocks_SummariesFromTheRays_MatchThePixels) {
+    DeepFrame f;
+    f.resize(kWidth, kHeight);
+    ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // segments and hits everywhere
+    const TileSummary before = f.tileSummary[0];
+    ASSERT_TRUE(before.anySpecular);
+    ASSERT_FALSE(before.segmentStarts.empty());
+    TileResult t;
+    t.generation = 7;
+    t.rect = {0, 0, 32, 32};
+    RayList& b = t.blocks;
+    for (int y = 0; y < 32; y += 4)
+        for (int x = 0; x < 32; x += 4) {
+            Ray ray;
+            ray.origin = Vec3(float(x), float(y), 0.0f);
+            ray.dir = Vec3(0.0f, 0.0f, -1.0f);
+            b.add(ray, 0, f.index(x, y), uint8_t(4 | (4 << 4)));
+        }
+    b.color.resize(b.size()), b.info.resize(b.size()), b.rays.resize(b.size());
+    for (std::size_t k = 0; k < b.size(); ++k) {
+        b.color[k] = Color(float(k));
+        b.info[k].id = k % 5 == 0 ? kNoObject : ObjectId(k % 3 + 1);  // some misses
+        b.info[k].depth = b.info[k].id == kNoObject ? kInfinity : 1.0f + 0.25f * float(k);
+        b.info[k].normal = Vec3(0.0f, 0.0f, 1.0f);
+        b.info[k].touchedSpecular = k % 7 == 3;  // some blocks specular, most not
+        b.rays[k] = 1;
+    }
+    ASSERT_TRUE(f.commit(t, 7));
+    EXPECT_TRUE(f.summariesMatchPixels());
+    EXPECT_EQ(f.tileLiveSegments[0], 0u);
+    EXPECT_TRUE(f.tileSummary[0].segmentStarts.empty());  // the old trees are gone
+    EXPECT_TRUE(f.tileSummary[0].anyUnknown);
+    EXPECT_EQ(f.tileStates[0][kInteractive], 1024u);
+}
+
+// An edit's marks in one block: marked pixels go stale, lose their deferred records and get
+// the re-traced overlay; the others only lose the overlay; the tile's counts follow, and
+// other blocks are left alone.
+TEST(FrameCommit, ApplyBlockMarks_MarkedPixelsGoStale_OthersLoseTheOverlay_CountsFollow) {
+    DeepFrame f;
+    f.resize(kWidth, kHeight);
+    ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // kBase, overlay flag set
+    for (std::size_t i = 0; i < 1024; i += 3) f.setState(i, 0, kFinal);
+    for (std::size_t i = 2; i < 1024; i += 7) f.setState(i, 0, kInteractive);
+    for (std::size_t i = 0; i < 1024; i += 2) f.flags[i] |= kDeferredValid;
+    const DeepFrame before = f;
+    std::vector<uint8_t> mask(f.pixelCount(), 0);
+    for (std::size_t i = 0; i < mask.size(); i += 5) mask[i] = 1;  // also outside the block
+    const std::size_t block = 1 * std::size_t(f.blocksX()) + 2;  // pixels x 16..23, y 8..15
+    applyBlockMarks(f, block, mask);
+    std::array<uint32_t, 4> want = before.tileStates[0];
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const std::size_t i = f.index(x, y);
+            SCOPED_TRACE("pixel " + std::to_string(i));
+            const bool inBlock = x >= 16 && x < 24 && y >= 8 && y < 16;
+            if (!inBlock) {
+                EXPECT_EQ(f.state[i], before.state[i]);
+                EXPECT_EQ(f.flags[i], before.flags[i]);
+            } else if (mask[i]) {
+                EXPECT_EQ(f.state[i], kStale);
+                EXPECT_EQ(f.flags[i], uint8_t((before.flags[i] & ~kDeferredValid) | kTracedLastUpdate));
+                --want[before.state[i]];
+                ++want[kStale];
+            } else {
+                EXPECT_EQ(f.state[i], before.state[i]);
+                EXPECT_EQ(f.flags[i], uint8_t(before.flags[i] & ~kTracedLastUpdate));
+            }
+        }
+    EXPECT_EQ(f.tileStates[0], want);
+    EXPECT_EQ(f.tileStates[1], before.tileStates[1]);
     EXPECT_TRUE(f.summariesMatchPixels());
 }
 
