@@ -113,7 +113,7 @@ int aboveStandard(int fd) {
     (void)parent;
 #endif
     limit(RLIMIT_CORE, 0, 0);  // An importer's crash is reported, not dumped.
-    const auto cpuSeconds = rlim_t(limits.wallTime.count() / 1000 + 1);
+    const auto cpuSeconds = rlim_t(limits.cpuTime.value_or(limits.wallTime).count() / 1000 + 1);
     limit(RLIMIT_CPU, cpuSeconds, cpuSeconds + 1);
     // The copy of the parent's mappings is already there; the budget is what comes on top.
     const std::uintmax_t mapped = mappedBytes();

@@ -7,16 +7,19 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace rs {
 
 /// What the child may use. Memory is address space on top of what the parent already had
 /// mapped when it forked (RLIMIT_AS); the wall-clock limit is the parent's, which kills the
-/// child when it passes (and the CPU limit, RLIMIT_CPU, is the same number of seconds).
+/// child when it passes; the CPU limit (RLIMIT_CPU) is `cpuTime`, or as many seconds as the
+/// wall-clock limit when that is not set.
 struct ChildLimits {
     std::uintmax_t memoryBytes = std::uintmax_t(1) << 30;
     std::chrono::milliseconds wallTime{10000};
+    std::optional<std::chrono::milliseconds> cpuTime;
     std::size_t maxOutputBytes = std::size_t(1) << 30;  ///< More is killed and reported.
     std::size_t maxMessageBytes = 4096;         ///< What it prints beyond this is read and dropped.
     const std::atomic<bool>* cancel = nullptr;  ///< Polled; true kills the child.

@@ -83,7 +83,8 @@ std::string firstMessage(const ChildOutcome& outcome) {
 
 /// Why the child's outcome is not a mesh, or "" when its output is to be decoded.
 std::string describeFailure(const ChildOutcome& outcome, std::uintmax_t memoryBytes,
-                            std::chrono::milliseconds wallTime) {
+                            std::chrono::milliseconds wallTime,
+                            std::chrono::milliseconds cpuTime) {
     using Ending = ChildOutcome::Ending;
     switch (outcome.ending) {
         case Ending::NotStarted:
@@ -98,7 +99,7 @@ std::string describeFailure(const ChildOutcome& outcome, std::uintmax_t memoryBy
                    " memory budget";
         case Ending::Signalled:
             if (outcome.status == SIGXCPU)
-                return "the import used more than its " + describeSeconds(wallTime) +
+                return "the import used more than its " + describeSeconds(cpuTime) +
                        " of processor time and was stopped";
             if (outcome.status == SIGKILL)
                 return "the import process was killed (" + describeSignal(SIGKILL) +
@@ -153,7 +154,15 @@ MeshLoadResult loadMesh(const std::string& path, bool smoothNormals,
 
     ChildLimits limits;
     limits.memoryBytes = options.memoryBytes.value_or(defaultMeshImportMemory(size));
-    limits.wallTime = options.wallTime.value_or(defaultMeshImportTime(size));
+    if (options.wallTime) {
+        limits.wallTime = *options.wallTime;
+    } else {
+        // The work is bounded by processor time; the wall clock only stops an import that
+        // waits (a blocked read), so a loaded machine, where an import gets a fraction of a
+        // core, does not refuse a mesh it would load on a quiet one.
+        limits.cpuTime = defaultMeshImportTime(size);
+        limits.wallTime = *limits.cpuTime * kMeshImportWallFactor;
+    }
     // The child held the mesh in its budget, so its bytes cannot be more (plus a header).
     limits.maxOutputBytes = std::size_t(std::min<std::uintmax_t>(
         limits.memoryBytes + 4096, std::numeric_limits<std::size_t>::max()));
@@ -161,7 +170,8 @@ MeshLoadResult loadMesh(const std::string& path, bool smoothNormals,
     const ChildOutcome outcome = runInChildProcess(
         [&](int fd) { importIntoPipe(fd, file.string(), smoothNormals, limits.memoryBytes); },
         limits);
-    if (std::string why = describeFailure(outcome, limits.memoryBytes, limits.wallTime);
+    if (std::string why = describeFailure(outcome, limits.memoryBytes, limits.wallTime,
+                                          limits.cpuTime.value_or(limits.wallTime));
         !why.empty())
         return fail(why);
     MeshLoadResult decoded = decodeMeshWire(outcome.output, file.string());
