@@ -460,10 +460,13 @@ int Measurement::run() {
     std::printf("  hand-overs           %6d        %d found the frame lock held and came back\n",
                 o[QStringLiteral("handovers")].toInt(), o[QStringLiteral("handovers_busy")].toInt());
     const int slowestAt = o[QStringLiteral("input_handling_max_at")].toInt();
+    const int events = o[QStringLiteral("moves")].toInt() + 2;  // The press, moves, the release.
+    const char* slowest = slowestAt == 0            ? "the press"
+                          : slowestAt == events - 1 ? "the release"
+                                                    : "a move";
     std::printf("  mouse event handling median %6.2f ms   max %6.2f ms   (event %d of %d: %s)\n",
-                num("input_handling_median_ms"), num("input_handling_max_ms"), slowestAt,
-                o[QStringLiteral("moves")].toInt() + 2,
-                slowestAt == 0 ? "the press" : slowestAt == o[QStringLiteral("moves")].toInt() + 1 ? "the release" : "a move");
+                num("input_handling_median_ms"), num("input_handling_max_ms"), slowestAt, events,
+                slowest);
     std::printf(
         "  paint                median %6.2f ms   max %6.2f ms   then %.2f ms to the swap\n",
         num("paint_median_ms"), num("paint_max_ms"), num("compose_median_ms"));

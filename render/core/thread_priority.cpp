@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cstdint>
 #include <cerrno>
+#include <cstdint>
 #include <thread>
 
 #if defined(__linux__)
@@ -18,9 +18,13 @@ namespace {
 
 #if defined(__linux__)
 /// Linux's setpriority(PRIO_PROCESS, tid) sets one thread's nice value (not POSIX's per process).
-bool setThreadNice(int nice) { return setpriority(PRIO_PROCESS, gettid(), nice) == 0; }
+bool setThreadNice(int nice) {
+    return setpriority(PRIO_PROCESS, gettid(), nice) == 0;
+}
 #else
-bool setThreadNice(int) { return false; }
+bool setThreadNice(int) {
+    return false;
+}
 #endif
 
 /// The thread's own priority while it is in a BackgroundArena at a lowered one. A thread is

@@ -2,10 +2,9 @@
 #include "core/thread_priority.h"
 
 #include <gtest/gtest.h>
-
+#include <tbb/blocked_range.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
-#include <tbb/blocked_range.h>
 #include <tbb/partitioner.h>
 
 #include <algorithm>
