@@ -69,7 +69,13 @@ bool canRestorePriority() {
 
 BackgroundArena::BackgroundArena(int threads) : tbb::task_arena(threads), lowering_(*this) {
     lowering_.ownNice = threadNice();
+#if defined(__SANITIZE_THREAD__)
+    // Under ThreadSanitizer arenaExecute runs on std::threads (core/parallel.h): no thread
+    // ever joins, and observing would initialise oneTBB's arena for nothing.
+    lowering_.active = false;
+#else
     lowering_.active = canRestorePriority();
+#endif
     if (lowering_.active) lowering_.observe(true);
 }
 

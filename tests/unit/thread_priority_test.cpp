@@ -52,6 +52,9 @@ TEST(BackgroundArena, ThreadsRunLowerInsideAndAtTheirOwnPriorityOutside) {
     const int own = rs::threadNice();
     if (own > 19 - rs::kBackgroundNiceSteps) GTEST_SKIP() << "the test runs at nice " << own;
     rs::BackgroundArena arena(2);
+#if defined(__SANITIZE_THREAD__)
+    GTEST_SKIP() << "ThreadSanitizer builds do not use oneTBB's arenas";
+#endif
     ASSERT_EQ(arena.lowers(), rs::canRestorePriority());
     const int inside = arena.lowers() ? own + rs::kBackgroundNiceSteps : own;
 
@@ -84,6 +87,9 @@ TEST(BackgroundArena, RestoringIsPossibleExactlyWhenTheProbeSaysSo) {
         restored = rs::threadNice() == own;
     });
     t.join();
+#if defined(__SANITIZE_THREAD__)
+    GTEST_SKIP() << "ThreadSanitizer builds do not use oneTBB's arenas";
+#endif
     EXPECT_EQ(lowered, rs::canRestorePriority());
     EXPECT_TRUE(restored);
 }
