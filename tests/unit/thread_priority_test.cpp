@@ -13,6 +13,9 @@
 #include <thread>
 #include <vector>
 
+#include "session/render_session.h"
+#include "test_scenes.h"
+
 namespace {
 
 struct Seen {
@@ -92,4 +95,39 @@ TEST(BackgroundArena, RestoringIsPossibleExactlyWhenTheProbeSaysSo) {
 #endif
     EXPECT_EQ(lowered, rs::canRestorePriority());
     EXPECT_TRUE(restored);
+}
+
+namespace {
+
+/// Notes the nice value of every thread that commits a tile: the session's tracers.
+class NiceRecorder : public rs::SessionObserver {
+public:
+    void tileDone(int, int, int, int, uint64_t) override {
+        std::lock_guard lock(mutex);
+        seen.push_back(rs::threadNice());
+    }
+    std::mutex mutex;
+    std::vector<int> seen;
+};
+
+}  // namespace
+
+TEST(BackgroundArena, TheSessionTracesBelowTheCallersPriority) {
+#if defined(__SANITIZE_THREAD__)
+    GTEST_SKIP() << "ThreadSanitizer builds do not use oneTBB's arenas";
+#endif
+    const int own = rs::threadNice();
+    if (own > 19 - rs::kBackgroundNiceSteps) GTEST_SKIP() << "the test runs at nice " << own;
+    NiceRecorder recorder;
+    {
+        rs::RenderSession session(2);
+        session.setObserver(&recorder);
+        session.update(rs::test::smallRoom(64, 48));
+        ASSERT_TRUE(session.waitUntilComplete(std::chrono::seconds(60)));
+        session.setObserver(nullptr);
+    }
+    const int inside = rs::canRestorePriority() ? own + rs::kBackgroundNiceSteps : own;
+    ASSERT_FALSE(recorder.seen.empty());
+    for (int nice : recorder.seen) EXPECT_EQ(nice, inside);
+    EXPECT_EQ(rs::threadNice(), own);
 }
