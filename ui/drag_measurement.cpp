@@ -249,6 +249,9 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
     }
     std::vector<double> handling;
     for (const Input& in : inputs_) handling.push_back(msBetween(in.dispatched, in.handled));
+    // Which event took longest: the press (selection, panels) is not what a move costs.
+    const auto slowest = std::max_element(handling.begin(), handling.end());
+    const int slowestAt = slowest == handling.end() ? -1 : int(slowest - handling.begin());
     std::vector<double> passMs, levels;
     int cancelled = 0;
     for (const auto& [t, info] : passes_) {
@@ -274,6 +277,7 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
     o[QStringLiteral("governor_level_max")] = quantile(levels, 1.0);
     o[QStringLiteral("input_handling_median_ms")] = quantile(handling, 0.5);
     o[QStringLiteral("input_handling_max_ms")] = quantile(handling, 1.0);
+    o[QStringLiteral("input_handling_max_at")] = slowestAt;
     o[QStringLiteral("paint_median_ms")] = quantile(paint, 0.5);
     o[QStringLiteral("paint_max_ms")] = quantile(paint, 1.0);
     o[QStringLiteral("compose_median_ms")] = quantile(compose, 0.5);
@@ -455,8 +459,14 @@ int Measurement::run() {
         num("handover_mean_ms"), num("handover_max_ms"), num("handover_copy_mean_ms"));
     std::printf("  hand-overs           %6d        %d found the frame lock held and came back\n",
                 o[QStringLiteral("handovers")].toInt(), o[QStringLiteral("handovers_busy")].toInt());
-    std::printf("  mouse event handling median %6.2f ms   max %6.2f ms\n",
-                num("input_handling_median_ms"), num("input_handling_max_ms"));
+    const int slowestAt = o[QStringLiteral("input_handling_max_at")].toInt();
+    const int events = o[QStringLiteral("moves")].toInt() + 2;  // The press, moves, the release.
+    const char* slowest = slowestAt == 0            ? "the press"
+                          : slowestAt == events - 1 ? "the release"
+                                                    : "a move";
+    std::printf("  mouse event handling median %6.2f ms   max %6.2f ms   (event %d of %d: %s)\n",
+                num("input_handling_median_ms"), num("input_handling_max_ms"), slowestAt, events,
+                slowest);
     std::printf(
         "  paint                median %6.2f ms   max %6.2f ms   then %.2f ms to the swap\n",
         num("paint_median_ms"), num("paint_max_ms"), num("compose_median_ms"));

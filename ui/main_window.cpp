@@ -303,7 +303,8 @@ void MainWindow::createStatusBar() {
     statusPass_ = label(tr("Kind of the last pass (interactive, base, supersampling)"));
     statusRays_ = label(tr("Rays per second in the last pass"));
     statusGovernor_ = label(tr("What the governor turned down in the last interactive pass to "
-                               "keep its frame rate (Preferences)"));
+                               "keep its frame rate; \"as set\" once the frame refines at the "
+                               "scene's settings (Preferences)"));
     statusGovernor_->setObjectName(QStringLiteral("statusGovernor"));
     // Leftmost of the permanent widgets: a running render is what the user looks for first.
     renderStatus_ = new RenderStatus(renders_, this);
@@ -357,11 +358,12 @@ void MainWindow::onPassFinished(const PassInfo& info) {
                                                info.cancelled ? tr(" (cut short)") : QString()));
     const double mrays = info.ms > 0.0 ? double(info.rays) / info.ms / 1000.0 : 0.0;
     statusRays_->setText(tr("%1 Mrays/s").arg(mrays, 0, 'f', 2));
-    if (info.kind == PassKind::Interactive)
-        statusGovernor_->setText(info.governorLevel < 0
-                                     ? tr("governor: off")
-                                     : tr("governor: %1").arg(QString::fromLatin1(
-                                           Governor::levelName(info.governorLevel))));
+    // Refining passes (base, supersampling) are at the scene's own settings: a level the
+    // last drag needed (the box proxy, say) no longer describes the picture after release.
+    const int level = info.kind == PassKind::Interactive ? info.governorLevel : 0;
+    statusGovernor_->setText(level < 0 ? tr("governor: off")
+                                       : tr("governor: %1").arg(QString::fromLatin1(
+                                             Governor::levelName(level))));
 }
 
 void MainWindow::onSessionError(const QString& message) {

@@ -43,7 +43,7 @@ constexpr std::size_t kMaxDeferredShadowRegions = 64;
 }  // namespace
 
 RenderSession::RenderSession(int threads)
-    : threads_(threads), arena_(std::make_unique<tbb::task_arena>(arenaSize(threads))) {
+    : threads_(threads), arena_(std::make_unique<BackgroundArena>(arenaSize(threads))) {
     scheduler_ = std::thread(&RenderSession::run, this);
 }
 

@@ -1,6 +1,7 @@
 // The interactive render session: owns the deep frame and keeps it current while the user edits.
 #pragma once
 
+#include "core/thread_priority.h"
 #include "scene/document.h"
 #include "session/deep_frame.h"
 #include "session/governor.h"
@@ -178,7 +179,7 @@ private:
     SessionStats stats_;
     SessionObserver* observer_ = nullptr;
 
-    std::unique_ptr<tbb::task_arena> arena_;
+    std::unique_ptr<BackgroundArena> arena_;  ///< Its tracers run below the GUI thread.
     bool stop_ = false;
     std::thread scheduler_;
 };

@@ -44,6 +44,20 @@
 # rounds of a camera nudge in the viewport (the session's passes of it) and renderImage of the
 # same view document, medians and their ratio; the first pass after opening the scene, which
 # was the number before (cold, the window still busy), is printed on its own line.
+#
+# Tracers below the GUI thread (branch display: the session's arena lowers its threads by 10
+# nice steps while they are in it), 6 interleaved runs each of 8bd1ee6 and the branch at load
+# 4.1-8.7 from other builds, medians, before -> after; the README's "Tracers below the GUI
+# thread" has the tables:
+#
+#                            room drag     room orbit    mesh drag     mesh orbit
+#   frames shown /s          21.8 -> 19.6  22.2 -> 26.6  29.8 -> 24.9  27.4 -> 31.9
+#   input to display median  64 -> 54 ms   54 -> 40 ms   38 -> 47 ms   44 -> 33 ms
+#   longest GUI stall        57 -> 63 ms   119 -> 22 ms  44 -> 50 ms   45 -> 32 ms
+#   GUI stall p99            43 -> 15 ms   29 -> 13 ms   21 -> 13 ms   19 -> 11 ms
+#   time in blocks > 16 ms   50 -> 12.5 %  33.5 -> 4 %   20 -> 8.5 %   19.5 -> 2.5 %
+#
+# "mouse event handling" also names the slowest event (while dragging, the press).
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)

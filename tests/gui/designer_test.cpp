@@ -8,6 +8,7 @@
 #include "outliner_view.h"
 #include "preferences.h"
 #include "property_panel.h"
+#include "session/governor.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -38,6 +39,7 @@ private Q_SLOTS:
     void dragSphere_MovesItInDocument_AndUndoRestores();
     void dragWithAxisLock_MovesAlongThatAxisOnly_AndEscapeCancels();
     void updateRate_FallsToZeroInTheStatusBarOnceTheUserStops();
+    void governorLabel_SaysAsSetOnceTheFrameRefines();
     void propertyEdit_ReRendersFrame_AndSharedMaterialIsShown();
     void outOfRangeProperty_IsRejectedWithMessage();
     void saveAndReopen_GiveTheSameScene();
@@ -159,6 +161,31 @@ void DesignerTest::updateRate_FallsToZeroInTheStatusBarOnceTheUserStops() {
     QVERIFY(highest > 0.0);
     // Idle: the session stops passing and the label must still come down.
     QTRY_COMPARE_WITH_TIMEOUT(rate->text(), QStringLiteral("0 upd/s"), 5000);
+}
+
+void DesignerTest::governorLabel_SaysAsSetOnceTheFrameRefines() {
+    auto* label = window_->statusBar()->findChild<QLabel*>(QStringLiteral("statusGovernor"));
+    QVERIFY(label);
+    // The passes the session reports, through the controller's signal as the session sends
+    // them: the window has settled, so no pass of its own comes in between.
+    PassInfo drag;
+    drag.kind = PassKind::Interactive;
+    drag.governorLevel = Governor::kLevels - 1;
+    Q_EMIT window_->session()->passFinished(drag);
+    QCOMPARE(label->text(), QStringLiteral("governor: box proxy"));
+    PassInfo base;  // After the release: refining at the scene's settings, governor level -1.
+    base.kind = PassKind::Base;
+    base.cancelled = true;  // Cut short by the next edit, still not the drag's level.
+    Q_EMIT window_->session()->passFinished(base);
+    QCOMPARE(label->text(), QStringLiteral("governor: as set"));
+    Q_EMIT window_->session()->passFinished(drag);
+    PassInfo supersample;
+    supersample.kind = PassKind::Supersample;
+    Q_EMIT window_->session()->passFinished(supersample);
+    QCOMPARE(label->text(), QStringLiteral("governor: as set"));
+    drag.governorLevel = -1;  // The governor switched off in Preferences.
+    Q_EMIT window_->session()->passFinished(drag);
+    QCOMPARE(label->text(), QStringLiteral("governor: off"));
 }
 
 void DesignerTest::dragWithAxisLock_MovesAlongThatAxisOnly_AndEscapeCancels() {
