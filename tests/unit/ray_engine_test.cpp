@@ -64,6 +64,7 @@ SceneDocument randomScene(std::mt19937& rng) {
 
 struct Agreement {
     int rays = 0, closestDiffer = 0, anyDiffer = 0, hits = 0, occluded = 0;
+    float largestTDiff = 0.0f;  ///< Relative, over rays where both engines hit the same object.
 };
 
 void compare(const CompiledScene& a, const CompiledScene& b, const Ray& ray, float tmax,
@@ -77,6 +78,8 @@ void compare(const CompiledScene& a, const CompiledScene& b, const Ray& ray, flo
                       (!foundA || (std::abs(ha.t - hb.t) <= 1e-5f * std::max(1.0f, ha.t) &&
                                    glm::dot(ha.n, hb.n) > 0.999f));
     out.closestDiffer += !same;
+    if (foundA && foundB && ha.slot == hb.slot)
+        out.largestTDiff = std::max(out.largestTDiff, std::abs(ha.t - hb.t) / std::max(1.0f, ha.t));
     const bool anyA = a.engine().anyHit(ray, tmax), anyB = b.engine().anyHit(ray, tmax);
     out.occluded += anyA;
     out.anyDiffer += anyA != anyB;
@@ -114,8 +117,10 @@ TEST(RayEngines, SameClosestAndAnyHitsOnRandomRays_EveryShapeKind) {
             compare(embree, builtin, Ray::make(p + side * n * builtin.epsilon(), d2), kInfinity, agree);
         }
     }
-    std::printf("%d rays, %d hits, %d occluded; closest differs on %d, any-hit on %d\n",
-                agree.rays, agree.hits, agree.occluded, agree.closestDiffer, agree.anyDiffer);
+    std::printf("%d rays, %d hits, %d occluded; closest differs on %d, any-hit on %d; "
+                "largest relative t difference %.3g\n",
+                agree.rays, agree.hits, agree.occluded, agree.closestDiffer, agree.anyDiffer,
+                agree.largestTDiff);
     EXPECT_GE(agree.rays, 100000);
     // Both answers are common, so agreeing means something.
     EXPECT_GT(agree.hits, agree.rays / 4);
