@@ -175,6 +175,7 @@ EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* pr
     // instructions a frame), so such a scene is answered by the flat set alone, as the
     // built-in engine does.
     flatOnly_ = FlatSet::suits(prims);
+    hasPlanes_ = !geometry_.planes->empty();
     planes_ = FlatSet(*geometry_.planes, flatOnly_ ? &prims : nullptr);
     scene_ = rtcNewScene(device());
     if (flatOnly_) {
@@ -203,8 +204,17 @@ EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* pr
         rtcCommitGeometry(inst);
         const unsigned id = rtcAttachGeometry(scene_, inst);
         rtcReleaseGeometry(inst);
-        if (instancePrims_.size() <= id) instancePrims_.resize(id + 1, kNoSlot);
-        instancePrims_[id] = i;
+        if (instances_.size() <= id) instances_.resize(id + 1);
+        MeshInstance& mi = instances_[id];
+        mi.slot = i;
+        mi.mesh = mesh->accel.get();
+        mi.smooth = mesh->accel->smooth();
+        mi.frame = &prims[i].frame;
+        // A translation, or a uniform scale without rotation: no matrix work a hit.
+        const Mat3& m = mi.frame->dirToObject;
+        mi.scaleOnly = m[0][0] > 0.0f && m[0][0] == m[1][1] && m[1][1] == m[2][2] &&
+                       m[0][1] == 0.0f && m[0][2] == 0.0f && m[1][0] == 0.0f &&
+                       m[1][2] == 0.0f && m[2][0] == 0.0f && m[2][1] == 0.0f;
     }
     if (!userPrims_.empty()) {
         RTCGeometry user = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_USER);
@@ -244,6 +254,32 @@ std::shared_ptr<const RayEngine> EmbreeEngine::updated(const SceneGeometry& geom
     return std::make_shared<const EmbreeEngine>(geometry, this);
 }
 
+inline float EmbreeEngine::MeshInstance::distance(const Vec3& ng, const Vec3& v0, const RayBatch& rays,
+                                           std::size_t i, float tEmbree, float tmax) const {
+    // Embree moves the ray into the object's frame with an inverse of its own, which differs
+    // from the frame's objectFromWorld in the last bits; at grazing angles that shifts t by
+    // up to ~3e-5 relative (engine parity test). The distance to the plane of Embree's
+    // triangle along the frame's own object-space ray, as the built-in engine tests it,
+    // agrees with its Moeller-Trumbore to ~2e-6 (the same test, measured).
+    const Vec3 o(rays.ox[i], rays.oy[i], rays.oz[i]), d(rays.dx[i], rays.dy[i], rays.dz[i]);
+    Vec3 ol, dl;
+    if (scaleOnly) {
+        const float s = frame->dirToObject[0][0];
+        ol = s * o + Vec3(frame->objectFromWorld[3]), dl = s * d;
+    } else {
+        // The built-in engine's object-space ray (intersectPrimitive), bit for bit.
+        ol = Vec3(frame->objectFromWorld * glm::vec4(o, 1.0f)), dl = frame->dirToObject * d;
+    }
+    const float t = glm::dot(ng, v0 - ol) / glm::dot(ng, dl);
+    // Embree's answer stands where the plane's leaves the ray's open range (0, tmax): a ray
+    // (nearly) in the triangle's plane, whose distance is then no better than Embree's.
+    return t > 0.0f && t < tmax ? t : tEmbree;
+}
+
+inline Vec3 EmbreeEngine::MeshInstance::toWorld(const Vec3& n) const {
+    return glm::normalize(scaleOnly ? n : frame->normalToWorld * n);
+}
+
 void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -251,12 +287,13 @@ void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const 
                                   : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     const auto& prims = *geometry_.primitives;
     // Planes first, with the same rule as every engine: their t bounds the tree's walk.
-    planes_.closestHit(rays, hits);
+    // Without planes the loop below writes every ray's answer, misses included.
+    if (hasPlanes_ || flatOnly_) planes_.closestHit(rays, hits);
     if (flatOnly_) return;
     Packet p;
     for (std::size_t first = 0; first < rays.count; first += kPacket) {
         const int n = int(std::min<std::size_t>(kPacket, rays.count - first));
-        loadPacket(p, rays, first, n, &hits);
+        loadPacket(p, rays, first, n, hasPlanes_ ? &hits : nullptr);
         rtcIntersect8(p.valid, scene_, &context, &p.rh);
         for (int k = 0; k < n; ++k) {
             const std::size_t i = first + std::size_t(k);
@@ -264,22 +301,16 @@ void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const 
             Vec3 normal;
             uint32_t slot;
             if (inst != RTC_INVALID_GEOMETRY_ID) {
-                slot = instancePrims_[inst];
-                const Primitive& prim = prims[slot];
-                const MeshAccel& mesh = *std::get<MeshShape>(prim.shape).accel;
-                const unsigned tri = p.rh.hit.primID[k];
-                float b1 = p.rh.hit.u[k], b2 = p.rh.hit.v[k];
-                // Embree picked the triangle; its distance and barycentrics come from the
-                // project's own triangle test in the object's frame, as the built-in engine
-                // computes them (Embree's own t drifts by ~1e-5 under scaled instances).
-                // The triangle test reads origin and direction only: no reciprocals made.
-                Ray local{};
-                local.origin = Vec3(prim.frame.objectFromWorld *
-                                    glm::vec4(rays.ox[i], rays.oy[i], rays.oz[i], 1.0f));
-                local.dir = prim.frame.dirToObject * Vec3(rays.dx[i], rays.dy[i], rays.dz[i]);
-                float t;
-                if (mesh.intersectTriangle(tri, local, t, b1, b2)) p.rh.ray.tfar[k] = t;
-                normal = glm::normalize(prim.frame.normalToWorld * mesh.normal(tri, b1, b2));
+                const MeshInstance& mi = instances_[inst];
+                slot = mi.slot;
+                const uint32_t tri = p.rh.hit.primID[k];
+                // Embree's triangle, barycentrics and object-space geometric normal.
+                const Vec3 ng(p.rh.hit.Ng_x[k], p.rh.hit.Ng_y[k], p.rh.hit.Ng_z[k]);
+                // The far end Embree was given: the planes' hit, else the ray's own.
+                const float tmax = hasPlanes_ && hits.slot[i] != kNoSlot ? hits.t[i] : rays.tmax[i];
+                p.rh.ray.tfar[k] = mi.distance(ng, mi.mesh->firstVertex(tri), rays, i, p.rh.ray.tfar[k], tmax);
+                normal = mi.smooth ? mi.toWorld(mi.mesh->normal(tri, p.rh.hit.u[k], p.rh.hit.v[k]))
+                                   : mi.toWorld(ng);
             } else if (p.rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID &&
                        p.rh.hit.geomID[k] == sphereGeomID_) {
                 slot = spherePrims_[p.rh.hit.primID[k]];
@@ -290,8 +321,13 @@ void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const 
             } else if (p.rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID) {
                 slot = userPrims_[p.rh.hit.primID[k]];
                 normal = Vec3(p.rh.hit.Ng_x[k], p.rh.hit.Ng_y[k], p.rh.hit.Ng_z[k]);
-            } else {
+            } else if (hasPlanes_) {
                 continue;  // the plane's answer (or none) stands
+            } else {
+                hits.t[i] = kInfinity;  // FlatSet's miss
+                hits.nx[i] = hits.ny[i] = hits.nz[i] = 0.0f;
+                hits.slot[i] = kNoSlot;
+                continue;
             }
             hits.t[i] = p.rh.ray.tfar[k];
             hits.nx[i] = normal.x, hits.ny[i] = normal.y, hits.nz[i] = normal.z;

@@ -42,12 +42,29 @@ private:
     SceneGeometry geometry_;
     FlatSet planes_;         ///< The planes, and the spheres too when flatOnly_.
     bool flatOnly_ = false;  ///< A few world spheres only: no Embree scene is traversed.
+    bool hasPlanes_ = false;
     RTCScene scene_ = nullptr;
     unsigned userGeomID_ = RTC_INVALID_GEOMETRY_ID;
     unsigned sphereGeomID_ = RTC_INVALID_GEOMETRY_ID;
     std::vector<uint32_t> spherePrims_;    ///< Primitive index of each sphere primID.
     std::vector<uint32_t> userPrims_;      ///< Primitive index of each user-geometry primID.
-    std::vector<uint32_t> instancePrims_;  ///< Primitive index of each geomID (meshes only).
+    /// What a hit on one mesh instance needs, by geomID (meshes only; slot kNoSlot elsewhere).
+    struct MeshInstance {
+        uint32_t slot = kNoSlot;  ///< Index into the primitives.
+        const MeshAccel* mesh = nullptr;
+        const Frame* frame = nullptr;
+        bool smooth = false;     ///< Normals interpolated (MeshAccel::normal).
+        bool scaleOnly = false;  ///< The frame's linear part is a positive multiple of 1.
+
+        // Both defined inline in embree_engine.cpp, for the hit loop.
+        /// Ray i's distance to the plane through `v0` with normal `ng` (object space), for
+        /// Embree's hit at `tEmbree` within (0, tmax).
+        float distance(const Vec3& ng, const Vec3& v0, const RayBatch& rays, std::size_t i,
+                       float tEmbree, float tmax) const;
+        /// An object-space normal as the unit world normal.
+        Vec3 toWorld(const Vec3& n) const;
+    };
+    std::vector<MeshInstance> instances_;
     std::vector<std::shared_ptr<const EmbreeMesh>> meshes_;  ///< Per primitive; null if no mesh.
 };
 

@@ -30,12 +30,17 @@ public:
     bool occluded(const Ray& ray, float tmin, float tmax) const;
 
     /// The unit object-space normal at barycentrics (b1, b2) of triangle `tri`: the
-    /// interpolated vertex normal when smooth, else the geometric one. Every engine's mesh hits
-    /// get their normal here.
+    /// interpolated vertex normal when smooth, else the geometric one, cross(p1 - p0, p2 - p0)
+    /// normalised. Every engine's smooth mesh hits get their normal here; Embree's flat hits
+    /// take the same cross product from Embree (its Ng), which it has already computed.
     Vec3 normal(uint32_t tri, float b1, float b2) const;
     /// The project's triangle test (Moeller-Trumbore) of triangle `tri` alone, over (0, inf):
     /// distance and barycentrics, for engines that found the triangle by other means.
     bool intersectTriangle(uint32_t tri, const Ray& ray, float& t, float& b1, float& b2) const;
+    /// Triangle `tri`'s first vertex (a point on its plane); `tri` must be valid.
+    const Vec3& firstVertex(uint32_t tri) const {
+        return data_->positions[data_->indices[3 * std::size_t(tri)]];
+    }
     /// True when triangle `tri` has three valid vertex indices (others are never hit).
     bool validTriangle(uint32_t tri) const;
 
