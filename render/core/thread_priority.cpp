@@ -38,6 +38,13 @@ struct Saved {
 };
 thread_local Saved saved;
 
+/// Where kForGood arenas put their threads: below the priority of the thread that made the
+/// first BackgroundArena (the GUI thread, in the designer), however lowered a later maker is.
+int forGoodNice() {
+    static const int nice = std::min(19, threadNice() + kBackgroundNiceSteps);
+    return nice;
+}
+
 std::atomic<uint64_t> nextObserverId{1};
 
 }  // namespace
@@ -67,28 +74,40 @@ bool canRestorePriority() {
     return can;
 }
 
-BackgroundArena::BackgroundArena(int threads) : tbb::task_arena(threads), lowering_(*this) {
-    lowering_.ownNice = threadNice();
+LowerMode availableLowerMode() {
 #if defined(__SANITIZE_THREAD__)
     // Under ThreadSanitizer arenaExecute runs on std::threads (core/parallel.h): no thread
     // ever joins, and observing would initialise oneTBB's arena for nothing.
-    lowering_.active = false;
+    return LowerMode::kNone;
 #else
-    lowering_.active = canRestorePriority();
+    return canRestorePriority() ? LowerMode::kWhileInside : LowerMode::kForGood;
 #endif
-    if (lowering_.active) lowering_.observe(true);
+}
+
+BackgroundArena::BackgroundArena(int threads, LowerMode mode)
+    : tbb::task_arena(threads), lowering_(*this) {
+    lowering_.ownNice = threadNice();
+    lowering_.mode = mode;
+    lowering_.forGoodNice = forGoodNice();
+    if (lowers()) lowering_.observe(true);
 }
 
 BackgroundArena::~BackgroundArena() {
     // Workers still inside keep the lowered priority until they next leave a BackgroundArena
     // (oneTBB sends no exit notification once the observer stops observing).
-    if (lowering_.active) lowering_.observe(false);
+    if (lowers()) lowering_.observe(false);
 }
 
 BackgroundArena::Lowering::Lowering(tbb::task_arena& arena)
     : tbb::task_scheduler_observer(arena), id(nextObserverId.fetch_add(1)) {}
 
 void BackgroundArena::Lowering::on_scheduler_entry(bool isWorker) {
+    if (mode == LowerMode::kForGood) {
+        // Idempotent: a thread already there (or lower) is left alone.
+        if (threadNice() < forGoodNice) setThreadNice(forGoodNice);
+        if (threadNice() >= forGoodNice) lowered.fetch_add(1);
+        return;
+    }
     if (saved.lowered) return;
     // A thread inherits its creator's nice value, and oneTBB starts a worker from the thread
     // that asked for one: a lowered one, when this arena's work did. So a worker's own
@@ -100,6 +119,10 @@ void BackgroundArena::Lowering::on_scheduler_entry(bool isWorker) {
 }
 
 void BackgroundArena::Lowering::on_scheduler_exit(bool) {
+    if (mode == LowerMode::kForGood) {
+        if (threadNice() >= forGoodNice) lowered.fetch_sub(1);  // ... and stays lowered.
+        return;
+    }
     if (!saved.lowered) return;
     setThreadNice(saved.nice);  // Cannot fail where canRestorePriority() held.
     saved.lowered = false;

@@ -29,20 +29,36 @@ int threadNice();
 /// a desktop user's process usually lacks. Found once, by trying it on a thread of its own.
 bool canRestorePriority();
 
+/// How a BackgroundArena lowers the threads that work in it.
+enum class LowerMode {
+    kWhileInside,  ///< Lowered on entry, back at their own priority when they leave.
+    /// Lowered on their first entry and left there: where priorities cannot be restored (a
+    /// desktop user's process), the workers that trace for the session stay below the GUI
+    /// thread, and so do the later arenas they serve in this process (Render Image, mesh
+    /// builds: background work too). Only for an arena whose calling thread is one of its
+    /// own (the session's scheduler), never the GUI thread.
+    kForGood,
+    kNone,  ///< A plain task_arena.
+};
+
+/// kWhileInside where canRestorePriority(), else kForGood; kNone under ThreadSanitizer, whose
+/// builds run arena work on std::threads (core/parallel.h).
+LowerMode availableLowerMode();
+
 /// A task_arena whose threads, the one that calls execute and the workers that join, run
-/// kBackgroundNiceSteps below their own priority while they are in it and at their own again
-/// when they leave (for workers, the priority of the thread that made the arena, see
-/// on_scheduler_entry). Where priorities cannot be restored (see canRestorePriority) it lowers
-/// nothing and is a plain task_arena: a worker left lowered would slow every later arena.
+/// kBackgroundNiceSteps below their own priority while they are in it (for workers, the
+/// priority of the thread that made the arena, see on_scheduler_entry) and, in
+/// kWhileInside mode, at their own again when they leave.
 class BackgroundArena : public tbb::task_arena {
 public:
-    explicit BackgroundArena(int threads);
+    explicit BackgroundArena(int threads, LowerMode mode = availableLowerMode());
     ~BackgroundArena();
     BackgroundArena(const BackgroundArena&) = delete;
     BackgroundArena& operator=(const BackgroundArena&) = delete;
 
-    /// Whether this arena lowers its threads (canRestorePriority() when it was made).
-    bool lowers() const { return lowering_.active; }
+    /// Whether this arena lowers its threads, and how.
+    bool lowers() const { return lowering_.mode != LowerMode::kNone; }
+    LowerMode mode() const { return lowering_.mode; }
     /// Threads inside it now at the lowered priority.
     int loweredThreads() const { return lowering_.lowered.load(); }
 
@@ -52,8 +68,9 @@ private:
         void on_scheduler_entry(bool isWorker) override;
         void on_scheduler_exit(bool isWorker) override;
         const uint64_t id;
-        bool active = false;
+        LowerMode mode = LowerMode::kNone;
         int ownNice = 0;  ///< The workers' own priority: that of the thread that made the arena.
+        int forGoodNice = 0;  ///< Where kForGood puts its threads.
         std::atomic<int> lowered{0};
     };
     Lowering lowering_;
