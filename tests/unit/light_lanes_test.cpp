@@ -11,6 +11,7 @@
 #include <cmath>
 #include <random>
 
+#include "pixel_rays.h"
 #include "test_scenes.h"
 
 namespace rs {
@@ -279,24 +280,11 @@ TEST(TraceKernelLanes, ABatchOfCameraRaysHasTheBitsOfEachRayAlone) {
     SceneDocument doc = test::smallRoom(24, 18);
     doc.render.shadowSamples = 4;
     test::addPointLight(doc, "fill", Vec3(-3, 1, -1));
-    Light sphere;
-    sphere.name = "sphere";
-    sphere.type = LightType::Sphere;
-    sphere.radius = 0.4f;
-    sphere.position = Vec3(2, 2.5f, -4);
-    doc.addLight(sphere);
+    test::addSphereLight(doc, "sphere", Vec3(2, 2.5f, -4));
     for (EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
         const CompiledScene scene(doc, nullptr, engine);
-        const CameraModel& camera = scene.camera();
-        std::vector<Vec3> origin, dir;
-        std::vector<uint32_t> seed;
-        for (int y = 0; y < doc.render.height; ++y)
-            for (int x = 0; x < doc.render.width; ++x) {
-                const Ray r = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
-                origin.push_back(r.origin), dir.push_back(r.dir);
-                seed.push_back(hash32(uint32_t(y * doc.render.width + x)));
-            }
-        const std::size_t n = origin.size();
+        const test::PixelRays pixels(scene, doc.render.width, doc.render.height);
+        const std::size_t n = pixels.size();
         std::vector<TraceOptions> optionSets(5, TraceOptions::fromSettings(doc.render));
         optionSets[1].shadows = ShadowQuality::HardOnly;
         optionSets[2].shadows = ShadowQuality::Off;
@@ -310,14 +298,14 @@ TEST(TraceKernelLanes, ABatchOfCameraRaysHasTheBitsOfEachRayAlone) {
             TraceOutput out;
             out.color = batch.data();
             out.rays = batchRays.data();
-            ASSERT_TRUE(kernel.trace(CameraBatch{origin.data(), dir.data(), seed.data(), n, true},
+            ASSERT_TRUE(kernel.trace(pixels.batch(),
                                      out, counters));
             std::size_t lit = 0;
             for (std::size_t i = 0; i < n; ++i) {
                 TraceOutput one;
                 one.color = &alone[i];
                 one.rays = &aloneRays[i];
-                kernel.trace(CameraBatch{&origin[i], &dir[i], &seed[i], 1, true}, one, counters);
+                kernel.trace(pixels.one(i), one, counters);
                 ASSERT_EQ(bitsOf(batch[i].x), bitsOf(alone[i].x)) << "pixel " << i << " options " << o;
                 ASSERT_EQ(bitsOf(batch[i].y), bitsOf(alone[i].y)) << "pixel " << i << " options " << o;
                 ASSERT_EQ(bitsOf(batch[i].z), bitsOf(alone[i].z)) << "pixel " << i << " options " << o;

@@ -12,6 +12,7 @@
 #include <bit>
 #include <vector>
 
+#include "pixel_rays.h"
 #include "test_scenes.h"
 
 namespace rs {
@@ -27,25 +28,12 @@ TEST(TraceKernelInstances, AskingForBookkeepingOutputsLeavesEveryPixelsBits) {
     doc.render.background = Color(0.2f, 0.3f, 0.5f);
     doc.render.shadowSamples = 4;
     std::erase_if(doc.objects, [](const Object& o) { return o.name == "back"; });
-    Light sphere;
-    sphere.name = "sphere";
-    sphere.type = LightType::Sphere;
-    sphere.radius = 0.4f;
-    sphere.position = Vec3(2, 2.5f, -4);
-    doc.addLight(sphere);
+    test::addSphereLight(doc, "sphere", Vec3(2, 2.5f, -4));
     for (EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
         const CompiledScene scene(doc, nullptr, engine);
-        const CameraModel& camera = scene.camera();
-        std::vector<Vec3> origin, dir;
-        std::vector<uint32_t> seed;
-        for (int y = 0; y < doc.render.height; ++y)
-            for (int x = 0; x < doc.render.width; ++x) {
-                const Ray r = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
-                origin.push_back(r.origin), dir.push_back(r.dir);
-                seed.push_back(hash32(uint32_t(y * doc.render.width + x)));
-            }
-        const std::size_t n = origin.size();
-        const CameraBatch rays{origin.data(), dir.data(), seed.data(), n, true};
+        const test::PixelRays pixels(scene, doc.render.width, doc.render.height);
+        const std::size_t n = pixels.size();
+        const CameraBatch rays = pixels.batch();
         std::vector<TraceOptions> optionSets(6, TraceOptions::fromSettings(doc.render));
         optionSets[1].shadows = ShadowQuality::HardOnly;
         optionSets[2].shadows = ShadowQuality::Off;
