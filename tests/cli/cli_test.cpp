@@ -11,7 +11,6 @@
 #include <unistd.h>
 
 #include <array>
-#include <chrono>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -193,13 +192,12 @@ TEST_F(CliTest, Validate_GoodScenePrintsOk) {
 TEST_F(CliTest, Validate_DeviceDirectoryAndFifo_FailAtOnceNamingThePath) {
     const std::string fifo = path("pipe.scene.json");
     ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+    // "At once": the refusal names the check made before anything is read ("not a regular
+    // file"), which a run that read /dev/zero or waited on the FIFO could not print; the
+    // run's 10 s limit only stops a hang (no bound in seconds: that raced a loaded machine).
     for (const std::string& bad : {std::string("/dev/zero"), fifo, dir_.string()}) {
-        const auto start = std::chrono::steady_clock::now();
         CliRun r = cli("validate '" + bad + "'", 10);
-        const double s =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.err;
-        EXPECT_LT(s, 5.0) << bad;
         EXPECT_EQ(r.err.rfind(bad + ": cannot read scene file: ", 0), 0u) << r.err;
         EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << r.err;
         EXPECT_EQ(r.out, "");

@@ -3,7 +3,6 @@
 #include <sys/stat.h>
 
 #include <cerrno>
-#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -354,11 +353,11 @@ TEST(SceneReader, TrailingWhitespace_IsFine) {
     EXPECT_TRUE(r.ok()) << r.errorText();
 }
 
-// Refusals that must come at once, before any read: each names the path and says why.
+// Refusals that must come at once, before any read: each names the path and says why (the
+// reason is the check made before reading, which a read of the device could not give; a
+// bound in seconds would race a loaded CI machine).
 void expectRefusedAtOnce(const std::string& path, const char* why) {
-    const auto start = std::chrono::steady_clock::now();
     SceneLoadResult r = loadScene(path);
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
     ASSERT_EQ(r.errors.size(), 1u) << r.errorText();
     EXPECT_EQ(r.errors[0].file, path);
     EXPECT_EQ(r.errors[0].line, 0) << r.errorText();
