@@ -268,7 +268,7 @@ inline float EmbreeEngine::MeshInstance::distance(const Vec3& ng, const Vec3& v0
         ol = s * o + Vec3(frame->objectFromWorld[3]), dl = s * d;
     } else {
         // The built-in engine's object-space ray (intersectPrimitive), bit for bit.
-        ol = Vec3(frame->objectFromWorld * glm::vec4(o, 1.0f)), dl = frame->dirToObject * d;
+        ol = frame->pointToObject(o), dl = frame->directionToObject(d);
     }
     const float t = glm::dot(ng, v0 - ol) / glm::dot(ng, dl);
     // Embree's answer stands where the plane's leaves the ray's open range (0, tmax): a ray

@@ -27,8 +27,7 @@ bool intersectPrimitive(const Primitive& p, const Ray& ray, float tmin, float tm
     if (!p.hasFrame) return intersectShape(p.shape, ray, tmin, tmax, hit);
     // Test in the object's frame: t is unchanged because the direction is mapped linearly too.
     const Frame& f = p.frame;
-    const Ray local = Ray::make(Vec3(f.objectFromWorld * glm::vec4(ray.origin, 1.0f)),
-                                f.dirToObject * ray.dir);
+    const Ray local = Ray::make(f.pointToObject(ray.origin), f.directionToObject(ray.dir));
     if (!intersectShape(p.shape, local, tmin, tmax, hit)) return false;
     hit.n = glm::normalize(f.normalToWorld * hit.n);
     return true;

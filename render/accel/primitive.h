@@ -18,6 +18,11 @@ struct Frame {
     Mat4 objectFromWorld;
     Mat3 dirToObject;    ///< Linear part of objectFromWorld.
     Mat3 normalToWorld;  ///< Inverse transpose of the world-from-object linear part.
+
+    /// A world point and direction in the object's frame: the one transform every engine
+    /// tests a ray with, so that their distances agree bit for bit.
+    Vec3 pointToObject(const Vec3& p) const { return Vec3(objectFromWorld * glm::vec4(p, 1.0f)); }
+    Vec3 directionToObject(const Vec3& d) const { return dirToObject * d; }
 };
 
 /// A mesh instance: the shared triangle mesh plus the instance's frame (always present).

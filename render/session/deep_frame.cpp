@@ -55,7 +55,7 @@ void DeepFrame::allocate(int w, int h) {
 
 void DeepFrame::markAllStale() {
     std::fill(state.begin(), state.end(), uint8_t(kStale));
-    for (uint8_t& f : flags) f = uint8_t((f & ~(kDeferredValid | kTracedLastUpdate)) | kTracedLastUpdate);
+    for (uint8_t& f : flags) f = markedStaleFlags(f);
     for (auto& counts : tileStates) {
         counts = {counts[0] + counts[1] + counts[2] + counts[3], 0, 0, 0};
     }

@@ -27,6 +27,12 @@ enum PixelFlag : uint8_t {
     kTreeUnknown = 8,       ///< Its secondary segments were not all kept: always re-trace.
 };
 
+/// The flags of a pixel an edit marks stale: its deferred records no longer hold, and the
+/// re-traced overlay shows it.
+constexpr uint8_t markedStaleFlags(uint8_t f) {
+    return uint8_t((f & ~(kDeferredValid | kTracedLastUpdate)) | kTracedLastUpdate);
+}
+
 /// What dirty marking needs to know about a block of pixels without looking at them.
 struct TileSummary {
     Aabb hitBox;                ///< Camera-ray hit points of its pixels (with their radii).

@@ -21,14 +21,13 @@ void applyBlockMarks(DeepFrame& frame, std::size_t b, const std::vector<uint8_t>
         uint8_t* s = frame.state.data() + i;
         uint8_t* f = frame.flags.data() + i;
         for (std::size_t k = 0; k < n; ++k) {
-            const uint8_t kept = uint8_t(f[k] & ~kTracedLastUpdate);
             if (m[k]) {
                 ++was[s[k] & 3];  // States are <= kFinal.
                 ++marked;
                 s[k] = kStale;
-                f[k] = uint8_t((kept & ~kDeferredValid) | kTracedLastUpdate);
+                f[k] = markedStaleFlags(f[k]);
             } else {
-                f[k] = kept;
+                f[k] = uint8_t(f[k] & ~kTracedLastUpdate);
             }
         }
     }

@@ -23,7 +23,6 @@
 namespace rs {
 
 namespace {
-int arenaSize(int threads) { return threads > 0 ? threads : tbb::info::default_concurrency(); }
 
 /// The observer's message for a failure of rendering or of applying a document.
 std::string failureMessage(std::exception_ptr failure) {
@@ -41,6 +40,10 @@ std::string failureMessage(std::exception_ptr failure) {
 /// More regions than this are merged into their bounding box (a long, winding drag).
 constexpr std::size_t kMaxDeferredShadowRegions = 64;
 }  // namespace
+
+int RenderSession::arenaSize(int threads) {
+    return threads > 0 ? threads : tbb::info::default_concurrency();
+}
 
 RenderSession::RenderSession(int threads)
     : threads_(threads), arena_(std::make_unique<BackgroundArena>(arenaSize(threads))) {

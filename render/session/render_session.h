@@ -180,6 +180,8 @@ private:
     SessionObserver* observer_ = nullptr;
 
     std::unique_ptr<BackgroundArena> arena_;  ///< Its tracers run below the GUI thread.
+    /// The arena's size for a thread count (0: the machine's).
+    static int arenaSize(int threads);
     bool stop_ = false;
     std::thread scheduler_;
 };

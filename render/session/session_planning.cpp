@@ -37,7 +37,7 @@ bool tileHasCandidate(const RenderSession::Plan& plan, const DeepFrame& frame, i
 
 bool RenderSession::planLocked(Plan& plan) {
     if (threadsChanged_) {
-        arena_ = std::make_unique<BackgroundArena>(threads_ > 0 ? threads_ : tbb::info::default_concurrency());
+        arena_ = std::make_unique<BackgroundArena>(arenaSize(threads_));
         threadsChanged_ = false;
     }
     const RenderSettings& settings = snapshot_->settings();
