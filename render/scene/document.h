@@ -124,8 +124,12 @@ struct MeshGeometry {
     std::string resolvedPath;  ///< Absolute path the mesh was loaded from.
     bool smoothNormals = true;
     std::shared_ptr<const MeshData> data;  ///< Loaded triangles; not part of equality.
+    /// Which file the mesh is: its resolved path once known, else the path as written. Two
+    /// spellings of one file ("meshes//m.obj", "./meshes/m.obj", an absolute path) are the same
+    /// mesh, and saving writes them alike (relative below the scene's folder).
+    const std::string& source() const { return resolvedPath.empty() ? file : resolvedPath; }
     bool operator==(const MeshGeometry& o) const {
-        return file == o.file && smoothNormals == o.smoothNormals;
+        return source() == o.source() && smoothNormals == o.smoothNormals;
     }
 };
 
