@@ -4,9 +4,9 @@
 #include "core/parallel.h"
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 
 namespace rs {
 
@@ -284,15 +284,29 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
     return false;
 }
 
-/// Zeroes the pixels of blocks `blocks` in a frame-sized byte buffer (row-major, like `frame`).
-template <class Blocks>
-void clearBlocks(std::vector<uint8_t>& v, const DeepFrame& frame, const Blocks& blocks) {
+/// Zeroes the pixels of `blocks` (block indices in increasing order) in a frame-sized byte
+/// buffer, row-major like `frame`: neighbouring blocks of a block row are cleared together,
+/// a pixel row at a time (a footprint's blocks come in long runs).
+void clearBlocks(std::vector<uint8_t>& v, const DeepFrame& frame, const std::vector<int>& blocks) {
     const int B = DeepFrame::kBlock, bxs = frame.blocksX();
-    for (const int b : blocks) {
-        const int x0 = (b % bxs) * B, y0 = (b / bxs) * B;
-        const int x1 = std::min(frame.width, x0 + B), y1 = std::min(frame.height, y0 + B);
-        for (int y = y0; y < y1; ++y)
-            std::fill_n(v.begin() + std::ptrdiff_t(frame.index(x0, y)), x1 - x0, uint8_t(0));
+    for (std::size_t k = 0; k < blocks.size();) {
+        const int first = blocks[k], row = first / bxs;
+        std::size_t e = k + 1;
+        while (e < blocks.size() && blocks[e] == blocks[e - 1] + 1 && blocks[e] / bxs == row) ++e;
+        const int x0 = (first % bxs) * B, x1 = std::min(frame.width, (blocks[e - 1] % bxs + 1) * B);
+        for (int y = row * B; y < std::min(frame.height, (row + 1) * B); ++y)
+            std::memset(v.data() + frame.index(x0, y), 0, std::size_t(x1 - x0));
+        k = e;
+    }
+}
+
+/// Sets the n bytes at p to 1: a whole block row in one store.
+void markRow(uint8_t* p, int n) {
+    if (n == DeepFrame::kBlock) {
+        constexpr uint64_t ones = 0x0101010101010101ull;
+        std::memcpy(p, &ones, sizeof ones);
+    } else {
+        std::memset(p, 1, std::size_t(n));
     }
 }
 
@@ -379,8 +393,7 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                 if (!tests.any()) continue;
                 if (tests.footprint && insideFootprint(c, r)) {
                     // Every pixel passes its first test: no need to ask each one.
-                    for (int y = r.y0; y < r.y1; ++y)
-                        std::fill_n(core.begin() + std::ptrdiff_t(frame.index(r.x0, y)), r.x1 - r.x0, uint8_t(1));
+                    for (int y = r.y0; y < r.y1; ++y) markRow(core.data() + frame.index(r.x0, y), r.x1 - r.x0);
                     blockMarked[std::size_t(b)] = kWhole;
                     continue;
                 }
@@ -419,8 +432,7 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
         const int y1 = std::min(h, (by + 1) * B), x1 = std::min(w, (bx + 1) * B);
         if (blockMarked[std::size_t(b)] == kWhole) {
             // Every pixel is marked itself, so its grown mark is too.
-            for (int y = by * B; y < y1; ++y)
-                std::fill_n(mask.pixels.begin() + std::ptrdiff_t(frame.index(bx * B, y)), x1 - bx * B, uint8_t(1));
+            for (int y = by * B; y < y1; ++y) markRow(mask.pixels.data() + frame.index(bx * B, y), x1 - bx * B);
             count += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
             return;
         }
@@ -438,8 +450,10 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
         pixelsGrown += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
     });
     // Only blocks with a mark wrote to `core`.
+    std::vector<int> markedBlocks;
     for (int b = 0; b < blocks; ++b)
-        if (blockMarked[std::size_t(b)] != kNone) clearBlocks(core, frame, std::array<int, 1>{b});
+        if (blockMarked[std::size_t(b)] != kNone) markedBlocks.push_back(b);
+    clearBlocks(core, frame, markedBlocks);
     coreZero = true;
     if (stats) {
         stats->blocksTested = blocksTested.load();
