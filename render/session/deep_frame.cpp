@@ -1,7 +1,8 @@
-// Deep frame allocation.
+// Deep frame allocation, the edits' marks, state counts and block summaries.
 #include "session/deep_frame.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace rs {
 
@@ -51,6 +52,72 @@ void DeepFrame::allocate(int w, int h) {
         tileStates[std::size_t(t)][kStale] = uint32_t(tw) * uint32_t(th);
     }
     tileSampled.assign(tileRecords.size(), 0);
+}
+
+namespace {
+
+constexpr uint64_t kEachByte = 0x0101010101010101ull;
+
+/// 0x01 in each byte of `m` that is not zero, 0x00 in the others.
+uint64_t nonZeroBytes(uint64_t m) {
+    constexpr uint64_t low7 = 0x7f * kEachByte;
+    return ((((m & low7) + low7) | m) >> 7) & kEachByte;
+}
+
+/// The sum of the bytes of `v`, each 0 or 1 (a multiply, where std::popcount is a library
+/// call on the x86-64 baseline this builds for).
+uint32_t sumOfBytes(uint64_t v) { return uint32_t((v * kEachByte) >> 56); }
+
+}  // namespace
+
+void DeepFrame::applyBlockMarks(std::size_t b, const std::vector<uint8_t>& mask) {
+    const int bx = int(b % std::size_t(blocksX())) * kBlock;
+    const int by = int(b / std::size_t(blocksX())) * kBlock;
+    const std::size_t n = std::size_t(std::min(width, bx + kBlock) - bx);
+    uint32_t was[4] = {0, 0, 0, 0};  // Old states of the marked pixels (was[0] unused).
+    for (int y = by; y < std::min(height, by + kBlock); ++y) {
+        const std::size_t i = index(bx, y);
+        const uint8_t* m = mask.data() + i;
+        uint8_t* st = state.data() + i;
+        uint8_t* f = flags.data() + i;
+        if (n == 8) {
+            // A block row is eight bytes of each buffer: all eight pixels at once, each byte a
+            // lane (states are <= kFinal, two bits; the flags' other bits pass through).
+            static_assert(kBlock == 8);
+            uint64_t m8, s8, f8;
+            std::memcpy(&m8, m, 8);
+            std::memcpy(&s8, st, 8);
+            std::memcpy(&f8, f, 8);
+            const uint64_t one = nonZeroBytes(m8), all = one * 0xff;
+            const uint64_t lo = s8 & one, hi = (s8 >> 1) & one;  // The marked pixels' states.
+            was[1] += sumOfBytes(lo & ~hi);
+            was[2] += sumOfBytes(hi & ~lo);
+            was[3] += sumOfBytes(lo & hi);
+            s8 &= ~all;
+            // Marked: markedStaleFlags; the others lose the overlay flag.
+            const uint64_t clear = kTracedLastUpdate * kEachByte | (all & kDeferredValid * kEachByte);
+            f8 = (f8 & ~clear) | (all & kTracedLastUpdate * kEachByte);
+            std::memcpy(st, &s8, 8);
+            std::memcpy(f, &f8, 8);
+            continue;
+        }
+        // A block cut by the frame's right edge: pixel by pixel.
+        for (std::size_t k = 0; k < n; ++k) {
+            if (m[k]) {
+                ++was[st[k] & 3];
+                st[k] = kStale;
+                f[k] = markedStaleFlags(f[k]);
+            } else {
+                f[k] = uint8_t(f[k] & ~kTracedLastUpdate);
+            }
+        }
+    }
+    // Marked pixels that were stale already leave the counts as they are.
+    const uint32_t moved = was[1] + was[2] + was[3];
+    if (moved == 0) return;
+    auto& counts = tileStates[std::size_t(tileOfBlock(b))];
+    for (int s = 1; s < 4; ++s) counts[std::size_t(s)] -= was[s];
+    counts[kStale] += moved;
 }
 
 void DeepFrame::markAllStale() {

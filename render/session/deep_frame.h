@@ -49,7 +49,8 @@ struct TileResult;
 ///
 /// Who writes what: resize() allocates; tiles write only through commit(), under the session's
 /// shared frame lock, each tile its own pixels; edits (the session's dirty marking) change
-/// only `state` and `flags`, under the exclusive lock. commit() keeps these invariants:
+/// only `state` and `flags`, through applyBlockMarks() or markAllStale(), under the exclusive
+/// lock. commit() keeps these invariants:
 /// - a result of another generation than the live one writes nothing;
 /// - `base` holds the centre sample of pixels at kBase or above when the scene supersamples
 ///   (only supersampling reads it), `sampleSum`/`sampleCount` the samples (zero below kBase);
@@ -139,6 +140,11 @@ struct DeepFrame {
         for (uint8_t k = 0; k < s && k < 4; ++k) n += counts[k];
         return n > 0;
     }
+    /// An edit's marks in block b: pixels whose entry of `mask` (one byte a pixel, row-major
+    /// like the frame) is set go stale, lose their deferred records and get the re-traced
+    /// overlay flag; the block's other pixels lose that flag. The tile's state counts follow,
+    /// updated once for the block.
+    void applyBlockMarks(std::size_t b, const std::vector<uint8_t>& mask);
     /// Every pixel goes stale (an edit that changes everything): loses its deferred records
     /// and gets the re-traced overlay flag; the counts follow.
     void markAllStale();

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 
 namespace rs {
 
@@ -283,21 +284,63 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
     return false;
 }
 
+/// Zeroes the pixels of `blocks` (block indices in increasing order) in a frame-sized byte
+/// buffer, row-major like `frame`: neighbouring blocks of a block row are cleared together,
+/// a pixel row at a time (a footprint's blocks come in long runs).
+void clearBlocks(std::vector<uint8_t>& v, const DeepFrame& frame, const std::vector<int>& blocks) {
+    const int B = DeepFrame::kBlock, bxs = frame.blocksX();
+    for (std::size_t k = 0; k < blocks.size();) {
+        const int first = blocks[k], row = first / bxs;
+        std::size_t e = k + 1;
+        while (e < blocks.size() && blocks[e] == blocks[e - 1] + 1 && blocks[e] / bxs == row) ++e;
+        const int x0 = (first % bxs) * B, x1 = std::min(frame.width, (blocks[e - 1] % bxs + 1) * B);
+        for (int y = row * B; y < std::min(frame.height, (row + 1) * B); ++y)
+            std::memset(v.data() + frame.index(x0, y), 0, std::size_t(x1 - x0));
+        k = e;
+    }
+}
+
+/// Sets the n bytes at p to 1: a whole block row in one store.
+void markRow(uint8_t* p, int n) {
+    if (n == DeepFrame::kBlock) {
+        constexpr uint64_t ones = 0x0101010101010101ull;
+        std::memcpy(p, &ones, sizeof ones);
+    } else {
+        std::memset(p, 1, std::size_t(n));
+    }
+}
+
+/// Makes `mask` an empty marking of `frame`: only the previous marking's blocks are cleared
+/// when it was for a frame of the same sides.
+void resetMask(DirtyMask& mask, const DeepFrame& frame) {
+    const std::size_t blockCount = std::size_t(frame.blocksX()) * std::size_t(frame.blocksY());
+    if (mask.width != frame.width || mask.height != frame.height ||
+        mask.pixels.size() != frame.pixelCount() || mask.touched.size() != blockCount) {
+        mask.width = frame.width;
+        mask.height = frame.height;
+        mask.pixels.assign(frame.pixelCount(), 0);
+        mask.touched.assign(blockCount, 0);
+    } else {
+        clearBlocks(mask.pixels, frame, mask.blocks);
+        for (const int b : mask.blocks) mask.touched[std::size_t(b)] = 0;
+    }
+    mask.blocks.clear();
+}
+
 }  // namespace
 
 std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
-                            const DeepFrame& frame, std::vector<uint8_t>& mask,
-                            std::vector<uint8_t>* touchedBlocks, MarkScope scope,
+                            const DeepFrame& frame, DirtyMask& mask, MarkScope scope,
                             MarkStats* stats) {
     const int w = frame.width, h = frame.height;
     if (stats) *stats = MarkStats{};
-    const std::size_t blockCount = std::size_t(frame.blocksX()) * std::size_t(frame.blocksY());
-    mask.assign(frame.pixelCount(), 0);
-    if (touchedBlocks) touchedBlocks->assign(blockCount, 0);
+    resetMask(mask, frame);
     if (edit.everything) {
-        std::fill(mask.begin(), mask.end(), 1);
-        if (touchedBlocks) touchedBlocks->assign(blockCount, 1);
-        return mask.size();
+        mask.blocks.resize(mask.touched.size());  // Before any mark is written.
+        for (std::size_t b = 0; b < mask.blocks.size(); ++b) mask.blocks[b] = int(b);
+        std::fill(mask.touched.begin(), mask.touched.end(), 1);
+        std::fill(mask.pixels.begin(), mask.pixels.end(), 1);
+        return mask.pixels.size();
     }
     if (!edit.traced()) return 0;
 
@@ -326,11 +369,15 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     const int blocksX = frame.blocksX(), blocksY = frame.blocksY(), blocks = blocksX * blocksY;
     const int B = DeepFrame::kBlock, T = frame.tileSize, perTile = T / B;
     std::vector<uint8_t> blockMarked(std::size_t(blocks), 0);
-    // Reused between edits; bound to a reference here because a thread_local named inside the
-    // worker lambdas would be each worker's own.
+    // The marks before growing. Reused between edits and zero between them: each marking
+    // clears the blocks it marked, not the frame. Bound to references here because a
+    // thread_local named inside the worker lambdas would be each worker's own.
     thread_local std::vector<uint8_t> coreBuffer;
+    thread_local bool coreBufferZero = false;  // False while a marking (or a throw) left marks.
     std::vector<uint8_t>& core = coreBuffer;
-    core.assign(mask.size(), 0);
+    bool& coreZero = coreBufferZero;
+    if (!coreZero || core.size() != mask.pixels.size()) core.assign(mask.pixels.size(), 0);
+    coreZero = false;
     std::atomic<std::size_t> blocksTested{0}, pixelsTested{0};
     parallelForIndex(0, frame.tilesX() * frame.tilesY(), [&](int t) {
         const int tx = t % frame.tilesX(), ty = t / frame.tilesX();
@@ -346,8 +393,7 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                 if (!tests.any()) continue;
                 if (tests.footprint && insideFootprint(c, r)) {
                     // Every pixel passes its first test: no need to ask each one.
-                    for (int y = r.y0; y < r.y1; ++y)
-                        std::fill_n(core.begin() + std::ptrdiff_t(frame.index(r.x0, y)), r.x1 - r.x0, uint8_t(1));
+                    for (int y = r.y0; y < r.y1; ++y) markRow(core.data() + frame.index(r.x0, y), r.x1 - r.x0);
                     blockMarked[std::size_t(b)] = kWhole;
                     continue;
                 }
@@ -376,17 +422,17 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
         for (int b = 0; b < blocks; ++b)
             if (near[std::size_t(b)]) nearBlocks.push_back(b);
     }
+    mask.blocks = std::move(nearBlocks);  // Before any mark is written (the mask's invariant).
     std::atomic<std::size_t> count{0}, pixelsGrown{0};
-    parallelForIndex(0, int(nearBlocks.size()), [&](int k) {
-        const int b = nearBlocks[std::size_t(k)];
+    parallelForIndex(0, int(mask.blocks.size()), [&](int k) {
+        const int b = mask.blocks[std::size_t(k)];
         const int bx = b % blocksX, by = b / blocksX;
-        if (touchedBlocks) (*touchedBlocks)[std::size_t(b)] = 1;
+        mask.touched[std::size_t(b)] = 1;
         std::size_t local = 0;
         const int y1 = std::min(h, (by + 1) * B), x1 = std::min(w, (bx + 1) * B);
         if (blockMarked[std::size_t(b)] == kWhole) {
             // Every pixel is marked itself, so its grown mark is too.
-            for (int y = by * B; y < y1; ++y)
-                std::fill_n(mask.begin() + std::ptrdiff_t(frame.index(bx * B, y)), x1 - bx * B, uint8_t(1));
+            for (int y = by * B; y < y1; ++y) markRow(mask.pixels.data() + frame.index(bx * B, y), x1 - bx * B);
             count += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
             return;
         }
@@ -396,16 +442,22 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                 for (int yy = std::max(0, y - 1); yy <= std::min(h - 1, y + 1) && !d; ++yy)
                     for (int xx = std::max(0, x - 1); xx <= std::min(w - 1, x + 1) && !d; ++xx)
                         d = core[frame.index(xx, yy)];
-                mask[frame.index(x, y)] = d;
+                mask.pixels[frame.index(x, y)] = d;
                 local += d;
             }
         }
         count += local;
         pixelsGrown += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
     });
+    // Only blocks with a mark wrote to `core`.
+    std::vector<int> markedBlocks;
+    for (int b = 0; b < blocks; ++b)
+        if (blockMarked[std::size_t(b)] != kNone) markedBlocks.push_back(b);
+    clearBlocks(core, frame, markedBlocks);
+    coreZero = true;
     if (stats) {
         stats->blocksTested = blocksTested.load();
-        stats->blocksGrown = nearBlocks.size();
+        stats->blocksGrown = mask.blocks.size();
         stats->pixelsTested = pixelsTested.load();
         stats->pixelsGrown = pixelsGrown.load();
     }

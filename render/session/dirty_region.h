@@ -5,6 +5,7 @@
 #include "session/scene_update.h"
 #include "snapshot/compiled_scene.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace rs {
@@ -42,18 +43,32 @@ struct MarkStats {
     std::size_t pixelsGrown = 0;
 };
 
-/// Sets mask[i] = 1 for every pixel `edit` can change, given the frame as it was traced under
-/// `before`: the old and new footprints, pixels whose ray tree met a mirror or glass, pixels
-/// showing a retinted object (any supersampled pixel, whose samples may have seen it), and,
-/// when shadows are traced, pixels whose shadow rays can cross
+/// An edit's marks, kept from one marking to the next so that each marking clears only the
+/// blocks the previous one wrote instead of the whole frame (a frame-sized clear per drag
+/// step was most of what marking cost when the edit reached a few blocks).
+struct DirtyMask {
+    int width = 0, height = 0;    ///< The frame the marks are for.
+    /// One byte a pixel, row-major like the frame: 1 where the edit may change the pixel.
+    /// Zero outside the blocks of `blocks`.
+    std::vector<uint8_t> pixels;
+    /// One byte an 8x8 block of the frame: 1 for the blocks in `blocks`.
+    std::vector<uint8_t> touched;
+    /// The blocks in which `pixels` may be non-zero, in increasing order.
+    std::vector<int> blocks;
+};
+
+/// Sets mask.pixels[i] = 1 for every pixel `edit` can change, given the frame as it was
+/// traced under `before`, and 0 for every other: the old and new footprints, pixels whose ray
+/// tree met a mirror or glass, pixels showing a retinted object (any supersampled pixel, whose
+/// samples may have seen it), and, when shadows are traced, pixels whose shadow rays can cross
 /// the old or new bounds. Grown by one pixel so adaptive supersampling decisions stay exact.
-/// Runs in parallel; returns the number of pixels marked. `touchedBlocks` (optional) gets 1
-/// for every 8x8 block in which the mask may be non-zero, so callers can skip the others.
+/// Runs in parallel; returns the number of pixels marked. mask.blocks gets every 8x8 block in
+/// which a mark may lie, so callers can skip the others; the previous marking's blocks are
+/// cleared first (the whole mask when it was for another frame size).
 /// Tiles are tested by their summaries first, then the blocks of those that pass: the work
 /// follows the edit's reach, not the frame's size (`stats`, optional, says how much).
 std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
-                            const DeepFrame& frame, std::vector<uint8_t>& mask,
-                            std::vector<uint8_t>* touchedBlocks = nullptr,
+                            const DeepFrame& frame, DirtyMask& mask,
                             MarkScope scope = MarkScope::All, MarkStats* stats = nullptr);
 
 }  // namespace rs

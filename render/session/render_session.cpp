@@ -4,7 +4,6 @@
 #include "core/parallel.h"
 
 #include "session/dirty_region.h"
-#include "session/edit_marks.h"
 #include "session/session_plan.h"
 
 #include <tbb/info.h>
@@ -222,8 +221,7 @@ std::size_t RenderSession::markEditLocked(const SceneEdit& traced) {
     if (edit.everything) {
         // Every pixel: no mask to build or read, one pass over the states and flags.
         frame_.markAllStale();
-        touchedBlocks_.assign(std::size_t(frame_.blocksX()) * std::size_t(frame_.blocksY()), 1);
-        lastTouchedBlocks_.swap(touchedBlocks_);
+        lastTouchedBlocks_.assign(std::size_t(frame_.blocksX()) * std::size_t(frame_.blocksY()), 1);
         stats_.lastMarkBlocksTested = stats_.lastMarkBlocksGrown = 0;
         return frame_.pixelCount();
     }
@@ -233,7 +231,7 @@ std::size_t RenderSession::markEditLocked(const SceneEdit& traced) {
                               (policy_.shadows == MovingShadows::Off ||
                                policy_.shadows == MovingShadows::Deferred);
     MarkStats markStats;
-    const std::size_t marked = markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, &touchedBlocks_,
+    const std::size_t marked = markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_,
                                                deferShadows ? MarkScope::WithoutShadows : MarkScope::All,
                                                &markStats);
     stats_.lastMarkBlocksTested = markStats.blocksTested;
@@ -249,12 +247,12 @@ std::size_t RenderSession::markEditLocked(const SceneEdit& traced) {
     }
     // Only blocks this edit or the previous one touched can change flags: the previous
     // edit's re-traced overlay is cleared, this edit's pixels go stale.
-    if (lastTouchedBlocks_.size() != touchedBlocks_.size())
-        lastTouchedBlocks_.assign(touchedBlocks_.size(), 1);
-    for (std::size_t b = 0; b < touchedBlocks_.size(); ++b) {
-        if (touchedBlocks_[b] || lastTouchedBlocks_[b]) applyBlockMarks(frame_, b, dirtyMask_);
+    const std::vector<uint8_t>& touched = dirtyMask_.touched;
+    if (lastTouchedBlocks_.size() != touched.size()) lastTouchedBlocks_.assign(touched.size(), 1);
+    for (std::size_t b = 0; b < touched.size(); ++b) {
+        if (touched[b] || lastTouchedBlocks_[b]) frame_.applyBlockMarks(b, dirtyMask_.pixels);
     }
-    lastTouchedBlocks_.swap(touchedBlocks_);
+    lastTouchedBlocks_ = touched;
     return marked;
 }
 
@@ -286,11 +284,10 @@ void RenderSession::markReleasedShadowsLocked() {
         std::unique_lock frameLock(frameMutex_);
         SceneEdit edit;
         edit.regions.swap(deferredShadowRegions_);
-        if (markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, &touchedBlocks_, MarkScope::ShadowsOnly) > 0) {
-            for (std::size_t b = 0; b < touchedBlocks_.size(); ++b) {
-                if (!touchedBlocks_[b]) continue;
-                frame_.forEachPixelOfBlock(b, [&](std::size_t i, int tile) {
-                    if (dirtyMask_[i] && frame_.state[i] >= kBase) {
+        if (markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, MarkScope::ShadowsOnly) > 0) {
+            for (const int b : dirtyMask_.blocks) {
+                frame_.forEachPixelOfBlock(std::size_t(b), [&](std::size_t i, int tile) {
+                    if (dirtyMask_.pixels[i] && frame_.state[i] >= kBase) {
                         frame_.setState(i, tile, kStale);
                         frame_.flags[i] = uint8_t(frame_.flags[i] & ~kDeferredValid);
                     }

@@ -4,6 +4,7 @@
 #include "core/thread_priority.h"
 #include "scene/document.h"
 #include "session/deep_frame.h"
+#include "session/dirty_region.h"
 #include "session/governor.h"
 #include "session/interaction_policy.h"
 #include "session/scene_update.h"
@@ -152,8 +153,7 @@ private:
     SceneUpdater updater_;
     std::shared_ptr<const CompiledScene> snapshot_;
     DeepFrame frame_;
-    std::vector<uint8_t> dirtyMask_;
-    std::vector<uint8_t> touchedBlocks_;      ///< Blocks the latest edit marked (scratch).
+    DirtyMask dirtyMask_;                     ///< The latest marking (kept: see DirtyMask).
     std::vector<uint8_t> lastTouchedBlocks_;  ///< Blocks whose overlay flags may be set.
     /// Regions of this interaction's edits whose shadow effects were left unmarked
     /// (MarkScope::WithoutShadows); endInteraction marks them.

@@ -6,7 +6,6 @@
 // filling their spans, with the state counts of pixels in every state, and the summaries of
 // blocks spans cover whole built from the block rays; an edit's marks applied to one block.
 #include "session/deep_frame.h"
-#include "session/edit_marks.h"
 #include "session/tile_output.h"
 
 #include <gtest/gtest.h>
@@ -366,7 +365,7 @@ TEST(FrameCommit, ApplyBlockMarks_MarkedPixelsGoStale_OthersLoseTheOverlay_Count
     std::vector<uint8_t> mask(f.pixelCount(), 0);
     for (std::size_t i = 0; i < mask.size(); i += 5) mask[i] = 1;  // also outside the block
     const std::size_t block = 1 * std::size_t(f.blocksX()) + 2;  // pixels x 16..23, y 8..15
-    applyBlockMarks(f, block, mask);
+    f.applyBlockMarks(block, mask);
     std::array<uint32_t, 4> want = before.tileStates[0];
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
@@ -389,6 +388,43 @@ TEST(FrameCommit, ApplyBlockMarks_MarkedPixelsGoStale_OthersLoseTheOverlay_Count
     EXPECT_EQ(f.tileStates[0], want);
     EXPECT_EQ(f.tileStates[1], before.tileStates[1]);
     EXPECT_TRUE(f.summariesMatchPixels());
+}
+
+// Every block of a frame whose sides are not whole blocks (the right-hand blocks are cut), with
+// every state and flag combination and marks of any non-zero value (eight pixels of a block row
+// go at once): the same states, flags and counts as the rule applied pixel by pixel.
+TEST(FrameCommit, ApplyBlockMarks_AnyMarkValueAndCutBlocks_AsPixelByPixel) {
+    DeepFrame f;
+    f.resize(45, 37);
+    std::vector<uint8_t> mask(f.pixelCount(), 0);
+    uint32_t h = 12345;
+    auto next = [&h] { return h = h * 1664525u + 1013904223u, h >> 8; };
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x) {
+            const std::size_t i = f.index(x, y);
+            f.setState(i, f.tileOf(x, y), uint8_t(next() % 4));
+            f.flags[i] = uint8_t(next() & 15);
+            mask[i] = next() % 3 == 0 ? 0 : uint8_t(1u << (next() % 8));  // 1, 2, ..., 128
+        }
+    const DeepFrame before = f;
+    for (std::size_t b = 0; b < std::size_t(f.blocksX() * f.blocksY()); ++b) f.applyBlockMarks(b, mask);
+    std::size_t marked = 0;
+    for (std::size_t i = 0; i < f.pixelCount(); ++i) {
+        SCOPED_TRACE("pixel " + std::to_string(i));
+        if (mask[i]) {
+            ++marked;
+            EXPECT_EQ(f.state[i], kStale);
+            EXPECT_EQ(f.flags[i], markedStaleFlags(before.flags[i]));
+        } else {
+            EXPECT_EQ(f.state[i], before.state[i]);
+            EXPECT_EQ(f.flags[i], uint8_t(before.flags[i] & ~kTracedLastUpdate));
+        }
+    }
+    ASSERT_GT(marked, f.pixelCount() / 2);
+    std::vector<std::array<uint32_t, 4>> counts(f.tileStates.size(), std::array<uint32_t, 4>{});
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x) ++counts[std::size_t(f.tileOf(x, y))][f.state[f.index(x, y)]];
+    EXPECT_EQ(f.tileStates, counts);  // the tile counts follow the states
 }
 
 }  // namespace
