@@ -104,7 +104,8 @@ void Viewport::setRepaintPacing(const RepaintPacing& pacing) {
 }
 
 bool Viewport::interacting() const {
-    return gesture_.has_value() || drag_ == Drag::Object || drag_ == Drag::Orbit || drag_ == Drag::Pan;
+    return gesture_.has_value() || drag_ == Drag::Object || drag_ == Drag::Orbit ||
+           drag_ == Drag::Pan;
 }
 
 void Viewport::showNewPixels() {

@@ -32,7 +32,7 @@ private Q_SLOTS:
     void exposureEdit_ChangesShownImageAndExport_UndoRestoresThem();
     void toneMapEdit_ChangesShownImage_UndoRestoresIt();
     void repaintPacing_StillAtItsPace_InteractionInputAndPassEndsAtOnce();
-    void stillFrame_TilesWaitForThePace_TheEndOfThePassIsShownAtOnce_AndEqualsTheSessions();
+    void stillFrame_TilesWaitForThePace_ThePassEndShowsThemAtOnce();
     void interaction_EveryHandoverTakenAtOnce();
 
 private:
@@ -336,7 +336,7 @@ void DisplayTest::repaintPacing_StillAtItsPace_InteractionInputAndPassEndsAtOnce
     QCOMPARE(p.delay(1265), int64_t(79));  // 250 ms after the input: still again.
 }
 
-void DisplayTest::stillFrame_TilesWaitForThePace_TheEndOfThePassIsShownAtOnce_AndEqualsTheSessions() {
+void DisplayTest::stillFrame_TilesWaitForThePace_ThePassEndShowsThemAtOnce() {
     MainWindow& w = *window_;
     Viewport* v = w.viewport();
     const ObjectId blue = idOf(w, "blue ball");
