@@ -17,6 +17,7 @@
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rs::ui {
@@ -49,6 +50,15 @@ Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* par
     resizeSettle_.setInterval(kResizeSettleMs);
     connect(&resizeSettle_, &QTimer::timeout, this, &Viewport::postView);
     connect(session_, &SessionController::frameUpdated, this, &Viewport::showNewPixels);
+    // A still frame's tiles wait for the pace; the end of a pass is shown at once.
+    paceClock_.start();
+    paceTimer_.setSingleShot(true);
+    connect(&paceTimer_, &QTimer::timeout, this, &Viewport::showNewPixels);
+    connect(session_, &SessionController::passFinished, this, [this](const PassInfo& info) {
+        if (info.cancelled) return;
+        pacing_.passCompleted();
+        showNewPixels();
+    });
     connect(editor_, &SceneEditor::selectionChanged, this, &Viewport::redraw);
     connect(editor_, &SceneEditor::documentReset, this, &Viewport::onDocumentReset);
     connect(editor_, &SceneEditor::documentChanged, this, &Viewport::onDocumentChanged);
@@ -83,13 +93,35 @@ void Viewport::setViewMode(ViewMode mode) {
 void Viewport::refresh() {
     const QSize before = frame_ ? QSize(frame_->width, frame_->height) : QSize();
     frame_ = session_->displayFrame();
+    pacing_.handedOver(paceClock_.elapsed());
     showHandedOver(before);
 }
 
+void Viewport::setRepaintPacing(const RepaintPacing& pacing) {
+    pacing_ = pacing;
+    pacing_.handedOver(paceClock_.elapsed());
+    paceTimer_.stop();
+}
+
+bool Viewport::interacting() const {
+    return gesture_.has_value() || drag_ == Drag::Object || drag_ == Drag::Orbit ||
+           drag_ == Drag::Pan;
+}
+
 void Viewport::showNewPixels() {
+    pacing_.setInteracting(interacting());
+    if (const int64_t wait = pacing_.delay(paceClock_.elapsed()); wait > 0) {
+        // Tiles that come meanwhile are all in the one hand-over the timer brings.
+        if (!paceTimer_.isActive()) paceTimer_.start(int(std::min<int64_t>(wait, 1 << 30)));
+        return;
+    }
+    paceTimer_.stop();
     const QSize before = frame_ ? QSize(frame_->width, frame_->height) : QSize();
     const uint64_t serial = frame_ ? frame_->serial : 0;
+    const int busy = session_->handoverStats().busy;
     frame_ = session_->displayFrame(SessionController::FrameWait::TryOnly);
+    // A busy lock brings frameUpdated again shortly (the pass's end still pending then).
+    if (session_->handoverStats().busy == busy) pacing_.handedOver(paceClock_.elapsed());
     if (frame_->serial != serial) showHandedOver(before);  // Else the lock was busy, or nothing new.
 }
 
@@ -368,6 +400,7 @@ void Viewport::finishBox(const QRect& box, bool add) {
 }
 
 void Viewport::wheelEvent(QWheelEvent* e) {
+    pacing_.input(paceClock_.elapsed());  // More steps may follow: show them as they come.
     Camera c = viewCamera_;
     dolly(c, e->angleDelta().y() / 120.0f * 0.1f);
     setView(c);

@@ -11,7 +11,9 @@
 #include "scene/document.h"
 #include "transform_gizmo.h"
 #include "view_projection.h"
+#include "viewport_pacing.h"
 
+#include <QElapsedTimer>
 #include <QPoint>
 #include <QRegion>
 #include <QTimer>
@@ -59,6 +61,9 @@ public:
     QPoint widgetPointOf(int x, int y) const;
     /// Copies the session's frame (waiting for its lock) and redraws.
     void refresh();
+    /// Replaces the hand-over pace (tests slow a still frame's to an hour), counting the
+    /// frame shown now as just handed over.
+    void setRepaintPacing(const RepaintPacing& pacing);
 
     // View camera: navigation moves it, never the document (Blender's model).
     /// The camera the viewport looks through.
@@ -123,8 +128,11 @@ private:
     void finishDrag(bool cancel);
     Vec3 dragPoint(const QPoint& pos) const;
     void redraw();
-    /// frameUpdated: copies what the session committed if its frame lock is free, and draws.
+    /// frameUpdated: copies what the session committed if its frame lock is free, and draws;
+    /// while the frame is still, at pacing_'s pace (paceTimer_ brings the rest).
     void showNewPixels();
+    /// A drag, orbit, pan or gesture is running: every hand-over is taken.
+    bool interacting() const;
     /// Shows frame_ after a hand-over that may have changed its size.
     void showHandedOver(const QSize& before);
     /// Puts `view` in the layout, with the overlay drawn by it or over it.
@@ -175,6 +183,9 @@ private:
     QRectF outputShown_;    ///< The passepartout's output frame then.
     std::shared_ptr<const DisplayFrame> frame_;
     ViewMode mode_ = ViewMode::Color;
+    RepaintPacing pacing_;
+    QElapsedTimer paceClock_;  ///< pacing_'s clock.
+    QTimer paceTimer_;         ///< A still frame's next hand-over.
 
     Camera viewCamera_;
     bool throughScene_ = true;

@@ -74,9 +74,12 @@ uint8_t encode8(float d) {
 struct Srgb8Steps {
     static constexpr uint32_t kOne = 0x3f800000u;  // 1.0f, code 255.
     static constexpr int kBucketShift = 16;          // buckets of 2^16 patterns: 1/128 apart
-    float at[255];
+    /// at[255] is above every input: code 255 has no step after it.
+    float at[256];
     /// The code of each bucket's first pattern. Within a bucket (a relative width of 1/128)
-    /// the code rises by at most one, so code() takes one or two compares.
+    /// the code rises by at most one (sRGB's slope falls slower than the buckets narrow
+    /// towards 0: a code step is 2.3 buckets wide at 1, wider below), so code() takes one
+    /// compare, without a branch (the viewport tone-maps every pixel it shows on the GUI thread).
     uint8_t bucketStart[(kOne >> kBucketShift) + 1];
     Srgb8Steps() {
         uint32_t lo = 0;  // encode8 of every pattern below lo is < k.
@@ -91,6 +94,7 @@ struct Srgb8Steps {
             }
             at[k - 1] = std::bit_cast<float>(lo);
         }
+        at[255] = 2.0f;
         int code = 0;
         for (uint32_t b = 0; b <= (kOne >> kBucketShift); ++b) {
             const float first = std::bit_cast<float>(b << kBucketShift);
@@ -102,9 +106,8 @@ struct Srgb8Steps {
     /// code of d's bucket (-0.0 is bucket 0).
     uint8_t code(float d) const {
         const uint32_t bits = std::min(std::bit_cast<uint32_t>(d) & 0x7fffffffu, kOne);
-        int i = bucketStart[bits >> kBucketShift];
-        while (i < 255 && at[i] <= d) ++i;
-        return uint8_t(i);
+        const int i = bucketStart[bits >> kBucketShift];
+        return uint8_t(i + int(at[i] <= d));
     }
 };
 
@@ -135,14 +138,30 @@ void toDisplay8(const Color& hdr, ToneMap op, float exposure, uint8_t rgb[3]) {
     toDisplay8(&hdr, 1, op, exposure, rgb);
 }
 
-void toDisplay8(const Color* hdr, std::size_t count, ToneMap op, float exposure, uint8_t* rgb) {
-    const float gain = std::exp2(exposure);
+namespace {
+
+/// toDisplay8's row loop for one operator (chosen once a row, not per pixel).
+template <ToneMap Op>
+void toDisplay8Row(const Color* hdr, std::size_t count, float gain, uint8_t* rgb) {
     const Srgb8Steps& steps = srgb8Steps();
     for (std::size_t i = 0; i < count; ++i) {
         // toneMap stays in [0, 1] (NaN sanitised), the table's domain.
-        const Color d = toneMapGain(hdr[i], op, gain);
+        const Color d = toneMapGain(hdr[i], Op, gain);
         for (int c = 0; c < 3; ++c) rgb[3 * i + std::size_t(c)] = steps.code(d[c]);
     }
+}
+
+}  // namespace
+
+void toDisplay8(const Color* hdr, std::size_t count, ToneMap op, float exposure, uint8_t* rgb) {
+    const float gain = std::exp2(exposure);
+    switch (op) {
+        case ToneMap::Clamp: return toDisplay8Row<ToneMap::Clamp>(hdr, count, gain, rgb);
+        case ToneMap::Linear: return toDisplay8Row<ToneMap::Linear>(hdr, count, gain, rgb);
+        case ToneMap::Reinhard: return toDisplay8Row<ToneMap::Reinhard>(hdr, count, gain, rgb);
+        case ToneMap::Aces: return toDisplay8Row<ToneMap::Aces>(hdr, count, gain, rgb);
+    }
+    toDisplay8Row<ToneMap::Clamp>(hdr, count, gain, rgb);
 }
 
 }  // namespace rs

@@ -10,6 +10,7 @@
 
 #include "gui_test_support.h"
 #include "raster_frame_view.h"
+#include "viewport_pacing.h"
 #include "scene_edits.h"
 
 using namespace rs;
@@ -30,6 +31,9 @@ private Q_SLOTS:
     void handover_WhileTheFrameLockIsHeld_ReturnsAtOnce_AndCatchesUpAfter();
     void exposureEdit_ChangesShownImageAndExport_UndoRestoresThem();
     void toneMapEdit_ChangesShownImage_UndoRestoresIt();
+    void repaintPacing_StillAtItsPace_InteractionInputAndPassEndsAtOnce();
+    void stillFrame_TilesWaitForThePace_ThePassEndShowsThemAtOnce();
+    void interaction_EveryHandoverTakenAtOnce();
 
 private:
     QImage shownImage() const;
@@ -307,6 +311,79 @@ void DisplayTest::toneMapEdit_ChangesShownImage_UndoRestoresIt() {
     w.editor()->undoStack()->undo();
     QTRY_COMPARE(w.viewport()->frame()->tonemap, ToneMap::Clamp);
     QCOMPARE(shownImage(), before);
+}
+
+void DisplayTest::repaintPacing_StillAtItsPace_InteractionInputAndPassEndsAtOnce() {
+    RepaintPacing p(80, 250);
+    QCOMPARE(p.delay(1000), int64_t(0));  // Nothing shown yet: at once.
+    p.handedOver(1000);
+    QCOMPARE(p.delay(1000), int64_t(80));  // Still: the next look waits for the pace.
+    QCOMPARE(p.delay(1030), int64_t(50));
+    QCOMPARE(p.delay(1080), int64_t(0));
+    QCOMPARE(p.delay(5000), int64_t(0));  // After a quiet spell, an edit's first tiles at once.
+    p.passCompleted();
+    QCOMPARE(p.delay(1010), int64_t(0));  // The end of a pass at once,
+    p.handedOver(1010);
+    QCOMPARE(p.delay(1020), int64_t(70));  // and only once.
+    p.setInteracting(true);
+    QCOMPARE(p.delay(1020), int64_t(0));  // A drag or an orbit: every look at once.
+    p.setInteracting(false);
+    QCOMPARE(p.delay(1020), int64_t(70));
+    p.input(1015);  // A wheel step: its followers as they come, for the quiet time.
+    QCOMPARE(p.delay(1020), int64_t(0));
+    QCOMPARE(p.delay(1264), int64_t(0));
+    p.handedOver(1264);
+    QCOMPARE(p.delay(1265), int64_t(79));  // 250 ms after the input: still again.
+}
+
+void DisplayTest::stillFrame_TilesWaitForThePace_ThePassEndShowsThemAtOnce() {
+    MainWindow& w = *window_;
+    Viewport* v = w.viewport();
+    const ObjectId blue = idOf(w, "blue ball");
+    // A still frame's pace of an hour: only the end of a pass can hand its tiles over.
+    v->setRepaintPacing(RepaintPacing(3600 * 1000, 0));
+    const uint64_t shownSerial = v->frame()->serial;
+    SceneDocument doc = w.editor()->document();
+    moveBy(doc, blue, Vec3(0.3f, 0.0f, 0.0f));
+    w.editor()->edit(QStringLiteral("Move object"), std::move(doc));
+    w.session()->flushUpdate();
+    // The edit's tiles are committed; their passes' ends are queued (no event loop ran).
+    QVERIFY(w.session()->session().waitUntilComplete(std::chrono::seconds(60)));
+    // The controller offers new pixels (as its repaint timer does): a still frame waits.
+    Q_EMIT w.session()->frameUpdated();
+    QCOMPARE(v->frame()->serial, shownSerial);
+    // The queued end of the pass is shown at once, long before the hour; it ends equal to
+    // the session's frame, and the raster view to shading all of it.
+    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    QTRY_VERIFY(v->frame()->serial != shownSerial && sameBits(v->frame()->color, full.color));
+    QVERIFY(sameBits(v->frame()->id, full.id));
+    QVERIFY(sameBits(v->frame()->depth, full.depth));
+    QVERIFY(sameBits(v->frame()->flags, full.flags));
+    const QImage expected = viewportImage(full, ViewMode::Color, w.editor()->selectedIds());
+    QCOMPARE(shownImage(), expected.convertToFormat(QImage::Format_RGB888));
+}
+
+void DisplayTest::interaction_EveryHandoverTakenAtOnce() {
+    MainWindow& w = *window_;
+    Viewport* v = w.viewport();
+    const ObjectId blue = idOf(w, "blue ball");
+    v->setRepaintPacing(RepaintPacing(3600 * 1000, 0));
+    const uint64_t shownSerial = v->frame()->serial;
+    SceneDocument doc = w.editor()->document();
+    moveBy(doc, blue, Vec3(0.3f, 0.0f, 0.0f));
+    w.editor()->edit(QStringLiteral("Move object"), std::move(doc));
+    w.session()->flushUpdate();
+    QVERIFY(w.session()->session().waitUntilComplete(std::chrono::seconds(60)));
+    // The right button held on the viewport: an orbit runs (the press handed nothing over).
+    const QPoint centre = v->rect().center();
+    QTest::mousePress(v, Qt::RightButton, {}, centre);
+    QCOMPARE(v->frame()->serial, shownSerial);
+    Q_EMIT w.session()->frameUpdated();
+    QVERIFY(v->frame()->serial != shownSerial);
+    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    QVERIFY(sameBits(v->frame()->color, full.color));
+    QTest::mouseRelease(v, Qt::RightButton, {}, centre);
+    QVERIFY(settle(w));
 }
 
 QTEST_MAIN(DisplayTest)

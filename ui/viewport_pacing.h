@@ -1,0 +1,52 @@
+// When the viewport takes the session's new pixels: at once while the user drags, orbits or
+// turns the wheel, at a slower pace while the frame is still, and at once when a pass ends.
+#pragma once
+
+#include <cstdint>
+
+namespace rs::ui {
+
+/// Hand-over pacing of the viewport. On two cores the GUI thread's hand-over, tone mapping and
+/// painting run ahead of the session's tracers (which sit below it): while nobody looks at the
+/// frame move, showing it at the display's 60 Hz as its tiles come in only takes cores from the
+/// tracers. A still frame is shown at most every `stillIntervalMs` (its first tiles at once);
+/// while the user interacts, or within `inputQuietMs` of a discrete input such as a wheel step,
+/// every hand-over the controller offers is taken; a pass that completes is shown at once.
+/// Times are milliseconds on one steady clock of the caller's (no clock is read here).
+class RepaintPacing {
+public:
+    /// 12.5 hand-overs a second while still.
+    static constexpr int kStillIntervalMs = 80;
+    /// A wheel step's view changes keep coming for about this long after it.
+    static constexpr int kInputQuietMs = 250;
+
+    explicit RepaintPacing(int stillIntervalMs = kStillIntervalMs,
+                           int inputQuietMs = kInputQuietMs)
+        : interval_(stillIntervalMs), quiet_(inputQuietMs) {}
+
+    /// A drag, orbit, pan or gesture holds the mouse (on) or has ended (off).
+    void setInteracting(bool on) { interacting_ = on; }
+    /// A discrete input that changes the view at `nowMs` (a wheel step).
+    void input(int64_t nowMs) { lastInput_ = nowMs; }
+    /// A pass completed: its last tiles are handed over at once.
+    void passCompleted() { completion_ = true; }
+    /// A hand-over succeeded at `nowMs`.
+    void handedOver(int64_t nowMs) {
+        lastHandOver_ = nowMs;
+        completion_ = false;
+    }
+
+    /// How long new pixels that arrive at `nowMs` wait before they are handed over (0: now).
+    int64_t delay(int64_t nowMs) const;
+
+private:
+    int interval_;
+    int quiet_;
+    bool interacting_ = false;
+    bool completion_ = false;
+    static constexpr int64_t kNever = INT64_MIN;
+    int64_t lastInput_ = kNever;
+    int64_t lastHandOver_ = kNever;
+};
+
+}  // namespace rs::ui
