@@ -31,8 +31,17 @@ public:
     /// Picks the least-reduced level whose predicted frame time meets `targetMs`, or the
     /// cheapest level when none does.
     int choose(const InteractionPolicy& base, std::size_t stalePixels, double targetMs) const;
-    /// Feeds back a measured interactive frame at `level`.
+    /// Predicted ms of a pass at `level` over `stalePixels` (what choose compares).
+    double predictedMs(const InteractionPolicy& base, int level, std::size_t stalePixels) const;
+    /// Feeds back a measured interactive pass at `level`: a finished one, or one cut by an
+    /// edit, measured to the cut over the pixels it committed (a cut pass too slow for its
+    /// budget is what must move the governor down).
     void record(int level, double ms, std::size_t tracedPixels);
+    /// How long edits may wait for a running interactive pass predicted to take
+    /// `predictedMs` against a budget of `budgetMs` (frame target `targetMs`): the target when
+    /// it is predicted to end within the budget, else 0 (the next edit cuts it). A pass that
+    /// finishes shows a whole frame; restarting on every mouse move shows a part of one.
+    static double holdMs(double predictedMs, double budgetMs, double targetMs);
     /// Sets the cost of a full-quality pixel (ms), which predicts the levels not measured yet.
     void calibrate(double msPerFullQualityPixel);
     /// Predicted ms per traced pixel of `level` under `base`: measured, else calibrated.

@@ -68,6 +68,8 @@ bool RenderSession::planLocked(Plan& plan) {
                 std::max(0.0, 0.9 * policy_.governorTargetMs - stats_.lastUpdateMs -
                                   stats_.lastInteractivePass.planMs);
             plan.governorLevel = governor_.choose(policy_, stale, budget);
+            plan.holdMs = Governor::holdMs(governor_.predictedMs(policy_, plan.governorLevel, stale),
+                                           budget, policy_.governorTargetMs);
             effective = Governor::policyForLevel(policy_, plan.governorLevel);
         }
         plan.options = effective.movingTraceOptions(settings, moving_);

@@ -90,5 +90,35 @@ TEST(Governor, AtTheDefaultTarget_ADragStaysFullQuality_AWholeFrameOnlyHalvesThe
     EXPECT_GE(g.choose(defaults, 1000000, defaults.governorTargetMs), 3);
 }
 
+TEST(Governor, EditsWaitOnlyForAPassPredictedWithinItsBudget) {
+    // What choose compares is what holdMs is given: a whole-frame pass at the level chosen.
+    Governor g;
+    g.calibrate(1e-4);
+    const InteractionPolicy defaults;
+    const double target = defaults.governorTargetMs;
+    const int level = g.choose(defaults, 1000000, 0.9 * target);
+    EXPECT_LE(g.predictedMs(defaults, level, 1000000), 0.9 * target);
+    EXPECT_DOUBLE_EQ(Governor::holdMs(g.predictedMs(defaults, level, 1000000), 0.9 * target, target),
+                     target);
+    // A pass expected to miss (no level meets the budget) is cut by the next edit.
+    const int cheapest = g.choose(defaults, 1000000, 0.001);
+    EXPECT_GT(g.predictedMs(defaults, cheapest, 1000000), 0.001);
+    EXPECT_EQ(Governor::holdMs(g.predictedMs(defaults, cheapest, 1000000), 0.001, target), 0.0);
+    // Without the governor nothing waits.
+    EXPECT_EQ(Governor::holdMs(0.0, 0.0, 0.0), 0.0);
+}
+
+TEST(Governor, PassesCutAfterTheirBudget_StepItDown) {
+    // An orbit at half resolution (level 2), predicted within 30 ms, is cut by the next edit
+    // after 33 ms with 40 % of its 250,000 pixels committed: 82 ms for the whole pass.
+    Governor g;
+    g.calibrate(1e-4);
+    const InteractionPolicy defaults;
+    ASSERT_EQ(g.choose(defaults, 1000000, 30.0), 2);
+    for (int cut = 0; cut < 3; ++cut) g.record(2, 33.0, 100000);
+    EXPECT_GT(g.predictedMs(defaults, 2, 1000000), 30.0);
+    EXPECT_GE(g.choose(defaults, 1000000, 30.0), 3);
+}
+
 }  // namespace
 }  // namespace rs
