@@ -78,8 +78,13 @@ void Governor::record(int level, double ms, std::size_t tracedPixels) {
     measured_[std::size_t(level)] = true;
 }
 
-double Governor::holdMs(double predictedMs, double budgetMs, double targetMs) {
-    return targetMs > 0.0 && predictedMs <= budgetMs ? targetMs : 0.0;
+double Governor::holdMs(bool wholeFrame, double predictedMs, double budgetMs, double targetMs) {
+    return wholeFrame && targetMs > 0.0 && predictedMs <= budgetMs ? targetMs : 0.0;
+}
+
+void Governor::recordCut(int level, double msToCut, double predictedMs, double plannedPixels) {
+    if (msToCut <= predictedMs || plannedPixels < 64.0) return;  // It might have finished in time.
+    record(level, msToCut, std::size_t(plannedPixels));
 }
 
 void Governor::calibrate(double msPerFullQualityPixel) {

@@ -33,15 +33,20 @@ public:
     int choose(const InteractionPolicy& base, std::size_t stalePixels, double targetMs) const;
     /// Predicted ms of a pass at `level` over `stalePixels` (what choose compares).
     double predictedMs(const InteractionPolicy& base, int level, std::size_t stalePixels) const;
-    /// Feeds back a measured interactive pass at `level`: a finished one, or one cut by an
-    /// edit, measured to the cut over the pixels it committed (a cut pass too slow for its
-    /// budget is what must move the governor down).
+    /// Feeds back a measured interactive pass at `level` that finished.
     void record(int level, double ms, std::size_t tracedPixels);
-    /// How long edits may wait for a running interactive pass predicted to take
-    /// `predictedMs` against a budget of `budgetMs` (frame target `targetMs`): the target when
-    /// it is predicted to end within the budget, else 0 (the next edit cuts it). A pass that
-    /// finishes shows a whole frame; restarting on every mouse move shows a part of one.
-    static double holdMs(double predictedMs, double budgetMs, double targetMs);
+    /// Feeds back a pass cut by an edit after `msToCut`, planned to trace `plannedPixels` in
+    /// `predictedMs`. Only a pass cut after its predicted time says something sure: the whole
+    /// pass costs more than `msToCut`, which is recorded as its cost (a lower bound). The
+    /// pixels it committed do not say it: the tiles in flight at the cut are lost.
+    void recordCut(int level, double msToCut, double predictedMs, double plannedPixels);
+    /// How long edits may wait for a running interactive pass over the whole frame predicted
+    /// to take `predictedMs` against a budget of `budgetMs` (frame target `targetMs`): the
+    /// target when it is predicted to end within the budget, else 0 (the next edit cuts it).
+    /// Such a pass that finishes shows a whole frame; restarting on every mouse move (an
+    /// orbit) shows a part of one. A pass over part of the frame (a drag) is cut at once: it
+    /// costs little, and the next one re-traces what the edit changed.
+    static double holdMs(bool wholeFrame, double predictedMs, double budgetMs, double targetMs);
     /// Sets the cost of a full-quality pixel (ms), which predicts the levels not measured yet.
     void calibrate(double msPerFullQualityPixel);
     /// Predicted ms per traced pixel of `level` under `base`: measured, else calibrated.

@@ -427,9 +427,9 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
             stats_.lastCancelLatencyMs =
                 std::chrono::duration<double, std::milli>(now - editTime_).count();
             if (plan.kind == PassKind::Interactive && passCutAt_ > passStart_)
-                governor_.record(plan.governorLevel,
-                                 std::chrono::duration<double, std::milli>(passCutAt_ - passStart_).count(),
-                                 info.tracedPixels);
+                governor_.recordCut(plan.governorLevel,
+                                    std::chrono::duration<double, std::milli>(passCutAt_ - passStart_).count(),
+                                    plan.predictedMs, plan.plannedPixels);
         } else {
             completedPassGeneration_ = std::max(completedPassGeneration_, plan.generation);
             if (plan.kind == PassKind::Interactive) {

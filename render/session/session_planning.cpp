@@ -68,9 +68,11 @@ bool RenderSession::planLocked(Plan& plan) {
                 std::max(0.0, 0.9 * policy_.governorTargetMs - stats_.lastUpdateMs -
                                   stats_.lastInteractivePass.planMs);
             plan.governorLevel = governor_.choose(policy_, stale, budget);
-            plan.holdMs = Governor::holdMs(governor_.predictedMs(policy_, plan.governorLevel, stale),
-                                           budget, policy_.governorTargetMs);
             effective = Governor::policyForLevel(policy_, plan.governorLevel);
+            plan.predictedMs = governor_.predictedMs(policy_, plan.governorLevel, stale);
+            plan.plannedPixels = Governor::tracedPixels(effective, stale);
+            plan.holdMs = Governor::holdMs(stale == frame_.pixelCount(), plan.predictedMs, budget,
+                                           policy_.governorTargetMs);
         }
         plan.options = effective.movingTraceOptions(settings, moving_);
         plan.step = effective.pixelStep();

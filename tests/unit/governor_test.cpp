@@ -90,32 +90,39 @@ TEST(Governor, AtTheDefaultTarget_ADragStaysFullQuality_AWholeFrameOnlyHalvesThe
     EXPECT_GE(g.choose(defaults, 1000000, defaults.governorTargetMs), 3);
 }
 
-TEST(Governor, EditsWaitOnlyForAPassPredictedWithinItsBudget) {
+TEST(Governor, EditsWaitOnlyForAWholeFramePassPredictedWithinItsBudget) {
     // What choose compares is what holdMs is given: a whole-frame pass at the level chosen.
     Governor g;
     g.calibrate(1e-4);
     const InteractionPolicy defaults;
     const double target = defaults.governorTargetMs;
     const int level = g.choose(defaults, 1000000, 0.9 * target);
-    EXPECT_LE(g.predictedMs(defaults, level, 1000000), 0.9 * target);
-    EXPECT_DOUBLE_EQ(Governor::holdMs(g.predictedMs(defaults, level, 1000000), 0.9 * target, target),
-                     target);
-    // A pass expected to miss (no level meets the budget) is cut by the next edit.
+    const double predicted = g.predictedMs(defaults, level, 1000000);
+    EXPECT_LE(predicted, 0.9 * target);
+    EXPECT_DOUBLE_EQ(Governor::holdMs(true, predicted, 0.9 * target, target), target);
+    // A drag's pass over part of the frame is cut by the next edit.
+    EXPECT_EQ(Governor::holdMs(false, predicted, 0.9 * target, target), 0.0);
+    // A pass expected to miss (no level meets the budget) is cut too.
     const int cheapest = g.choose(defaults, 1000000, 0.001);
     EXPECT_GT(g.predictedMs(defaults, cheapest, 1000000), 0.001);
-    EXPECT_EQ(Governor::holdMs(g.predictedMs(defaults, cheapest, 1000000), 0.001, target), 0.0);
+    EXPECT_EQ(Governor::holdMs(true, g.predictedMs(defaults, cheapest, 1000000), 0.001, target), 0.0);
     // Without the governor nothing waits.
-    EXPECT_EQ(Governor::holdMs(0.0, 0.0, 0.0), 0.0);
+    EXPECT_EQ(Governor::holdMs(true, 0.0, 0.0, 0.0), 0.0);
 }
 
-TEST(Governor, PassesCutAfterTheirBudget_StepItDown) {
-    // An orbit at half resolution (level 2), predicted within 30 ms, is cut by the next edit
-    // after 33 ms with 40 % of its 250,000 pixels committed: 82 ms for the whole pass.
+TEST(Governor, PassesCutAfterTheirPredictedTime_StepItDown_EarlierCutsSayNothing) {
+    // An orbit at half resolution (level 2), 250,000 pixels predicted in 11 ms.
     Governor g;
     g.calibrate(1e-4);
     const InteractionPolicy defaults;
     ASSERT_EQ(g.choose(defaults, 1000000, 30.0), 2);
-    for (int cut = 0; cut < 3; ++cut) g.record(2, 33.0, 100000);
+    const double predicted = g.predictedMs(defaults, 2, 1000000);
+    // Cut before it could have finished: no news, however few pixels it committed.
+    g.recordCut(2, 0.9 * predicted, predicted, 250000);
+    EXPECT_DOUBLE_EQ(g.predictedMs(defaults, 2, 1000000), predicted);
+    EXPECT_EQ(g.choose(defaults, 1000000, 30.0), 2);
+    // Cut unfinished after 40 ms: the pass costs more than the budget, the governor steps down.
+    for (int cut = 0; cut < 3; ++cut) g.recordCut(2, 40.0, predicted, 250000);
     EXPECT_GT(g.predictedMs(defaults, 2, 1000000), 30.0);
     EXPECT_GE(g.choose(defaults, 1000000, 30.0), 3);
 }
