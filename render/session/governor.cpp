@@ -82,11 +82,6 @@ double Governor::holdMs(bool wholeFrame, double predictedMs, double budgetMs, do
     return wholeFrame && targetMs > 0.0 && predictedMs <= budgetMs ? targetMs : 0.0;
 }
 
-void Governor::recordCut(int level, double msToCut, double predictedMs, double plannedPixels) {
-    if (msToCut <= predictedMs || plannedPixels < 64.0) return;  // It might have finished in time.
-    record(level, msToCut, std::size_t(plannedPixels));
-}
-
 void Governor::calibrate(double msPerFullQualityPixel) {
     msPerFullPixel_ = msPerFullQualityPixel;
 }

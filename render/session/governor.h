@@ -33,13 +33,10 @@ public:
     int choose(const InteractionPolicy& base, std::size_t stalePixels, double targetMs) const;
     /// Predicted ms of a pass at `level` over `stalePixels` (what choose compares).
     double predictedMs(const InteractionPolicy& base, int level, std::size_t stalePixels) const;
-    /// Feeds back a measured interactive pass at `level` that finished.
+    /// Feeds back a measured interactive pass at `level` that finished. Cut passes are not
+    /// fed back: measured (README, "Orbiting: passes that finish"), learning from them sent
+    /// drags and orbits down to the box proxy and made both slower.
     void record(int level, double ms, std::size_t tracedPixels);
-    /// Feeds back a pass cut by an edit after `msToCut`, planned to trace `plannedPixels` in
-    /// `predictedMs`. Only a pass cut after its predicted time says something sure: the whole
-    /// pass costs more than `msToCut`, which is recorded as its cost (a lower bound). The
-    /// pixels it committed do not say it: the tiles in flight at the cut are lost.
-    void recordCut(int level, double msToCut, double predictedMs, double plannedPixels);
     /// How long edits may wait for a running interactive pass over the whole frame predicted
     /// to take `predictedMs` against a budget of `budgetMs` (frame target `targetMs`): the
     /// target when it is predicted to end within the budget, else 0 (the next edit cuts it).

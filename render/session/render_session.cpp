@@ -130,7 +130,6 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
             // anyway. Tiles that commit before the scheduler applies this document are marked
             // with the rest.
             gen = ++generation_;
-            if (running_) passCutAt_ = now;
         }
         pendingDoc_ = std::move(*copy);  // A document not yet applied is dropped: the latest wins.
         pendingGeneration_ = gen;
@@ -426,10 +425,6 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         if (info.cancelled) {
             stats_.lastCancelLatencyMs =
                 std::chrono::duration<double, std::milli>(now - editTime_).count();
-            if (plan.kind == PassKind::Interactive && passCutAt_ > passStart_)
-                governor_.recordCut(plan.governorLevel,
-                                    std::chrono::duration<double, std::milli>(passCutAt_ - passStart_).count(),
-                                    plan.predictedMs, plan.plannedPixels);
         } else {
             completedPassGeneration_ = std::max(completedPassGeneration_, plan.generation);
             if (plan.kind == PassKind::Interactive) {

@@ -178,9 +178,8 @@ private:
     uint64_t completeGeneration_ = 0;
     bool completeValid_ = false;
     bool running_ = false;
-    /// The running pass: when it started, how long update() lets it finish (Plan::holdMs), and
-    /// when an update cut it (the governor learns from cut passes up to the cut).
-    std::chrono::steady_clock::time_point passStart_, passCutAt_;
+    /// The running pass: when it started and how long update() lets it finish (Plan::holdMs).
+    std::chrono::steady_clock::time_point passStart_;
     double passHoldMs_ = 0.0;
     std::chrono::steady_clock::time_point editTime_;
     SessionStats stats_;

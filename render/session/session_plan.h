@@ -45,8 +45,6 @@ struct RenderSession::Plan {
     /// How long edits posted while this pass runs wait for it instead of cutting it (0: they
     /// cut it at once); Governor::holdMs.
     double holdMs = 0.0;
-    double predictedMs = 0.0;    ///< The governor's prediction of this pass.
-    double plannedPixels = 0.0;  ///< Pixels it traces if it finishes (Governor::tracedPixels).
 
     /// Back to a default plan, keeping the tile list's storage.
     void reset() {

@@ -69,10 +69,9 @@ bool RenderSession::planLocked(Plan& plan) {
                                   stats_.lastInteractivePass.planMs);
             plan.governorLevel = governor_.choose(policy_, stale, budget);
             effective = Governor::policyForLevel(policy_, plan.governorLevel);
-            plan.predictedMs = governor_.predictedMs(policy_, plan.governorLevel, stale);
-            plan.plannedPixels = Governor::tracedPixels(effective, stale);
-            plan.holdMs = Governor::holdMs(stale == frame_.pixelCount(), plan.predictedMs, budget,
-                                           policy_.governorTargetMs);
+            plan.holdMs = Governor::holdMs(stale == frame_.pixelCount(),
+                                           governor_.predictedMs(policy_, plan.governorLevel, stale),
+                                           budget, policy_.governorTargetMs);
         }
         plan.options = effective.movingTraceOptions(settings, moving_);
         plan.step = effective.pixelStep();

@@ -110,22 +110,5 @@ TEST(Governor, EditsWaitOnlyForAWholeFramePassPredictedWithinItsBudget) {
     EXPECT_EQ(Governor::holdMs(true, 0.0, 0.0, 0.0), 0.0);
 }
 
-TEST(Governor, PassesCutAfterTheirPredictedTime_StepItDown_EarlierCutsSayNothing) {
-    // An orbit at half resolution (level 2), 250,000 pixels predicted in 11 ms.
-    Governor g;
-    g.calibrate(1e-4);
-    const InteractionPolicy defaults;
-    ASSERT_EQ(g.choose(defaults, 1000000, 30.0), 2);
-    const double predicted = g.predictedMs(defaults, 2, 1000000);
-    // Cut before it could have finished: no news, however few pixels it committed.
-    g.recordCut(2, 0.9 * predicted, predicted, 250000);
-    EXPECT_DOUBLE_EQ(g.predictedMs(defaults, 2, 1000000), predicted);
-    EXPECT_EQ(g.choose(defaults, 1000000, 30.0), 2);
-    // Cut unfinished after 40 ms: the pass costs more than the budget, the governor steps down.
-    for (int cut = 0; cut < 3; ++cut) g.recordCut(2, 40.0, predicted, 250000);
-    EXPECT_GT(g.predictedMs(defaults, 2, 1000000), 30.0);
-    EXPECT_GE(g.choose(defaults, 1000000, 30.0), 3);
-}
-
 }  // namespace
 }  // namespace rs
