@@ -126,12 +126,7 @@ bool Measurement::waitUntil(const std::function<bool()>& done, int timeoutMs) {
 /// Waits until the session's current generation is final and a paint has shown it.
 bool Measurement::waitFinalShown(Clock::time_point* shownAt) {
     SessionController* c = window_.session();
-    // A document that waits for the running pass has its generation only once applied: the
-    // one it was posted as counts.
-    const auto wanted = [&] {
-        return std::max<uint64_t>(c->session().generation(), posted_.empty() ? 0 : posted_.back().second);
-    };
-    if (!waitUntil([&] { return completed_ >= wanted(); }, 120000)) return false;
+    if (!waitUntil([&] { return completed_ >= c->session().generation(); }, 120000)) return false;
     const uint64_t serial = window_.viewport()->frame() ? window_.viewport()->frame()->serial : 0;
     window_.viewport()->frameView()->repaintOverlay();  // Paints again, whichever view.
     const bool ok = waitUntil(
@@ -193,7 +188,7 @@ bool Measurement::measureFullFrames(FullFrames& out) {
         const auto start = Clock::now();
         c->requestUpdate(doc);
         c->flushUpdate();
-        const uint64_t generation = posted_.back().second;
+        const uint64_t generation = c->session().generation();
         Clock::time_point shownAt;
         if (!waitFinalShown(&shownAt)) return false;
         double ms = 0.0;
@@ -370,7 +365,6 @@ int Measurement::run() {
     }
 
     const auto handover0 = controller->handoverStats();
-    const uint64_t held0 = controller->session().stats().heldUpdates;
     inputs_.assign(std::size_t(request_.frames) + 2, Input{});
     const auto t0 = Clock::now() + std::chrono::milliseconds(50);
     for (std::size_t i = 0; i < inputs_.size(); ++i)
@@ -426,7 +420,6 @@ int Measurement::run() {
         handovers > 0 ? (handover.copyMs - handover0.copyMs) / handovers : 0.0;
     o[QStringLiteral("handovers")] = handovers;
     o[QStringLiteral("handovers_busy")] = handover.busy - handover0.busy;
-    o[QStringLiteral("updates_held")] = int(controller->session().stats().heldUpdates - held0);
     o[QStringLiteral("release_to_final_shown_ms")] = msBetween(inputs_.back().due, finalShown);
     o[QStringLiteral("viewport_full_frame_ms")] = full.passMs;
     o[QStringLiteral("full_frame_to_shown_ms")] = full.shownMs;
@@ -456,11 +449,9 @@ int Measurement::run() {
         "  input to display     median %6.1f ms   p90 %6.1f ms   (%d edits, %d never shown)\n",
         num("latency_median_ms"), num("latency_p90_ms"), o[QStringLiteral("edits")].toInt(),
         o[QStringLiteral("edits_never_shown")].toInt());
-    std::printf("  interactive pass     median %6.1f ms   (%d passes, %d cancelled; %d updates "
-                "waited for their pass)\n",
+    std::printf("  interactive pass     median %6.1f ms   (%d passes, %d cancelled)\n",
                 num("interactive_pass_median_ms"), o[QStringLiteral("interactive_passes")].toInt(),
-                o[QStringLiteral("interactive_passes_cancelled")].toInt(),
-                o[QStringLiteral("updates_held")].toInt());
+                o[QStringLiteral("interactive_passes_cancelled")].toInt());
     std::printf("  governor level       median %4.0f (%s)   max %.0f\n", num("governor_level_median"),
                 Governor::levelName(int(num("governor_level_median"))), num("governor_level_max"));
     std::printf(

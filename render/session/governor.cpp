@@ -51,11 +51,6 @@ double Governor::predictedMsPerPixel(const InteractionPolicy& base, int level) c
     return msPerFullPixel_ * relativePixelCost(policyForLevel(base, level));
 }
 
-double Governor::predictedMs(const InteractionPolicy& base, int level,
-                             std::size_t stalePixels) const {
-    return tracedPixels(policyForLevel(base, level), stalePixels) * predictedMsPerPixel(base, level);
-}
-
 int Governor::choose(const InteractionPolicy& base, std::size_t stalePixels,
                      double targetMs) const {
     int cheapest = 0;
@@ -65,7 +60,8 @@ int Governor::choose(const InteractionPolicy& base, std::size_t stalePixels,
         if (level > 0 && p == previous) continue;  // Nothing more turned down.
         previous = p;
         cheapest = level;
-        if (predictedMs(base, level, stalePixels) <= targetMs) return level;
+        if (tracedPixels(p, stalePixels) * predictedMsPerPixel(base, level) <= targetMs)
+            return level;
     }
     return cheapest;
 }
@@ -76,10 +72,6 @@ void Governor::record(int level, double ms, std::size_t tracedPixels) {
     double& v = msPerPixel_[std::size_t(level)];
     v = measured_[std::size_t(level)] ? 0.7 * v + 0.3 * sample : sample;
     measured_[std::size_t(level)] = true;
-}
-
-double Governor::holdMs(bool wholeFrame, double predictedMs, double budgetMs, double targetMs) {
-    return wholeFrame && targetMs > 0.0 && predictedMs <= budgetMs ? targetMs : 0.0;
 }
 
 void Governor::calibrate(double msPerFullQualityPixel) {

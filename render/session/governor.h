@@ -31,19 +31,8 @@ public:
     /// Picks the least-reduced level whose predicted frame time meets `targetMs`, or the
     /// cheapest level when none does.
     int choose(const InteractionPolicy& base, std::size_t stalePixels, double targetMs) const;
-    /// Predicted ms of a pass at `level` over `stalePixels` (what choose compares).
-    double predictedMs(const InteractionPolicy& base, int level, std::size_t stalePixels) const;
-    /// Feeds back a measured interactive pass at `level` that finished. Cut passes are not
-    /// fed back: measured (README, "Orbiting: passes that finish"), learning from them sent
-    /// drags and orbits down to the box proxy and made both slower.
+    /// Feeds back a measured interactive frame at `level`.
     void record(int level, double ms, std::size_t tracedPixels);
-    /// How long edits may wait for a running interactive pass over the whole frame predicted
-    /// to take `predictedMs` against a budget of `budgetMs` (frame target `targetMs`): the
-    /// target when it is predicted to end within the budget, else 0 (the next edit cuts it).
-    /// Such a pass that finishes shows a whole frame; restarting on every mouse move (an
-    /// orbit) shows a part of one. A pass over part of the frame (a drag) is cut at once: it
-    /// costs little, and the next one re-traces what the edit changed.
-    static double holdMs(bool wholeFrame, double predictedMs, double budgetMs, double targetMs);
     /// Sets the cost of a full-quality pixel (ms), which predicts the levels not measured yet.
     void calibrate(double msPerFullQualityPixel);
     /// Predicted ms per traced pixel of `level` under `base`: measured, else calibrated.

@@ -119,21 +119,12 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
     uint64_t gen;
     {
         std::lock_guard lock(mutex_);
-        const auto now = std::chrono::steady_clock::now();
-        if (running_ && passHoldMs_ > 0.0 &&
-            std::chrono::duration<double, std::milli>(now - passStart_).count() < passHoldMs_) {
-            // The pass finishes first; the scheduler bumps the generation when it applies this.
-            gen = generation_.load() + 1;
-            ++stats_.heldUpdates;
-        } else {
-            // The bump alone stops running tiles; the old document's frame is out of date
-            // anyway. Tiles that commit before the scheduler applies this document are marked
-            // with the rest.
-            gen = ++generation_;
-        }
+        // The bump alone stops running tiles; the old document's frame is out of date anyway.
+        // Tiles that commit before the scheduler applies this document are marked with the rest.
+        gen = ++generation_;
         pendingDoc_ = std::move(*copy);  // A document not yet applied is dropped: the latest wins.
         pendingGeneration_ = gen;
-        editTime_ = now;
+        editTime_ = std::chrono::steady_clock::now();
         ++stats_.postedUpdates;
     }
     wake_.notify_all();
@@ -157,7 +148,6 @@ void RenderSession::applyPendingLocked(std::unique_lock<std::mutex>& lock) {
     SceneDocument doc = std::move(*pendingDoc_);
     pendingDoc_.reset();
     const uint64_t gen = pendingGeneration_;
-    if (generation_.load() < gen) generation_.store(gen);  // A document that waited for its pass.
     const auto start = std::chrono::steady_clock::now();
     applying_ = true;
     const std::shared_ptr<const CompiledScene> before = hasDocument_ ? snapshot_ : nullptr;
@@ -413,8 +403,6 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         const double planMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planStart).count();
         running_ = true;
-        passStart_ = std::chrono::steady_clock::now();
-        passHoldMs_ = plan.holdMs;
         lock.unlock();
         PassInfo info;
         execute(plan, info);

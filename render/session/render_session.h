@@ -38,7 +38,6 @@ struct SessionStats {
     double lastUpdateMs = 0.0;         ///< Diff, snapshot and dirty marking of the latest edit.
     uint64_t postedUpdates = 0;        ///< update() calls.
     uint64_t appliedUpdates = 0;       ///< Documents applied (posted ones coalesce).
-    uint64_t heldUpdates = 0;          ///< update() calls that let the running pass finish.
     /// How much of the frame the latest edit's marking looked at: blocks tested against their
     /// summaries, and blocks visited to grow the marks (both follow the edit, not the frame).
     std::size_t lastMarkBlocksTested = 0;
@@ -74,9 +73,7 @@ public:
     /// Posts `doc` and returns its generation at once: running tiles stop, and the scheduler
     /// thread diffs it against the document applied last, refits or rebuilds the snapshot and
     /// marks the pixels the edit can change. Documents posted while one is being applied
-    /// coalesce: only the latest is applied. A governed interactive pass predicted to end
-    /// within its budget is not stopped while it runs for less than the frame target: the
-    /// document waits for it (Governor::holdMs) and its generation begins when it is applied. Failures (a bad scene, bad_alloc) go to the
+    /// coalesce: only the latest is applied. Failures (a bad scene, bad_alloc) go to the
     /// observer's error(); the session keeps the document applied last.
     uint64_t update(const SceneDocument& doc);
     /// Waits until the document of `generation` (or a later one) is applied: snapshot() and
@@ -178,9 +175,6 @@ private:
     uint64_t completeGeneration_ = 0;
     bool completeValid_ = false;
     bool running_ = false;
-    /// The running pass: when it started and how long update() lets it finish (Plan::holdMs).
-    std::chrono::steady_clock::time_point passStart_;
-    double passHoldMs_ = 0.0;
     std::chrono::steady_clock::time_point editTime_;
     SessionStats stats_;
     SessionObserver* observer_ = nullptr;

@@ -42,9 +42,6 @@ struct RenderSession::Plan {
     bool adaptive = true;          ///< Supersample only where neighbours differ.
     std::vector<TileJob> tiles;
     int governorLevel = -1;
-    /// How long edits posted while this pass runs wait for it instead of cutting it (0: they
-    /// cut it at once); Governor::holdMs.
-    double holdMs = 0.0;
 
     /// Back to a default plan, keeping the tile list's storage.
     void reset() {

@@ -69,9 +69,6 @@ bool RenderSession::planLocked(Plan& plan) {
                                   stats_.lastInteractivePass.planMs);
             plan.governorLevel = governor_.choose(policy_, stale, budget);
             effective = Governor::policyForLevel(policy_, plan.governorLevel);
-            plan.holdMs = Governor::holdMs(stale == frame_.pixelCount(),
-                                           governor_.predictedMs(policy_, plan.governorLevel, stale),
-                                           budget, policy_.governorTargetMs);
         }
         plan.options = effective.movingTraceOptions(settings, moving_);
         plan.step = effective.pixelStep();

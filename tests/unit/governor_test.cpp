@@ -90,25 +90,5 @@ TEST(Governor, AtTheDefaultTarget_ADragStaysFullQuality_AWholeFrameOnlyHalvesThe
     EXPECT_GE(g.choose(defaults, 1000000, defaults.governorTargetMs), 3);
 }
 
-TEST(Governor, EditsWaitOnlyForAWholeFramePassPredictedWithinItsBudget) {
-    // What choose compares is what holdMs is given: a whole-frame pass at the level chosen.
-    Governor g;
-    g.calibrate(1e-4);
-    const InteractionPolicy defaults;
-    const double target = defaults.governorTargetMs;
-    const int level = g.choose(defaults, 1000000, 0.9 * target);
-    const double predicted = g.predictedMs(defaults, level, 1000000);
-    EXPECT_LE(predicted, 0.9 * target);
-    EXPECT_DOUBLE_EQ(Governor::holdMs(true, predicted, 0.9 * target, target), target);
-    // A drag's pass over part of the frame is cut by the next edit.
-    EXPECT_EQ(Governor::holdMs(false, predicted, 0.9 * target, target), 0.0);
-    // A pass expected to miss (no level meets the budget) is cut too.
-    const int cheapest = g.choose(defaults, 1000000, 0.001);
-    EXPECT_GT(g.predictedMs(defaults, cheapest, 1000000), 0.001);
-    EXPECT_EQ(Governor::holdMs(true, g.predictedMs(defaults, cheapest, 1000000), 0.001, target), 0.0);
-    // Without the governor nothing waits.
-    EXPECT_EQ(Governor::holdMs(true, 0.0, 0.0, 0.0), 0.0);
-}
-
 }  // namespace
 }  // namespace rs
