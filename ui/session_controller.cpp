@@ -120,14 +120,9 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - locked)
                 .count();
     };
-    // A hand-over that found the lock held once waits for it the next time: tile commits hold
-    // it shared for microseconds, but two tracers committing in turns kept most tries failing
-    // (a frame shown late or not at all while orbiting).
-    if (wait == FrameWait::Block || busyInARow_ > 0) {
+    if (wait == FrameWait::Block) {
         session_->withFrame(copy);
-        busyInARow_ = 0;
     } else if (!session_->tryWithFrame(copy)) {
-        ++busyInARow_;
         // Kept for the next look, which comes soon whether or not more tiles arrive.
         heldTiles_ = std::move(tiles);
         heldEverything_ = everything;

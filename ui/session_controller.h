@@ -126,7 +126,6 @@ private:
     ToneMap postedTonemap_ = ToneMap::Clamp;
     float postedExposure_ = 0.0f;
     HandoverStats handover_;
-    int busyInARow_ = 0;  ///< TryOnly hand-overs in a row that found the frame lock held.
     int updatesThisSecond_ = 0;
     double updatesPerSecond_ = 0.0;
     QTimer rateTimer_;
