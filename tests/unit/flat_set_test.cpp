@@ -247,14 +247,24 @@ TEST(FlatSet, CoherentGroupsGrazingOneOfManySpheresGetTheScalarAnswer) {
         Rays rays;
         for (int group = 0; group < 6; ++group) {
             const SphereShape& ball = balls[std::size_t(group) % balls.size()];
-            const Vec3 normal = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0, 0, 1e-3f));
-            const Vec3 tangent = glm::normalize(glm::cross(normal, Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f, 0, 0)));
+            Vec3 normal = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0, 0, 1e-3f));
+            Vec3 tangent = glm::normalize(glm::cross(normal, Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f, 0, 0)));
+            float spread = 1e-3f;
+            if (group % 2 == 0) {
+                // Along an axis, side by side: the box is then as thin as the segments, and
+                // touches the ball as closely as they do.
+                const int axis = int(std::abs(u(rng)) * 2.99f), off = (axis + 1 + group / 2 % 2) % 3;
+                tangent = normal = Vec3(0.0f);
+                tangent[axis] = u(rng) < 0.0f ? -1.0f : 1.0f;
+                normal[off] = u(rng) < 0.0f ? -1.0f : 1.0f;
+                spread = 0.0f;
+            }
             const Vec3 side = glm::cross(normal, tangent);
             const float back = 0.3f + std::abs(u(rng));
             for (int k = 0; k < 8; ++k) {
                 const float inside = 1.0f + 2e-5f * float(k - 4) + 1e-6f * u(rng);
-                const Vec3 touch = ball.center + ball.radius * inside * normal + 1e-3f * float(k) * side;
-                const Vec3 dir = glm::normalize(tangent + 1e-4f * u(rng) * side);
+                const Vec3 touch = ball.center + ball.radius * inside * normal + spread * float(k) * side;
+                const Vec3 dir = glm::normalize(tangent + 0.1f * spread * u(rng) * side);
                 const float length = k % 4 == 0 ? kInfinity : back * (1.0f + 0.5f * float(k % 4 - 2));
                 rays.add(Ray::make(touch - back * dir, dir), length);
             }
