@@ -116,6 +116,73 @@ inline I8 sphereHit(const Rays8& r, F8 a, const FlatView& v, int s, F8 tmax, Sph
     return nearHit | farHit;
 }
 
+/// Lane-wise a < b ? a : b and a > b ? a : b (one instruction each where there is one).
+inline F8 min8(F8 a, F8 b) {
+#if defined(RS_FLAT_AVX2)
+    return F8(_mm256_min_ps(__m256(a), __m256(b)));
+#else
+    return select(a < b, a, b);
+#endif
+}
+inline F8 max8(F8 a, F8 b) {
+#if defined(RS_FLAT_AVX2)
+    return F8(_mm256_max_ps(__m256(a), __m256(b)));
+#else
+    return select(a > b, a, b);
+#endif
+}
+/// The smallest and the largest lane of x, in every lane.
+inline F8 lowest(F8 x) {
+    x = min8(x, __builtin_shufflevector(x, x, 4, 5, 6, 7, 0, 1, 2, 3));
+    x = min8(x, __builtin_shufflevector(x, x, 2, 3, 0, 1, 6, 7, 4, 5));
+    return min8(x, __builtin_shufflevector(x, x, 1, 0, 3, 2, 5, 4, 7, 6));
+}
+inline F8 highest(F8 x) {
+    x = max8(x, __builtin_shufflevector(x, x, 4, 5, 6, 7, 0, 1, 2, 3));
+    x = max8(x, __builtin_shufflevector(x, x, 2, 3, 0, 1, 6, 7, 4, 5));
+    return max8(x, __builtin_shufflevector(x, x, 1, 0, 3, 2, 5, 4, 7, 6));
+}
+inline float magnitude(float x) { return x < 0.0f ? -x : x; }
+
+/// Spheres from this many on are culled for a group of rays before the lanes test them.
+constexpr int kCullFrom = 4;
+
+/// A conservative cull of the world spheres for eight rays: bit s set unless sphere s lies
+/// out of reach of the box around the rays' segments o + t d, t in [0, tend] (all of them,
+/// when a segment is not finite). A sphere the exact test could hit within (0, tend) meets
+/// that box, up to rounding about 1e-6 of the coordinates; the margins (`reach`, and 1e-4 of
+/// the box's own coordinates) are 100 times that, so a culled sphere is one the lanes
+/// would have missed in every lane, and skipping it leaves every bit of the answer as it was.
+inline unsigned sphereCandidates(const FlatView& v, const Rays8& r, F8 tend) {
+    const unsigned all = (1u << v.spheres) - 1u;  // at most FlatSet::kMaxShapes
+    if (v.spheres < kCullFrom) return all;
+    const F8 ex = r.ox + r.dx * tend, ey = r.oy + r.dy * tend, ez = r.oz + r.dz * tend;
+    // x - x is 0 exactly when x is finite (NaN for infinities and NaN).
+    if (bits(((ex - ex) == 0.0f) & ((ey - ey) == 0.0f) & ((ez - ez) == 0.0f)) != 0xffu) return all;
+    const F8 lox = lowest(min8(r.ox, ex)), hix = highest(max8(r.ox, ex));
+    const F8 loy = lowest(min8(r.oy, ey)), hiy = highest(max8(r.oy, ey));
+    const F8 loz = lowest(min8(r.oz, ez)), hiz = highest(max8(r.oz, ez));
+    const float corners[6] = {lox[0], hix[0], loy[0], hiy[0], loz[0], hiz[0]};
+    float size = 0.0f;
+    for (float c : corners) size = size < magnitude(c) ? magnitude(c) : size;
+    const F8 margin = splat(1e-4f * (1.0f + size)), zero = splat(0.0f);
+    unsigned keep = 0;
+    for (int s = 0; s < v.spheres; s += kLanes) {
+        const int lanes = v.spheres - s < kLanes ? v.spheres - s : kLanes;
+        const F8 cx = load8(v.cx, std::size_t(s), lanes), cy = load8(v.cy, std::size_t(s), lanes);
+        const F8 cz = load8(v.cz, std::size_t(s), lanes);
+        // How far each centre lies outside the box along each axis (0 inside; the box is
+        // not empty, so one of the two terms is 0).
+        const F8 gx = max8(lox - cx, zero) + max8(cx - hix, zero);
+        const F8 gy = max8(loy - cy, zero) + max8(cy - hiy, zero);
+        const F8 gz = max8(loz - cz, zero) + max8(cz - hiz, zero);
+        const F8 reach = load8(v.reach, std::size_t(s), lanes) + margin;
+        const unsigned out = bits((gx * gx + gy * gy + gz * gz) > reach * reach);
+        keep |= (~out & ((1u << lanes) - 1u)) << s;
+    }
+    return keep;
+}
+
 /// Closest hits of rays [first, first + 8): planes first in order, then spheres in order,
 /// each taken only when strictly nearer (so the first of equal hits wins, as in the scalar
 /// scans). The sphere normal is (f + offset d) / radius of the winner, as intersect() has it.
@@ -135,7 +202,9 @@ inline void closest8(const FlatView& v, const RayBatch& rays, std::size_t first,
         nz = select(m, splat(v.nz[j]), nz);
     }
     const F8 a = r.dx * r.dx + r.dy * r.dy + r.dz * r.dz;
-    for (int s = 0; s < v.spheres; ++s) {
+    // Segments end at the planes' hits: the spheres out of their reach cannot be nearer.
+    for (unsigned left = sphereCandidates(v, r, best); left; left &= left - 1) {
+        const int s = __builtin_ctz(left);
         SphereLanes h;
         const I8 m = sphereHit(r, a, v, s, best, h);
         if (!bits(m)) continue;
@@ -166,7 +235,8 @@ inline void any8(const FlatView& v, const RayBatch& rays, std::size_t first, uin
         for (int k = 0; k < r.lanes; ++k) blocked |= unsigned(occluded[first + std::size_t(k)] != 0) << k;
     if (blocked == all) return;
     const F8 a = r.dx * r.dx + r.dy * r.dy + r.dz * r.dz;
-    for (int s = 0; s < v.spheres && (blocked & all) != all; ++s) {
+    for (unsigned left = sphereCandidates(v, r, r.tmax); left && (blocked & all) != all; left &= left - 1) {
+        const int s = __builtin_ctz(left);
         SphereLanes h;
         blocked |= bits(sphereHit(r, a, v, s, r.tmax, h));
     }

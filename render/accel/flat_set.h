@@ -3,7 +3,9 @@
 // way. Planes and world spheres are tested eight rays at a time with the bits of the scalar
 // tests (intersect(PlaneShape), intersect(SphereShape)) lane by lane, so a batch and a single
 // ray agree exactly (AVX2 where the processor has it, chosen at run time; SSE2 otherwise);
-// boxes, rectangles and framed spheres go through intersectPrimitive ray by ray.
+// before its lanes, each group of eight rays drops the world spheres out of reach of the box
+// around its segments (a conservative cull: the answers keep their bits); boxes, rectangles
+// and framed spheres go through intersectPrimitive ray by ray.
 #pragma once
 
 #include "accel/primitive.h"
@@ -46,6 +48,8 @@ public:
     /// The shape tables, structure of arrays (read by the lane loops).
     struct Tables {
         std::vector<float> cx, cy, cz, radius, radius2;
+        /// Each world sphere's radius widened by its share of the cull's rounding margin.
+        std::vector<float> reach;
         std::vector<uint32_t> prim;  ///< Index into the primitives of each world sphere.
         std::vector<float> px, py, pz, nx, ny, nz;
         std::vector<float> lox, loy, loz, hix, hiy, hiz;  ///< Widened bounds of the others.

@@ -187,20 +187,31 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
         result.cancelled = !forEachTile(w, t0, t1, options, result.rays,
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
                 thread_local std::vector<int32_t> xs, ys;
-                thread_local std::vector<Vec3> origins, dirs;
+                thread_local std::vector<Vec3> columns, origins, dirs;
                 thread_local std::vector<uint32_t> seeds;
                 thread_local std::vector<Color> colors;
                 thread_local std::vector<PrimaryInfo> infos;
                 thread_local std::vector<ObjectId> tileIds;
                 if (cancelled()) return clearTile(x0, x1, y0, y1);
-                tilePixels(x0, y0, x1, y1, xs, ys, [](int, int) { return true; });
-                const std::size_t n = xs.size();
+                // The centre rays row by row (row-major, as tilePixels lists them), with what
+                // depends on the column alone or on the row alone worked out once.
+                const std::size_t width = std::size_t(x1 - x0);
+                const std::size_t n = width * std::size_t(y1 - y0);
+                columns.resize(width);
                 origins.resize(n), dirs.resize(n), seeds.resize(n), colors.resize(n);
-                for (std::size_t k = 0; k < n; ++k) {
-                    const Ray ray = camera.generateRay(float(xs[k]) + 0.5f, float(ys[k]) + 0.5f);
-                    origins[k] = ray.origin, dirs[k] = ray.dir;
-                    seeds[k] = pixelSeed(xs[k], ys[k], 0);
+                for (int x = x0; x < x1; ++x)
+                    columns[std::size_t(x - x0)] = camera.columnTerm(float(x) + 0.5f);
+                const uint32_t centreKey = hashKey(0u);
+                for (int y = y0; y < y1; ++y) {
+                    const std::size_t row = std::size_t(y - y0) * width;
+                    camera.rowRays(columns.data(), width, float(y) + 0.5f, origins.data() + row,
+                                   dirs.data() + row);
+                    const uint32_t rowKey = hashKey(uint32_t(y));
+                    for (int x = x0; x < x1; ++x)
+                        seeds[row + std::size_t(x - x0)] = pixelSeedKeyed(x, rowKey, centreKey);
                 }
+                if (spp > 1 && !adaptive)  // supersamplePixels takes the pixels as lists
+                    tilePixels(x0, y0, x1, y1, xs, ys, [](int, int) { return true; });
                 const CameraBatch centres{origins.data(), dirs.data(), seeds.data(), n, true};
                 bool done;
                 if (spp == 1 || adaptive) {
@@ -222,11 +233,13 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
                     }
                 }
                 if (!done) return clearTile(x0, x1, y0, y1);
-                for (std::size_t k = 0; k < n; ++k) {
-                    const std::size_t i = index(xs[k], ys[k]);
-                    result.image.pixels[i] = colors[k];
-                    if (!ids.empty()) ids[i] = infos[k].id;
-                    if (adaptive) normals[i] = infos[k].normal;
+                for (int y = y0; y < y1; ++y) {
+                    const std::size_t row = std::size_t(y - y0) * width, i = index(x0, y);
+                    std::copy_n(colors.data() + row, width, result.image.pixels.data() + i);
+                    if (!ids.empty())
+                        for (std::size_t k = 0; k < width; ++k) ids[i + k] = infos[row + k].id;
+                    if (adaptive)
+                        for (std::size_t k = 0; k < width; ++k) normals[i + k] = infos[row + k].normal;
                 }
                 if (options.tileDone) options.tileDone(result.image, x0, y0 - t0, x1, y1 - t0);
             });

@@ -95,6 +95,28 @@ struct TraceKernel::Level {
         seed[i] = s;
         owner[i] = who;
     }
+    /// Camera rays [begin, end) of `rays` as the level (weight 1; owner: index in `rays`;
+    /// seeds of 0 when `rays.seed` is null),
+    /// written field by field through local pointers.
+    void setCamera(const CameraBatch& rays, std::size_t begin, std::size_t end) {
+        const std::size_t n = end - begin;
+        reserve(n);
+        float *pox = ox.data(), *poy = oy.data(), *poz = oz.data();
+        float *pdx = dx.data(), *pdy = dy.data(), *pdz = dz.data();
+        for (std::size_t j = 0; j < n; ++j) {
+            const Vec3 &o = rays.origin[begin + j], &d = rays.dir[begin + j];
+            pox[j] = o.x, poy[j] = o.y, poz[j] = o.z;
+            pdx[j] = d.x, pdy[j] = d.y, pdz[j] = d.z;
+        }
+        std::fill_n(tmax.data(), n, kInfinity);
+        std::fill_n(weight.data(), n, 1.0f);
+        if (rays.seed)
+            std::copy_n(rays.seed + begin, n, seed.data());
+        else
+            std::fill_n(seed.data(), n, 0u);
+        for (std::size_t j = 0; j < n; ++j) owner[j] = uint32_t(begin + j);
+        count = n;
+    }
     void append(const Level& from, std::size_t begin, std::size_t end) {
         reserve(count + (end - begin));
         auto copy = [&](auto& to, const auto& src) {
@@ -245,16 +267,12 @@ bool TraceKernel::trace(const CameraBatch& rays, const TraceOutput& out, TraceCo
     thread_local Workspace ws;
     for (std::size_t start = 0; start < rays.count; start += kCameraChunk) {
         const std::size_t end = std::min(rays.count, start + kCameraChunk);
-        ws.ping.clear();
-        ws.ping.reserve(end - start);
-        for (std::size_t i = start; i < end; ++i) {
-            out.color[i] = Color(0.0f);
-            if (out.primary) out.primary[i] = PrimaryInfo{};
-            if (out.rays) out.rays[i] = 0;
-            if (out.records) out.records.clear(i);
-            if (out.segments) out.segments.clear(i);
-            ws.ping.push(rays.origin[i], rays.dir[i], 1.0f, rays.seed[i], uint32_t(i));
-        }
+        std::fill(out.color + start, out.color + end, Color(0.0f));
+        if (out.primary) std::fill(out.primary + start, out.primary + end, PrimaryInfo{});
+        if (out.rays) std::fill(out.rays + start, out.rays + end, 0u);
+        for (std::size_t i = start; out.records && i < end; ++i) out.records.clear(i);
+        for (std::size_t i = start; out.segments && i < end; ++i) out.segments.clear(i);
+        ws.ping.setCamera(rays, start, end);
         if (!traceLevels(ws, ws.ping, 0, out, counters, stale)) return false;
     }
     return true;
@@ -577,10 +595,8 @@ void TraceKernel::firstHits(const CameraBatch& rays, ObjectId* ids) const {
     thread_local Workspace ws;
     for (std::size_t start = 0; start < rays.count; start += kCameraChunk) {
         const std::size_t end = std::min(rays.count, start + kCameraChunk);
-        ws.ping.clear();
-        ws.ping.reserve(end - start);
-        for (std::size_t i = start; i < end; ++i)
-            ws.ping.push(rays.origin[i], rays.dir[i], 1.0f, 0u, uint32_t(i));
+        ws.ping.setCamera(CameraBatch{rays.origin, rays.dir, nullptr, rays.count, rays.coherent},
+                          start, end);
         const HitBatch hits = ws.hits(ws.ping.size());
         scene_.engine().closestHit(ws.ping.batch(rays.coherent), hits);
         for (std::size_t i = start; i < end; ++i) {

@@ -15,12 +15,11 @@ WhittedIntegrator::WhittedIntegrator(const CompiledScene& scene)
     : WhittedIntegrator(scene, TraceOptions::fromSettings(scene.settings())) {}
 
 WhittedIntegrator::WhittedIntegrator(const CompiledScene& scene, const TraceOptions& options)
-    : scene_(scene), options_(options) {}
+    : kernel_(std::make_shared<const TraceKernel>(scene, options)) {}
 
 Color WhittedIntegrator::traceCamera(const Ray& ray, uint32_t seed, TraceCounters& counters,
                                      PrimaryInfo* primary, RecordSink* sink,
                                      SegmentSink* segments) const {
-    const TraceKernel kernel(scene_, options_);
     Color color;
     PrimaryInfo info;
     uint8_t recordCount = 0, recordOverflow = 0, segmentCount = 0, segmentOverflow = 0;
@@ -32,7 +31,7 @@ Color WhittedIntegrator::traceCamera(const Ray& ray, uint32_t seed, TraceCounter
     if (segments && segments->capacity > 0)
         out.segments = {segments->data, std::min(segments->capacity, kSinkLimit), &segmentCount,
                         &segmentOverflow};
-    kernel.trace(CameraBatch{&ray.origin, &ray.dir, &seed, 1, true}, out, counters);
+    kernel_->trace(CameraBatch{&ray.origin, &ray.dir, &seed, 1, true}, out, counters);
     if (primary) *primary = info;
     if (sink) {
         sink->count = recordCount;
@@ -48,7 +47,7 @@ Color WhittedIntegrator::traceCamera(const Ray& ray, uint32_t seed, TraceCounter
 Color WhittedIntegrator::resolveDeferred(const ShadingRecord& record,
                                          TraceCounters& counters) const {
     Color out;
-    TraceKernel(scene_, options_).resolveDeferred(&record, 1, &out, counters);
+    kernel_->resolveDeferred(&record, 1, &out, counters);
     return out;
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 
 namespace rs {
 
@@ -85,6 +86,8 @@ struct SegmentSink {
     bool overflow = false;  ///< The tree did not fit: treat the pixel as always affected.
 };
 
+class TraceKernel;
+
 /// One camera ray at a time through the trace kernel: for picking, tests and anything that
 /// needs a single pixel. The same path (TraceKernel) as every batch, so the same bits.
 class WhittedIntegrator {
@@ -106,8 +109,8 @@ public:
     Color resolveDeferred(const ShadingRecord& record, TraceCounters& counters) const;
 
 private:
-    const CompiledScene& scene_;
-    TraceOptions options_;
+    /// Built once: a kernel works out each material's terms and the lights' split when made.
+    std::shared_ptr<const TraceKernel> kernel_;
 };
 
 /// Schlick's approximation of Fresnel reflectance for cosine `cosIncident` on the incident side.

@@ -20,6 +20,18 @@ CameraModel::CameraModel(const Camera& camera, int width, int height)
     invHeight_ = 1.0f / float(height);
 }
 
+void CameraModel::rowRays(const Vec3* columns, std::size_t count, float py, Vec3* origins,
+                          Vec3* dirs) const {
+    const Vec3 row = rowTerm(py);
+    if (orthographic_) {
+        for (std::size_t i = 0; i < count; ++i)
+            origins[i] = originOf(columns[i], row), dirs[i] = forward_;
+        return;
+    }
+    for (std::size_t i = 0; i < count; ++i)
+        origins[i] = origin_, dirs[i] = directionOf(columns[i], row);
+}
+
 bool CameraModel::tileCone(int x0, int y0, int x1, int y1, Vec3& axis, float& halfAngle) const {
     if (orthographic_) return false;
     // The directions through the tile's image rectangle are the convex combinations of its

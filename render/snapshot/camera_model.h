@@ -15,11 +15,23 @@ public:
 
     /// The primary ray through image point (px, py), unit direction.
     Ray generateRay(float px, float py) const {
-        float u = (2.0f * px * invWidth_ - 1.0f) * halfWidth_;
-        float v = (1.0f - 2.0f * py * invHeight_) * halfHeight_;
-        if (orthographic_) return Ray::make(origin_ + right_ * u + up_ * v, forward_);
-        return Ray::make(origin_, glm::normalize(forward_ + right_ * u + up_ * v));
+        const Vec3 column = columnTerm(px), row = rowTerm(py);
+        return Ray::make(originOf(column, row), directionOf(column, row));
     }
+    /// The parts of generateRay that depend on the image x alone and on the image y alone:
+    /// a tile works each out once per column and once per row, with the bits of
+    /// generateRay (its terms are added in the same order).
+    Vec3 columnTerm(float px) const { return right_ * ((2.0f * px * invWidth_ - 1.0f) * halfWidth_); }
+    Vec3 rowTerm(float py) const { return up_ * ((1.0f - 2.0f * py * invHeight_) * halfHeight_); }
+    Vec3 originOf(const Vec3& column, const Vec3& row) const {
+        return orthographic_ ? origin_ + column + row : origin_;
+    }
+    Vec3 directionOf(const Vec3& column, const Vec3& row) const {
+        return orthographic_ ? forward_ : glm::normalize(forward_ + column + row);
+    }
+    /// generateRay's origins and directions for the image points of one row, image y py,
+    /// whose columnTerm()s are columns[0, count).
+    void rowRays(const Vec3* columns, std::size_t count, float py, Vec3* origins, Vec3* dirs) const;
     /// The cone (unit axis, half-angle in radians) holding every perspective ray through the
     /// pixels [x0, x1) x [y0, y1), any point of them; false for an orthographic camera, whose
     /// rays share a direction instead of an origin.

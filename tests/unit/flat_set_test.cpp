@@ -230,6 +230,53 @@ TEST(FlatSet, RaysGrazingASphereGetTheScalarAnswer) {
     EXPECT_GT(blocked, 200);
 }
 
+TEST(FlatSet, CoherentGroupsGrazingOneOfManySpheresGetTheScalarAnswer) {
+    // Groups of nearly parallel rays from nearby origins, each tangent to one of several balls
+    // a hair inside or outside it, ending just short of, at or past the touching point: the
+    // box around such a group lies close to the ball it grazes and away from most others, so
+    // the per-group cull drops spheres, and a margin too small would drop the grazed one.
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    int hits = 0, blocked = 0;
+    for (int c = 0; c < 120; ++c) {
+        SceneDocument doc = randomRoom(rng, 4 + c % 9, 0.0f);
+        const CompiledScene scene(doc, nullptr, EngineKind::Builtin);
+        const FlatSet flat(scene.planes(), &scene.primitives());
+        std::vector<SphereShape> balls;
+        for (const Primitive& p : scene.primitives()) balls.push_back(std::get<SphereShape>(p.shape));
+        Rays rays;
+        for (int group = 0; group < 6; ++group) {
+            const SphereShape& ball = balls[std::size_t(group) % balls.size()];
+            Vec3 normal = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0, 0, 1e-3f));
+            Vec3 tangent = glm::normalize(glm::cross(normal, Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f, 0, 0)));
+            float spread = 1e-3f;
+            if (group % 2 == 0) {
+                // Along an axis, side by side: the box is then as thin as the segments, and
+                // touches the ball as closely as they do.
+                const int axis = int(std::abs(u(rng)) * 2.99f), off = (axis + 1 + group / 2 % 2) % 3;
+                tangent = normal = Vec3(0.0f);
+                tangent[axis] = u(rng) < 0.0f ? -1.0f : 1.0f;
+                normal[off] = u(rng) < 0.0f ? -1.0f : 1.0f;
+                spread = 0.0f;
+            }
+            const Vec3 side = glm::cross(normal, tangent);
+            const float back = 0.3f + std::abs(u(rng));
+            for (int k = 0; k < 8; ++k) {
+                const float inside = 1.0f + 2e-5f * float(k - 4) + 1e-6f * u(rng);
+                const Vec3 touch = ball.center + ball.radius * inside * normal + spread * float(k) * side;
+                const Vec3 dir = glm::normalize(tangent + 0.1f * spread * u(rng) * side);
+                const float length = k % 4 == 0 ? kInfinity : back * (1.0f + 0.5f * float(k % 4 - 2));
+                rays.add(Ray::make(touch - back * dir, dir), length);
+            }
+        }
+        int unused = 0;
+        expectScalarAnswers(scene, flat, rays, hits, unused);
+        blocked += unused;
+    }
+    EXPECT_GT(hits, 300);
+    EXPECT_GT(blocked, 300);
+}
+
 TEST(FlatSet, OnlyAFewObjectsAndNoMeshAreFlat) {
     std::mt19937 rng(3);
     SceneDocument doc = randomRoom(rng, int(FlatSet::kMaxShapes) - 3, 0.0f);

@@ -183,6 +183,41 @@ TEST(Renderer, SameImageForAnyThreadCount_EachEngine_MeshesBoxesAndASphereLight)
     }
 }
 
+TEST(Renderer, EachPixelIsItsCentreRayTracedAloneWithItsSeed) {
+    // A tile builds its centre rays from per-column and per-row terms and its seeds from a
+    // key per row: each pixel must still be generateRay(x + 0.5, y + 0.5) traced alone with
+    // pixelSeed(x, y, 0), bit for bit, for both projections, odd tiles and a band of rows.
+    for (const Projection projection : {Projection::Perspective, Projection::Orthographic}) {
+        SCOPED_TRACE(int(projection));
+        SceneDocument doc = test::smallRoom(45, 29);
+        doc.camera.projection = projection;
+        doc.camera.orthoHeight = 6.0f;
+        doc.render.shadowSamples = 4;  // the seed picks the sphere light's samples
+        Light area;
+        area.name = "area";
+        area.type = LightType::Sphere;
+        area.position = Vec3(1.0f, 2.5f, -2.5f);
+        area.radius = 0.6f;
+        doc.addLight(area);
+        const CompiledScene scene(doc);
+        RenderOptions options;
+        options.tileSize = 13;
+        options.firstRow = 3;
+        options.endRow = 27;
+        const RenderResult r = renderImage(scene, options);
+        const WhittedIntegrator integrator(scene);
+        for (int y = options.firstRow; y < options.endRow; ++y) {
+            for (int x = 0; x < 45; ++x) {
+                TraceCounters counters;
+                const Color c = integrator.traceCamera(
+                    scene.camera().generateRay(float(x) + 0.5f, float(y) + 0.5f),
+                    pixelSeed(x, y, 0), counters);
+                ASSERT_EQ(r.image.at(x, y - options.firstRow), c) << x << ", " << y;
+            }
+        }
+    }
+}
+
 TEST(Renderer, IdsOff_SameImageWithoutTheIdBuffer) {
     const CompiledScene scene(test::smallRoom(40, 30));
     RenderOptions withoutIds;
