@@ -24,24 +24,31 @@ namespace {
 struct Seen {
     std::thread::id thread;
     int nice;
+    int lowered;  ///< The arena's lowered-thread count while both threads are in their tasks.
 };
 
 /// Runs two tasks that each wait for the other to start, so that two threads (the caller and
-/// a worker) take part, and returns each one's thread and nice value. No clock: a worker
-/// comes once the market gives it one.
-std::vector<Seen> twoThreadsNice() {
+/// a worker) take part, and returns each one's thread and nice value, and `arena`'s count of
+/// lowered threads read while both are still in their tasks (a second rendezvous keeps either
+/// from leaving before the other has read it: once its task is done a worker may leave the
+/// arena at any time). No clock: a worker comes once the market gives it one.
+std::vector<Seen> twoThreadsNice(const rs::BackgroundArena* arena = nullptr) {
     std::mutex mutex;
     std::vector<Seen> seen;
-    std::atomic<int> started{0};
+    std::atomic<int> started{0}, read{0};
     tbb::parallel_for(
         tbb::blocked_range<int>(0, 2, 1),
         [&](const tbb::blocked_range<int>&) {
-            {
-                std::lock_guard lock(mutex);
-                seen.push_back({std::this_thread::get_id(), rs::threadNice()});
-            }
+            const int nice = rs::threadNice();
             started.fetch_add(1);
             while (started.load() < 2) std::this_thread::yield();
+            {
+                std::lock_guard lock(mutex);
+                seen.push_back({std::this_thread::get_id(), nice,
+                                arena ? arena->loweredThreads() : -1});
+            }
+            read.fetch_add(1);
+            while (read.load() < 2) std::this_thread::yield();
         },
         tbb::simple_partitioner());
     return seen;
@@ -66,14 +73,12 @@ TEST(BackgroundArena, ThreadsRunLowerInsideAndAtTheirOwnPriorityOutside) {
     const int inside = own + rs::kBackgroundNiceSteps;
 
     std::vector<Seen> seen;
-    int loweredInside = -1;
-    arena.execute([&] {
-        seen = twoThreadsNice();
-        loweredInside = arena.loweredThreads();
-    });
+    arena.execute([&] { seen = twoThreadsNice(&arena); });
     ASSERT_TRUE(twoDistinct(seen));
-    for (const Seen& s : seen) EXPECT_EQ(s.nice, inside);
-    EXPECT_EQ(loweredInside, arena.lowers() ? 2 : 0);
+    for (const Seen& s : seen) {
+        EXPECT_EQ(s.nice, inside);
+        EXPECT_EQ(s.lowered, arena.lowers() ? 2 : 0);
+    }
     EXPECT_EQ(rs::threadNice(), own) << "the caller leaves the arena at its own priority";
 
     // The worker leaves the arena to serve the default one: it must do so at its own priority
