@@ -177,7 +177,7 @@ void RenderSession::applyPendingLocked(std::unique_lock<std::mutex>& lock) {
     }
     applying_ = false;
 
-    std::unique_lock frameLock(frameMutex_);  // Readers wait while pixels change state.
+    auto frameLock = frameLock_.exclusive();  // Readers wait while pixels change state.
     doc_ = std::move(doc);
     hasDocument_ = true;
     snapshot_ = u.snapshot;
@@ -281,7 +281,7 @@ void RenderSession::markReleasedShadowsLocked() {
         // The shadows the drag moved: pixels still showing an older shadow go back to stale.
         // Pixels traced during the drag already wait for refinement (and keep their deferred
         // records). No pass runs now, so no tile commits meanwhile.
-        std::unique_lock frameLock(frameMutex_);
+        auto frameLock = frameLock_.exclusive();
         SceneEdit edit;
         edit.regions.swap(deferredShadowRegions_);
         if (markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, MarkScope::ShadowsOnly) > 0) {
@@ -359,7 +359,7 @@ void RenderSession::run() {
             if (pendingResize_) {
                 // A resize that threw leaves sides and buffers disagreeing: readers must see an
                 // empty frame instead (the next update sizes it again).
-                std::unique_lock frameLock(frameMutex_);
+                auto frameLock = frameLock_.exclusive();
                 frame_ = DeepFrame{};
             }
             const uint64_t failed = generation_.load();

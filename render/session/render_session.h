@@ -5,6 +5,7 @@
 #include "scene/document.h"
 #include "session/deep_frame.h"
 #include "session/dirty_region.h"
+#include "session/frame_lock.h"
 #include "session/governor.h"
 #include "session/interaction_policy.h"
 #include "session/scene_update.h"
@@ -99,18 +100,21 @@ public:
     /// Runs `f(frame, snapshot)` with tile commits held off; keep it short (copy what you need).
     template <class F>
     void withFrame(F&& f) const {
-        std::unique_lock lock(frameMutex_);
+        auto lock = frameLock_.read();
         f(frame_, snapshot_);
     }
-    /// withFrame if no tile commit or edit holds the frame now, else false at once and `f`
-    /// does not run: the display comes back later instead of waiting on the GUI thread.
+    /// withFrame if the frame can be had within kReaderBudget (tile commits that have not
+    /// begun hold off meanwhile), else false and `f` does not run: the display comes back
+    /// later instead of waiting on the GUI thread behind an edit's marking.
     template <class F>
     bool tryWithFrame(F&& f) const {
-        std::unique_lock lock(frameMutex_, std::try_to_lock);
+        auto lock = frameLock_.tryExclusive(kReaderBudget);
         if (!lock.owns_lock()) return false;
         f(frame_, snapshot_);
         return true;
     }
+    /// How long tryWithFrame may wait: a few tile commits, far below a GUI stall.
+    static constexpr std::chrono::microseconds kReaderBudget{1500};
     SessionStats stats() const;
     uint64_t generation() const { return generation_.load(); }
     std::shared_ptr<const CompiledScene> snapshot() const;
@@ -132,11 +136,11 @@ private:
     bool fullQualityWhileMoving() const;
     uint8_t targetStateLocked() const;
 
-    mutable std::mutex mutex_;  ///< Scheduler state; taken before frameMutex_.
+    mutable std::mutex mutex_;  ///< Scheduler state; taken before frameLock_.
     /// Frame pixels. Tiles commit disjoint pixels under a shared lock; edits (generation bump
     /// and dirty marking) and readers take it exclusively. Between passes no tile writes, so
     /// the scheduler reads the frame under mutex_ alone.
-    mutable std::shared_mutex frameMutex_;
+    mutable FrameLock frameLock_;
     std::condition_variable wake_;
     std::condition_variable done_;
     std::atomic<uint64_t> generation_{0};

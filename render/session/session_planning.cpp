@@ -42,7 +42,7 @@ bool RenderSession::planLocked(Plan& plan) {
     }
     const RenderSettings& settings = snapshot_->settings();
     if (pendingResize_) {
-        std::unique_lock frameLock(frameMutex_);  // Readers may be copying the old frame.
+        auto frameLock = frameLock_.exclusive();  // Readers may be copying the old frame.
         frame_.resize(settings.width, settings.height);
         pendingResize_ = false;
     }

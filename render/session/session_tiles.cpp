@@ -201,8 +201,8 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
     if (!traced || stale()) return;
     {
         // Shared: other tiles commit their own pixels concurrently; an edit's marking holds it
-        // exclusively, after every tile of the pass has returned.
-        std::shared_lock lock(frameMutex_);
+        // exclusively, after every tile of the pass has returned; a waiting reader goes first.
+        auto lock = frameLock_.commit();
         if (!frame_.commit(result, generation_.load())) return;
     }
     counters.pixels += result.tracedPixels();
