@@ -336,19 +336,25 @@ void DisplayTest::repaintPacing_StillAtItsPace_InteractionInputAndPassEndsAtOnce
     QCOMPARE(p.delay(1265), int64_t(79));  // 250 ms after the input: still again.
 }
 
+/// Paces the viewport's still frames once an hour, moves the blue ball and waits until the
+/// session has traced the edit whole, without running the event loop (so nothing the
+/// controller offers has been handed over yet). False if the session did not finish.
+static bool moveBallAtAnHoursPace(MainWindow& w) {
+    w.viewport()->setRepaintPacing(RepaintPacing(3600 * 1000, 0));
+    SceneDocument doc = w.editor()->document();
+    moveBy(doc, idOf(w, "blue ball"), Vec3(0.3f, 0.0f, 0.0f));
+    w.editor()->edit(QStringLiteral("Move object"), std::move(doc));
+    w.session()->flushUpdate();
+    return w.session()->session().waitUntilComplete(std::chrono::seconds(60));
+}
+
 void DisplayTest::stillFrame_TilesWaitForThePace_ThePassEndShowsThemAtOnce() {
     MainWindow& w = *window_;
     Viewport* v = w.viewport();
-    const ObjectId blue = idOf(w, "blue ball");
     // A still frame's pace of an hour: only the end of a pass can hand its tiles over.
-    v->setRepaintPacing(RepaintPacing(3600 * 1000, 0));
     const uint64_t shownSerial = v->frame()->serial;
-    SceneDocument doc = w.editor()->document();
-    moveBy(doc, blue, Vec3(0.3f, 0.0f, 0.0f));
-    w.editor()->edit(QStringLiteral("Move object"), std::move(doc));
-    w.session()->flushUpdate();
     // The edit's tiles are committed; their passes' ends are queued (no event loop ran).
-    QVERIFY(w.session()->session().waitUntilComplete(std::chrono::seconds(60)));
+    QVERIFY(moveBallAtAnHoursPace(w));
     // The controller offers new pixels (as its repaint timer does): a still frame waits.
     Q_EMIT w.session()->frameUpdated();
     QCOMPARE(v->frame()->serial, shownSerial);
@@ -366,14 +372,8 @@ void DisplayTest::stillFrame_TilesWaitForThePace_ThePassEndShowsThemAtOnce() {
 void DisplayTest::interaction_EveryHandoverTakenAtOnce() {
     MainWindow& w = *window_;
     Viewport* v = w.viewport();
-    const ObjectId blue = idOf(w, "blue ball");
-    v->setRepaintPacing(RepaintPacing(3600 * 1000, 0));
     const uint64_t shownSerial = v->frame()->serial;
-    SceneDocument doc = w.editor()->document();
-    moveBy(doc, blue, Vec3(0.3f, 0.0f, 0.0f));
-    w.editor()->edit(QStringLiteral("Move object"), std::move(doc));
-    w.session()->flushUpdate();
-    QVERIFY(w.session()->session().waitUntilComplete(std::chrono::seconds(60)));
+    QVERIFY(moveBallAtAnHoursPace(w));
     // The right button held on the viewport: an orbit runs (the press handed nothing over).
     const QPoint centre = v->rect().center();
     QTest::mousePress(v, Qt::RightButton, {}, centre);

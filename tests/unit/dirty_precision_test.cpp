@@ -182,13 +182,17 @@ TEST(DirtyMask, KeptFromTheLastMarking_MarksWhatAFreshMaskMarks) {
         edit.regions = {Aabb{b.min - Vec3(grow), b.max + Vec3(grow)}};
         return edit;
     };
+    // The session's snapshot once it has traced `doc` whole (null if it did not finish).
+    auto traced = [](RenderSession& session, const SceneDocument& doc) {
+        session.update(doc);
+        return session.waitUntilComplete(60s) ? session.snapshot() : nullptr;
+    };
     DirtyMask kept;
     {
         SceneDocument doc = test::editRoom(160, 120);
         RenderSession session(2);
-        session.update(doc);
-        ASSERT_TRUE(session.waitUntilComplete(60s));
-        const std::shared_ptr<const CompiledScene> snapshot = session.snapshot();
+        const std::shared_ptr<const CompiledScene> snapshot = traced(session, doc);
+        ASSERT_TRUE(snapshot);
         const SceneEdit large = moveOf(*snapshot, object(doc, "box").id, 0.6f);
         const SceneEdit small = moveOf(*snapshot, object(doc, "box").id, 0.0f);
         session.withFrame([&](const DeepFrame& frame, const auto&) {
@@ -219,9 +223,8 @@ TEST(DirtyMask, KeptFromTheLastMarking_MarksWhatAFreshMaskMarks) {
     // The same pixel count, other sides: the kept blocks mean other pixels now.
     SceneDocument tall = test::editRoom(120, 160);
     RenderSession session(2);
-    session.update(tall);
-    ASSERT_TRUE(session.waitUntilComplete(60s));
-    const std::shared_ptr<const CompiledScene> snapshot = session.snapshot();
+    const std::shared_ptr<const CompiledScene> snapshot = traced(session, tall);
+    ASSERT_TRUE(snapshot);
     const SceneEdit move = moveOf(*snapshot, object(tall, "gem").id, 0.1f);
     session.withFrame([&](const DeepFrame& frame, const auto&) {
         ASSERT_EQ(frame.pixelCount(), kept.pixels.size());

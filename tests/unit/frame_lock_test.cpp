@@ -22,10 +22,33 @@ void waitFor(const std::atomic<bool>& flag) {
 
 using FrameHold = std::unique_lock<std::shared_mutex>;
 
+/// A commit already running: a thread that holds the frame shared until release().
+class RunningCommit {
+public:
+    explicit RunningCommit(FrameLock& frame)
+        : thread_([this, &frame] {
+              auto lock = frame.commit();
+              holds_ = true;
+              waitFor(release_);
+          }) {
+        waitFor(holds_);
+    }
+    ~RunningCommit() { release(); }
+    void release() {
+        release_ = true;
+        if (thread_.joinable()) thread_.join();
+    }
+
+private:
+    std::atomic<bool> holds_{false}, release_{false};
+    std::thread thread_;
+};
+
 /// A commit (A) holds the frame; a reader (B) comes and waits through `takeFrame`; then a
 /// commit (C) begins. Returns who got the frame in which order once A lets go (each notes
 /// itself while it holds the frame).
-std::vector<char> orderOfReaderAndLateCommit(const std::function<FrameHold(FrameLock&)>& takeFrame) {
+std::vector<char> orderOfReaderAndLateCommit(
+    const std::function<FrameHold(FrameLock&)>& takeFrame) {
     FrameLock frame;
     std::mutex logMutex;
     std::vector<char> log;
@@ -33,13 +56,7 @@ std::vector<char> orderOfReaderAndLateCommit(const std::function<FrameHold(Frame
         std::lock_guard lock(logMutex);
         log.push_back(who);
     };
-    std::atomic<bool> aHolds{false}, releaseA{false};
-    std::thread a([&] {
-        auto lock = frame.commit();
-        aHolds = true;
-        waitFor(releaseA);
-    });
-    waitFor(aHolds);
+    RunningCommit a(frame);
     std::thread b([&] {
         const FrameHold hold = takeFrame(frame);
         if (hold.owns_lock()) note('B');
@@ -52,8 +69,7 @@ std::vector<char> orderOfReaderAndLateCommit(const std::function<FrameHold(Frame
     // Without the hold-off C would share the frame with A at once and go first; the pause
     // gives it that chance (the right order does not depend on it).
     std::this_thread::sleep_for(20ms);
-    releaseA = true;
-    a.join();
+    a.release();
     b.join();
     c.join();
     EXPECT_FALSE(frame.readerWaiting());
@@ -73,13 +89,7 @@ TEST(FrameLock, ABlockingReaderGoesBeforeCommitsThatHadNotBegun) {
 
 TEST(FrameLock, AReaderWhoseBudgetRunsOutGivesUp_AndCommitsGoOn) {
     FrameLock frame;
-    std::atomic<bool> aHolds{false}, releaseA{false};
-    std::thread a([&] {
-        auto lock = frame.commit();
-        aHolds = true;
-        waitFor(releaseA);
-    });
-    waitFor(aHolds);
+    RunningCommit a(frame);
     // A never lets go while the reader waits: it must come back without the frame.
     auto reader = frame.tryExclusive(2ms);
     EXPECT_FALSE(reader.owns_lock());
@@ -87,8 +97,7 @@ TEST(FrameLock, AReaderWhoseBudgetRunsOutGivesUp_AndCommitsGoOn) {
     // And commits are not held off any more: one shares the frame with A.
     std::thread d([&] { auto lock = frame.commit(); });
     d.join();
-    releaseA = true;
-    a.join();
+    a.release();
     // Free now: a reader gets it at once, even with no budget.
     EXPECT_TRUE(frame.tryExclusive(0us).owns_lock());
 }

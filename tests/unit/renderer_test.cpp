@@ -32,12 +32,7 @@ TEST(Renderer, SameImageForAnyThreadCount) {
     SceneDocument doc = test::smallRoom(80, 60);
     doc.render.supersampling = 2;
     doc.render.shadowSamples = 4;
-    Light area;
-    area.name = "area";
-    area.type = LightType::Sphere;
-    area.position = Vec3(2, 3, -2);
-    area.radius = 0.5f;
-    doc.addLight(area);
+    test::addSphereLight(doc, "area", Vec3(2, 3, -2), 0.5f);
     expectSameForAnyThreadCount(CompiledScene(doc));
 }
 
@@ -193,12 +188,7 @@ TEST(Renderer, EachPixelIsItsCentreRayTracedAloneWithItsSeed) {
         doc.camera.projection = projection;
         doc.camera.orthoHeight = 6.0f;
         doc.render.shadowSamples = 4;  // the seed picks the sphere light's samples
-        Light area;
-        area.name = "area";
-        area.type = LightType::Sphere;
-        area.position = Vec3(1.0f, 2.5f, -2.5f);
-        area.radius = 0.6f;
-        doc.addLight(area);
+        test::addSphereLight(doc, "area", Vec3(1.0f, 2.5f, -2.5f), 0.6f);
         const CompiledScene scene(doc);
         RenderOptions options;
         options.tileSize = 13;

@@ -51,6 +51,16 @@ inline ObjectId addPointLight(SceneDocument& doc, const std::string& name, Vec3 
     return doc.addLight(l);
 }
 
+inline ObjectId addSphereLight(SceneDocument& doc, const std::string& name, Vec3 position,
+                               float radius) {
+    Light l;
+    l.name = name;
+    l.type = LightType::Sphere;
+    l.position = position;
+    l.radius = radius;
+    return doc.addLight(l);
+}
+
 /// A small room: floor, back wall, a diffuse, a mirror and a glass ball, one light.
 inline SceneDocument smallRoom(int width = 64, int height = 48) {
     SceneDocument doc;
