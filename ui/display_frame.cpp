@@ -102,21 +102,39 @@ void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, 
         const int bx0 = r.left() / kDamageBlock * kDamageBlock;
         const int by0 = r.top() / kDamageBlock * kDamageBlock;
         for (int by = by0; by <= r.bottom(); by += kDamageBlock) {
-            for (int bx = bx0; bx <= r.right(); bx += kDamageBlock) {
-                const QRect b = QRect(bx, by, kDamageBlock, kDamageBlock) & r;
-                if (!differs(color, f.color, width, b) && !differs(id, f.id, width, b) &&
-                    !differs(depth, f.depth, width, b) &&
-                    !(debugBuffers && (differs(normal, f.normal, width, b) ||
-                                       differs(cost, f.cost, width, b))))
-                    continue;
-                copyRect(color, f.color, width, b);
-                copyRect(id, f.id, width, b);
-                copyRect(depth, f.depth, width, b);
-                if (debugBuffers) {
-                    copyRect(normal, f.normal, width, b);
-                    copyRect(cost, f.cost, width, b);
+            // The band's changed blocks are copied as runs, a row of a run at a time: a pass
+            // that re-traced everything copies whole rows instead of 8-pixel pieces (under
+            // the frame lock, which the tracers' commits wait for).
+            int runStart = -1;
+            for (int bx = bx0;; bx += kDamageBlock) {
+                bool changedBlock = false;
+                if (bx <= r.right()) {
+                    const QRect b = QRect(bx, by, kDamageBlock, kDamageBlock) & r;
+                    changedBlock =
+                        differs(color, f.color, width, b) || differs(id, f.id, width, b) ||
+                        differs(depth, f.depth, width, b) ||
+                        (debugBuffers &&
+                         (differs(normal, f.normal, width, b) || differs(cost, f.cost, width, b)));
                 }
-                changed.push_back(b);
+                if (changedBlock && runStart < 0) runStart = std::max(bx, r.left());
+                if (changedBlock || runStart < 0) {
+                    if (bx > r.right()) break;
+                    continue;
+                }
+                // The run ends before this block (or at the rectangle's edge).
+                const QRect run = QRect(QPoint(runStart, std::max(by, r.top())),
+                                        QPoint(std::min(bx - 1, r.right()),
+                                               std::min(by + kDamageBlock - 1, r.bottom())));
+                copyRect(color, f.color, width, run);
+                copyRect(id, f.id, width, run);
+                copyRect(depth, f.depth, width, run);
+                if (debugBuffers) {
+                    copyRect(normal, f.normal, width, run);
+                    copyRect(cost, f.cost, width, run);
+                }
+                changed.push_back(run);
+                runStart = -1;
+                if (bx > r.right()) break;
             }
         }
     }
