@@ -102,21 +102,39 @@ void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, 
         const int bx0 = r.left() / kDamageBlock * kDamageBlock;
         const int by0 = r.top() / kDamageBlock * kDamageBlock;
         for (int by = by0; by <= r.bottom(); by += kDamageBlock) {
-            for (int bx = bx0; bx <= r.right(); bx += kDamageBlock) {
-                const QRect b = QRect(bx, by, kDamageBlock, kDamageBlock) & r;
-                if (!differs(color, f.color, width, b) && !differs(id, f.id, width, b) &&
-                    !differs(depth, f.depth, width, b) &&
-                    !(debugBuffers && (differs(normal, f.normal, width, b) ||
-                                       differs(cost, f.cost, width, b))))
-                    continue;
-                copyRect(color, f.color, width, b);
-                copyRect(id, f.id, width, b);
-                copyRect(depth, f.depth, width, b);
-                if (debugBuffers) {
-                    copyRect(normal, f.normal, width, b);
-                    copyRect(cost, f.cost, width, b);
+            // The band's changed blocks are copied as runs, a row of a run at a time: a pass
+            // that re-traced everything copies whole rows instead of 8-pixel pieces (under
+            // the frame lock, which the tracers' commits wait for).
+            int runStart = -1;
+            for (int bx = bx0;; bx += kDamageBlock) {
+                bool changedBlock = false;
+                if (bx <= r.right()) {
+                    const QRect b = QRect(bx, by, kDamageBlock, kDamageBlock) & r;
+                    changedBlock =
+                        differs(color, f.color, width, b) || differs(id, f.id, width, b) ||
+                        differs(depth, f.depth, width, b) ||
+                        (debugBuffers &&
+                         (differs(normal, f.normal, width, b) || differs(cost, f.cost, width, b)));
                 }
-                changed.push_back(b);
+                if (changedBlock && runStart < 0) runStart = std::max(bx, r.left());
+                if (changedBlock || runStart < 0) {
+                    if (bx > r.right()) break;
+                    continue;
+                }
+                // The run ends before this block (or at the rectangle's edge).
+                const QRect run = QRect(QPoint(runStart, std::max(by, r.top())),
+                                        QPoint(std::min(bx - 1, r.right()),
+                                               std::min(by + kDamageBlock - 1, r.bottom())));
+                copyRect(color, f.color, width, run);
+                copyRect(id, f.id, width, run);
+                copyRect(depth, f.depth, width, run);
+                if (debugBuffers) {
+                    copyRect(normal, f.normal, width, run);
+                    copyRect(cost, f.cost, width, run);
+                }
+                changed.push_back(run);
+                runStart = -1;
+                if (bx > r.right()) break;
             }
         }
     }
@@ -287,15 +305,50 @@ bool onOutline(const DisplayFrame& f, int x, int y, const std::vector<ObjectId>&
     return false;
 }
 
+void drawOutlineRow(const DisplayFrame& f, int y, int x0, int x1,
+                    const std::vector<ObjectId>& selected, uint8_t* line) {
+    if (selected.empty()) return;
+    for (int x = x0; x <= x1; ++x)
+        if (atIdEdge(f, x, y) && onOutline(f, x, y, selected))
+            std::copy(kOutlineRgb, kOutlineRgb + 3, line + 3 * x);
+}
+
+QRect outlinedBounds(const DisplayFrame& f, const std::vector<ObjectId>& a,
+                     const std::vector<ObjectId>& b) {
+    // The ids either selection outlines, as a plain array: the scan compares every pixel.
+    ObjectId ids[2 * kMaxOutlined];
+    std::size_t n = 0;
+    for (const std::vector<ObjectId>* s : {&a, &b})
+        for (std::size_t k = 0; k < std::min(s->size(), kMaxOutlined); ++k)
+            if ((*s)[k] != kNoObject && std::find(ids, ids + n, (*s)[k]) == ids + n)
+                ids[n++] = (*s)[k];
+    if (n == 0) return {};
+    const auto hit = [&](ObjectId v) {
+        bool any = false;
+        for (std::size_t k = 0; k < n; ++k) any |= v == ids[k];
+        return any;
+    };
+    int x0 = f.width, y0 = f.height, x1 = -1, y1 = -1;
+    for (int y = 0; y < f.height; ++y) {
+        const ObjectId* row = &f.id[std::size_t(y) * f.width];
+        int first = 0;
+        while (first < f.width && !hit(row[first])) ++first;
+        if (first == f.width) continue;
+        int last = f.width - 1;
+        while (!hit(row[last])) --last;
+        x0 = std::min(x0, first), x1 = std::max(x1, last);
+        y0 = std::min(y0, y), y1 = y;
+    }
+    if (x1 < 0) return {};
+    return QRect(QPoint(x0, y0), QPoint(x1, y1));
+}
+
 QImage viewportImage(const DisplayFrame& f, ViewMode mode, const std::vector<ObjectId>& selected) {
     if (f.empty()) return {};
     QImage img = debugImage(f, mode);
     if (selected.empty()) return img;
-    for (int y = 0; y < f.height; ++y) {
-        uchar* line = img.scanLine(y);
-        for (int x = 0; x < f.width; ++x)
-            if (onOutline(f, x, y, selected)) std::copy(kOutlineRgb, kOutlineRgb + 3, line + 3 * x);
-    }
+    for (int y = 0; y < f.height; ++y)
+        drawOutlineRow(f, y, 0, f.width - 1, selected, img.scanLine(y));
     return img;
 }
 

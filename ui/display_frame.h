@@ -85,8 +85,24 @@ bool outlined(const std::vector<ObjectId>& selected, ObjectId id);
 /// True when pixel (x, y) lies on the selection outline: its id differs from a 4-neighbour
 /// and one of the two is outlined.
 bool onOutline(const DisplayFrame& frame, int x, int y, const std::vector<ObjectId>& selected);
+/// True when pixel (x, y) has a 4-neighbour of another id: onOutline can hold only there, so
+/// loops over many pixels test this cheap condition first (most pixels are inside objects).
+inline bool atIdEdge(const DisplayFrame& f, int x, int y) {
+    const ObjectId* row = f.id.data() + std::size_t(y) * std::size_t(f.width);
+    const ObjectId c = row[x];
+    return (x > 0 && row[x - 1] != c) || (x + 1 < f.width && row[x + 1] != c) ||
+           (y > 0 && row[x - std::ptrdiff_t(f.width)] != c) ||
+           (y + 1 < f.height && row[x + std::ptrdiff_t(f.width)] != c);
+}
 /// The colour of the selection outline.
 inline constexpr uint8_t kOutlineRgb[3] = {255, 160, 32};
+/// Paints the selection outline (onOutline) over pixels x0..x1 of row y of an RGB888 `line`.
+void drawOutlineRow(const DisplayFrame& frame, int y, int x0, int x1,
+                    const std::vector<ObjectId>& selected, uint8_t* line);
+/// The smallest rectangle holding every pixel whose id is outlined by `a` or by `b`
+/// (outlined()); empty when there is none.
+QRect outlinedBounds(const DisplayFrame& frame, const std::vector<ObjectId>& a,
+                     const std::vector<ObjectId>& b);
 /// The image the viewport shows: view mode plus the selection outline.
 QImage viewportImage(const DisplayFrame& frame, ViewMode mode,
                      const std::vector<ObjectId>& selected);

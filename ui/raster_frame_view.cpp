@@ -46,9 +46,7 @@ void RasterFrameView::shadeRect(const DisplayFrame& f, const std::vector<ObjectI
         uchar* line = image_.scanLine(y);
         toDisplay8(&f.color[std::size_t(y) * f.width + r.left()], std::size_t(r.width()),
                    f.tonemap, f.exposure, line + 3 * r.left());
-        if (selected.empty()) continue;
-        for (int x = r.left(); x <= r.right(); ++x)
-            if (onOutline(f, x, y, selected)) std::copy(kOutlineRgb, kOutlineRgb + 3, line + 3 * x);
+        drawOutlineRow(f, y, r.left(), r.right(), selected, line);
     }
 }
 
@@ -103,23 +101,15 @@ void RasterFrameView::showFrame(std::shared_ptr<const DisplayFrame> frame, ViewM
 }
 
 QRect RasterFrameView::reshadeOutline(const DisplayFrame& f, const std::vector<ObjectId>& selected) {
-    // Only pixels of an object outlined before or now, or next to one, can change.
-    int x0 = f.width, y0 = f.height, x1 = -1, y1 = -1;
-    for (int y = 0; y < f.height; ++y) {
-        const ObjectId* row = &f.id[std::size_t(y) * f.width];
-        for (int x = 0; x < f.width; ++x)
-            if (row[x] != kNoObject &&
-                (outlined(selected, row[x]) || outlined(shadedSelected_, row[x]))) {
-                x0 = std::min(x0, x), x1 = std::max(x1, x);
-                y0 = std::min(y0, y), y1 = std::max(y1, y);
-            }
-    }
-    if (x1 < 0) return {};
-    const QRect r = QRect(QPoint(x0, y0), QPoint(x1, y1)).adjusted(-1, -1, 1, 1) &
-                    QRect(0, 0, f.width, f.height);
+    // Only pixels of an object outlined before or now, or next to one, can change, and of
+    // those only the ones at an id edge (the press that selects: this is on its clock).
+    const QRect bounds = outlinedBounds(f, selected, shadedSelected_);
+    if (bounds.isEmpty()) return {};
+    const QRect r = bounds.adjusted(-1, -1, 1, 1) & QRect(0, 0, f.width, f.height);
     for (int y = r.top(); y <= r.bottom(); ++y) {
         uchar* line = image_.scanLine(y);
         for (int x = r.left(); x <= r.right(); ++x) {
+            if (!atIdEdge(f, x, y)) continue;
             const bool now = onOutline(f, x, y, selected);
             if (now == onOutline(f, x, y, shadedSelected_)) continue;
             if (now)

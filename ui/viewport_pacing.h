@@ -15,8 +15,11 @@ namespace rs::ui {
 /// Times are milliseconds on one steady clock of the caller's (no clock is read here).
 class RepaintPacing {
 public:
-    /// 12.5 hand-overs a second while still.
-    static constexpr int kStillIntervalMs = 80;
+    /// 4 hand-overs a second while still: a frame that takes less (the reference room's full
+    /// frame in the viewport: 45-180 ms on two shared cores) is shown when its pass ends, so its
+    /// hand-over, tone mapping and paint no longer interrupt its tracers; a slow one still
+    /// shows its progress.
+    static constexpr int kStillIntervalMs = 250;
     /// A wheel step's view changes keep coming for about this long after it.
     static constexpr int kInputQuietMs = 250;
 

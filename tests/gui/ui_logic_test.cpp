@@ -1,6 +1,7 @@
 // The designer's Qt-free-ish logic without a window: names for duplicates, the default scene.
 #include "default_scene.h"
 #include "display_choice.h"
+#include "display_frame.h"
 #include "placement.h"
 #include "scene/parameters.h"
 #include "scene_edits.h"
@@ -48,6 +49,7 @@ private Q_SLOTS:
     void displayAutomatic_PicksSoftwareOnSoftwareGL_OpenGLOnAGpu();
     void scaleAlongWorldX_StretchesTheAxisOfARotatedObjectThatLiesAlongX();
     void scaleAlongLocalAxes_MovesOtherObjectsAlongThoseAxes();
+    void outlineShortcuts_AgreeWithOnOutlinePixelForPixel();
 };
 
 void UiLogicTest::materials_DeleteRefusedWhileUsed_RenameFollowsUsers_NamesValidated() {
@@ -231,6 +233,45 @@ void UiLogicTest::scaleAlongLocalAxes_MovesOtherObjectsAlongThoseAxes() {
     // Unrotated balls stretch along the world axis that the gizmo's x is.
     QVERIFY(near(doc.findObject(a)->transform.scale, Vec3(1.0f, 3.0f, 1.0f)));
     QVERIFY(near(doc.findObject(a)->transform.translate, Vec3(0.0f)));
+}
+
+void UiLogicTest::outlineShortcuts_AgreeWithOnOutlinePixelForPixel() {
+    // Blobs of ids (and empty space) on a small frame: drawOutlineRow and reshading by
+    // outlinedBounds skip pixels that are not at an id edge, and must not miss any.
+    ui::DisplayFrame f;
+    f.width = 37;
+    f.height = 23;
+    f.id.assign(std::size_t(f.width * f.height), kNoObject);
+    uint32_t h = 12345u;
+    for (int k = 0; k < 12; ++k) {
+        h = h * 1664525u + 1013904223u;
+        const int cx = int(h >> 8) % f.width, cy = int(h >> 16) % f.height,
+                  r = 1 + int(h >> 24) % 6;
+        for (int y = 0; y < f.height; ++y)
+            for (int x = 0; x < f.width; ++x)
+                if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r)
+                    f.id[std::size_t(y * f.width + x)] = ObjectId(1 + k % 5);
+    }
+    for (const std::vector<ObjectId>& selected :
+         {std::vector<ObjectId>{}, {1}, {3, 5}, {2, 9}, {kNoObject, 4}, {9}}) {
+        int x0 = f.width, y0 = f.height, x1 = -1, y1 = -1;
+        for (int y = 0; y < f.height; ++y) {
+            std::vector<uint8_t> line(std::size_t(3 * f.width), 7);
+            ui::drawOutlineRow(f, y, 0, f.width - 1, selected, line.data());
+            for (int x = 0; x < f.width; ++x) {
+                const bool on = ui::onOutline(f, x, y, selected);
+                QCOMPARE(line[std::size_t(3 * x)] == ui::kOutlineRgb[0], on);
+                if (on) QVERIFY(ui::atIdEdge(f, x, y));
+                if (ui::outlined(selected, f.idAt(x, y)))
+                    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = y;
+            }
+        }
+        const QRect expected = x1 < 0 ? QRect() : QRect(QPoint(x0, y0), QPoint(x1, y1));
+        QCOMPARE(ui::outlinedBounds(f, selected, {}), expected);
+        QCOMPARE(ui::outlinedBounds(f, {}, selected), expected);
+    }
+    QCOMPARE(ui::outlinedBounds(f, {1}, {3}),
+             ui::outlinedBounds(f, {1}, {}).united(ui::outlinedBounds(f, {3}, {})));
 }
 
 QTEST_GUILESS_MAIN(UiLogicTest)
