@@ -74,6 +74,12 @@ void Governor::record(int level, double ms, std::size_t tracedPixels) {
     measured_[std::size_t(level)] = true;
 }
 
+double Governor::budgetMs(double targetMs, double updateMs, double planMs, double editIntervalMs,
+                          double sinceEditMs) {
+    (void)editIntervalMs, (void)sinceEditMs;
+    return std::max(0.0, 0.9 * targetMs - updateMs - planMs);
+}
+
 void Governor::calibrate(double msPerFullQualityPixel) {
     msPerFullPixel_ = msPerFullQualityPixel;
 }

@@ -38,6 +38,8 @@ std::string failureMessage(std::exception_ptr failure) {
 
 /// More regions than this are merged into their bounding box (a long, winding drag).
 constexpr std::size_t kMaxDeferredShadowRegions = 64;
+/// Edits further apart than this are a pause, not the pace of a drag.
+constexpr double kPauseMs = 250.0;
 }  // namespace
 
 int RenderSession::arenaSize(int threads) {
@@ -123,7 +125,15 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
         gen = ++generation_;
         pendingDoc_ = std::move(*copy);  // A document not yet applied is dropped: the latest wins.
         pendingGeneration_ = gen;
-        editTime_ = std::chrono::steady_clock::now();
+        const auto now = std::chrono::steady_clock::now();
+        if (interacting_ && editTime_ != std::chrono::steady_clock::time_point{}) {
+            // The pace of the user's edits, which cut the pass running when they come: the
+            // governor budgets a pass to finish before the next (a pause is not a pace).
+            const double gap = std::chrono::duration<double, std::milli>(now - editTime_).count();
+            if (gap < kPauseMs)
+                editIntervalMs_ = editIntervalMs_ > 0.0 ? 0.75 * editIntervalMs_ + 0.25 * gap : gap;
+        }
+        editTime_ = now;
         ++stats_.postedUpdates;
     }
     wake_.notify_all();
@@ -206,6 +216,7 @@ void RenderSession::applyPendingLocked(std::unique_lock<std::mutex>& lock) {
     // Nothing left to trace: the frame is current for this generation (no pass will say so).
     if (marked == 0 && !pendingResize_ && !frame_.anyBelow(targetStateLocked()))
         completedPassGeneration_ = std::max(completedPassGeneration_, gen);
+    if (marked > 0 || pendingResize_) markedStaleLocked();
     frameLock.unlock();
     lock.unlock();
     done_.notify_all();
@@ -261,6 +272,7 @@ void RenderSession::beginInteraction(ObjectId moving) {
         std::lock_guard lock(mutex_);
         interacting_ = true;
         moving_ = moving;
+        editIntervalMs_ = 0.0;  // This drag's pace is learnt from its own edits.
     }
     wake_.notify_all();
 }
@@ -285,6 +297,7 @@ void RenderSession::markReleasedShadowsLocked() {
         SceneEdit edit;
         edit.regions.swap(deferredShadowRegions_);
         if (markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, MarkScope::ShadowsOnly) > 0) {
+            markedStaleLocked();
             for (const int b : dirtyMask_.blocks) {
                 frame_.forEachPixelOfBlock(std::size_t(b), [&](std::size_t i, int tile) {
                     if (dirtyMask_.pixels[i] && frame_.state[i] >= kBase) {
@@ -335,6 +348,14 @@ uint8_t RenderSession::targetStateLocked() const {
     if (!interacting_) return kFinal;
     if (!fullQualityWhileMoving()) return kInteractive;
     return policy_.supersampleWhileMoving ? kFinal : kBase;
+}
+
+double RenderSession::governorBudgetLocked() const {
+    const double since =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - editTime_)
+            .count();
+    return Governor::budgetMs(policy_.governorTargetMs, stats_.lastUpdateMs,
+                              stats_.lastInteractivePass.planMs, editIntervalMs_, since);
 }
 
 bool RenderSession::hasWorkLocked() const {
@@ -407,6 +428,11 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         lock.lock();
         running_ = false;
         const auto now = std::chrono::steady_clock::now();
+        // Between passes the scheduler reads the frame under mutex_ alone; every tile of the
+        // pass has been announced to the observer by now.
+        if (!frame_.anyBelow(kInteractive))
+            wholeMark_.store(staleMarks_.load(std::memory_order_relaxed),
+                             std::memory_order_release);
         if (info.cancelled) {
             stats_.lastCancelLatencyMs =
                 std::chrono::duration<double, std::milli>(now - editTime_).count();

@@ -117,6 +117,18 @@ public:
     static constexpr std::chrono::microseconds kReaderBudget{1500};
     SessionStats stats() const;
     uint64_t generation() const { return generation_.load(); }
+    /// Whole frames, for the display: a frame is whole when no pixel shows an older document
+    /// than the one applied (no pixel stale). Edits, resizes and released shadows that leave
+    /// pixels stale count as markings; a pass after which none is stale makes the frame whole
+    /// at the count of markings. Read wholeMark() before taking the tiles announced so far
+    /// (every tile of that pass has been announced by then), then, inside withFrame or
+    /// tryWithFrame, wholeSince(mark): nothing has been marked since, so those tiles' pixels
+    /// are the whole picture of one document.
+    uint64_t wholeMark() const { return wholeMark_.load(std::memory_order_acquire); }
+    bool wholeSince(uint64_t mark) const {
+        return staleMarks_.load(std::memory_order_acquire) == mark &&
+               wholeMark_.load(std::memory_order_acquire) == mark;
+    }
     std::shared_ptr<const CompiledScene> snapshot() const;
 
     /// Internal: a planned pass and one of its tiles (session_plan.h).
@@ -135,6 +147,12 @@ private:
     void processTile(const Plan& plan, const TileJob& job, PassCounters& counters);
     bool fullQualityWhileMoving() const;
     uint8_t targetStateLocked() const;
+    /// Milliseconds an interactive pass planned now may take: the governor's target, less
+    /// the edit's own cost, and no more than is left until the next edit is due (the edits'
+    /// recent interval), which would cut it.
+    double governorBudgetLocked() const;
+    /// Pixels went stale (under the frame's exclusive lock): the frame is no longer whole.
+    void markedStaleLocked() { staleMarks_.fetch_add(1, std::memory_order_release); }
 
     mutable std::mutex mutex_;  ///< Scheduler state; taken before frameLock_.
     /// Frame pixels. Tiles commit disjoint pixels under a shared lock; edits (generation bump
@@ -144,6 +162,8 @@ private:
     std::condition_variable wake_;
     std::condition_variable done_;
     std::atomic<uint64_t> generation_{0};
+    std::atomic<uint64_t> staleMarks_{0};  ///< See wholeMark().
+    std::atomic<uint64_t> wholeMark_{0};
 
     /// The document applied last; only the scheduler thread writes it (under mutex_) and
     /// reads it without the lock while applying the next.
@@ -180,6 +200,8 @@ private:
     bool completeValid_ = false;
     bool running_ = false;
     std::chrono::steady_clock::time_point editTime_;
+    /// Recent interval between edits posted while interacting (0: not known yet).
+    double editIntervalMs_ = 0.0;
     SessionStats stats_;
     SessionObserver* observer_ = nullptr;
 

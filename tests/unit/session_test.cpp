@@ -374,6 +374,77 @@ TEST(RenderSession, HalfResolutionWhileMoving_TracesAQuarterOfTheDirtyPixels) {
     ASSERT_TRUE(session.waitUntilComplete(60s));
 }
 
+/// Holds the workers in tileDone once a tile of `from` (or later) commits, until released.
+class TileGate : public SessionObserver {
+public:
+    void tileDone(int, int, int, int, uint64_t generation) override {
+        std::unique_lock lock(m_);
+        if (from_ == 0 || generation < from_) return;
+        held_ = true;
+        cv_.notify_all();
+        cv_.wait(lock, [&] { return !from_; });
+    }
+    void close(uint64_t from) {
+        std::lock_guard lock(m_);
+        from_ = from;
+    }
+    bool waitHeld() {
+        std::unique_lock lock(m_);
+        return cv_.wait_for(lock, 30s, [&] { return held_; });
+    }
+    void open() {
+        std::lock_guard lock(m_);
+        from_ = 0;
+        cv_.notify_all();
+    }
+
+private:
+    std::mutex m_;
+    std::condition_variable cv_;
+    uint64_t from_ = 0;
+    bool held_ = false;
+};
+
+TEST(RenderSession, WholeFrames_AMarkingTearsTheFrameUntilAPassLeavesNoPixelStale) {
+    SceneDocument doc = testRoom();
+    TileGate gate;
+    RenderSession session(2);
+    session.setObserver(&gate);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    const uint64_t opened = session.wholeMark();
+    bool whole = false;
+    session.withFrame([&](const DeepFrame&, const auto&) { whole = session.wholeSince(opened); });
+    EXPECT_TRUE(whole);
+    // An edit that traces nothing marks nothing: still the same whole frame.
+    doc.objects[2].name += " renamed";
+    ASSERT_TRUE(session.waitForUpdate(session.update(doc), 30s));
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    EXPECT_EQ(session.wholeMark(), opened);
+    // An orbit step marks every pixel: with its first tiles committed and the pass not
+    // done, the frame is torn (pixels of two cameras), and whole again after the pass.
+    session.beginInteraction(kNoObject);
+    doc.camera.position.x += 0.2f;
+    const uint64_t orbit = session.generation() + 1;
+    gate.close(orbit);
+    ASSERT_EQ(session.update(doc), orbit);
+    ASSERT_TRUE(gate.waitHeld());
+    session.withFrame([&](const DeepFrame& f, const auto&) {
+        EXPECT_GT(f.countBelow(kInteractive), 0u);
+        EXPECT_FALSE(session.wholeSince(session.wholeMark()));
+    });
+    EXPECT_EQ(session.wholeMark(), opened);
+    gate.open();
+    ASSERT_TRUE(session.waitForPass(orbit, 30s));
+    EXPECT_GT(session.wholeMark(), opened);
+    session.withFrame(
+        [&](const DeepFrame&, const auto&) { whole = session.wholeSince(session.wholeMark()); });
+    EXPECT_TRUE(whole);
+    session.endInteraction();
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    session.setObserver(nullptr);
+}
+
 TEST(RenderSession, EditsFromAnotherThreadWhileRendering_EndExact) {
     // Stress: edits arrive from a second thread as fast as it can make them; the TSan preset
     // runs this too.
