@@ -20,7 +20,7 @@ SessionController::SessionController(int threads, QObject* parent)
     : QObject(parent),
       session_(std::make_unique<RenderSession>(threads)),
       mailbox_(this),
-      wholeWhileMoving_(false) {
+      wholeWhileMoving_(true) {
     qRegisterMetaType<rs::PassInfo>();
     repaintTimer_.setSingleShot(true);
     connect(&repaintTimer_, &QTimer::timeout, this, &SessionController::onRepaintTimer);
@@ -39,6 +39,7 @@ SessionController::SessionController(int threads, QObject* parent)
     });
     rateTimer_.start();
     session_->setObserver(this);
+    session_->setDisplayWaits(wholeWhileMoving_);
 }
 
 SessionController::~SessionController() {
@@ -162,6 +163,7 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
     }
     d.generation = std::max(d.generation, committed);
     if (d.serial != serialBefore) Q_EMIT frameHandedOver(d.serial, whole);
+    if (whole) session_->wholeFrameShown(wholeMark);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++handover_.count;

@@ -73,7 +73,10 @@ public:
     /// While the user drags or orbits, hand-overs (FrameWait::TryOnly) keep showing the last
     /// whole frame until the next one is whole, instead of a pass cut short (a torn picture
     /// of several documents); otherwise every committed tile is shown as it comes.
-    void setWholeFramesWhileMoving(bool on) { wholeWhileMoving_ = on; }
+    void setWholeFramesWhileMoving(bool on) {
+        wholeWhileMoving_ = on;
+        session_->setDisplayWaits(on);
+    }
     /// Counts requestUpdate calls; documentPosted says which generation carried them.
     uint64_t requestSerial() const { return requestSerial_; }
 

@@ -41,12 +41,9 @@ public:
     /// nearest measured level (the machine's load as it is now), else calibrated.
     double predictedMsPerPixel(const InteractionPolicy& base, int level) const;
     /// Milliseconds an interactive pass planned now may take: `targetMs` less the edit's own
-    /// cost (diff, refit, marking) and the planning, less a tenth kept for scheduling jitter;
-    /// and while edits come at a pace (`editIntervalMs` > 0), no more than is left before the
-    /// next one is due (`sinceEditMs` since the last), which would cut the pass. An edit
-    /// more than half an interval overdue means a pause: the target alone.
-    static double budgetMs(double targetMs, double updateMs, double planMs, double editIntervalMs,
-                           double sinceEditMs);
+    /// cost (diff, refit, marking) and the planning, less a tenth kept for scheduling jitter,
+    /// so that frames meet the target, not just average it.
+    static double budgetMs(double targetMs, double updateMs, double planMs);
     /// Passes measured at other levels after which a level's own measurement is forgotten
     /// (predicted again): a level measured while the machine was busy gets another try.
     static constexpr int kForgetAfter = 60;

@@ -61,7 +61,10 @@ bool RenderSession::planLocked(Plan& plan) {
         plan.kind = PassKind::Interactive;
         InteractionPolicy effective = policy_;
         if (policy_.governorTargetMs > 0.0) {
-            plan.governorLevel = governor_.choose(policy_, stale, governorBudgetLocked());
+            plan.governorLevel =
+                governor_.choose(policy_, stale,
+                                 Governor::budgetMs(policy_.governorTargetMs, stats_.lastUpdateMs,
+                                                    stats_.lastInteractivePass.planMs));
             effective = Governor::policyForLevel(policy_, plan.governorLevel);
         }
         plan.options = effective.movingTraceOptions(settings, moving_);
