@@ -75,6 +75,11 @@
 #   longest GUI stall / p99  36 / 9 ms    46 / 18 ms         37 / 14 ms      66 / 41 ms
 #   governor level median    2            0-2 (max 5)        2               4-5
 #
+# The 1M-triangle mesh (--scene mesh-1000000.scene.json --object mesh), 3 interleaved runs
+# each at load 3.4-4.5: main 0.0 whole frames/s dragging and orbiting (54.8 and 57.3 torn
+# ones, not one pass finished); the branch drag 32.1 [28-40] whole/s, 60 ms [47-66] to one,
+# orbit 17.7 [14-27] whole/s, 107 ms [75-144], governor level 2-5 dragging, 4 orbiting.
+#
 # Orbit misses 30 whole frames/s and 50 ms on this loaded machine: a whole orbit pass of the
 # 992x915 frame takes 40-70 ms at any level (quarter resolution and the box proxy still fill
 # and commit every pixel). Showing a whole frame copies and re-shades all of it at once on
