@@ -103,6 +103,7 @@ private:
     Request request_;
     MainWindow window_;
     std::vector<Present> presents_;
+    std::vector<uint64_t> wholeSerials_;  ///< Hand-overs of whole frames (ascending serials).
     std::vector<std::pair<uint64_t, uint64_t>> posted_;  ///< (request serial, generation).
     std::vector<std::pair<Clock::time_point, PassInfo>> passes_;
     uint64_t completed_ = 0;
@@ -215,21 +216,27 @@ bool Measurement::measureFullFrames(FullFrames& out) {
 
 QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end) const {
     const double seconds = msBetween(begin, end) / 1000.0;
-    int frames = 0, generations = 0;
+    int frames = 0, generations = 0, wholeFrames = 0;
     uint64_t lastSerial = 0, lastGeneration = 0;
     std::vector<double> paint, compose;
+    const auto isWhole = [&](const Present& p) {
+        return std::binary_search(wholeSerials_.begin(), wholeSerials_.end(), p.frame.serial);
+    };
     for (const Present& p : presents_) {
         if (p.time > end) break;
         if (p.time >= begin) {
             paint.push_back(p.frame.paintMs);
             compose.push_back(p.frame.composeMs);
             frames += p.frame.serial != lastSerial;
+            // What the user really gets: a new frame none of whose pixels is left from an
+            // older camera or position (no pass cut short in it).
+            wholeFrames += p.frame.serial != lastSerial && isWhole(p);
             generations += p.frame.generation > lastGeneration;
         }
         lastSerial = p.frame.serial;
         lastGeneration = std::max(lastGeneration, p.frame.generation);
     }
-    std::vector<double> latency;
+    std::vector<double> latency, wholeLatency;
     int neverShown = 0;
     for (std::size_t i = 1; i < inputs_.size(); ++i) {
         if (inputs_[i].request <= inputs_[i - 1].request) continue;  // No edit.
@@ -246,6 +253,12 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
             ++neverShown;
         else
             latency.push_back(msBetween(inputs_[i].due, shown->time));
+        // The same to the first whole frame that shows the edit (never: not counted).
+        const auto whole = std::find_if(shown, presents_.end(), [&](const Present& p) {
+            return p.frame.generation >= post->second && isWhole(p);
+        });
+        if (whole != presents_.end())
+            wholeLatency.push_back(msBetween(inputs_[i].due, whole->time));
     }
     std::vector<double> handling;
     for (const Input& in : inputs_) handling.push_back(msBetween(in.dispatched, in.handled));
@@ -266,6 +279,8 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
     o[QStringLiteral("seconds")] = seconds;
     o[QStringLiteral("frames_per_s")] = frames / seconds;
     o[QStringLiteral("generations_per_s")] = generations / seconds;
+    o[QStringLiteral("whole_frames_per_s")] = wholeFrames / seconds;
+    o[QStringLiteral("whole_latency_median_ms")] = quantile(wholeLatency, 0.5);
     o[QStringLiteral("latency_median_ms")] = quantile(latency, 0.5);
     o[QStringLiteral("latency_p90_ms")] = quantile(latency, 0.9);
     o[QStringLiteral("edits")] = int(latency.size()) + neverShown;
@@ -298,6 +313,10 @@ int Measurement::run() {
     });
     QObject::connect(controller, &SessionController::documentPosted, &window_,
                      [this](quint64 r, quint64 g) { posted_.emplace_back(r, g); });
+    QObject::connect(controller, &SessionController::frameHandedOver, &window_,
+                     [this](quint64 serial, bool whole) {
+                         if (whole) wholeSerials_.push_back(serial);
+                     });
     QObject::connect(controller, &SessionController::passFinished, &window_,
                      [this](const PassInfo& p) { passes_.emplace_back(Clock::now(), p); });
     QObject::connect(controller, &SessionController::frameCompleted, &window_,
@@ -445,6 +464,10 @@ int Measurement::run() {
                 qPrintable(o[QStringLiteral("frame")].toString()));
     std::printf("  frames shown          %6.1f /s distinct, %.1f /s with a newer edit\n",
                 num("frames_per_s"), num("generations_per_s"));
+    std::printf(
+        "  whole frames shown    %6.1f /s (no pixel of an older edit), input to one "
+        "median %.1f ms\n",
+        num("whole_frames_per_s"), num("whole_latency_median_ms"));
     std::printf(
         "  input to display     median %6.1f ms   p90 %6.1f ms   (%d edits, %d never shown)\n",
         num("latency_median_ms"), num("latency_p90_ms"), o[QStringLiteral("edits")].toInt(),

@@ -17,7 +17,10 @@ constexpr int kBusyRetryMs = 2;
 }
 
 SessionController::SessionController(int threads, QObject* parent)
-    : QObject(parent), session_(std::make_unique<RenderSession>(threads)), mailbox_(this) {
+    : QObject(parent),
+      session_(std::make_unique<RenderSession>(threads)),
+      mailbox_(this),
+      wholeWhileMoving_(true) {
     qRegisterMetaType<rs::PassInfo>();
     repaintTimer_.setSingleShot(true);
     connect(&repaintTimer_, &QTimer::timeout, this, &SessionController::onRepaintTimer);
@@ -36,6 +39,7 @@ SessionController::SessionController(int threads, QObject* parent)
     });
     rateTimer_.start();
     session_->setObserver(this);
+    session_->setDisplayWaits(wholeWhileMoving_);
 }
 
 SessionController::~SessionController() {
@@ -81,16 +85,22 @@ std::shared_ptr<const CompiledScene> SessionController::appliedSnapshot() {
 
 void SessionController::beginInteraction(ObjectId moving) {
     flushUpdate();
+    interacting_ = true;
     session_->beginInteraction(moving);
 }
 
 void SessionController::endInteraction() {
     flushUpdate();
+    interacting_ = false;
     session_->endInteraction();
 }
 
 std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wait) {
     const auto start = std::chrono::steady_clock::now();
+    // Before the tiles are taken: every tile of the pass that made the frame whole is in them.
+    const uint64_t wholeMark = session_->wholeMark();
+    const bool onlyWhole = wait == FrameWait::TryOnly && interacting_ && wholeWhileMoving_;
+    bool whole = false, torn = false;
     std::vector<QRect> tiles;
     bool everything = false;
     uint64_t committed = 0;
@@ -109,6 +119,11 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
     DisplayFrame& d = *frame_;
     const auto copy = [&](const DeepFrame& f, const std::shared_ptr<const CompiledScene>&) {
         const auto locked = std::chrono::steady_clock::now();
+        whole = session_->wholeSince(wholeMark);
+        if (onlyWhole && !whole) {
+            torn = true;  // The last whole frame stays; these tiles wait for the next.
+            return;
+        }
         if (everything) tiles.assign(1, QRect(0, 0, f.width, f.height));
         // Edits clear the previous edit's re-traced overlay outside any tile: the flags follow
         // whole when the generation moved (a byte a pixel).
@@ -120,9 +135,18 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - locked)
                 .count();
     };
+    const uint64_t serialBefore = d.serial;
     if (wait == FrameWait::Block) {
         session_->withFrame(copy);
-    } else if (!session_->tryWithFrame(copy)) {
+    } else if (const bool got = session_->tryWithFrame(copy); !got || torn) {
+        if (torn) {
+            // Not busy: the pass that makes the frame whole ends with a hand-over (the
+            // viewport's passFinished).
+            heldTiles_ = std::move(tiles);
+            heldEverything_ = everything;
+            heldGeneration_ = committed;
+            return frame_;
+        }
         // Kept for the next look, which comes soon whether or not more tiles arrive.
         heldTiles_ = std::move(tiles);
         heldEverything_ = everything;
@@ -138,6 +162,8 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
         ++d.serial;
     }
     d.generation = std::max(d.generation, committed);
+    if (d.serial != serialBefore) Q_EMIT frameHandedOver(d.serial, whole);
+    if (whole) session_->wholeFrameShown(wholeMark);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++handover_.count;

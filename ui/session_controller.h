@@ -70,6 +70,13 @@ public:
         int busy = 0;         ///< TryOnly hand-overs that found the lock held and came back later.
     };
     const HandoverStats& handoverStats() const { return handover_; }
+    /// While the user drags or orbits, hand-overs (FrameWait::TryOnly) keep showing the last
+    /// whole frame until the next one is whole, instead of a pass cut short (a torn picture
+    /// of several documents); otherwise every committed tile is shown as it comes.
+    void setWholeFramesWhileMoving(bool on) {
+        wholeWhileMoving_ = on;
+        session_->setDisplayWaits(on);
+    }
     /// Counts requestUpdate calls; documentPosted says which generation carried them.
     uint64_t requestSerial() const { return requestSerial_; }
 
@@ -88,6 +95,9 @@ Q_SIGNALS:
     void frameCompleted(quint64 generation);
     /// The document of requests up to `requestSerial` went to the session as `generation`.
     void documentPosted(quint64 requestSerial, quint64 generation);
+    /// displayFrame produced DisplayFrame::serial `serial`; `whole`: no pixel of it shows an
+    /// older document than the rest (RenderSession::wholeMark), i.e. not a pass cut short.
+    void frameHandedOver(quint64 serial, bool whole);
     /// updatesPerSecond() changed (checked once a second, including the fall to 0).
     void updateRateChanged(double updatesPerSecond);
 
@@ -126,6 +136,8 @@ private:
     ToneMap postedTonemap_ = ToneMap::Clamp;
     float postedExposure_ = 0.0f;
     HandoverStats handover_;
+    bool interacting_ = false;  ///< Between beginInteraction and endInteraction.
+    bool wholeWhileMoving_;     ///< Set by the constructor.
     int updatesThisSecond_ = 0;
     double updatesPerSecond_ = 0.0;
     QTimer rateTimer_;

@@ -48,22 +48,40 @@ double Governor::relativePixelCost(const InteractionPolicy& p) {
 
 double Governor::predictedMsPerPixel(const InteractionPolicy& base, int level) const {
     if (measured_[std::size_t(level)]) return msPerPixel_[std::size_t(level)];
-    return msPerFullPixel_ * relativePixelCost(policyForLevel(base, level));
+    const double relative = relativePixelCost(policyForLevel(base, level));
+    for (int d = 1; d < kLevels; ++d) {
+        for (const int m : {level - d, level + d}) {
+            if (m < 0 || m >= kLevels || !measured_[std::size_t(m)]) continue;
+            return msPerPixel_[std::size_t(m)] * relative /
+                   relativePixelCost(policyForLevel(base, m));
+        }
+    }
+    return msPerFullPixel_ * relative;
 }
+
+namespace {
+/// When no level meets the target, a deeper measured one is taken over the fastest so far
+/// only if it is this much faster (not the blocks or the box for a few percent).
+constexpr double kClearlyFaster = 0.8;
+}  // namespace
 
 int Governor::choose(const InteractionPolicy& base, std::size_t stalePixels,
                      double targetMs) const {
-    int cheapest = 0;
+    int fastest = 0;
+    double fastestMs = 0.0;
     InteractionPolicy previous;
     for (int level = 0; level < kLevels; ++level) {
         const InteractionPolicy p = policyForLevel(base, level);
         if (level > 0 && p == previous) continue;  // Nothing more turned down.
         previous = p;
-        cheapest = level;
-        if (tracedPixels(p, stalePixels) * predictedMsPerPixel(base, level) <= targetMs)
-            return level;
+        const double ms = tracedPixels(p, stalePixels) * predictedMsPerPixel(base, level);
+        if (ms <= targetMs) return level;
+        // A level measured to change the picture more must be clearly faster to be worth it
+        // (one only predicted is tried when faster at all: then it is measured).
+        const double margin = measured_[std::size_t(level)] ? kClearlyFaster : 1.0;
+        if (level == 0 || ms < margin * fastestMs) fastest = level, fastestMs = ms;
     }
-    return cheapest;
+    return fastest;
 }
 
 void Governor::record(int level, double ms, std::size_t tracedPixels) {
@@ -72,6 +90,15 @@ void Governor::record(int level, double ms, std::size_t tracedPixels) {
     double& v = msPerPixel_[std::size_t(level)];
     v = measured_[std::size_t(level)] ? 0.7 * v + 0.3 * sample : sample;
     measured_[std::size_t(level)] = true;
+    age_[std::size_t(level)] = 0;
+    for (int other = 0; other < kLevels; ++other)
+        if (other != level && measured_[std::size_t(other)] &&
+            ++age_[std::size_t(other)] > kForgetAfter)
+            measured_[std::size_t(other)] = false;
+}
+
+double Governor::budgetMs(double targetMs, double updateMs, double planMs) {
+    return std::max(0.0, 0.9 * targetMs - updateMs - planMs);
 }
 
 void Governor::calibrate(double msPerFullQualityPixel) {

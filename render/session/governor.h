@@ -28,20 +28,31 @@ public:
     /// measurements (4.2), for levels not measured yet.
     static double relativePixelCost(const InteractionPolicy& p);
 
-    /// Picks the least-reduced level whose predicted frame time meets `targetMs`, or the
-    /// cheapest level when none does.
+    /// Picks the least-reduced level whose predicted frame time meets `targetMs`; when none
+    /// does, the level predicted fastest (a deeper level that measured no faster, because
+    /// it still fills and commits every pixel, is not taken for nothing).
     int choose(const InteractionPolicy& base, std::size_t stalePixels, double targetMs) const;
-    /// Feeds back a measured interactive frame at `level`.
+    /// Feeds back an interactive pass at `level`: `ms` to its end, or to the edit that cut it,
+    /// and the pixels it traced by then (a cut pass costs what it traced before the cut).
     void record(int level, double ms, std::size_t tracedPixels);
     /// Sets the cost of a full-quality pixel (ms), which predicts the levels not measured yet.
     void calibrate(double msPerFullQualityPixel);
-    /// Predicted ms per traced pixel of `level` under `base`: measured, else calibrated.
+    /// Predicted ms per traced pixel of `level` under `base`: measured; else scaled from the
+    /// nearest measured level (the machine's load as it is now), else calibrated.
     double predictedMsPerPixel(const InteractionPolicy& base, int level) const;
+    /// Milliseconds an interactive pass planned now may take: `targetMs` less the edit's own
+    /// cost (diff, refit, marking) and the planning, less a tenth kept for scheduling jitter,
+    /// so that frames meet the target, not just average it.
+    static double budgetMs(double targetMs, double updateMs, double planMs);
+    /// Passes measured at other levels after which a level's own measurement is forgotten
+    /// (predicted again): a level measured while the machine was busy gets another try.
+    static constexpr int kForgetAfter = 60;
 
 private:
     double msPerFullPixel_ = 0.0;
     std::array<double, kLevels> msPerPixel_{};
     std::array<bool, kLevels> measured_{};
+    std::array<int, kLevels> age_{};  ///< Passes recorded at other levels since measured.
 };
 
 }  // namespace rs

@@ -72,7 +72,9 @@ public:
     EngineKind engine() const;
     InteractionPolicy policy() const;
 
-    /// Posts `doc` and returns its generation at once: running tiles stop, and the scheduler
+    /// Posts `doc` and returns its generation at once: running tiles stop (while the user
+    /// drags or orbits, a governed interactive pass runs on to its end first unless it is
+    /// long over its time, so that a whole frame is shown), and the scheduler
     /// thread diffs it against the document applied last, refits or rebuilds the snapshot and
     /// marks the pixels the edit can change. Documents posted while one is being applied
     /// coalesce: only the latest is applied. Failures (a bad scene, bad_alloc) go to the
@@ -116,7 +118,27 @@ public:
     /// How long tryWithFrame may wait: a few tile commits, far below a GUI stall.
     static constexpr std::chrono::microseconds kReaderBudget{1500};
     SessionStats stats() const;
-    uint64_t generation() const { return generation_.load(); }
+    /// The generation update() gave last (the one being traced may be older: see update()).
+    uint64_t generation() const { return postedGeneration_.load(); }
+    /// Whole frames, for the display: a frame is whole when all its pixels show one
+    /// document. Edits only mark pixels stale (their colours stay), so a frame is torn from
+    /// the start of a pass that re-traces stale pixels (or a resize) until a pass leaves no
+    /// pixel stale, which makes it whole at the count of such tears. Read wholeMark()
+    /// before taking the tiles announced so far (every tile of that pass has been announced
+    /// by then), then, inside withFrame or tryWithFrame, wholeSince(mark): not torn since,
+    /// so those tiles' pixels complete the picture of one document.
+    uint64_t wholeMark() const { return wholeMark_.load(std::memory_order_acquire); }
+    bool wholeSince(uint64_t mark) const {
+        return tears_.load(std::memory_order_acquire) == mark &&
+               wholeMark_.load(std::memory_order_acquire) == mark;
+    }
+    /// The display showed the whole frame of `mark`. With setDisplayWaits(true), while the
+    /// user drags or orbits, a pass that would tear a whole frame the display has not taken
+    /// yet waits for it (up to kDisplayWait): else the next edit's pass, which starts at once,
+    /// tears every frame before the display, a queued event away, can copy it.
+    void wholeFrameShown(uint64_t mark);
+    void setDisplayWaits(bool on);
+    static constexpr std::chrono::milliseconds kDisplayWait{12};
     std::shared_ptr<const CompiledScene> snapshot() const;
 
     /// Internal: a planned pass and one of its tiles (session_plan.h).
@@ -135,6 +157,10 @@ private:
     void processTile(const Plan& plan, const TileJob& job, PassCounters& counters);
     bool fullQualityWhileMoving() const;
     uint8_t targetStateLocked() const;
+    /// Whether an edit posted now lets the running pass finish first (see update()).
+    bool letsThePassFinishLocked(std::chrono::steady_clock::time_point now) const;
+    /// Tiles of another picture are about to be written: the frame is no longer whole.
+    void tornLocked() { tears_.fetch_add(1, std::memory_order_release); }
 
     mutable std::mutex mutex_;  ///< Scheduler state; taken before frameLock_.
     /// Frame pixels. Tiles commit disjoint pixels under a shared lock; edits (generation bump
@@ -143,7 +169,13 @@ private:
     mutable FrameLock frameLock_;
     std::condition_variable wake_;
     std::condition_variable done_;
+    /// The generation being traced: tiles of another stop and are not written.
     std::atomic<uint64_t> generation_{0};
+    std::atomic<uint64_t> postedGeneration_{0};  ///< The last update()'s (>= generation_).
+    std::atomic<uint64_t> tears_{0};  ///< See wholeMark().
+    std::atomic<uint64_t> wholeMark_{0};
+    uint64_t wholeShown_ = 0;     ///< wholeFrameShown's latest mark.
+    bool displayWaits_ = false;
 
     /// The document applied last; only the scheduler thread writes it (under mutex_) and
     /// reads it without the lock while applying the next.
@@ -180,6 +212,9 @@ private:
     bool completeValid_ = false;
     bool running_ = false;
     std::chrono::steady_clock::time_point editTime_;
+    std::chrono::steady_clock::time_point passStart_;  ///< Of the pass running (running_).
+    PassKind passKind_ = PassKind::Base;
+    int passLevel_ = -1;  ///< Its governor level (-1: not governed).
     SessionStats stats_;
     SessionObserver* observer_ = nullptr;
 

@@ -61,13 +61,10 @@ bool RenderSession::planLocked(Plan& plan) {
         plan.kind = PassKind::Interactive;
         InteractionPolicy effective = policy_;
         if (policy_.governorTargetMs > 0.0) {
-            // The frame also pays for the edit itself (diff, refit, dirty marking) and for
-            // planning the pass: budget the tracing with what is left of the target, less a
-            // tenth kept for scheduling jitter, so frames meet the target, not just average it.
-            const double budget =
-                std::max(0.0, 0.9 * policy_.governorTargetMs - stats_.lastUpdateMs -
-                                  stats_.lastInteractivePass.planMs);
-            plan.governorLevel = governor_.choose(policy_, stale, budget);
+            plan.governorLevel =
+                governor_.choose(policy_, stale,
+                                 Governor::budgetMs(policy_.governorTargetMs, stats_.lastUpdateMs,
+                                                    stats_.lastInteractivePass.planMs));
             effective = Governor::policyForLevel(policy_, plan.governorLevel);
         }
         plan.options = effective.movingTraceOptions(settings, moving_);

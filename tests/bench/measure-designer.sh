@@ -58,6 +58,33 @@
 #   time in blocks > 16 ms   50 -> 12.5 %  33.5 -> 4 %   20 -> 8.5 %   19.5 -> 2.5 %
 #
 # "mouse event handling" also names the slowest event (while dragging, the press).
+#
+# "whole frames shown" (branch orbit) counts the frames shown with no pixel left from an older
+# edit (no pass cut short in them), and times input to the first whole frame that shows it.
+# Main's session (df9d9f4) orbited at 47-56 frames/s, none of them whole: every pass was cut by
+# the next mouse move. The branch lets a governed interactive pass finish while the user moves
+# (the edits coalesce and wait for it), and the display shows only whole frames while moving.
+# 3 interleaved runs each of main's session with this measurement (100668e) and the branch,
+# load 4.8-5.8 from other builds, medians [range]:
+#
+#                            drag main    drag branch        orbit main      orbit branch
+#   whole frames /s          8.0 [3-15]   41.8 [41-50]       0.0             14.9 [12-19]
+#   frames shown /s          51.3         41.8 (all whole)   47.1 (torn)     14.9 (all whole)
+#   input to a whole frame   444 ms       37.5 ms [23-40]    2122 ms (the release)  137 ms [99-170]
+#   input to display         26.2 ms      37.5 ms            23.2 ms (torn)  137 ms
+#   longest GUI stall / p99  36 / 9 ms    46 / 18 ms         37 / 14 ms      66 / 41 ms
+#   governor level median    2            0-2 (max 5)        2               4-5
+#
+# The 1M-triangle mesh (--scene mesh-1000000.scene.json --object mesh), 3 interleaved runs
+# each at load 3.4-4.5: main 0.0 whole frames/s dragging and orbiting (54.8 and 57.3 torn
+# ones, not one pass finished); the branch drag 32.1 [28-40] whole/s, 60 ms [47-66] to one,
+# orbit 17.7 [14-27] whole/s, 107 ms [75-144], governor level 2-5 dragging, 4 orbiting.
+#
+# Orbit misses 30 whole frames/s and 50 ms on this loaded machine: a whole orbit pass of the
+# 992x915 frame takes 40-70 ms at any level (quarter resolution and the box proxy still fill
+# and commit every pixel). Showing a whole frame copies and re-shades all of it at once on
+# the GUI thread, hence the longer stalls while orbiting.
+
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)

@@ -90,5 +90,46 @@ TEST(Governor, AtTheDefaultTarget_ADragStaysFullQuality_AWholeFrameOnlyHalvesThe
     EXPECT_GE(g.choose(defaults, 1000000, defaults.governorTargetMs), 3);
 }
 
+TEST(Governor, CutPassesTeachTheCostAndLevelsNotMeasuredFollowTheirLoad) {
+    Governor g;
+    g.calibrate(1e-4);  // An idle Base pass: 0.1 microseconds a full-quality pixel.
+    const InteractionPolicy defaults;
+    // An orbit step of a 1 Mpixel frame with 15 ms to the next edit: half resolution fits.
+    EXPECT_EQ(g.choose(defaults, 1000000, 15.0), 2);
+    // Each such pass was cut after 16 ms with 100,000 of its 250,000 pixels traced: the
+    // machine is busier than the idle calibration said. Diffuse glass at half resolution,
+    // predicted from that load (not from the idle calibration, 8.8 ms), misses too.
+    for (int i = 0; i < 3; ++i) g.record(2, 16.0, 100000);
+    EXPECT_EQ(g.choose(defaults, 1000000, 15.0), 4);
+}
+
+TEST(Governor, NoLevelMeetsTheTarget_TheFastestMeasuredIsTaken) {
+    Governor g;
+    g.calibrate(1e-4);
+    const InteractionPolicy defaults;
+    // Measured: deeper levels hardly cheaper, as they still fill and commit every pixel.
+    g.record(2, 20.0, 250000);
+    g.record(3, 22.0, 250000);
+    g.record(4, 25.0, 62500);
+    g.record(5, 30.0, 62500);
+    EXPECT_EQ(g.choose(defaults, 1000000, 5.0), 2);  // No box proxy for nothing.
+    g.record(4, 10.0, 62500);
+    g.record(4, 10.0, 62500);
+    g.record(4, 10.0, 62500);
+    EXPECT_EQ(g.choose(defaults, 1000000, 5.0), 4);
+}
+
+TEST(Governor, ALevelMeasuredSlowIsTriedAgainOnceOthersHaveRunForAWhile) {
+    Governor g;
+    g.calibrate(1e-4);
+    const InteractionPolicy defaults;
+    g.record(0, 150.0, 15000);  // A drag step at full resolution, while the machine was busy.
+    EXPECT_GT(g.choose(defaults, 15000, 100.0), 0);
+    for (int i = 0; i < Governor::kForgetAfter; ++i) g.record(2, 0.375, 3750);
+    EXPECT_GT(g.choose(defaults, 15000, 100.0), 0);
+    g.record(2, 0.375, 3750);  // Level 0 forgotten: predicted from level 2's load now.
+    EXPECT_EQ(g.choose(defaults, 15000, 100.0), 0);
+}
+
 }  // namespace
 }  // namespace rs

@@ -374,6 +374,140 @@ TEST(RenderSession, HalfResolutionWhileMoving_TracesAQuarterOfTheDirtyPixels) {
     ASSERT_TRUE(session.waitUntilComplete(60s));
 }
 
+/// Holds the workers in tileDone once a tile of `from` (or later) commits, until released.
+class TileGate : public SessionObserver {
+public:
+    void tileDone(int, int, int, int, uint64_t generation) override {
+        std::unique_lock lock(m_);
+        if (from_ == 0 || generation < from_) return;
+        held_ = true;
+        cv_.notify_all();
+        cv_.wait(lock, [&] { return !from_; });
+    }
+    void close(uint64_t from) {
+        std::lock_guard lock(m_);
+        from_ = from;
+    }
+    bool waitHeld() {
+        std::unique_lock lock(m_);
+        return cv_.wait_for(lock, 30s, [&] { return held_; });
+    }
+    void open() {
+        std::lock_guard lock(m_);
+        from_ = 0;
+        cv_.notify_all();
+    }
+
+private:
+    std::mutex m_;
+    std::condition_variable cv_;
+    uint64_t from_ = 0;
+    bool held_ = false;
+};
+
+TEST(RenderSession, WholeFrames_APassOverStalePixelsTearsTheFrameUntilOneLeavesNoneStale) {
+    SceneDocument doc = testRoom();
+    TileGate gate;
+    RenderSession session(2);
+    session.setObserver(&gate);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    const uint64_t opened = session.wholeMark();
+    bool whole = false;
+    session.withFrame([&](const DeepFrame&, const auto&) { whole = session.wholeSince(opened); });
+    EXPECT_TRUE(whole);
+    // An edit that traces nothing marks nothing: still the same whole frame.
+    doc.objects[2].name += " renamed";
+    ASSERT_TRUE(session.waitForUpdate(session.update(doc), 30s));
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    EXPECT_EQ(session.wholeMark(), opened);
+    // An orbit step marks every pixel: with its first tiles committed and the pass not
+    // done, the frame is torn (pixels of two cameras), and whole again after the pass.
+    // (Marked alone, before its pass, it still shows one camera: marking keeps colours.)
+    session.beginInteraction(kNoObject);
+    doc.camera.position.x += 0.2f;
+    const uint64_t orbit = session.generation() + 1;
+    gate.close(orbit);
+    ASSERT_EQ(session.update(doc), orbit);
+    ASSERT_TRUE(gate.waitHeld());
+    session.withFrame([&](const DeepFrame& f, const auto&) {
+        EXPECT_GT(f.countBelow(kInteractive), 0u);
+        EXPECT_FALSE(session.wholeSince(session.wholeMark()));
+    });
+    EXPECT_EQ(session.wholeMark(), opened);
+    gate.open();
+    ASSERT_TRUE(session.waitForPass(orbit, 30s));
+    EXPECT_GT(session.wholeMark(), opened);
+    session.withFrame(
+        [&](const DeepFrame&, const auto&) { whole = session.wholeSince(session.wholeMark()); });
+    EXPECT_TRUE(whole);
+    session.endInteraction();
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    session.setObserver(nullptr);
+}
+
+/// Starts a governed orbit step of `doc` whose workers `gate` holds mid-pass; returns its
+/// generation.
+static uint64_t orbitStepHeldMidPass(RenderSession& session, TileGate& gate, SceneDocument& doc) {
+    session.setObserver(&gate);
+    session.beginInteraction(kNoObject);
+    doc.camera.position.x += 0.2f;
+    gate.close(session.generation() + 1);
+    const uint64_t step = session.update(doc);
+    EXPECT_TRUE(gate.waitHeld());
+    return step;
+}
+
+TEST(RenderSession, WhileMoving_AGovernedPassWithinItsTimeFinishes_TheEditsWaitForIt) {
+    SceneDocument doc = testRoom();
+    RenderSession session(2);
+    InteractionPolicy p;
+    p.governorTargetMs = 60000.0;  // However long the test holds the pass, it is in time.
+    session.setPolicy(p);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    TileGate gate;
+    const uint64_t step = orbitStepHeldMidPass(session, gate, doc);
+    // Two more mouse moves while the pass runs: they coalesce and wait for it.
+    doc.camera.position.x += 0.1f;
+    session.update(doc);
+    doc.camera.position.x += 0.1f;
+    const uint64_t last = session.update(doc);
+    EXPECT_EQ(last, step + 2);
+    gate.open();
+    PassInfo info;
+    ASSERT_TRUE(session.waitForPass(step, 30s, &info));  // Ended whole, not cut.
+    EXPECT_FALSE(info.cancelled);
+    EXPECT_EQ(info.tracedPixels, info.totalPixels);
+    // Then the latest edit is applied and traced; released, the frame is exact.
+    ASSERT_TRUE(session.waitForPass(last, 30s));
+    session.endInteraction();
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    session.setObserver(nullptr);
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+}
+
+TEST(RenderSession, WhileMoving_APassOverItsTimeIsCutByTheNextEdit) {
+    SceneDocument doc = testRoom();
+    RenderSession session(2);
+    InteractionPolicy p;
+    p.governorTargetMs = 1e-3;  // Any pass held mid-way is long over its time.
+    session.setPolicy(p);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    TileGate gate;
+    const uint64_t step = orbitStepHeldMidPass(session, gate, doc);
+    doc.camera.position.x += 0.1f;
+    const uint64_t next = session.update(doc);
+    gate.open();
+    EXPECT_FALSE(session.waitForPass(step, 30s));  // Cut: the next edit is traced instead.
+    ASSERT_TRUE(session.waitForPass(next, 30s));
+    session.endInteraction();
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    session.setObserver(nullptr);
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+}
+
 TEST(RenderSession, EditsFromAnotherThreadWhileRendering_EndExact) {
     // Stress: edits arrive from a second thread as fast as it can make them; the TSan preset
     // runs this too.
