@@ -19,8 +19,11 @@ constexpr std::size_t kCameraChunk = 1024;
 /// most 255 rays (weights of a level sum to at most 1), so a chunk never reaches this; only
 /// min_weight near 0 with wide glass trees does, and then the level is traced in parts.
 constexpr std::size_t kLevelCap = std::size_t(1) << 18;
-/// Light samples (so shadow rays) gathered before the batch is sent to the engine.
-constexpr std::size_t kSampleCap = 16384;
+/// Light samples (so shadow rays) gathered before the batch is sent to the engine. Small
+/// enough that a batch's samples, shadow rays and answers (about 50 KB) stay in the first-level
+/// cache between sampling, tracing and shading: 16384 (800 KB) made the 16-sample sphere
+/// light about 7 % slower in wall time for the same instructions.
+constexpr std::size_t kSampleCap = 1024;
 
 }  // namespace
 
