@@ -144,28 +144,43 @@ inline F8 highest(F8 x) {
 }
 inline float magnitude(float x) { return x < 0.0f ? -x : x; }
 
-/// Spheres from this many on are culled for a group of rays before the lanes test them.
+/// Spheres (and planes) from this many on are culled for a group of rays before the lanes
+/// test them.
 constexpr int kCullFrom = 4;
 
-/// A conservative cull of the world spheres for eight rays: bit s set unless sphere s lies
-/// out of reach of the box around the rays' segments o + t d, t in [0, tend] (all of them,
-/// when a segment is not finite). A sphere the exact test could hit within (0, tend) meets
-/// that box, up to rounding about 1e-6 of the coordinates; the margins (`reach`, and 1e-4 of
-/// the box's own coordinates) are 100 times that, so a culled sphere is one the lanes
-/// would have missed in every lane, and skipping it leaves every bit of the answer as it was.
-inline unsigned sphereCandidates(const FlatView& v, const Rays8& r, F8 tend) {
-    const unsigned all = (1u << v.spheres) - 1u;  // at most FlatSet::kMaxShapes
-    if (v.spheres < kCullFrom) return all;
+/// The box around eight rays' segments o + t d, t in [0, tend], and a margin 100 times the
+/// rounding of the exact tests at its coordinates (1e-4 of the largest); `finite` is false
+/// when a segment is not finite (then there is no box and nothing is culled).
+struct SegmentBox {
+    F8 lox, hix, loy, hiy, loz, hiz;  ///< Every lane holds the bound.
+    float size = 0.0f;                ///< The largest magnitude of a corner coordinate.
+    bool finite = false;
+};
+
+inline SegmentBox segmentBox(const Rays8& r, F8 tend) {
+    SegmentBox b;
     const F8 ex = r.ox + r.dx * tend, ey = r.oy + r.dy * tend, ez = r.oz + r.dz * tend;
     // x - x is 0 exactly when x is finite (NaN for infinities and NaN).
-    if (bits(((ex - ex) == 0.0f) & ((ey - ey) == 0.0f) & ((ez - ez) == 0.0f)) != 0xffu) return all;
-    const F8 lox = lowest(min8(r.ox, ex)), hix = highest(max8(r.ox, ex));
-    const F8 loy = lowest(min8(r.oy, ey)), hiy = highest(max8(r.oy, ey));
-    const F8 loz = lowest(min8(r.oz, ez)), hiz = highest(max8(r.oz, ez));
-    const float corners[6] = {lox[0], hix[0], loy[0], hiy[0], loz[0], hiz[0]};
-    float size = 0.0f;
-    for (float c : corners) size = size < magnitude(c) ? magnitude(c) : size;
-    const F8 margin = splat(1e-4f * (1.0f + size)), zero = splat(0.0f);
+    if (bits(((ex - ex) == 0.0f) & ((ey - ey) == 0.0f) & ((ez - ez) == 0.0f)) != 0xffu) return b;
+    b.lox = lowest(min8(r.ox, ex)), b.hix = highest(max8(r.ox, ex));
+    b.loy = lowest(min8(r.oy, ey)), b.hiy = highest(max8(r.oy, ey));
+    b.loz = lowest(min8(r.oz, ez)), b.hiz = highest(max8(r.oz, ez));
+    const float corners[6] = {b.lox[0], b.hix[0], b.loy[0], b.hiy[0], b.loz[0], b.hiz[0]};
+    for (float c : corners) b.size = b.size < magnitude(c) ? magnitude(c) : b.size;
+    b.finite = true;
+    return b;
+}
+
+/// A conservative cull of the world spheres for eight rays: bit s set unless sphere s lies
+/// out of reach of the box around the rays' segments (all of them, when there is no box). A
+/// sphere the exact test could hit within (0, tend) meets that box, up to rounding about
+/// 1e-6 of the coordinates involved; the margins (`reach`, and 1e-4 of the box's own
+/// coordinates) are 100 times that, so a culled sphere is one the lanes would have missed
+/// in every lane, and skipping it leaves every bit of the answer as it was.
+inline unsigned sphereCandidates(const FlatView& v, const SegmentBox& b) {
+    const unsigned all = (1u << v.spheres) - 1u;  // at most FlatSet::kMaxShapes
+    if (!b.finite) return all;
+    const F8 margin = splat(1e-4f * (1.0f + b.size)), zero = splat(0.0f);
     unsigned keep = 0;
     for (int s = 0; s < v.spheres; s += kLanes) {
         const int lanes = v.spheres - s < kLanes ? v.spheres - s : kLanes;
@@ -173,14 +188,48 @@ inline unsigned sphereCandidates(const FlatView& v, const Rays8& r, F8 tend) {
         const F8 cz = load8(v.cz, std::size_t(s), lanes);
         // How far each centre lies outside the box along each axis (0 inside; the box is
         // not empty, so one of the two terms is 0).
-        const F8 gx = max8(lox - cx, zero) + max8(cx - hix, zero);
-        const F8 gy = max8(loy - cy, zero) + max8(cy - hiy, zero);
-        const F8 gz = max8(loz - cz, zero) + max8(cz - hiz, zero);
+        const F8 gx = max8(b.lox - cx, zero) + max8(cx - b.hix, zero);
+        const F8 gy = max8(b.loy - cy, zero) + max8(cy - b.hiy, zero);
+        const F8 gz = max8(b.loz - cz, zero) + max8(cz - b.hiz, zero);
         const F8 reach = load8(v.reach, std::size_t(s), lanes) + margin;
         const unsigned out = bits((gx * gx + gy * gy + gz * gz) > reach * reach);
         keep |= (~out & ((1u << lanes) - 1u)) << s;
     }
     return keep;
+}
+
+/// sphereCandidates for segments ending at `tend`, the box made only where there are enough
+/// spheres to pay for it.
+inline unsigned sphereCandidates(const FlatView& v, const Rays8& r, F8 tend) {
+    if (v.spheres < kCullFrom) return (1u << v.spheres) - 1u;
+    return sphereCandidates(v, segmentBox(r, tend));
+}
+
+/// A conservative cull of planes [from, from + lanes) for eight rays (lanes at most 8): bit
+/// j set unless the box around the segments lies wholly on one side of plane from + j, by
+/// more than 1e-4 of the coordinates involved (the box's, the plane point's) times the
+/// normal's size. Then both ends of every segment lie on that side, the exact quotient is
+/// <= 0 or >= tmax by far more than its rounding, and the lanes would miss it in every lane.
+inline unsigned planeCandidates(const FlatView& v, const SegmentBox& b, int from, int lanes) {
+    const unsigned all = (1u << lanes) - 1u;
+    if (!b.finite) return all;
+    // The plane tables are padded to whole groups of eight: plain loads.
+    const std::size_t f = std::size_t(from);
+    const F8 nx = load8(v.nx, f, kLanes), ny = load8(v.ny, f, kLanes), nz = load8(v.nz, f, kLanes);
+    const F8 zero = splat(0.0f);
+    const I8 px = nx > zero, py = ny > zero, pz = nz > zero;
+    // The signed distance (x - p) . n at the box's nearest and farthest corners.
+    const F8 offset = load8(v.pn, f, kLanes);
+    const F8 lo = ((select(px, nx * b.lox, nx * b.hix) + select(py, ny * b.loy, ny * b.hiy)) +
+                   select(pz, nz * b.loz, nz * b.hiz)) -
+                  offset;
+    const F8 hi = ((select(px, nx * b.hix, nx * b.lox) + select(py, ny * b.hiy, ny * b.loy)) +
+                   select(pz, nz * b.hiz, nz * b.loz)) -
+                  offset;
+    const F8 margin =
+        (1e-4f * (1.0f + b.size + load8(v.pmag, f, kLanes))) * load8(v.nsum, f, kLanes);
+    const unsigned aside = bits((lo > margin) | (hi < -margin));
+    return ~aside & all;
 }
 
 /// Closest hits of rays [first, first + 8): planes first in order, then spheres in order,
@@ -223,6 +272,16 @@ inline void closest8(const FlatView& v, const RayBatch& rays, std::size_t first,
     }
 }
 
+/// Each 8-bit mask as eight bytes of 0 or 1 (byte k is bit k): a group's answers in one store.
+struct LaneBytes {
+    uint8_t bytes[256][kLanes];
+    constexpr LaneBytes() : bytes{} {
+        for (int m = 0; m < 256; ++m)
+            for (int k = 0; k < kLanes; ++k) bytes[m][k] = uint8_t((m >> k) & 1);
+    }
+};
+constexpr LaneBytes kLaneBytes{};
+
 /// Any hit of rays [first, first + 8): spheres first (a shadow ray toward a light inside a
 /// room rarely reaches a wall), stopping once every lane is blocked. With `skipBlocked`,
 /// lanes already marked occluded count as blocked from the start.
@@ -235,16 +294,29 @@ inline void any8(const FlatView& v, const RayBatch& rays, std::size_t first, uin
         for (int k = 0; k < r.lanes; ++k) blocked |= unsigned(occluded[first + std::size_t(k)] != 0) << k;
     if (blocked == all) return;
     const F8 a = r.dx * r.dx + r.dy * r.dy + r.dz * r.dz;
-    for (unsigned left = sphereCandidates(v, r, r.tmax); left && (blocked & all) != all; left &= left - 1) {
+    // One box for both culls, made where there are enough spheres or planes to pay for it.
+    const SegmentBox box =
+        v.spheres >= kCullFrom || v.planes >= kCullFrom ? segmentBox(r, r.tmax) : SegmentBox{};
+    for (unsigned left = sphereCandidates(v, box); left && (blocked & all) != all;
+         left &= left - 1) {
         const int s = __builtin_ctz(left);
         SphereLanes h;
         blocked |= bits(sphereHit(r, a, v, s, r.tmax, h));
     }
-    for (int j = 0; j < v.planes && (blocked & all) != all; ++j) {
-        const F8 t = planeDistance(r, v, j);
-        blocked |= bits((t > 0.0f) & (t < r.tmax));
+    // Planes eight at a time: a shadow ray inside a room crosses none, so most are culled.
+    for (int from = 0; from < v.planes && (blocked & all) != all; from += kLanes) {
+        const int lanes = v.planes - from < kLanes ? v.planes - from : kLanes;
+        for (unsigned left = planeCandidates(v, box, from, lanes); left && (blocked & all) != all;
+             left &= left - 1) {
+            const F8 t = planeDistance(r, v, from + __builtin_ctz(left));
+            blocked |= bits((t > 0.0f) & (t < r.tmax));
+        }
     }
-    for (int k = 0; k < r.lanes; ++k) occluded[first + std::size_t(k)] = (blocked >> k) & 1u;
+    if (r.lanes == kLanes) {
+        std::memcpy(occluded + first, &kLaneBytes.bytes[blocked], kLanes);
+    } else {
+        for (int k = 0; k < r.lanes; ++k) occluded[first + std::size_t(k)] = (blocked >> k) & 1u;
+    }
 }
 
 /// For rays [first, first + 8) and each other primitive o: bit k of masks[o] set when ray k

@@ -1,6 +1,7 @@
 // FlatSet: its tables, and the run-time choice between the AVX2 and the baseline lane loops.
 #include "accel/flat_set.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -21,6 +22,7 @@ struct FlatView {
     const uint32_t* prim;
     int spheres;
     const float *px, *py, *pz, *nx, *ny, *nz;
+    const float *pn, *nsum, *pmag;  ///< Each plane's p . n, |n.x| + |n.y| + |n.z|, max |p.i|.
     int planes;
     const float *lox, *loy, *loz, *hix, *hiy, *hiz;  ///< Widened bounds of the others.
     int others;
@@ -106,10 +108,22 @@ FlatSet::FlatSet(const std::vector<PlanePrimitive>& planes, const std::vector<Pr
                                                std::abs(s->center.z) + s->radius));
         t.prim.push_back(uint32_t(i));
     }
+    t.planes = int(planes.size());
     for (const PlanePrimitive& p : planes) {
         t.px.push_back(p.shape.point.x), t.py.push_back(p.shape.point.y), t.pz.push_back(p.shape.point.z);
         t.nx.push_back(p.shape.normal.x), t.ny.push_back(p.shape.normal.y), t.nz.push_back(p.shape.normal.z);
+        // For the planes' cull (planeCandidates), which leaves a margin for their rounding.
+        const Vec3 q = p.shape.point, n = p.shape.normal;
+        t.pn.push_back(glm::dot(q, n));
+        t.nsum.push_back(std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
+        t.pmag.push_back(std::max(std::abs(q.x), std::max(std::abs(q.y), std::abs(q.z))));
     }
+    // The cull loads the planes' normals and terms eight at a time: padded with copies of the
+    // last plane to whole groups of eight (the lanes past the count are never used).
+    const std::size_t planeCount = t.px.size();
+    for (std::size_t k = planeCount; k % 8 != 0; ++k)
+        for (auto* v : {&t.px, &t.py, &t.pz, &t.nx, &t.ny, &t.nz, &t.pn, &t.nsum, &t.pmag})
+            v->push_back(v->back());
 }
 
 namespace {
@@ -119,10 +133,11 @@ inline Ray rayAt(const RayBatch& rays, std::size_t i) {
 }
 
 FlatView view(const FlatSet::Tables& t) {
-    return {t.cx.data(), t.cy.data(), t.cz.data(), t.radius.data(), t.radius2.data(), t.reach.data(), t.prim.data(),
-            int(t.cx.size()), t.px.data(), t.py.data(), t.pz.data(), t.nx.data(), t.ny.data(),
-            t.nz.data(), int(t.px.size()), t.lox.data(), t.loy.data(), t.loz.data(),
-            t.hix.data(), t.hiy.data(), t.hiz.data(), int(t.lox.size())};
+    return {t.cx.data(),    t.cy.data(),   t.cz.data(),      t.radius.data(), t.radius2.data(),
+            t.reach.data(), t.prim.data(), int(t.cx.size()), t.px.data(),     t.py.data(),
+            t.pz.data(),    t.nx.data(),   t.ny.data(),      t.nz.data(),     t.pn.data(),
+            t.nsum.data(),  t.pmag.data(), t.planes,         t.lox.data(),    t.loy.data(),
+            t.loz.data(),   t.hix.data(),  t.hiy.data(),     t.hiz.data(),    int(t.lox.size())};
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 // tests (intersect(PlaneShape), intersect(SphereShape)) lane by lane, so a batch and a single
 // ray agree exactly (AVX2 where the processor has it, chosen at run time; SSE2 otherwise);
 // before its lanes, each group of eight rays drops the world spheres out of reach of the box
-// around its segments (a conservative cull: the answers keep their bits); boxes, rectangles
+// around its segments, and its shadow rays the planes that box lies wholly on one side of
+// (conservative culls: the answers keep their bits); boxes, rectangles
 // and framed spheres go through intersectPrimitive ray by ray.
 #pragma once
 
@@ -52,6 +53,8 @@ public:
         std::vector<float> reach;
         std::vector<uint32_t> prim;  ///< Index into the primitives of each world sphere.
         std::vector<float> px, py, pz, nx, ny, nz;
+        std::vector<float> pn, nsum, pmag;  ///< Per plane: p . n, |n| in the 1-norm, max |p.i|.
+        int planes = 0;  ///< The plane arrays hold this many, padded to a multiple of 8.
         std::vector<float> lox, loy, loz, hix, hiy, hiz;  ///< Widened bounds of the others.
     };
 

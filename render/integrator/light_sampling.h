@@ -136,7 +136,11 @@ void addCentreLight(const CompiledLight& light, const ShadingPoints& points,
 /// Where a shadow ray toward `s` starts (off the surface along n) and how far it goes: it
 /// stops epsilon short of the light's point.
 inline Vec3 shadowOrigin(const Vec3& p, const Vec3& n, float eps) { return p + n * eps; }
-inline float shadowLength(float dist, float eps) { return dist - eps; }
+/// (One distance, or a lane of them.)
+template <class F>
+inline F shadowLength(F dist, float eps) {
+    return dist - eps;
+}
 inline float shadowLength(const LightSample& s, float eps) { return shadowLength(s.dist, eps); }
 
 }  // namespace rs

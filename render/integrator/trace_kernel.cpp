@@ -2,12 +2,14 @@
 // with their shadow rays as one batch, then the next level's reflection and refraction rays.
 #include "integrator/trace_kernel.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+
 #include "integrator/face_hits.h"
 #include "integrator/light_sampling.h"
 #include "integrator/sampling.h"
-
-#include <algorithm>
-#include <cmath>
 
 namespace rs {
 
@@ -19,8 +21,11 @@ constexpr std::size_t kCameraChunk = 1024;
 /// most 255 rays (weights of a level sum to at most 1), so a chunk never reaches this; only
 /// min_weight near 0 with wide glass trees does, and then the level is traced in parts.
 constexpr std::size_t kLevelCap = std::size_t(1) << 18;
-/// Light samples (so shadow rays) gathered before the batch is sent to the engine.
-constexpr std::size_t kSampleCap = 16384;
+/// Light samples (so shadow rays) gathered before the batch is sent to the engine. Small
+/// enough that a batch's samples, shadow rays and answers (about 50 KB) stay in the first-level
+/// cache between sampling, tracing and shading: 16384 (800 KB) made the 16-sample sphere
+/// light about 7 % slower in wall time for the same instructions.
+constexpr std::size_t kSampleCap = 1024;
 
 }  // namespace
 
@@ -145,26 +150,55 @@ struct TraceKernel::Workspace {
     /// pushShadow wrote.
     void shadowRays(const ShadingPoints& pts, std::size_t first, std::size_t count, float eps,
                     std::size_t base = 0) {
-        const std::size_t n = base + samples.size();
-        if (sox.size() < n)
-            for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n);
-        if (slight.size() < n) slight.resize(n);
+        const std::size_t n = base + samples.size(), lane = std::size_t(kLaneWidth);
+        // One lane of slack: origins and lights are written a whole lane at a time.
+        if (sox.size() < n + lane)
+            for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n + lane);
+        if (slight.size() < n + lane) slight.resize(n + lane);
         shadowCount = n;
         float *ox = sox.data() + base, *oy = soy.data() + base, *oz = soz.data() + base;
         float *dx = sdx.data() + base, *dy = sdy.data() + base, *dz = sdz.data() + base;
         float* tmax = stmax.data() + base;
         uint32_t* light = slight.data() + base;
+        // Every sample lies in exactly one span, the spans in sample order: directions and
+        // lengths in one pass over the samples, four at a time.
+        const LightSample* s = samples.data();
+        std::size_t i = 0;
+        static_assert(offsetof(LightSample, dir) == 0 && offsetof(LightSample, dist) == 12,
+                      "a sample's first four floats are dir.x, dir.y, dir.z, dist");
+        for (; i + lane <= samples.size(); i += lane) {
+            // Four samples' (dir, dist) as rows, transposed into lanes.
+            FloatLanes r0, r1, r2, r3;
+            std::memcpy(&r0, &s[i], sizeof r0), std::memcpy(&r1, &s[i + 1], sizeof r1);
+            std::memcpy(&r2, &s[i + 2], sizeof r2), std::memcpy(&r3, &s[i + 3], sizeof r3);
+            const FloatLanes t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
+            const FloatLanes t1 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
+            const FloatLanes t2 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
+            const FloatLanes t3 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
+            const FloatLanes x = __builtin_shufflevector(t0, t1, 0, 1, 4, 5);
+            const FloatLanes y = __builtin_shufflevector(t0, t1, 2, 3, 6, 7);
+            const FloatLanes z = __builtin_shufflevector(t2, t3, 0, 1, 4, 5);
+            const FloatLanes t = shadowLength(__builtin_shufflevector(t2, t3, 2, 3, 6, 7), eps);
+            std::memcpy(dx + i, &x, sizeof x), std::memcpy(dy + i, &y, sizeof y);
+            std::memcpy(dz + i, &z, sizeof z), std::memcpy(tmax + i, &t, sizeof t);
+        }
+        for (; i < samples.size(); ++i) {
+            dx[i] = s[i].dir.x, dy[i] = s[i].dir.y, dz[i] = s[i].dir.z;
+            tmax[i] = shadowLength(s[i], eps);
+        }
+        // Each span's origin and light, a lane at a time: a span's last lane may run into the
+        // next span, which is written after it, or into the slack.
         for (std::size_t j = 0; j < count; ++j) {
             const std::size_t q = first + j;
             const Vec3 o = shadowOrigin(Vec3(pts.px[q], pts.py[q], pts.pz[q]),
                                         Vec3(pts.nx[q], pts.ny[q], pts.nz[q]), eps);
+            const FloatLanes x = splat(o.x), y = splat(o.y), z = splat(o.z);
             for (uint32_t k = pointSpans[j]; k < pointSpans[j + 1]; ++k) {
                 const LightSpan& span = spans[k];
-                for (uint32_t i = span.first; i < span.first + span.listed; ++i) {
-                    ox[i] = o.x, oy[i] = o.y, oz[i] = o.z;
-                    dx[i] = samples[i].dir.x, dy[i] = samples[i].dir.y, dz[i] = samples[i].dir.z;
-                    tmax[i] = shadowLength(samples[i], eps);
-                    light[i] = span.light;
+                const uint32_t l[kLaneWidth] = {span.light, span.light, span.light, span.light};
+                for (uint32_t r = span.first; r < span.first + span.listed; r += uint32_t(lane)) {
+                    std::memcpy(ox + r, &x, sizeof x), std::memcpy(oy + r, &y, sizeof y);
+                    std::memcpy(oz + r, &z, sizeof z), std::memcpy(light + r, l, sizeof l);
                 }
             }
         }

@@ -277,6 +277,58 @@ TEST(FlatSet, CoherentGroupsGrazingOneOfManySpheresGetTheScalarAnswer) {
     EXPECT_GT(blocked, 300);
 }
 
+TEST(FlatSet, ShadowGroupsEndingAHairFromAPlaneGetTheScalarAnswer) {
+    // Groups of eight rays from one point (as a shading point's samples of a sphere light),
+    // starting or ending a hair before, on or past one of the room's planes, so the box
+    // around the group lies a hair from that plane: the per-group plane cull must drop only
+    // planes every lane misses (a margin too small would drop the one they end at).
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), u01(0.0f, 1.0f);
+    const float hairs[] = {-1e-4f, -1e-5f, -1e-6f, -1e-7f, 0.0f, 1e-7f, 1e-6f, 1e-5f, 1e-4f};
+    int blocked = 0, open = 0;
+    for (int c = 0; c < 60; ++c) {
+        SceneDocument doc = randomRoom(rng, c % 6, 0.0f);
+        const CompiledScene scene(doc, nullptr, EngineKind::Builtin);
+        const FlatSet flat(scene.planes(), &scene.primitives());
+        Rays rays;
+        for (int group = 0; group < 24; ++group) {
+            const PlaneShape& plane =
+                scene.planes()[std::size_t(group) % scene.planes().size()].shape;
+            const Vec3 n = glm::normalize(plane.normal);
+            const Vec3 o = Vec3(2.0f * u(rng), 1.5f * u(rng), 2.0f * u(rng));
+            // A point on the plane near o, and the group's directions around o toward it.
+            const Vec3 target =
+                o - glm::dot(o - plane.point, n) * n + 0.5f * Vec3(u(rng), u(rng), u(rng));
+            const bool fromPlane = group % 3 == 0;  // leaving the plane instead of reaching it
+            for (int k = 0; k < 8; ++k) {
+                const float hair = hairs[std::size_t(k + group) % std::size(hairs)];
+                const Vec3 q = target + 0.05f * Vec3(u(rng), u(rng), u(rng));
+                const Vec3 onPlane = q - glm::dot(q - plane.point, n) * n;
+                if (fromPlane) {
+                    const Vec3 from = onPlane + hair * (1.0f + glm::length(onPlane)) * n;
+                    const Vec3 d = glm::normalize(o - from);
+                    rays.add(Ray::make(from, d), glm::length(o - from));
+                } else {
+                    const float dist = glm::length(onPlane - o);
+                    const Vec3 d = (onPlane - o) / dist;
+                    rays.add(Ray::make(o, d), dist * (1.0f + hair));
+                }
+            }
+        }
+        for (FlatSet::Lanes lanes : {FlatSet::Lanes::Best, FlatSet::Lanes::Baseline}) {
+            std::vector<uint8_t> occluded(rays.ox.size());
+            flat.anyHit(rays.batch(0, rays.ox.size()), occluded.data(), false, lanes);
+            for (std::size_t i = 0; i < rays.ox.size(); ++i) {
+                ASSERT_EQ(occluded[i] != 0, scalarAny(scene, rays.at(i), rays.tmax[i]))
+                    << "ray " << i;
+                (occluded[i] ? blocked : open) += 1;
+            }
+        }
+    }
+    EXPECT_GT(blocked, 1000);
+    EXPECT_GT(open, 1000);
+}
+
 TEST(FlatSet, OnlyAFewObjectsAndNoMeshAreFlat) {
     std::mt19937 rng(3);
     SceneDocument doc = randomRoom(rng, int(FlatSet::kMaxShapes) - 3, 0.0f);
