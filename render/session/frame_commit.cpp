@@ -1,6 +1,7 @@
 // DeepFrame::commit: a tile's results into the frame, with the frame's invariants (which
 // buffers each kind of result writes, the record and segment pools, the block summaries).
 #include <algorithm>
+#include <cstdint>
 
 #include "session/deep_frame.h"
 #include "session/tile_output.h"
@@ -162,6 +163,14 @@ private:
     std::vector<ShadingRecord>& pool_;
     uint32_t& kept_;
 };
+
+/// Asks for the cache lines of v[0, n) with the intent to write them.
+template <class T>
+void prefetchForWrite(const T* v, std::size_t n) {
+    const auto last = reinterpret_cast<std::uintptr_t>(v + n);
+    for (auto p = reinterpret_cast<std::uintptr_t>(v) & ~std::uintptr_t(63); p < last; p += 64)
+        __builtin_prefetch(reinterpret_cast<const void*>(p), 1, 3);
+}
 
 /// The frame's columns a run of camera rays writes besides colour, cost and state, through
 /// local pointers: the byte-sized stores (flags) may alias anything, which would make the
@@ -420,6 +429,22 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         std::size_t n = 1;  // The run ends with the row.
         while (n < rowLeft && k0 + n < traced.size() && traced.pixel[k0 + n] == i0 + n) ++n;
         const auto from = std::ptrdiff_t(k0), to = std::ptrdiff_t(i0), count = std::ptrdiff_t(n);
+        if (y + 1 < uint32_t(t.rect.y1)) {
+            // The next row's run, most likely: its lines asked for now (for writing), so they
+            // arrive while this row is written. A tile's rows are a frame row apart in each
+            // buffer, too short a stretch for the hardware's prefetchers to find.
+            const std::size_t next = i0 + std::size_t(width);
+            prefetchForWrite(color.data() + next, n);
+            prefetchForWrite(cost.data() + next, n);
+            prefetchForWrite(id.data() + next, n);
+            prefetchForWrite(depth.data() + next, n);
+            prefetchForWrite(normal.data() + next, n);
+            prefetchForWrite(hitBound.data() + next, n);
+            prefetchForWrite(flags.data() + next, n);
+            prefetchForWrite(state.data() + next, n);
+            prefetchForWrite(segmentStart.data() + next, n);
+            prefetchForWrite(segmentCount.data() + next, n);
+        }
         std::copy_n(traced.color.begin() + from, count, color.begin() + to);
         std::copy_n(traced.rays.begin() + from, count, cost.begin() + to);
         if (writeBase) std::copy_n(traced.color.begin() + from, count, base.begin() + to);
