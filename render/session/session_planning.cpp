@@ -1,10 +1,10 @@
 // Pass planning: which kind of pass comes next, at which quality, over which tiles, in what order.
-#include "integrator/renderer.h"
-#include "session/session_plan.h"
-
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+
+#include "integrator/renderer.h"
+#include "session/session_plan.h"
 
 namespace rs {
 
@@ -27,8 +27,10 @@ bool tileHasCandidate(const RenderSession::Plan& plan, const DeepFrame& frame, i
                 }
             }
             return false;
-        case PassKind::Base: return counts[kStale] + counts[kInteractive] > 0;
-        case PassKind::Supersample: return counts[kBase] > 0;
+        case PassKind::Base:
+            return counts[kStale] + counts[kInteractive] > 0;
+        case PassKind::Supersample:
+            return counts[kBase] > 0;
     }
     return false;
 }
@@ -77,10 +79,9 @@ bool RenderSession::planLocked(Plan& plan) {
         plan.scene = snapshot_;
         if (effective.boxProxy && moving_ != kNoObject && snapshot_->primitiveIndex(moving_) >= 0)
             plan.scene = std::make_shared<const CompiledScene>(snapshot_->withBoxProxy(moving_));
-        const bool fullTree = plan.options.maxDepth == full.maxDepth &&
-                              !plan.options.reflectionAsDiffuse &&
-                              !plan.options.refractionAsDiffuse && plan.scene == snapshot_ &&
-                              plan.step == 1;
+        const bool fullTree =
+            plan.options.maxDepth == full.maxDepth && !plan.options.reflectionAsDiffuse &&
+            !plan.options.refractionAsDiffuse && plan.scene == snapshot_ && plan.step == 1;
         plan.deferredRecords = fullTree && plan.options.shadows == ShadowQuality::Deferred;
         plan.resultIsBase = fullTree && plan.options.shadows == ShadowQuality::Full;
     } else if (belowBase > 0) {
@@ -105,6 +106,7 @@ bool RenderSession::planLocked(Plan& plan) {
             if (tileHasCandidate(plan, frame_, job.tile, job.rect)) plan.tiles.push_back(job);
         }
     }
+    plan.kernel = std::make_unique<const TraceKernel>(*plan.scene, plan.options);
     // Tiles near the edit (or the cursor) first: the user looks there.
     if (focusX_ >= 0.0f) {
         const float fx = focusX_, fy = focusY_;
@@ -113,8 +115,9 @@ bool RenderSession::planLocked(Plan& plan) {
             const float cy = 0.5f * float(j.rect.y0 + j.rect.y1) - fy;
             return cx * cx + cy * cy;
         };
-        std::stable_sort(plan.tiles.begin(), plan.tiles.end(),
-                         [&](const TileJob& a, const TileJob& b) { return distance(a) < distance(b); });
+        std::stable_sort(
+            plan.tiles.begin(), plan.tiles.end(),
+            [&](const TileJob& a, const TileJob& b) { return distance(a) < distance(b); });
     }
     return true;
 }

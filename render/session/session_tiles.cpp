@@ -218,7 +218,7 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
     };
     if (stale()) return;
     const CompiledScene& scene = *plan.scene;
-    const TraceKernel kernel(scene, plan.options);
+    const TraceKernel& kernel = *plan.kernel;
     TraceCounters tc;
     thread_local std::vector<Vec3> columns;
     columns.resize(std::size_t(job.rect.x1 - job.rect.x0));
