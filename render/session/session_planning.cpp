@@ -10,6 +10,9 @@ namespace rs {
 
 namespace {
 
+/// Tiles of a focus-ordered pass go in groups this many tiles wide and high (planLocked).
+constexpr int kFocusGroupX = 8, kFocusGroupY = 2;
+
 /// Whether the tile has a pixel the pass would work on, from the tile's state counts (an
 /// interleaved pass also needs a stale pixel of this frame's parity: those tiles are scanned).
 bool tileHasCandidate(const RenderSession::Plan& plan, const DeepFrame& frame, int tile,
@@ -107,17 +110,29 @@ bool RenderSession::planLocked(Plan& plan) {
         }
     }
     plan.kernel = std::make_unique<const TraceKernel>(*plan.scene, plan.options);
-    // Tiles near the edit (or the cursor) first: the user looks there.
+    // Tiles near the edit (or the cursor) first: the user looks there. By groups of
+    // kFocusGroupX x kFocusGroupY tiles, nearest group first, each traced whole and row by row
+    // (the list is in row-major order and the sort is stable): neighbouring tiles of a row
+    // share the pages of each frame buffer, which a tile-by-tile spiral leaves at every tile
+    // (a full frame of the room took about 6 % more CPU time in that order).
     if (focusX_ >= 0.0f) {
+        const int groupW = kFocusGroupX * frame_.tileSize, groupH = kFocusGroupY * frame_.tileSize;
+        const int groupsX = (frame_.width + groupW - 1) / groupW;
         const float fx = focusX_, fy = focusY_;
-        auto distance = [fx, fy](const TileJob& j) {
-            const float cx = 0.5f * float(j.rect.x0 + j.rect.x1) - fx;
-            const float cy = 0.5f * float(j.rect.y0 + j.rect.y1) - fy;
+        auto group = [&](const TileJob& j) {
+            return (j.rect.y0 / groupH) * groupsX + j.rect.x0 / groupW;
+        };
+        auto distance = [&](const TileJob& j) {
+            const int gx = j.rect.x0 / groupW, gy = j.rect.y0 / groupH;
+            const float cx = (float(gx) + 0.5f) * float(groupW) - fx;
+            const float cy = (float(gy) + 0.5f) * float(groupH) - fy;
             return cx * cx + cy * cy;
         };
-        std::stable_sort(
-            plan.tiles.begin(), plan.tiles.end(),
-            [&](const TileJob& a, const TileJob& b) { return distance(a) < distance(b); });
+        std::stable_sort(plan.tiles.begin(), plan.tiles.end(),
+                         [&](const TileJob& a, const TileJob& b) {
+                             const float da = distance(a), db = distance(b);
+                             return da < db || (da == db && group(a) < group(b));
+                         });
     }
     return true;
 }
