@@ -429,10 +429,11 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         std::size_t n = 1;  // The run ends with the row.
         while (n < rowLeft && k0 + n < traced.size() && traced.pixel[k0 + n] == i0 + n) ++n;
         const auto from = std::ptrdiff_t(k0), to = std::ptrdiff_t(i0), count = std::ptrdiff_t(n);
-        if (y + 1 < uint32_t(t.rect.y1)) {
-            // The next row's run, most likely: its lines asked for now (for writing), so they
-            // arrive while this row is written. A tile's rows are a frame row apart in each
-            // buffer, too short a stretch for the hardware's prefetchers to find.
+        if (wholeTile && y + 1 < uint32_t(t.rect.y1)) {
+            // The next row's run (a whole-tile commit writes every row): its lines asked for
+            // now, for writing, so they arrive while this row is written. A tile's rows are a
+            // frame row apart in each buffer, too short a stretch for the hardware's
+            // prefetchers. Partial commits (drag steps) seldom write the next row.
             const std::size_t next = i0 + std::size_t(width);
             prefetchForWrite(color.data() + next, n);
             prefetchForWrite(cost.data() + next, n);
