@@ -1,17 +1,17 @@
 // `raystudio-cli drag`: drags an object through the interactive session, then refines, and
 // compares the refined frame with a from-scratch full render measured in the same run.
-#include "arguments.h"
-#include "commands.h"
-
-#include "integrator/renderer.h"
-#include "io/input_file.h"
-#include "session/render_session.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <sstream>
 #include <thread>
+
+#include "arguments.h"
+#include "commands.h"
+#include "integrator/renderer.h"
+#include "io/input_file.h"
+#include "session/render_session.h"
 
 namespace rs::cli {
 
@@ -25,6 +25,11 @@ constexpr std::uintmax_t kMaxPolicyFileBytes = std::uintmax_t(1) << 20;
 
 double msSince(Clock::time_point t) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+/// CPU time the process has used (all its threads), in milliseconds.
+double cpuMs() {
+    return 1000.0 * double(std::clock()) / double(CLOCKS_PER_SEC);
 }
 
 double medianOf(std::vector<double> v) {
@@ -67,8 +72,9 @@ struct Step {
 
 int runDrag(int argc, char** argv) {
     OptionSpec spec;
-    spec.valued = {"--object", "--to", "--steps", "--policy", "--threads", "--width", "--height",
-                   "--max-depth", "--min-weight", "--shadow-samples", "--supersampling", "--engine"};
+    spec.valued = {"--object",        "--to",     "--steps",     "--policy",     "--threads",
+                   "--width",         "--height", "--max-depth", "--min-weight", "--shadow-samples",
+                   "--supersampling", "--engine"};
     spec.flags = {"--verify", "--json"};
     Arguments args(argc, argv, 2, spec);
     const EngineKind engine = engineOption(args);
@@ -90,7 +96,8 @@ int runDrag(int argc, char** argv) {
         if (o.name == *objectName) object = &o;
     if (!object) throw UsageError{"--object: the scene has no object named '" + *objectName + "'"};
     if (std::holds_alternative<PlaneGeometry>(object->geometry))
-        throw UsageError{"--object: '" + *objectName + "' is a plane; planes have no transform to drag"};
+        throw UsageError{"--object: '" + *objectName +
+                         "' is a plane; planes have no transform to drag"};
     const ObjectId id = object->id;
     const Aabb startBounds = CompiledScene(doc).objectBounds(id);
     if (startBounds.empty()) throw UsageError{"--object: '" + *objectName + "' is hidden or empty"};
@@ -139,18 +146,26 @@ int runDrag(int argc, char** argv) {
     const double cancelMs = session.stats().lastCancelLatencyMs;
 
     // A whole session frame (a camera nudge re-traces every pixel) against renderImage of the
-    // same scene and size, interleaved so both see the same machine load; medians.
+    // same scene and size, interleaved so both see the same machine load; medians. Also the
+    // CPU time each used (the process's, all threads): on a machine others load, what a
+    // frame costs, where wall time also says how much of the machine it got.
     constexpr int kFrameRounds = 5;
-    std::vector<double> sessionFrames, imageFrames;
+    std::vector<double> sessionFrames, imageFrames, sessionCpu, imageCpu;
     for (int k = 0; k < kFrameRounds; ++k) {
         nudged.camera.target.x = doc.camera.target.x + (k % 2 ? -1e-3f : 1e-3f);
+        const double sessionCpuStart = cpuMs();
         const auto frameStart = Clock::now();
         session.update(nudged);
         if (!session.waitUntilComplete(600s)) throw std::runtime_error("session frame timed out");
         sessionFrames.push_back(msSince(frameStart));
-        imageFrames.push_back(renderImage(CompiledScene(nudged, nullptr, engine), options).ms);
+        sessionCpu.push_back(cpuMs() - sessionCpuStart);
+        const CompiledScene imageScene(nudged, nullptr, engine);
+        const double imageCpuStart = cpuMs();
+        imageFrames.push_back(renderImage(imageScene, options).ms);
+        imageCpu.push_back(cpuMs() - imageCpuStart);
     }
     const double sessionFrameMs = medianOf(sessionFrames), imageFrameMs = medianOf(imageFrames);
+    const double sessionCpuMs = medianOf(sessionCpu), imageCpuMs = medianOf(imageCpu);
 
     const std::size_t total = std::size_t(doc.render.width) * std::size_t(doc.render.height);
     std::vector<double> times, fractions, levels;
@@ -164,15 +179,18 @@ int runDrag(int argc, char** argv) {
     if (args.has("--json")) {
         std::printf("{\"steps\": [");
         for (std::size_t i = 0; i < log.size(); ++i)
-            std::printf("%s{\"ms\": %.3f, \"traced_pixels\": %zu, \"total_pixels\": %zu, "
-                        "\"governor_level\": %d}",
-                        i ? ", " : "", log[i].ms, log[i].traced, total, log[i].level);
-        std::printf("], \"step_ms_median\": %.3f, \"traced_fraction_median\": %.5f, "
-                    "\"refine_ms\": %.3f, \"full_frame_ms\": %.3f, \"final_max_abs_diff\": %.3g, "
-                    "\"cancel_latency_ms\": %.3f, \"session_frame_ms\": %.3f, "
-                    "\"render_image_ms\": %.3f, \"governor_level_median\": %.1f}\n",
-                    stepMedian, fractionMedian, refineMs, full.ms, double(maxDiff), cancelMs,
-                    sessionFrameMs, imageFrameMs, levelMedian);
+            std::printf(
+                "%s{\"ms\": %.3f, \"traced_pixels\": %zu, \"total_pixels\": %zu, "
+                "\"governor_level\": %d}",
+                i ? ", " : "", log[i].ms, log[i].traced, total, log[i].level);
+        std::printf(
+            "], \"step_ms_median\": %.3f, \"traced_fraction_median\": %.5f, "
+            "\"refine_ms\": %.3f, \"full_frame_ms\": %.3f, \"final_max_abs_diff\": %.3g, "
+            "\"cancel_latency_ms\": %.3f, \"session_frame_ms\": %.3f, "
+            "\"render_image_ms\": %.3f, \"session_frame_cpu_ms\": %.3f, "
+            "\"render_image_cpu_ms\": %.3f, \"governor_level_median\": %.1f}\n",
+            stepMedian, fractionMedian, refineMs, full.ms, double(maxDiff), cancelMs,
+            sessionFrameMs, imageFrameMs, sessionCpuMs, imageCpuMs, levelMedian);
     } else {
         std::printf("dragged '%s' in %d steps (%dx%d)\n", objectName->c_str(), steps,
                     doc.render.width, doc.render.height);
@@ -185,9 +203,14 @@ int runDrag(int argc, char** argv) {
         std::printf("  full frame            %10.2f ms  (ratio step/full %.3f)\n", full.ms,
                     full.ms > 0 ? stepMedian / full.ms : 0.0);
         std::printf("  cancel latency        %10.2f ms\n", cancelMs);
-        std::printf("  session frame         %10.2f ms  (renderImage %.2f ms, ratio %.3f; medians of %d)\n",
-                    sessionFrameMs, imageFrameMs,
-                    imageFrameMs > 0 ? sessionFrameMs / imageFrameMs : 0.0, kFrameRounds);
+        std::printf(
+            "  session frame         %10.2f ms  (renderImage %.2f ms, ratio %.3f; medians of %d)\n",
+            sessionFrameMs, imageFrameMs, imageFrameMs > 0 ? sessionFrameMs / imageFrameMs : 0.0,
+            kFrameRounds);
+        std::printf(
+            "  session frame CPU     %10.2f ms  (renderImage %.2f ms, ratio %.3f; medians of %d)\n",
+            sessionCpuMs, imageCpuMs, imageCpuMs > 0 ? sessionCpuMs / imageCpuMs : 0.0,
+            kFrameRounds);
         std::printf("  final max abs diff    %10.3g\n", double(maxDiff));
     }
     if (args.has("--verify") && maxDiff > 1e-5f) {

@@ -1,9 +1,10 @@
 // DeepFrame::commit: a tile's results into the frame, with the frame's invariants (which
 // buffers each kind of result writes, the record and segment pools, the block summaries).
+#include <algorithm>
+#include <cstdint>
+
 #include "session/deep_frame.h"
 #include "session/tile_output.h"
-
-#include <algorithm>
 
 namespace rs {
 
@@ -15,7 +16,8 @@ namespace {
 class SegmentPool {
 public:
     SegmentPool(DeepFrame& frame, int tile)
-        : frame_(frame), pool_(frame.tileSegments[std::size_t(tile)]),
+        : frame_(frame),
+          pool_(frame.tileSegments[std::size_t(tile)]),
           live_(frame.tileLiveSegments[std::size_t(tile)]) {}
 
     /// Pixel i's segments become its old ones (when `keepOld`) followed by `count` from `first`
@@ -36,20 +38,36 @@ public:
         live_ = 0;
         fresh_ = true;
     }
-    void add(const TreeSegment* first, std::size_t count) { pool_.insert(pool_.end(), first, first + count); }
+    void add(const TreeSegment* first, std::size_t count) {
+        pool_.insert(pool_.end(), first, first + count);
+    }
     /// Pixels [i, i + n) of one row get the segments of rays [k, k + n) of `list` (none when
-    /// the trace kept none) instead of their old ones: a run of traced pixels in one go.
+    /// the trace kept none) instead of their old ones: a run of traced pixels in one go, the
+    /// pool grown once for the run.
     void replaceRun(std::size_t i, std::size_t n, const RayList& list, std::size_t k) {
         uint32_t removed = 0, added = 0;
-        for (std::size_t j = 0; j < n; ++j) {
-            if (!fresh_) removed += frame_.segmentCount[i + j];
-            const uint8_t count = list.withSegments ? list.segments.count[k + j] : 0;
-            frame_.segmentStart[i + j] = uint32_t(pool_.size());
-            frame_.segmentCount[i + j] = count;  // At most kSegmentsPerPixel: always indexable.
-            if (count == 0) continue;
-            const TreeSegment* first = list.segments.of(k + j, kSegmentsPerPixel);
-            pool_.insert(pool_.end(), first, first + count);
-            added += count;
+        if (!fresh_)
+            for (std::size_t j = 0; j < n; ++j) removed += frame_.segmentCount[i + j];
+        uint32_t* startOut = frame_.segmentStart.data() + i;
+        uint8_t* countOut = frame_.segmentCount.data() + i;
+        const uint32_t base = uint32_t(pool_.size());
+        if (!list.withSegments) {
+            std::fill_n(startOut, n, base);
+            std::fill_n(countOut, n, uint8_t(0));
+        } else {
+            const uint8_t* counts = list.segments.count.data() + k;
+            for (std::size_t j = 0; j < n; ++j) added += counts[j];
+            pool_.resize(base + added);
+            TreeSegment* out = pool_.data() + base;
+            uint32_t at = base;
+            for (std::size_t j = 0; j < n; ++j) {
+                const uint8_t count = counts[j];  // At most kSegmentsPerPixel: always indexable.
+                startOut[j] = at;
+                countOut[j] = count;
+                if (count == 0) continue;
+                std::copy_n(list.segments.of(k + j, kSegmentsPerPixel), count, out + (at - base));
+                at += count;
+            }
         }
         live_ = live_ - removed + added;
     }
@@ -83,7 +101,8 @@ public:
                 const std::size_t i = frame_.index(x, y);
                 const uint32_t start = frame_.segmentStart[i];
                 frame_.segmentStart[i] = uint32_t(fresh.size());
-                fresh.insert(fresh.end(), pool_.begin() + start, pool_.begin() + start + frame_.segmentCount[i]);
+                fresh.insert(fresh.end(), pool_.begin() + start,
+                             pool_.begin() + start + frame_.segmentCount[i]);
             }
         }
         pool_.swap(fresh);
@@ -107,7 +126,8 @@ private:
 class RecordPool {
 public:
     RecordPool(DeepFrame& frame, int tile)
-        : frame_(frame), pool_(frame.tileRecords[std::size_t(tile)]),
+        : frame_(frame),
+          pool_(frame.tileRecords[std::size_t(tile)]),
           kept_(frame.tileRecordsKept[std::size_t(tile)]) {}
 
     /// Every pixel of the tile is traced again: no old record stays referenced.
@@ -130,7 +150,8 @@ public:
                 if (!(frame_.flags[i] & kDeferredValid)) continue;
                 const uint32_t start = frame_.recordStart[i];
                 frame_.recordStart[i] = uint32_t(fresh.size());
-                fresh.insert(fresh.end(), pool_.begin() + start, pool_.begin() + start + frame_.recordCount[i]);
+                fresh.insert(fresh.end(), pool_.begin() + start,
+                             pool_.begin() + start + frame_.recordCount[i]);
             }
         }
         pool_.swap(fresh);
@@ -141,6 +162,46 @@ private:
     DeepFrame& frame_;
     std::vector<ShadingRecord>& pool_;
     uint32_t& kept_;
+};
+
+/// Asks for the cache lines of v[0, n) with the intent to write them.
+template <class T>
+void prefetchForWrite(const T* v, std::size_t n) {
+    const auto last = reinterpret_cast<std::uintptr_t>(v + n);
+    for (auto p = reinterpret_cast<std::uintptr_t>(v) & ~std::uintptr_t(63); p < last; p += 64)
+        __builtin_prefetch(reinterpret_cast<const void*>(p), 1, 3);
+}
+
+/// The frame's columns a run of camera rays writes besides colour, cost and state, through
+/// local pointers: the byte-sized stores (flags) may alias anything, which would make the
+/// compiler reload every vector's data pointer per pixel. Records and Segments say whether
+/// the trace kept them (their overflow flags feed the pixel's flags).
+struct TracedColumns {
+    ObjectId* id;
+    float* depth;
+    Vec3* normal;
+    uint8_t* flags;
+    glm::vec4* bound;
+
+    /// Rays [k0, k0 + n) of `list` into the run's pixels [0, n).
+    template <bool Records, bool Segments>
+    void write(const RayList& list, std::size_t k0, std::size_t n) const {
+        const PrimaryInfo* info = list.info.data() + k0;
+        const uint8_t* extra = list.extra.data() + k0;
+        const uint8_t* recordOverflow = Records ? list.records.overflow.data() + k0 : nullptr;
+        const uint8_t* segmentOverflow = Segments ? list.segments.overflow.data() + k0 : nullptr;
+        for (std::size_t j = 0; j < n; ++j) {
+            const PrimaryInfo& p = info[j];
+            id[j] = p.id;
+            depth[j] = p.depth;
+            normal[j] = p.normal;
+            uint8_t f = uint8_t((p.touchedSpecular ? kTouchedSpecular : 0) | extra[j]);
+            if constexpr (Records) f |= recordOverflow[j] ? 0 : kDeferredValid;
+            if constexpr (Segments) f |= segmentOverflow[j] ? kTreeUnknown : 0;
+            flags[j] = f;
+            bound[j] = list.hitBound(k0 + j);
+        }
+    }
 };
 
 /// What a block ray writes into every pixel of its span.
@@ -206,8 +267,12 @@ struct SpanWriter {
 class TouchedBlocks {
 public:
     TouchedBlocks(const DeepFrame& frame, const PixelRect& r)
-        : width_(frame.width), r_(r), perRow_((r.x1 - r.x0 + DeepFrame::kBlock - 1) / DeepFrame::kBlock),
-          marks_(std::size_t(perRow_) * std::size_t((r.y1 - r.y0 + DeepFrame::kBlock - 1) / DeepFrame::kBlock), 0) {}
+        : width_(frame.width),
+          r_(r),
+          perRow_((r.x1 - r.x0 + DeepFrame::kBlock - 1) / DeepFrame::kBlock),
+          marks_(std::size_t(perRow_) *
+                     std::size_t((r.y1 - r.y0 + DeepFrame::kBlock - 1) / DeepFrame::kBlock),
+                 0) {}
     void add(std::size_t i) {
         // Frames hold at most kMaxImagePixels (< 2^32): one 32-bit division, not two 64-bit.
         const uint32_t y = uint32_t(i) / uint32_t(width_), x = uint32_t(i) - y * uint32_t(width_);
@@ -220,7 +285,8 @@ public:
     /// Pixels [x, x + n) of row y (inside the tile).
     void addRun(int x, int y, int n) {
         const std::size_t row = std::size_t((y - r_.y0) / DeepFrame::kBlock) * std::size_t(perRow_);
-        for (int b = (x - r_.x0) / DeepFrame::kBlock; b <= (x + n - 1 - r_.x0) / DeepFrame::kBlock; ++b)
+        for (int b = (x - r_.x0) / DeepFrame::kBlock; b <= (x + n - 1 - r_.x0) / DeepFrame::kBlock;
+             ++b)
             marks_[row + std::size_t(b)] = kReadBack;
         any_ = true;
     }
@@ -245,25 +311,47 @@ public:
         }
     }
     /// The commit rewrites every pixel of the tile (one camera ray each): the summaries are
-    /// built from what it writes (include()) instead of read back from the frame.
+    /// built from what it writes (includeRun()) instead of read back from the frame.
     void buildWhole() {
         sums_.assign(marks_.size(), TileSummary{});
         whole_ = true;
     }
     bool whole() const { return whole_; }
-    /// Adds pixel (x, y) as summarizeBlock reads it: its hit point (radius 0), and for a
-    /// pixel whose tree met a mirror or glass, its unknown flag and its segments.
-    void include(int x, int y, const glm::vec4& hit, uint8_t flags, const TreeSegment* segs,
-                 std::size_t count) {
-        TileSummary& sum = sums_[blockOf(x, y)];
-        if (hit.w >= 0.0f) sum.hitBox.expand(Vec3(hit));
-        if (!(flags & kTouchedSpecular)) return;
-        sum.anySpecular = true;
-        if (flags & kTreeUnknown) sum.anyUnknown = true;
-        for (std::size_t k = 0; k < count; ++k) {
-            sum.segmentStarts.expand(segs[k].a);
-            if (segs[k].escapes) sum.anyEscape = true;
-            else sum.segmentEnds.expand(segs[k].b);
+    /// Adds pixels [x0, x0 + n) of row y as summarizeBlock reads them: their hit points
+    /// (radius 0), and for a pixel whose tree met a mirror or glass, its unknown flag and its
+    /// segments (pool[starts[j], +counts[j])). Each block's part of the run is gathered in
+    /// locals first, then added to the block's summary (min and max: the same bits).
+    void includeRun(int x0, int y, std::size_t n, const glm::vec4* bounds, const uint8_t* flags,
+                    const TreeSegment* pool, const uint32_t* starts, const uint8_t* counts) {
+        for (std::size_t j = 0; j < n;) {
+            const int x = x0 + int(j);
+            const std::size_t end =
+                std::min(n, j + std::size_t(DeepFrame::kBlock - (x - r_.x0) % DeepFrame::kBlock));
+            Aabb hits, segmentStarts, segmentEnds;
+            uint8_t specularFlags = 0;  // The flags of its pixels that met a mirror or glass.
+            bool escape = false;
+            for (; j < end; ++j) {
+                const glm::vec4 hit = bounds[j];
+                if (hit.w >= 0.0f) hits.expand(Vec3(hit));
+                if (!(flags[j] & kTouchedSpecular)) continue;
+                specularFlags |= flags[j];
+                const TreeSegment* segs = pool + starts[j];
+                for (std::size_t k = 0; k < counts[j]; ++k) {
+                    segmentStarts.expand(segs[k].a);
+                    if (segs[k].escapes)
+                        escape = true;
+                    else
+                        segmentEnds.expand(segs[k].b);
+                }
+            }
+            TileSummary& sum = sums_[blockOf(x, y)];
+            sum.hitBox.expand(hits);
+            if (!specularFlags) continue;
+            sum.anySpecular = true;
+            if (specularFlags & kTreeUnknown) sum.anyUnknown = true;
+            sum.segmentStarts.expand(segmentStarts);
+            sum.segmentEnds.expand(segmentEnds);
+            if (escape) sum.anyEscape = true;
         }
     }
     /// Block summaries of the marked blocks, then the tile's.
@@ -273,10 +361,11 @@ public:
             if (!marks_[b]) continue;
             const int x = r_.x0 + int(b % std::size_t(perRow_)) * DeepFrame::kBlock;
             const int y = r_.y0 + int(b / std::size_t(perRow_)) * DeepFrame::kBlock;
-            TileSummary& summary =
-                frame.blockSummary[std::size_t(y / DeepFrame::kBlock) * std::size_t(frame.blocksX()) +
-                                   std::size_t(x / DeepFrame::kBlock)];
-            const int area = (std::min(r_.x1, x + DeepFrame::kBlock) - x) * (std::min(r_.y1, y + DeepFrame::kBlock) - y);
+            TileSummary& summary = frame.blockSummary[std::size_t(y / DeepFrame::kBlock) *
+                                                          std::size_t(frame.blocksX()) +
+                                                      std::size_t(x / DeepFrame::kBlock)];
+            const int area = (std::min(r_.x1, x + DeepFrame::kBlock) - x) *
+                             (std::min(r_.y1, y + DeepFrame::kBlock) - y);
             if (whole_)
                 summary = sums_[b];
             else if (marks_[b] == kSpans && spanPixels_[b] == area)
@@ -321,7 +410,8 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     const bool wholeTile = t.traced.size() == std::size_t(t.rect.area());
     if (wholeTile) {
         segments.restart();
-        if (t.blocks.size() == 0 && t.resolvedPixel.empty() && t.sampled.empty()) touched.buildWhole();
+        if (t.blocks.size() == 0 && t.resolvedPixel.empty() && t.sampled.empty())
+            touched.buildWhole();
     }
 
     // Camera rays at pixel centres: every buffer of the pixel. Passes gather a tile's pixels
@@ -339,6 +429,23 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         std::size_t n = 1;  // The run ends with the row.
         while (n < rowLeft && k0 + n < traced.size() && traced.pixel[k0 + n] == i0 + n) ++n;
         const auto from = std::ptrdiff_t(k0), to = std::ptrdiff_t(i0), count = std::ptrdiff_t(n);
+        if (wholeTile && y + 1 < uint32_t(t.rect.y1)) {
+            // The next row's run (a whole-tile commit writes every row): its lines asked for
+            // now, for writing, so they arrive while this row is written. A tile's rows are a
+            // frame row apart in each buffer, too short a stretch for the hardware's
+            // prefetchers. Partial commits (drag steps) seldom write the next row.
+            const std::size_t next = i0 + std::size_t(width);
+            prefetchForWrite(color.data() + next, n);
+            prefetchForWrite(cost.data() + next, n);
+            prefetchForWrite(id.data() + next, n);
+            prefetchForWrite(depth.data() + next, n);
+            prefetchForWrite(normal.data() + next, n);
+            prefetchForWrite(hitBound.data() + next, n);
+            prefetchForWrite(flags.data() + next, n);
+            prefetchForWrite(state.data() + next, n);
+            prefetchForWrite(segmentStart.data() + next, n);
+            prefetchForWrite(segmentCount.data() + next, n);
+        }
         std::copy_n(traced.color.begin() + from, count, color.begin() + to);
         std::copy_n(traced.rays.begin() + from, count, cost.begin() + to);
         if (writeBase) std::copy_n(traced.color.begin() + from, count, base.begin() + to);
@@ -346,40 +453,25 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
             std::fill_n(sampleSum.begin() + to, count, Color(0.0f));
             std::fill_n(sampleCount.begin() + to, count, uint16_t(0));
         }
-        // Through local pointers: the byte-sized stores (flags) may alias anything, which would
-        // make the compiler reload every vector's data pointer per pixel.
         auto& counts = tileStates[std::size_t(tile)];
-        const PrimaryInfo* info = traced.info.data() + k0;
-        const uint8_t* extra = traced.extra.data() + k0;
-        const uint8_t* recordOverflow = traced.withRecords ? traced.records.overflow.data() + k0 : nullptr;
-        const uint8_t* segmentOverflow = traced.withSegments ? traced.segments.overflow.data() + k0 : nullptr;
-        ObjectId* idOut = id.data() + i0;
-        float* depthOut = depth.data() + i0;
-        Vec3* normalOut = normal.data() + i0;
-        uint8_t* flagsOut = flags.data() + i0;
-        glm::vec4* boundOut = hitBound.data() + i0;
-        const uint8_t* oldState = state.data() + i0;
-        for (std::size_t j = 0; j < n; ++j) {
-            idOut[j] = info[j].id;
-            depthOut[j] = info[j].depth;
-            normalOut[j] = info[j].normal;
-            if (!wholeTile) --counts[oldState[j]];
-            const bool complete = recordOverflow && !recordOverflow[j];
-            flagsOut[j] = uint8_t((info[j].touchedSpecular ? kTouchedSpecular : 0) | extra[j] |
-                                  (complete ? kDeferredValid : 0) |
-                                  (segmentOverflow && segmentOverflow[j] ? kTreeUnknown : 0));
-            boundOut[j] = traced.hitBound(k0 + j);
-        }
+        if (!wholeTile)
+            for (std::size_t j = 0; j < n; ++j) --counts[state[i0 + j]];
+        const TracedColumns out{id.data() + i0, depth.data() + i0, normal.data() + i0,
+                                flags.data() + i0, hitBound.data() + i0};
+        if (traced.withRecords)
+            traced.withSegments ? out.write<true, true>(traced, k0, n)
+                                : out.write<true, false>(traced, k0, n);
+        else
+            traced.withSegments ? out.write<false, true>(traced, k0, n)
+                                : out.write<false, false>(traced, k0, n);
         if (!wholeTile) counts[t.tracedState] += uint32_t(n);
         std::fill_n(state.begin() + to, count, t.tracedState);
         segments.replaceRun(i0, n, traced, k0);
         touched.addRun(int(x0), int(y), int(n));
-        if (whole) {
-            const TreeSegment* pool = tileSegments[std::size_t(tile)].data();
-            for (std::size_t i = i0; i < i0 + n; ++i)
-                touched.include(int(x0 + uint32_t(i - i0)), int(y), hitBound[i], flags[i],
-                                pool + segmentStart[i], segmentCount[i]);
-        }
+        if (whole)
+            touched.includeRun(int(x0), int(y), n, out.bound, out.flags,
+                               tileSegments[std::size_t(tile)].data(), segmentStart.data() + i0,
+                               segmentCount.data() + i0);
         k0 += n;
     }
     if (wholeTile && traced.size() > 0) {
@@ -404,14 +496,19 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     // segments are cleared a span row at a time.
     const RayList& blocks = t.blocks;
     if (blocks.size() > 0) {
-        SpanWriter spans{color.data(), id.data(), depth.data(), normal.data(), cost.data(),
-                         state.data(), flags.data(), hitBound.data(), sampleSum.data(),
-                         sampleCount.data(), clearSamples};
+        SpanWriter spans{color.data(),     id.data(),          depth.data(), normal.data(),
+                         cost.data(),      state.data(),       flags.data(), hitBound.data(),
+                         sampleSum.data(), sampleCount.data(), clearSamples};
         uint32_t spanPixels = 0;
         for (std::size_t k = 0; k < blocks.size(); ++k) {
             const PrimaryInfo& info = blocks.info[k];
-            const SpanValue v{blocks.color[k], info.id, info.depth, info.normal, blocks.rays[k],
-                              uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) | kTracedLastUpdate),
+            const SpanValue v{blocks.color[k],
+                              info.id,
+                              info.depth,
+                              info.normal,
+                              blocks.rays[k],
+                              uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) |
+                                      kTracedLastUpdate),
                               blocks.hitBound(k)};
             const int spanX = blocks.extra[k] & 15, spanY = blocks.extra[k] >> 4;
             {
@@ -424,9 +521,12 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
             for (int dy = 0; dy < spanY; ++dy) {
                 const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width);
                 const std::size_t n = std::size_t(spanX);
-                if (n == 4) spans.row<4>(i, n, v);  // Quarter and half resolution: unrolled.
-                else if (n == 2) spans.row<2>(i, n, v);
-                else spans.row<0>(i, n, v);
+                if (n == 4)
+                    spans.row<4>(i, n, v);  // Quarter and half resolution: unrolled.
+                else if (n == 2)
+                    spans.row<2>(i, n, v);
+                else
+                    spans.row<0>(i, n, v);
                 spanPixels += uint32_t(spanX);
                 segments.clearRun(i, n);
             }
@@ -477,7 +577,8 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         std::size_t kept = 0;
         for (int j = t.sampleFirst[k]; j < t.sampleFirst[k + 1] && kept < kSegmentsPerPixel; ++j) {
             const std::size_t q = std::size_t(j);
-            const std::size_t n = std::min<std::size_t>(samples.segments.count[q], kSegmentsPerPixel - kept);
+            const std::size_t n =
+                std::min<std::size_t>(samples.segments.count[q], kSegmentsPerPixel - kept);
             segments.add(samples.segments.of(q, kSegmentsPerPixel), n);
             kept += n;
         }

@@ -1,12 +1,13 @@
 // Internal to the session: what one pass will do, decided under the lock, run without it.
 #pragma once
 
-#include "session/dirty_region.h"
-#include "session/render_session.h"
-
 #include <atomic>
 #include <memory>
 #include <vector>
+
+#include "integrator/trace_kernel.h"
+#include "session/dirty_region.h"
+#include "session/render_session.h"
 
 namespace rs {
 
@@ -37,11 +38,13 @@ struct RenderSession::Plan {
     int step = 1;                  ///< Undersampling block size.
     bool interleaved = false;
     int parity = 0;
-    int spp = 1;                   ///< The scene's supersampling.
-    int sppChunk = 4;              ///< Samples added per supersampling pass.
-    bool adaptive = true;          ///< Supersample only where neighbours differ.
+    int spp = 1;           ///< The scene's supersampling.
+    int sppChunk = 4;      ///< Samples added per supersampling pass.
+    bool adaptive = true;  ///< Supersample only where neighbours differ.
     std::vector<TileJob> tiles;
     int governorLevel = -1;
+    /// The kernel every tile traces through (of `scene` with `options`), built once a pass.
+    std::unique_ptr<const TraceKernel> kernel;
 
     /// Back to a default plan, keeping the tile list's storage.
     void reset() {

@@ -1,12 +1,12 @@
 // Tile work of a pass: each pass kind gathers the tile's pixels by what they need, traces
 // each list as one batch through the trace kernel (or resolves deferred shadows, or adds
 // samples) into a TileResult, which the frame commits only if the generation is still current.
+#include <algorithm>
+
 #include "integrator/renderer.h"
 #include "integrator/trace_kernel.h"
 #include "session/session_plan.h"
 #include "session/tile_output.h"
-
-#include <algorithm>
 
 namespace rs {
 
@@ -22,24 +22,46 @@ struct TileInput {
     const CameraModel& camera;
     const std::function<bool()>& stale;
     TraceCounters& counters;
+    /// columnTerm() of each column's centre, from the tile's left edge on.
+    const Vec3* columns;
 
-    std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(plan.width) + std::size_t(x); }
-    Ray centreRay(int x, int y) const { return camera.generateRay(float(x) + 0.5f, float(y) + 0.5f); }
+    std::size_t index(int x, int y) const {
+        return std::size_t(y) * std::size_t(plan.width) + std::size_t(x);
+    }
     /// kFinal when the scene has no supersampling, else kBase.
     uint8_t doneState() const { return plan.spp == 1 ? kFinal : kBase; }
+    /// Adds to `list` the centre rays of the pixels of row y for which take(x, i) holds, a
+    /// run of neighbours at a time, each with extra(i).
+    template <class Take, class Extra>
+    void addCentreRays(RayList& list, int y, Take take, Extra extra) const {
+        const PixelRect& r = job.rect;
+        for (int x = r.x0; x < r.x1;) {
+            if (!take(x, index(x, y))) {
+                ++x;
+                continue;
+            }
+            int end = x + 1;
+            while (end < r.x1 && take(end, index(end, y))) ++end;
+            const std::size_t i0 = index(x, y), n = std::size_t(end - x);
+            const std::size_t k = list.addCentreRun(camera, columns + (x - r.x0), x, y, n, i0);
+            for (std::size_t j = 0; j < n; ++j) list.extra[k + j] = extra(i0 + j);
+            x = end;
+        }
+    }
 };
 
 /// Interactive pass at full resolution: stale pixels (every other one when interleaved).
 bool interactiveTile(const TileInput& in, TileResult& out) {
     const RenderSession::Plan& plan = in.plan;
     const PixelRect& r = in.job.rect;
+    const uint8_t* state = in.frame.state.data();
     for (int y = r.y0; y < r.y1; ++y) {
-        for (int x = r.x0; x < r.x1; ++x) {
-            const std::size_t i = in.index(x, y);
-            if (in.frame.state[i] != kStale) continue;
-            if (plan.interleaved && ((x + y + plan.parity) & 1)) continue;
-            out.traced.add(in.centreRay(x, y), pixelSeed(x, y, 0), i, kTracedLastUpdate);
-        }
+        in.addCentreRays(
+            out.traced, y,
+            [&](int x, std::size_t i) {
+                return state[i] == kStale && !(plan.interleaved && ((x + y + plan.parity) & 1));
+            },
+            [](std::size_t) { return uint8_t(kTracedLastUpdate); });
     }
     out.tracedState = plan.resultIsBase ? in.doneState() : uint8_t(kInteractive);
     return out.traced.trace(in.kernel, plan.deferredRecords, true, in.counters, in.stale);
@@ -58,10 +80,12 @@ bool blockTile(const TileInput& in, TileResult& out) {
             if (plan.interleaved && (((x / step) + (y / step) + plan.parity) & 1)) continue;
             bool anyStale = false;
             for (int yy = y; yy < by1 && !anyStale; ++yy)
-                for (int xx = x; xx < bx1 && !anyStale; ++xx) anyStale = in.frame.state[in.index(xx, yy)] == kStale;
+                for (int xx = x; xx < bx1 && !anyStale; ++xx)
+                    anyStale = in.frame.state[in.index(xx, yy)] == kStale;
             if (!anyStale) continue;
             const Ray ray = in.camera.generateRay(0.5f * float(x + bx1), 0.5f * float(y + by1));
-            out.blocks.add(ray, pixelSeed(x, y, 0), in.index(x, y), uint8_t((bx1 - x) | ((by1 - y) << 4)));
+            out.blocks.add(ray, pixelSeed(x, y, 0), in.index(x, y),
+                           uint8_t((bx1 - x) | ((by1 - y) << 4)));
         }
     }
     return out.blocks.trace(in.kernel, false, false, in.counters, in.stale);
@@ -77,20 +101,24 @@ bool baseTile(const TileInput& in, TileResult& out) {
     const DeepFrame& f = in.frame;
     const PixelRect& r = in.job.rect;
     const auto& pool = f.tileRecords[std::size_t(in.job.tile)];
+    const uint8_t* state = f.state.data();
+    const uint8_t* flags = f.flags.data();
+    // Waiting for its deferred shadows only: resolved from its records, not traced again.
+    const auto deferred = [&](std::size_t i) {
+        return state[i] == kInteractive && (flags[i] & kDeferredValid);
+    };
     for (int y = r.y0; y < r.y1; ++y) {
         for (int x = r.x0; x < r.x1; ++x) {
             const std::size_t i = in.index(x, y);
-            const uint8_t s = f.state[i];
-            if (s >= kBase) continue;
-            if (s == kInteractive && (f.flags[i] & kDeferredValid)) {
-                out.resolvedPixel.push_back(i);
-                const uint32_t start = f.recordStart[i];
-                records.insert(records.end(), pool.begin() + start, pool.begin() + start + f.recordCount[i]);
-            } else {
-                out.traced.add(in.centreRay(x, y), pixelSeed(x, y, 0), i,
-                               uint8_t(f.flags[i] & kTracedLastUpdate));
-            }
+            if (state[i] >= kBase || !deferred(i)) continue;
+            out.resolvedPixel.push_back(i);
+            const uint32_t start = f.recordStart[i];
+            records.insert(records.end(), pool.begin() + start,
+                           pool.begin() + start + f.recordCount[i]);
         }
+        in.addCentreRays(
+            out.traced, y, [&](int, std::size_t i) { return state[i] < kBase && !deferred(i); },
+            [&](std::size_t i) { return uint8_t(flags[i] & kTracedLastUpdate); });
     }
     out.tracedState = in.doneState();
     if (!out.traced.trace(in.kernel, false, true, in.counters, in.stale)) return false;
@@ -102,7 +130,8 @@ bool baseTile(const TileInput& in, TileResult& out) {
         Color c = f.color[i];
         for (uint32_t j = 0; j < f.recordCount[i]; ++j) c += resolved[record++];
         out.resolvedColor.push_back(c);
-        out.resolvedFlags.push_back(uint8_t(f.flags[i] & (kTouchedSpecular | kTracedLastUpdate | kTreeUnknown)));
+        out.resolvedFlags.push_back(
+            uint8_t(f.flags[i] & (kTouchedSpecular | kTracedLastUpdate | kTreeUnknown)));
     }
     return true;
 }
@@ -150,19 +179,21 @@ bool supersampleTile(const TileInput& in, TileResult& out) {
     const RayList& samples = out.samples;
     for (std::size_t k = 0; k < sampledPixels.size(); ++k) {
         const std::size_t i = sampledPixels[k];
-        TileResult::Sampled s{i, Color(0.0f), f.sampleSum[i], f.sampleCount[i], kBase, f.flags[i],
-                              f.cost[i], f.hitBound[i]};
+        TileResult::Sampled s{i,     Color(0.0f), f.sampleSum[i], f.sampleCount[i],
+                              kBase, f.flags[i],  f.cost[i],      f.hitBound[i]};
         int kept = 0;
         for (int j = out.sampleFirst[k]; j < out.sampleFirst[k + 1]; ++j) {
             const std::size_t q = std::size_t(j);
             s.sum += samples.color[q];
             const PrimaryInfo& info = samples.info[q];
-            if (info.id != kNoObject) s.hitBound = growBound(s.hitBound, samples.origin[q] + samples.dir[q] * info.depth);
+            if (info.id != kNoObject)
+                s.hitBound = growBound(s.hitBound, samples.origin[q] + samples.dir[q] * info.depth);
             if (info.touchedSpecular) s.flags |= kTouchedSpecular;
             s.cost += samples.rays[q];
             // The pixel's segments of all its new samples, as one list of kSegmentsPerPixel.
             const int n = samples.segments.count[q];
-            if (kept + n > kSegmentsPerPixel || samples.segments.overflow[q]) s.flags |= kTreeUnknown;
+            if (kept + n > kSegmentsPerPixel || samples.segments.overflow[q])
+                s.flags |= kTreeUnknown;
             kept = std::min(kSegmentsPerPixel, kept + n);
             ++s.count;
         }
@@ -187,16 +218,24 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
     };
     if (stale()) return;
     const CompiledScene& scene = *plan.scene;
-    const TraceKernel kernel(scene, plan.options);
+    const TraceKernel& kernel = *plan.kernel;
     TraceCounters tc;
-    const TileInput in{plan, job, frame_, kernel, scene.camera(), stale, tc};
+    thread_local std::vector<Vec3> columns;
+    columns.resize(std::size_t(job.rect.x1 - job.rect.x0));
+    for (int x = job.rect.x0; x < job.rect.x1; ++x)
+        columns[std::size_t(x - job.rect.x0)] = scene.camera().columnTerm(float(x) + 0.5f);
+    const TileInput in{plan, job, frame_, kernel, scene.camera(), stale, tc, columns.data()};
     bool traced = false;
     switch (plan.kind) {
         case PassKind::Interactive:
             traced = plan.step == 1 ? interactiveTile(in, result) : blockTile(in, result);
             break;
-        case PassKind::Base: traced = baseTile(in, result); break;
-        case PassKind::Supersample: traced = supersampleTile(in, result); break;
+        case PassKind::Base:
+            traced = baseTile(in, result);
+            break;
+        case PassKind::Supersample:
+            traced = supersampleTile(in, result);
+            break;
     }
     if (!traced || stale()) return;
     {
@@ -208,7 +247,8 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
     counters.pixels += result.tracedPixels();
     counters.rays += tc.total();
     const PixelRect& r = job.rect;
-    if (SessionObserver* observer = observer_) observer->tileDone(r.x0, r.y0, r.x1, r.y1, plan.generation);
+    if (SessionObserver* observer = observer_)
+        observer->tileDone(r.x0, r.y0, r.x1, r.y1, plan.generation);
 }
 
 }  // namespace rs

@@ -1,7 +1,26 @@
 // A tile's ray lists: tracing them through the kernel.
 #include "session/tile_output.h"
 
+#include "integrator/renderer.h"
+#include "integrator/sampling.h"
+
 namespace rs {
+
+std::size_t RayList::addCentreRun(const CameraModel& camera, const Vec3* columns, int x0, int y,
+                                  std::size_t n, std::size_t i0) {
+    const std::size_t k = size();
+    origin.resize(k + n), dir.resize(k + n), seed.resize(k + n), pixel.resize(k + n),
+        extra.resize(k + n);
+    camera.rowRays(columns, n, float(y) + 0.5f, origin.data() + k, dir.data() + k);
+    const uint32_t rowKey = hashKey(uint32_t(y)), centreKey = hashKey(0u);
+    uint32_t* seeds = seed.data() + k;
+    std::size_t* pixels = pixel.data() + k;
+    for (std::size_t j = 0; j < n; ++j) {
+        seeds[j] = pixelSeedKeyed(x0 + int(j), rowKey, centreKey);
+        pixels[j] = i0 + j;
+    }
+    return k;
+}
 
 bool RayList::trace(const TraceKernel& kernel, bool keepRecords, bool keepSegments,
                     TraceCounters& counters, const std::function<bool()>& stale) {

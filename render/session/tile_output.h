@@ -2,13 +2,14 @@
 // copies from (structure of arrays; no per-pixel record in between).
 #pragma once
 
-#include "integrator/trace_kernel.h"
-#include "session/deep_frame.h"
-#include "session/dirty_region.h"
-
 #include <cstdint>
 #include <functional>
 #include <vector>
+
+#include "integrator/trace_kernel.h"
+#include "session/deep_frame.h"
+#include "session/dirty_region.h"
+#include "snapshot/camera_model.h"
 
 namespace rs {
 
@@ -40,6 +41,12 @@ struct RayList {
         pixel.push_back(i);
         extra.push_back(e);
     }
+    /// Appends the centre rays of pixels [x0, x0 + n) of row y, frame indices from i0, with the
+    /// bits camera.generateRay() and pixelSeed(x, y, 0) give them: one rowRays() call for the
+    /// run, `columns` holding the columnTerm() of each of its pixels. Returns the first new
+    /// ray's index; the caller sets the new rays' `extra`.
+    std::size_t addCentreRun(const CameraModel& camera, const Vec3* columns, int x0, int y,
+                             std::size_t n, std::size_t i0);
     std::size_t size() const { return origin.size(); }
     /// Traces the list; false when the generation went stale meanwhile.
     bool trace(const TraceKernel& kernel, bool keepRecords, bool keepSegments,

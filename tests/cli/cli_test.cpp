@@ -1,11 +1,5 @@
 // raystudio-cli as a user runs it: exit codes 0/1/2, messages that name the problem, outputs.
-#include "cli_run.h"
-
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
-#include "image/image_io.h"
-
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -17,8 +11,12 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <string>
+
+#include "cli_run.h"
+#include "image/image_io.h"
 
 namespace {
 
@@ -28,8 +26,9 @@ class CliTest : public ::testing::Test {
 protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
-               ("raystudio-cli-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+               ("raystudio-cli-test-" +
+                std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::create_directories(dir_);
     }
     void TearDown() override { fs::remove_all(dir_); }
@@ -87,9 +86,11 @@ TEST_F(CliTest, Render_WritesTheImageAndStatsLine) {
 TEST_F(CliTest, Render_EveryOutputFormat) {
     // Each extension gives its format (the file's magic bytes), and every file holds the same
     // picture: read back, the 8-bit ones agree with each other, the float ones with each other.
-    const std::vector<std::pair<std::string, std::string>> formats = {
-        {"png", "\x89PNG"}, {"jpg", "\xff\xd8\xff"}, {"tif", "II*"}, {"exr", "v/1\x01"},
-        {"hdr", "#?RADIANCE"}};
+    const std::vector<std::pair<std::string, std::string>> formats = {{"png", "\x89PNG"},
+                                                                      {"jpg", "\xff\xd8\xff"},
+                                                                      {"tif", "II*"},
+                                                                      {"exr", "v/1\x01"},
+                                                                      {"hdr", "#?RADIANCE"}};
     std::map<std::string, rs::ImageRgb> images;
     for (const auto& [ext, magic] : formats) {
         const std::string out = path("room." + ext);
@@ -135,7 +136,8 @@ TEST_F(CliTest, Render_BadNumbers_Exit2NamingTheOption) {
         CliRun r = cli("render " + kRoom + " -o " + path("x.png") + " " + bad);
         EXPECT_EQ(r.exitCode, 2) << bad;
         EXPECT_NE(r.err.find(std::string(bad).substr(0, std::string(bad).find(' '))),
-                  std::string::npos) << bad << ": " << r.err;
+                  std::string::npos)
+            << bad << ": " << r.err;
         EXPECT_EQ(r.out, "") << bad;
     }
 }
@@ -151,6 +153,18 @@ TEST_F(CliTest, MinWeight_IsAcceptedByRenderBenchAndDrag) {
     r = cli("drag " + kRoom + " --object 'blue ball' --to 0,1,-5 --steps 2 --threads 2" +
             " --width 16 --height 9 --min-weight 0.001");
     EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
+TEST_F(CliTest, DragJson_ReportsTheSessionFrameAndRenderImageInWallAndCpuTime) {
+    const CliRun r = cli("drag " + kRoom + " --object 'blue ball' --to 0,1,-5 --steps 2" +
+                         " --threads 2 --width 16 --height 9 --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto stats = nlohmann::json::parse(r.out);
+    for (const char* key :
+         {"session_frame_ms", "render_image_ms", "session_frame_cpu_ms", "render_image_cpu_ms"}) {
+        ASSERT_TRUE(stats.contains(key)) << key << " missing in " << r.out;
+        EXPECT_GE(stats[key].get<double>(), 0.0) << key;
+    }
 }
 
 TEST_F(CliTest, MinWeight_OutsideZeroToOne_Exits2NamingTheOption) {
@@ -232,9 +246,8 @@ TEST_F(CliTest, Validate_BadScenePrintsEveryErrorWithItsPointer) {
 TEST_F(CliTest, EveryCommand_BadSceneGoesToStderrWithExit2) {
     const std::string bad = write("bad.scene.json", R"({"format": "raystudio-scene", "version": 1,
  "render": {"width": 0}})");
-    for (const std::string& command :
-         {"validate " + bad, "render " + bad + " -o " + path("x.png"), "bench " + bad,
-          "drag " + bad + " --object a --to 0,0,0"}) {
+    for (const std::string& command : {"validate " + bad, "render " + bad + " -o " + path("x.png"),
+                                       "bench " + bad, "drag " + bad + " --object a --to 0,0,0"}) {
         CliRun r = cli(command);
         EXPECT_EQ(r.exitCode, 2) << command;
         EXPECT_NE(r.err.find("/render/width"), std::string::npos) << command << ": " << r.err;
@@ -259,7 +272,8 @@ TEST_F(CliTest, Bench_JsonHasOneEntryPerExperiment) {
     std::map<std::string, std::vector<std::pair<int, long>>> runs;  // experiment -> (value, rays)
     for (const auto& e : entries) {
         ASSERT_TRUE(e.contains("experiment") && e.contains("value") && e.contains("median_ms") &&
-                    e.contains("rays")) << e.dump();
+                    e.contains("rays"))
+            << e.dump();
         EXPECT_GE(e["median_ms"].get<double>(), 0.0);
         runs[e["experiment"]].emplace_back(e["value"].get<int>(), e["rays"].get<long>());
     }
@@ -310,9 +324,15 @@ TEST_F(CliTest, GarbageSceneFiles_NeverCrash) {
         for (int m = 0; m < 3; ++m) {
             std::size_t at = rng() % text.size();
             switch (rng() % 3) {
-                case 0: text.erase(at, 1 + rng() % 5); break;
-                case 1: text[at] = char(rng() % 256); break;
-                default: text.insert(text.begin() + long(at), "{}[],:\"0-e."[rng() % 11]); break;
+                case 0:
+                    text.erase(at, 1 + rng() % 5);
+                    break;
+                case 1:
+                    text[at] = char(rng() % 256);
+                    break;
+                default:
+                    text.insert(text.begin() + long(at), "{}[],:\"0-e."[rng() % 11]);
+                    break;
             }
         }
         const std::string scene = write("fuzz.scene.json", text);
@@ -328,7 +348,8 @@ TEST_F(CliTest, GarbageSceneFiles_NeverCrash) {
         ++rejected;
         EXPECT_FALSE(fs::exists(path("fuzz.png"))) << "an image written for " << what;
         EXPECT_EQ(r.out, "") << what;
-        EXPECT_EQ(r.err.rfind(scene + ":", 0), 0u) << "the message does not start with the file: " << what;
+        EXPECT_EQ(r.err.rfind(scene + ":", 0), 0u)
+            << "the message does not start with the file: " << what;
         if (!nlohmann::json::accept(text)) {
             ++notJson;
             // file:line:column: ...
@@ -377,7 +398,8 @@ namespace {
 // The cost budget: a render estimated over it is refused before anything is compiled, with
 // a message naming the budget, unless --force.
 TEST_F(CliTest, Render_OverTheCostBudget_Exit2NamingTheBudget) {
-    CliRun r = cli("render " + kRoom + " -o " + path("deep.png") + " --max-depth 1000 --min-weight 0");
+    CliRun r =
+        cli("render " + kRoom + " -o " + path("deep.png") + " --max-depth 1000 --min-weight 0");
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find("ray budget of 1e+11 rays"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
@@ -404,7 +426,8 @@ TEST_F(CliTest, Render_OverTheCostBudgetWithForce_Renders) {
 }
 
 TEST_F(CliTest, Render_OverTheAreaLimit_Exit2NamingTheLimit) {
-    CliRun r = cli("render " + kRoom + " -o " + path("huge.png") + " --width 16384 --height 16384 --force");
+    CliRun r = cli("render " + kRoom + " -o " + path("huge.png") +
+                   " --width 16384 --height 16384 --force");
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find("at most 64 Mpixels"), std::string::npos) << r.err;
 }
