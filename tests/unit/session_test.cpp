@@ -446,6 +446,23 @@ TEST(RenderSession, WholeFrames_APassOverStalePixelsTearsTheFrameUntilOneLeavesN
     session.setObserver(nullptr);
 }
 
+/// Sets a policy of `targetMs` governor target on `session` and traces `doc` to completion.
+static void governedAndComplete(RenderSession& session, const SceneDocument& doc, double targetMs) {
+    InteractionPolicy p;
+    p.governorTargetMs = targetMs;
+    session.setPolicy(p);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+}
+
+/// Ends the interaction, waits for the refined frame and checks it against a full render.
+static void releasedEndsExact(RenderSession& session, const SceneDocument& doc) {
+    session.endInteraction();
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    session.setObserver(nullptr);
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+}
+
 /// Starts a governed orbit step of `doc` whose workers `gate` holds mid-pass; returns its
 /// generation.
 static uint64_t orbitStepHeldMidPass(RenderSession& session, TileGate& gate, SceneDocument& doc) {
@@ -461,11 +478,8 @@ static uint64_t orbitStepHeldMidPass(RenderSession& session, TileGate& gate, Sce
 TEST(RenderSession, WhileMoving_AGovernedPassWithinItsTimeFinishes_TheEditsWaitForIt) {
     SceneDocument doc = testRoom();
     RenderSession session(2);
-    InteractionPolicy p;
-    p.governorTargetMs = 60000.0;  // However long the test holds the pass, it is in time.
-    session.setPolicy(p);
-    session.update(doc);
-    ASSERT_TRUE(session.waitUntilComplete(60s));
+    // However long the test holds the pass, it is in time.
+    governedAndComplete(session, doc, 60000.0);
     TileGate gate;
     const uint64_t step = orbitStepHeldMidPass(session, gate, doc);
     // Two more mouse moves while the pass runs: they coalesce and wait for it.
@@ -481,20 +495,13 @@ TEST(RenderSession, WhileMoving_AGovernedPassWithinItsTimeFinishes_TheEditsWaitF
     EXPECT_EQ(info.tracedPixels, info.totalPixels);
     // Then the latest edit is applied and traced; released, the frame is exact.
     ASSERT_TRUE(session.waitForPass(last, 30s));
-    session.endInteraction();
-    ASSERT_TRUE(session.waitUntilComplete(60s));
-    session.setObserver(nullptr);
-    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+    releasedEndsExact(session, doc);
 }
 
 TEST(RenderSession, WhileMoving_APassOverItsTimeIsCutByTheNextEdit) {
     SceneDocument doc = testRoom();
     RenderSession session(2);
-    InteractionPolicy p;
-    p.governorTargetMs = 1e-3;  // Any pass held mid-way is long over its time.
-    session.setPolicy(p);
-    session.update(doc);
-    ASSERT_TRUE(session.waitUntilComplete(60s));
+    governedAndComplete(session, doc, 1e-3);  // Any pass held mid-way is long over its time.
     TileGate gate;
     const uint64_t step = orbitStepHeldMidPass(session, gate, doc);
     doc.camera.position.x += 0.1f;
@@ -502,10 +509,7 @@ TEST(RenderSession, WhileMoving_APassOverItsTimeIsCutByTheNextEdit) {
     gate.open();
     EXPECT_FALSE(session.waitForPass(step, 30s));  // Cut: the next edit is traced instead.
     ASSERT_TRUE(session.waitForPass(next, 30s));
-    session.endInteraction();
-    ASSERT_TRUE(session.waitUntilComplete(60s));
-    session.setObserver(nullptr);
-    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
+    releasedEndsExact(session, doc);
 }
 
 TEST(RenderSession, EditsFromAnotherThreadWhileRendering_EndExact) {
