@@ -34,6 +34,7 @@ private Q_SLOTS:
     void repaintPacing_StillAtItsPace_InteractionInputAndPassEndsAtOnce();
     void stillFrame_TilesWaitForThePace_ThePassEndShowsThemAtOnce();
     void interaction_EveryHandoverTakenAtOnce();
+    void orbit_OnlyWholeFramesShownWhileMoving();
 
 private:
     QImage shownImage() const;
@@ -384,6 +385,41 @@ void DisplayTest::interaction_EveryHandoverTakenAtOnce() {
     QVERIFY(sameBits(v->frame()->color, full.color));
     QTest::mouseRelease(v, Qt::RightButton, {}, centre);
     QVERIFY(settle(w));
+}
+
+/// Frames the viewport was handed while the camera moved in `steps` small steps that arrive
+/// while passes run, as (whole, torn) counts; then lets go.
+static std::pair<int, int> framesWhileOrbiting(MainWindow& w, int steps) {
+    int whole = 0, torn = 0;
+    bool moving = true;
+    const QMetaObject::Connection c = QObject::connect(
+        w.session(), &SessionController::frameHandedOver, [&](quint64, bool isWhole) {
+            if (moving) ++(isWhole ? whole : torn);
+        });
+    w.session()->beginInteraction(kNoObject);
+    for (int k = 0; k < steps; ++k) {
+        SceneDocument doc = w.editor()->document();
+        doc.camera.position.x += 0.02f;
+        w.editor()->edit(QStringLiteral("Orbit"), std::move(doc), MergeKind::Drag,
+                         QStringLiteral("camera"));
+        QTest::qWait(3);
+    }
+    moving = false;
+    QObject::disconnect(c);
+    w.session()->endInteraction();
+    return {whole, torn};
+}
+
+void DisplayTest::orbit_OnlyWholeFramesShownWhileMoving() {
+    // Every orbit step re-traces the whole frame, and the next move arrives while it runs:
+    // the viewport keeps the last whole frame rather than show one made of two cameras.
+    MainWindow& w = *window_;
+    const auto [whole, torn] = framesWhileOrbiting(w, 60);
+    QCOMPARE(torn, 0);
+    QVERIFY(whole > 0);
+    QVERIFY(settle(w));
+    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    QVERIFY(sameBits(w.viewport()->frame()->color, full.color));
 }
 
 QTEST_MAIN(DisplayTest)
