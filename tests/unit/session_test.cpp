@@ -475,6 +475,19 @@ static uint64_t orbitStepHeldMidPass(RenderSession& session, TileGate& gate, Sce
     return step;
 }
 
+/// Holds a governed orbit step mid-pass, posts another move, and checks that the move cuts
+/// the pass and ends exact after release.
+static void heldPassIsCutByTheNextEdit(RenderSession& session, SceneDocument& doc) {
+    TileGate gate;
+    const uint64_t step = orbitStepHeldMidPass(session, gate, doc);
+    doc.camera.position.x += 0.1f;
+    const uint64_t next = session.update(doc);
+    gate.open();
+    EXPECT_FALSE(session.waitForPass(step, 30s));  // Cut: the next edit is traced instead.
+    ASSERT_TRUE(session.waitForPass(next, 30s));
+    releasedEndsExact(session, doc);
+}
+
 TEST(RenderSession, WhileMoving_AGovernedPassWithinItsTimeFinishes_TheEditsWaitForIt) {
     SceneDocument doc = testRoom();
     RenderSession session(2);
@@ -498,18 +511,22 @@ TEST(RenderSession, WhileMoving_AGovernedPassWithinItsTimeFinishes_TheEditsWaitF
     releasedEndsExact(session, doc);
 }
 
+TEST(RenderSession, WhileMoving_WithWholeFramesOff_EveryEditCutsThePass) {
+    SceneDocument doc = testRoom();
+    RenderSession session(2);
+    // However long the test holds the pass, it is in time: only the policy lets it be cut.
+    governedAndComplete(session, doc, 60000.0);
+    InteractionPolicy p = session.policy();
+    p.wholeFramesWhileMoving = false;
+    session.setPolicy(p);
+    heldPassIsCutByTheNextEdit(session, doc);
+}
+
 TEST(RenderSession, WhileMoving_APassOverItsTimeIsCutByTheNextEdit) {
     SceneDocument doc = testRoom();
     RenderSession session(2);
     governedAndComplete(session, doc, 1e-3);  // Any pass held mid-way is long over its time.
-    TileGate gate;
-    const uint64_t step = orbitStepHeldMidPass(session, gate, doc);
-    doc.camera.position.x += 0.1f;
-    const uint64_t next = session.update(doc);
-    gate.open();
-    EXPECT_FALSE(session.waitForPass(step, 30s));  // Cut: the next edit is traced instead.
-    ASSERT_TRUE(session.waitForPass(next, 30s));
-    releasedEndsExact(session, doc);
+    heldPassIsCutByTheNextEdit(session, doc);
 }
 
 TEST(RenderSession, EditsFromAnotherThreadWhileRendering_EndExact) {
