@@ -186,6 +186,13 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     connect(dirty, &QCheckBox::toggled, this, [=, this](bool on) { prefs_.policy.dirtyRegions = on; notify(); });
     form->addRow(tr("Dirty regions"), dirty);
 
+    auto* whole = check(this, "wholeFrames", tr("Show only whole frames while moving"), p.wholeFramesWhileMoving);
+    whole->setToolTip(tr("Each pass runs to its end and the view keeps the last complete picture until the "
+                         "next one is done. Off: every mouse move restarts the pass and tiles show as they "
+                         "come, fresher but mixed from several moves."));
+    connect(whole, &QCheckBox::toggled, this, [=, this](bool on) { prefs_.policy.wholeFramesWhileMoving = on; notify(); });
+    form->addRow(tr("Whole frames"), whole);
+
 
     auto* threads = new QSpinBox(this);
     threads->setObjectName(QStringLiteral("threads"));

@@ -19,8 +19,7 @@ constexpr int kBusyRetryMs = 2;
 SessionController::SessionController(int threads, QObject* parent)
     : QObject(parent),
       session_(std::make_unique<RenderSession>(threads)),
-      mailbox_(this),
-      wholeWhileMoving_(true) {
+      mailbox_(this) {
     qRegisterMetaType<rs::PassInfo>();
     repaintTimer_.setSingleShot(true);
     connect(&repaintTimer_, &QTimer::timeout, this, &SessionController::onRepaintTimer);
@@ -39,7 +38,7 @@ SessionController::SessionController(int threads, QObject* parent)
     });
     rateTimer_.start();
     session_->setObserver(this);
-    session_->setDisplayWaits(wholeWhileMoving_);
+    session_->setDisplayWaits(true);  // Whether whole frames are waited for is the policy's.
 }
 
 SessionController::~SessionController() {
@@ -99,7 +98,8 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
     const auto start = std::chrono::steady_clock::now();
     // Before the tiles are taken: every tile of the pass that made the frame whole is in them.
     const uint64_t wholeMark = session_->wholeMark();
-    const bool onlyWhole = wait == FrameWait::TryOnly && interacting_ && wholeWhileMoving_;
+    const bool onlyWhole = wait == FrameWait::TryOnly && interacting_ &&
+                           session_->policy().wholeFramesWhileMoving;
     bool whole = false, torn = false;
     std::vector<QRect> tiles;
     bool everything = false;

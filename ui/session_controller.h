@@ -70,13 +70,6 @@ public:
         int busy = 0;         ///< TryOnly hand-overs that found the lock held and came back later.
     };
     const HandoverStats& handoverStats() const { return handover_; }
-    /// While the user drags or orbits, hand-overs (FrameWait::TryOnly) keep showing the last
-    /// whole frame until the next one is whole, instead of a pass cut short (a torn picture
-    /// of several documents); otherwise every committed tile is shown as it comes.
-    void setWholeFramesWhileMoving(bool on) {
-        wholeWhileMoving_ = on;
-        session_->setDisplayWaits(on);
-    }
     /// Counts requestUpdate calls; documentPosted says which generation carried them.
     uint64_t requestSerial() const { return requestSerial_; }
 
@@ -137,7 +130,6 @@ private:
     float postedExposure_ = 0.0f;
     HandoverStats handover_;
     bool interacting_ = false;  ///< Between beginInteraction and endInteraction.
-    bool wholeWhileMoving_;     ///< Set by the constructor.
     int updatesThisSecond_ = 0;
     double updatesPerSecond_ = 0.0;
     QTimer rateTimer_;

@@ -100,6 +100,7 @@ std::string policyToJson(const InteractionPolicy& p) {
     j["shadows"] = nameOf(kShadows, p.shadows);
     j["supersample_while_moving"] = p.supersampleWhileMoving;
     j["dirty_regions"] = p.dirtyRegions;
+    j["whole_frames_while_moving"] = p.wholeFramesWhileMoving;
     j["governor_target_ms"] = p.governorTargetMs;
     return j.dump(2);
 }
@@ -132,6 +133,7 @@ bool policyFromJson(const std::string& text, InteractionPolicy& out, std::string
         else if (key == "shadows") ok = parseEnum(value, "shadows", kShadows, p.shadows, error);
         else if (key == "supersample_while_moving") ok = needBool(p.supersampleWhileMoving);
         else if (key == "dirty_regions") ok = needBool(p.dirtyRegions);
+        else if (key == "whole_frames_while_moving") ok = needBool(p.wholeFramesWhileMoving);
         else if (key == "max_depth_while_moving") {
             if (!value.is_number_integer() || value.get<int>() < -1) {
                 error = "policy key 'max_depth_while_moving' must be an integer >= -1";

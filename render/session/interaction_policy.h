@@ -30,6 +30,10 @@ struct InteractionPolicy {
     MovingShadows shadows = MovingShadows::Deferred;
     bool supersampleWhileMoving = false;
     bool dirtyRegions = true;        ///< Re-trace only what an edit can change.
+    /// While the user drags or orbits, a governed pass runs to its end before the next edit
+    /// (unless it is long over its time) and the display shows only whole frames, never a
+    /// picture of two edits; off, every move cuts the pass and each tile shows as it comes.
+    bool wholeFramesWhileMoving = true;
     /// > 0: per frame, the least-reduced policy level predicted to meet this frame time
     /// (0: always exactly the settings above). The default is the frame time of a 30 Hz
     /// refresh (Preferences asks for frames per second): more than a display of 30-60 Hz

@@ -366,7 +366,8 @@ uint8_t RenderSession::targetStateLocked() const {
 }
 
 bool RenderSession::letsThePassFinishLocked(std::chrono::steady_clock::time_point now) const {
-    if (!interacting_ || !running_ || passKind_ != PassKind::Interactive || passLevel_ < 0 || stop_)
+    if (!policy_.wholeFramesWhileMoving || !interacting_ || !running_ ||
+        passKind_ != PassKind::Interactive || passLevel_ < 0 || stop_)
         return false;
     const double ran = std::chrono::duration<double, std::milli>(now - passStart_).count();
     return ran < kHoldPassForTargets * policy_.governorTargetMs;
@@ -438,7 +439,7 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
             frame_.anyBelow(kInteractive)) {
             // This pass re-traces stale pixels: the frame is torn until one leaves none.
             const uint64_t whole = wholeMark_.load(std::memory_order_relaxed);
-            if (displayWaits_ && interacting_ && tears_.load() == whole && wholeShown_ < whole) {
+            if (displayWaits_ && policy_.wholeFramesWhileMoving && interacting_ && tears_.load() == whole && wholeShown_ < whole) {
                 wake_.wait_for(lock, kDisplayWait,
                                [&] { return stop_ || wholeShown_ >= whole || !interacting_; });
                 if (stop_) return;

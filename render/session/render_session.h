@@ -132,10 +132,11 @@ public:
         return tears_.load(std::memory_order_acquire) == mark &&
                wholeMark_.load(std::memory_order_acquire) == mark;
     }
-    /// The display showed the whole frame of `mark`. With setDisplayWaits(true), while the
-    /// user drags or orbits, a pass that would tear a whole frame the display has not taken
-    /// yet waits for it (up to kDisplayWait): else the next edit's pass, which starts at once,
-    /// tears every frame before the display, a queued event away, can copy it.
+    /// The display showed the whole frame of `mark`. With setDisplayWaits(true) and the
+    /// policy's wholeFramesWhileMoving, while the user drags or orbits, a pass that would tear
+    /// a whole frame the display has not taken yet waits for it (up to kDisplayWait): else
+    /// the next edit's pass, which starts at once, tears every frame before the display, a
+    /// queued event away, can copy it.
     void wholeFrameShown(uint64_t mark);
     void setDisplayWaits(bool on);
     static constexpr std::chrono::milliseconds kDisplayWait{12};

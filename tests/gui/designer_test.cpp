@@ -11,6 +11,7 @@
 #include "session/governor.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QToolBar>
 #include <QApplication>
@@ -281,11 +282,15 @@ void DesignerTest::preferences_ChangeSessionPolicy() {
     auto* shadows = dialog->findChild<QComboBox*>(QStringLiteral("shadows"));
     auto* resolution = dialog->findChild<QComboBox*>(QStringLiteral("resolution"));
     QVERIFY(shadows && resolution);
+    auto* whole = dialog->findChild<QCheckBox*>(QStringLiteral("wholeFrames"));
+    QVERIFY(whole && whole->isChecked());  // Whole frames while moving, by default.
     shadows->setCurrentIndex(int(MovingShadows::Off));
     resolution->setCurrentIndex(int(MovingResolution::Quarter));
+    whole->setChecked(false);
     const InteractionPolicy p = window_->session()->session().policy();
     QCOMPARE(p.shadows, MovingShadows::Off);
     QCOMPARE(p.resolution, MovingResolution::Quarter);
+    QVERIFY(!p.wholeFramesWhileMoving);
     QCOMPARE(loadPreferences().policy, p);  // Stored for the next start.
     dialog->close();
     window_->applyPreferences(Preferences{});

@@ -13,6 +13,7 @@ TEST(InteractionPolicy, JsonRoundTripAndErrorsNameTheKey) {
     p.shadows = MovingShadows::HardOnly;
     p.maxDepthWhileMoving = 2;
     p.governorTargetMs = 12.5;
+    p.wholeFramesWhileMoving = false;
     InteractionPolicy back = InteractionPolicy::none();
     std::string error;
     ASSERT_TRUE(policyFromJson(policyToJson(p), back, error)) << error;

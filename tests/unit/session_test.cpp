@@ -446,10 +446,13 @@ TEST(RenderSession, WholeFrames_APassOverStalePixelsTearsTheFrameUntilOneLeavesN
     session.setObserver(nullptr);
 }
 
-/// Sets a policy of `targetMs` governor target on `session` and traces `doc` to completion.
-static void governedAndComplete(RenderSession& session, const SceneDocument& doc, double targetMs) {
+/// Sets a policy of `targetMs` governor target (and whole frames while moving or not) on
+/// `session` and traces `doc` to completion.
+static void governedAndComplete(RenderSession& session, const SceneDocument& doc, double targetMs,
+                                bool wholeFrames = true) {
     InteractionPolicy p;
     p.governorTargetMs = targetMs;
+    p.wholeFramesWhileMoving = wholeFrames;
     session.setPolicy(p);
     session.update(doc);
     ASSERT_TRUE(session.waitUntilComplete(60s));
@@ -475,6 +478,19 @@ static uint64_t orbitStepHeldMidPass(RenderSession& session, TileGate& gate, Sce
     return step;
 }
 
+/// Holds a governed orbit step mid-pass, posts another move, and checks that the move cuts
+/// the pass and ends exact after release.
+static void heldPassIsCutByTheNextEdit(RenderSession& session, SceneDocument& doc) {
+    TileGate gate;
+    const uint64_t step = orbitStepHeldMidPass(session, gate, doc);
+    doc.camera.position.x += 0.1f;
+    const uint64_t next = session.update(doc);
+    gate.open();
+    EXPECT_FALSE(session.waitForPass(step, 30s));  // Cut: the next edit is traced instead.
+    ASSERT_TRUE(session.waitForPass(next, 30s));
+    releasedEndsExact(session, doc);
+}
+
 TEST(RenderSession, WhileMoving_AGovernedPassWithinItsTimeFinishes_TheEditsWaitForIt) {
     SceneDocument doc = testRoom();
     RenderSession session(2);
@@ -483,10 +499,11 @@ TEST(RenderSession, WhileMoving_AGovernedPassWithinItsTimeFinishes_TheEditsWaitF
     TileGate gate;
     const uint64_t step = orbitStepHeldMidPass(session, gate, doc);
     // Two more mouse moves while the pass runs: they coalesce and wait for it.
-    doc.camera.position.x += 0.1f;
-    session.update(doc);
-    doc.camera.position.x += 0.1f;
-    const uint64_t last = session.update(doc);
+    uint64_t last = 0;
+    for (int k = 0; k < 2; ++k) {
+        doc.camera.position.x += 0.1f;
+        last = session.update(doc);
+    }
     EXPECT_EQ(last, step + 2);
     gate.open();
     PassInfo info;
@@ -498,18 +515,19 @@ TEST(RenderSession, WhileMoving_AGovernedPassWithinItsTimeFinishes_TheEditsWaitF
     releasedEndsExact(session, doc);
 }
 
+TEST(RenderSession, WhileMoving_WithWholeFramesOff_EveryEditCutsThePass) {
+    SceneDocument doc = testRoom();
+    RenderSession session(2);
+    // However long the test holds the pass, it is in time: only the policy lets it be cut.
+    governedAndComplete(session, doc, 60000.0, /*wholeFrames=*/false);
+    heldPassIsCutByTheNextEdit(session, doc);
+}
+
 TEST(RenderSession, WhileMoving_APassOverItsTimeIsCutByTheNextEdit) {
     SceneDocument doc = testRoom();
     RenderSession session(2);
     governedAndComplete(session, doc, 1e-3);  // Any pass held mid-way is long over its time.
-    TileGate gate;
-    const uint64_t step = orbitStepHeldMidPass(session, gate, doc);
-    doc.camera.position.x += 0.1f;
-    const uint64_t next = session.update(doc);
-    gate.open();
-    EXPECT_FALSE(session.waitForPass(step, 30s));  // Cut: the next edit is traced instead.
-    ASSERT_TRUE(session.waitForPass(next, 30s));
-    releasedEndsExact(session, doc);
+    heldPassIsCutByTheNextEdit(session, doc);
 }
 
 TEST(RenderSession, EditsFromAnotherThreadWhileRendering_EndExact) {
