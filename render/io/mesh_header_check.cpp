@@ -2,7 +2,9 @@
 #include "io/mesh_header_check.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string_view>
@@ -100,27 +102,14 @@ private:
     std::size_t i_ = 0;
 };
 
-// OFF: "[ST][C][N][4][n]OFF", for nOFF the dimension, then "vertices faces edges".
-std::string checkOff(std::string_view head, std::uintmax_t fileSize) {
-    OffTokens tokens(head);
-    auto keyword = tokens.next();
-    if (!keyword || keyword->size() < 3 || keyword->substr(keyword->size() - 3) != "OFF") return {};
-    const std::string_view prefix = keyword->substr(0, keyword->size() - 3);
-    if (prefix.find_first_not_of("STCN4n") != std::string_view::npos) return {};
-    std::uintmax_t coordinates = prefix.find('4') != std::string_view::npos ? 4 : 3;
-    auto token = tokens.next();
-    if (token && prefix.find('n') != std::string_view::npos) {
-        auto dimension = parseCount(*token);
-        if (!dimension) return {};
-        coordinates = std::max<std::uintmax_t>(*dimension, 1);
-        token = tokens.next();
-    }
-    if (!token || *token == "BINARY") return {};  // the importer refuses binary OFF itself
+// The vertex and face counts from `token` on, against the file size.
+std::string checkOffCounts(OffTokens& tokens, std::string_view token, std::uintmax_t coordinates,
+                           std::uintmax_t fileSize) {
     // The importer reads each count's leading digits and ignores what follows ("1\x01" is 1,
     // "x" is 0), so the check reads them the same way (the fuzzer found "1350000000 1\x01").
-    auto vertices = parseLeadingCount(*token);
+    auto vertices = parseLeadingCount(token);
     if (!vertices)
-        return "OFF header declares a vertex count too large to be read: " + std::string(*token);
+        return "OFF header declares a vertex count too large to be read: " + std::string(token);
     auto faceToken = tokens.next();
     auto faces = faceToken ? parseLeadingCount(*faceToken) : std::uintmax_t(0);
     if (!faces)
@@ -130,6 +119,41 @@ std::string checkOff(std::string_view head, std::uintmax_t fileSize) {
                            {{"vertices", *vertices, coordinates * kMinAsciiNumberBytes},
                             {"faces", *faces, kMinAsciiNumberBytes}},
                            fileSize);
+}
+
+// A file named *.off without an OFF keyword: the importer reads it all the same, its counts
+// from the first number on (the fuzzer found "! # ...OFF\n0675000000 1", 675 million
+// vertices in 156 bytes, which the importer tried to allocate).
+std::string checkHeaderlessOff(std::string_view head, std::uintmax_t fileSize) {
+    OffTokens tokens(head);
+    for (int i = 0; i < 64; ++i) {
+        auto token = tokens.next();
+        if (!token) return {};
+        if ((*token)[0] >= '0' && (*token)[0] <= '9') return checkOffCounts(tokens, *token, 3, fileSize);
+    }
+    return {};
+}
+
+// OFF: "[ST][C][N][4][n]OFF", for nOFF the dimension, then "vertices faces edges".
+std::string checkOff(std::string_view head, std::uintmax_t fileSize, bool namedOff) {
+    OffTokens tokens(head);
+    auto keyword = tokens.next();
+    const bool isKeyword = keyword && keyword->size() >= 3 &&
+                           keyword->substr(keyword->size() - 3) == "OFF" &&
+                           keyword->substr(0, keyword->size() - 3).find_first_not_of("STCN4n") ==
+                               std::string_view::npos;
+    if (!isKeyword) return namedOff ? checkHeaderlessOff(head, fileSize) : std::string();
+    const std::string_view prefix = keyword->substr(0, keyword->size() - 3);
+    std::uintmax_t coordinates = prefix.find('4') != std::string_view::npos ? 4 : 3;
+    auto token = tokens.next();
+    if (token && prefix.find('n') != std::string_view::npos) {
+        auto dimension = parseCount(*token);
+        if (!dimension) return {};
+        coordinates = std::max<std::uintmax_t>(*dimension, 1);
+        token = tokens.next();
+    }
+    if (!token || *token == "BINARY") return {};  // the importer refuses binary OFF itself
+    return checkOffCounts(tokens, *token, coordinates, fileSize);
 }
 
 std::uintmax_t plyScalarBytes(std::string_view type) {
@@ -203,7 +227,9 @@ std::string checkMeshHeader(const std::string& path, std::uintmax_t fileSize) {
     const std::string head = readHead(path, kMaxHeaderBytes);
     if (std::string why = checkPly(head, fileSize); !why.empty()) return why;
     // OFF headers are three lines at most, bar comments; 64 KiB covers any real one.
-    return checkOff(std::string_view(head).substr(0, 1 << 16), fileSize);
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return checkOff(std::string_view(head).substr(0, 1 << 16), fileSize, extension == ".off");
 }
 
 }  // namespace rs

@@ -221,6 +221,19 @@ TEST_F(MeshFiles, OffLieWithGarbageAfterACount_IsRefusedQuickly) {
                          "OFF header declares 1350000000 vertices");
 }
 
+// Found by tests/fuzz/mesh_loader_fuzz (corpus/mesh_loader/off-headerless-lie.off): a file
+// named *.off whose first line is no OFF keyword is still read as OFF, its counts from the
+// first number on; 675 million vertices in a few bytes made the importer allocate 8 GB.
+TEST_F(MeshFiles, OffWithoutItsKeywordClaimingMoreThanTheFileHolds_IsRefusedQuickly) {
+    expectRefusedQuickly(write("lie.off", "! # not a keyword OFF\n0675000000 1 0\n0 0 0\n3 0 0 0\n"),
+                         "OFF header declares 675000000 vertices");
+    expectRefusedQuickly(write("bare.OFF", "1350000000 1 0\n0 0 0\n3 0 0 0\n"),
+                         "OFF header declares 1350000000 vertices");
+    // Other formats are not read as OFF: an OBJ's numbers are no counts.
+    MeshLoadResult obj = loadMesh(write("t.obj", "# 900000000 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), true);
+    EXPECT_TRUE(obj.ok()) << obj.error;
+}
+
 TEST_F(MeshFiles, AsciiPlyClaimingMoreVerticesThanTheFileHolds_IsRefusedQuickly) {
     std::ifstream in(meshPath("tetra.ply"));
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
