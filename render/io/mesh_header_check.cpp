@@ -138,14 +138,17 @@ std::string checkHeaderlessOff(std::string_view head, std::uintmax_t fileSize) {
 std::string checkOff(std::string_view head, std::uintmax_t fileSize, bool namedOff) {
     OffTokens tokens(head);
     auto keyword = tokens.next();
-    const bool isKeyword = keyword && keyword->size() >= 3 &&
-                           keyword->substr(keyword->size() - 3) == "OFF" &&
-                           keyword->substr(0, keyword->size() - 3).find_first_not_of("STCN4n") ==
-                               std::string_view::npos;
+    // The importer matches the keyword as a prefix: "NOFF1350000000 1 0" is NOFF, then the
+    // counts (the fuzzer found it, 16 GB of vertices in 34 bytes).
+    const std::size_t at = keyword ? keyword->find("OFF") : std::string_view::npos;
+    const bool isKeyword = at != std::string_view::npos &&
+                           keyword->substr(0, at).find_first_not_of("STCN4n") == std::string_view::npos;
     if (!isKeyword) return namedOff ? checkHeaderlessOff(head, fileSize) : std::string();
-    const std::string_view prefix = keyword->substr(0, keyword->size() - 3);
+    const std::string_view prefix = keyword->substr(0, at);
     std::uintmax_t coordinates = prefix.find('4') != std::string_view::npos ? 4 : 3;
-    auto token = tokens.next();
+    std::optional<std::string_view> token;
+    if (keyword->size() > at + 3) token = keyword->substr(at + 3);
+    else token = tokens.next();
     if (token && prefix.find('n') != std::string_view::npos) {
         auto dimension = parseCount(*token);
         if (!dimension) return {};

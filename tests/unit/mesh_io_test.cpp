@@ -229,6 +229,9 @@ TEST_F(MeshFiles, OffWithoutItsKeywordClaimingMoreThanTheFileHolds_IsRefusedQuic
                          "OFF header declares 675000000 vertices");
     expectRefusedQuickly(write("bare.OFF", "1350000000 1 0\n0 0 0\n3 0 0 0\n"),
                          "OFF header declares 1350000000 vertices");
+    // corpus/mesh_loader/off-glued-keyword-lie.off: the importer takes "NOFF" as a prefix.
+    expectRefusedQuickly(write("glued.off", "NOFF1350000000 1 0\n0 0 0\n3 0 0 0\n"),
+                         "OFF header declares 1350000000 vertices");
     // Other formats are not read as OFF: an OBJ's numbers are no counts.
     MeshLoadResult obj = loadMesh(write("t.obj", "# 900000000 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), true);
     EXPECT_TRUE(obj.ok()) << obj.error;
