@@ -63,8 +63,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::remove(path.c_str());
     if (!result.ok()) {
         if (result.error.empty()) broken("a failed load without a message");
-        if (result.error.find("Sanitizer") != std::string::npos ||
-            result.error.find("runtime error") != std::string::npos)
+        // The child hitting its memory budget is the budget at work, not a finding: a header
+        // that lies in a way the header check does not read (assimp allocating for it) ends
+        // there, as in a release build, where the allocation fails and the load is refused.
+        const bool budget = result.error.find("allocator is out of memory") != std::string::npos ||
+                            result.error.find("exceeds maximum supported size") != std::string::npos;
+        if (!budget && (result.error.find("Sanitizer") != std::string::npos ||
+                        result.error.find("runtime error") != std::string::npos))
             broken("a sanitizer report in the import child:", result.error);
         return 0;
     }
