@@ -38,14 +38,6 @@ std::optional<std::uintmax_t> parseCount(std::string_view token) {
     return value;
 }
 
-// The value of `token`'s leading digits (0 when there are none); nullopt when it overflows.
-std::optional<std::uintmax_t> parseLeadingCount(std::string_view token) {
-    std::uintmax_t value = 0;
-    auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (ec == std::errc::result_out_of_range) return std::nullopt;
-    return ptr == token.data() ? 0 : value;
-}
-
 // One kind of element the header declares: how many, and the least bytes each needs.
 struct ElementClaim {
     std::string name;  ///< As messages count them: "vertices", "vertex elements".
@@ -76,87 +68,120 @@ std::string compareWithSize(const char* format, std::uintmax_t headerBytes,
            describeByteCount(fileSize) + " can hold (refused before reading it)";
 }
 
-// Splits ASCII header text into tokens, skipping '#' comments (OFF).
-class OffTokens {
-public:
-    explicit OffTokens(std::string_view text) : t_(text) {}
-    std::optional<std::string_view> next() {
-        for (;;) {
-            while (i_ < t_.size() && isSpace(t_[i_])) ++i_;
-            if (i_ < t_.size() && t_[i_] == '#') {
-                while (i_ < t_.size() && t_[i_] != '\n') ++i_;
-                continue;
-            }
-            break;
+// The text assimp 5.2's OFF importer parses (Debian's 5.2.5, BaseImporter::TextFileToBuffer):
+// the file with a UTF-8 byte order mark dropped, or byte-swapped in pairs (a UTF-16 BE mark)
+// or in words (a UTF-32 BE mark): its conversions are thrown away, the swaps are not. Files
+// under 8 bytes it refuses (empty here, which the caller treats as nothing to check).
+std::string offImporterText(std::string_view head) {
+    if (head.size() < 8) return {};
+    std::string text(head);
+    const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+    if (byte(0) == 0xEF && byte(1) == 0xBB && byte(2) == 0xBF) return text.substr(3);
+    if (byte(0) == 0x00 && byte(1) == 0x00 && byte(2) == 0xFE && byte(3) == 0xFF)
+        for (std::size_t i = 0; i + 4 <= text.size(); i += 4) {
+            std::swap(text[i], text[i + 3]);
+            std::swap(text[i + 1], text[i + 2]);
         }
-        if (i_ >= t_.size()) return std::nullopt;
-        const std::size_t start = i_;
-        while (i_ < t_.size() && !isSpace(t_[i_]) && t_[i_] != '#') ++i_;
-        return t_.substr(start, i_ - start);
-    }
+    if (byte(0) == 0xFE && byte(1) == 0xFF && text.size() % 2 == 0)
+        for (std::size_t i = 0; i + 2 <= text.size(); i += 2) std::swap(text[i], text[i + 1]);
+    return text;
+}
+
+// A cursor over that text that moves as the importer's header parser does (OFFLoader.cpp's
+// NextToken, ParsingUtils' SkipSpacesAndLineEnd/SkipLine and fast_atof's strtoul10), so the
+// check reads the counts the importer allocates for, whatever bytes surround them. The text
+// ends in the NUL the importer appends.
+class OffCursor {
+public:
+    explicit OffCursor(std::string_view text) : t_(text) {}
+    char at(std::size_t k = 0) const { return i_ + k < t_.size() ? t_[i_ + k] : '\0'; }
+    /// Bytes from the cursor to the end, the appended NUL included (the importer's `end - car`).
+    std::size_t left() const { return t_.size() + 1 - std::min(i_, t_.size() + 1); }
     std::size_t offset() const { return i_; }
+    void skip(std::size_t n) { i_ += n; }
+    /// Skips blanks, line ends and whole comment lines (a '#' where a token would start).
+    void nextToken() {
+        skipSpacesAndLineEnds();
+        while (at() == '#' || at() == '\n' || at() == '\r') {
+            while (at() != '\r' && at() != '\n' && at() != '\0') ++i_;
+            while (at() == '\r' || at() == '\n') ++i_;
+            skipSpacesAndLineEnds();
+        }
+    }
+    /// The leading digits as an unsigned 32-bit value, wrapping as the importer's does;
+    /// `overflowed` tells that the digits did not fit.
+    uint32_t readCount(bool& overflowed) {
+        uint64_t value = 0;
+        overflowed = false;
+        for (; at() >= '0' && at() <= '9'; ++i_) {
+            value = value * 10 + uint64_t(at() - '0');
+            if (value > UINT32_MAX) overflowed = true, value &= UINT32_MAX;
+        }
+        return uint32_t(value);
+    }
 
 private:
-    static bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+    void skipSpacesAndLineEnds() {
+        while (at() == ' ' || at() == '\t' || at() == '\r' || at() == '\n') ++i_;
+    }
     std::string_view t_;
     std::size_t i_ = 0;
 };
 
-// The vertex and face counts from `token` on, against the file size.
-std::string checkOffCounts(OffTokens& tokens, std::string_view token, std::uintmax_t coordinates,
-                           std::uintmax_t fileSize) {
-    // The importer reads each count's leading digits and ignores what follows ("1\x01" is 1,
-    // "x" is 0), so the check reads them the same way (the fuzzer found "1350000000 1\x01").
-    auto vertices = parseLeadingCount(token);
-    if (!vertices)
-        return "OFF header declares a vertex count too large to be read: " + std::string(token);
-    auto faceToken = tokens.next();
-    auto faces = faceToken ? parseLeadingCount(*faceToken) : std::uintmax_t(0);
-    if (!faces)
-        return "OFF header declares a face count too large to be read: " + std::string(*faceToken);
-    // Binary coordinates take 4 bytes each, ASCII ones at least 2; faces at least a count.
-    return compareWithSize("OFF", tokens.offset(),
-                           {{"vertices", *vertices, coordinates * kMinAsciiNumberBytes},
-                            {"faces", *faces, kMinAsciiNumberBytes}},
-                           fileSize);
-}
-
-// A file named *.off without an OFF keyword: the importer reads it all the same, its counts
-// from the first number on (the fuzzer found "! # ...OFF\n0675000000 1", 675 million
-// vertices in 156 bytes, which the importer tried to allocate).
-std::string checkHeaderlessOff(std::string_view head, std::uintmax_t fileSize) {
-    OffTokens tokens(head);
-    for (int i = 0; i < 64; ++i) {
-        auto token = tokens.next();
-        if (!token) return {};
-        if ((*token)[0] >= '0' && (*token)[0] <= '9') return checkOffCounts(tokens, *token, 3, fileSize);
+// OFF: "[ST][C][N][4][n]OFF", for nOFF the dimension, then "vertices faces edges", read as the
+// importer reads them: the prefix letters one after another, the keyword optional (without it
+// the counts start at the first token, which must start with a digit), each count its leading
+// digits. The importer allocates every vertex and face before it reads a line, then takes one
+// line each, and a NUL ends its text: the lines from the counts on to the file's first NUL
+// must hold them (a line is at least one byte and a line end, the last one may lack the end).
+// `complete` says `text` is the whole file, so a NUL past it cannot be missed.
+std::string checkOff(std::string_view text, std::uintmax_t fileSize, bool complete) {
+    OffCursor car(text);
+    car.nextToken();
+    bool hasDimension = false;
+    if (car.left() > 2 && car.at() == 'S' && car.at(1) == 'T') car.skip(2);
+    if (car.left() > 1 && car.at() == 'C') car.skip(1);
+    if (car.left() > 1 && car.at() == 'N') car.skip(1);
+    if (car.left() > 1 && car.at() == '4') car.skip(1);
+    if (car.left() > 1 && car.at() == 'n') car.skip(1), hasDimension = true;
+    if (car.left() > 3 && car.at() == 'O' && car.at(1) == 'F' && car.at(2) == 'F') {
+        car.skip(3);
+        car.nextToken();
+    } else {
+        car.nextToken();
+        if (car.left() <= 1 || car.at() < '0' || car.at() > '9') return {};  // it refuses
     }
-    return {};
-}
-
-// OFF: "[ST][C][N][4][n]OFF", for nOFF the dimension, then "vertices faces edges".
-std::string checkOff(std::string_view head, std::uintmax_t fileSize, bool namedOff) {
-    OffTokens tokens(head);
-    auto keyword = tokens.next();
-    // The importer matches the keyword as a prefix: "NOFF1350000000 1 0" is NOFF, then the
-    // counts (the fuzzer found it, 16 GB of vertices in 34 bytes).
-    const std::size_t at = keyword ? keyword->find("OFF") : std::string_view::npos;
-    const bool isKeyword = at != std::string_view::npos &&
-                           keyword->substr(0, at).find_first_not_of("STCN4n") == std::string_view::npos;
-    if (!isKeyword) return namedOff ? checkHeaderlessOff(head, fileSize) : std::string();
-    const std::string_view prefix = keyword->substr(0, at);
-    std::uintmax_t coordinates = prefix.find('4') != std::string_view::npos ? 4 : 3;
-    std::optional<std::string_view> token;
-    if (keyword->size() > at + 3) token = keyword->substr(at + 3);
-    else token = tokens.next();
-    if (token && prefix.find('n') != std::string_view::npos) {
-        auto dimension = parseCount(*token);
-        if (!dimension) return {};
-        coordinates = std::max<std::uintmax_t>(*dimension, 1);
-        token = tokens.next();
+    bool overflowed = false;
+    if (hasDimension) {
+        const uint32_t dimensions = car.readCount(overflowed);
+        if (dimensions > 3 || overflowed) return {};  // the importer refuses more than 3
+        car.nextToken();
     }
-    if (!token || *token == "BINARY") return {};  // the importer refuses binary OFF itself
-    return checkOffCounts(tokens, *token, coordinates, fileSize);
+    car.nextToken();
+    const std::size_t vertexAt = car.offset();
+    const uint32_t vertices = car.readCount(overflowed);
+    if (overflowed)
+        return "OFF header declares a vertex count too large to be read: " +
+               std::string(text.substr(vertexAt, 32));
+    car.nextToken();
+    const std::size_t faceAt = car.offset();
+    const uint32_t faces = car.readCount(overflowed);
+    if (overflowed)
+        return "OFF header declares a face count too large to be read: " +
+               std::string(text.substr(faceAt, 32));
+    car.nextToken();
+    car.readCount(overflowed);  // the edge count, which the importer skips
+    car.nextToken();
+    if (vertices == 0 || faces == 0) return {};  // the importer refuses both
+    const std::size_t body = std::min(car.offset(), text.size());
+    const std::size_t nul = text.find('\0', body);
+    if (nul == std::string_view::npos)
+        return compareWithSize("OFF", body, {{"vertices", vertices, 2}, {"faces", faces, 2}},
+                               complete ? text.size() : fileSize, 1);
+    std::string why =
+        compareWithSize("OFF", body, {{"vertices", vertices, 2}, {"faces", faces, 2}}, nul, 1);
+    if (!why.empty()) why += "; the importer stops reading at its NUL byte at offset " + std::to_string(nul);
+    return why;
 }
 
 std::uintmax_t plyScalarBytes(std::string_view type) {
@@ -229,10 +254,18 @@ std::string checkPly(std::string_view head, std::uintmax_t fileSize) {
 std::string checkMeshHeader(const std::string& path, std::uintmax_t fileSize) {
     const std::string head = readHead(path, kMaxHeaderBytes);
     if (std::string why = checkPly(head, fileSize); !why.empty()) return why;
-    // OFF headers are three lines at most, bar comments; 64 KiB covers any real one.
+    // assimp picks its importer by the extension: a file named *.off is read as OFF whatever
+    // it holds. Another name reaches the OFF importer only by its signature, "off" in its
+    // first three bytes (any case), when no importer claims the extension; such a file is
+    // checked as OFF whatever its extension (an OBJ that starts so is no real OBJ).
     std::string extension = std::filesystem::path(path).extension().string();
     for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return checkOff(std::string_view(head).substr(0, 1 << 16), fileSize, extension == ".off");
+    std::string start = head.substr(0, 3);
+    for (char& c : start) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".off" && start.find("off") == std::string::npos) return {};
+    const std::string text = offImporterText(head);
+    // A dropped byte order mark shortens the text the importer reads by as much.
+    return checkOff(text, fileSize - (head.size() - text.size()), head.size() == fileSize);
 }
 
 }  // namespace rs
