@@ -223,11 +223,21 @@ void heat(float t, uint8_t rgb[3]) {
 
 }  // namespace
 
+void toneMapRect(const DisplayFrame& f, const QRect& r, QImage& image) {
+    const std::size_t n = std::size_t(r.width());
+    for (int y = r.top(); y <= r.bottom(); ++y) {
+        const Color* row = &f.color[std::size_t(y) * std::size_t(f.width) + std::size_t(r.left())];
+        uchar* line = image.scanLine(y) + 3 * r.left();
+        if (y > r.top() && std::memcmp(row, row - f.width, n * sizeof(Color)) == 0)
+            std::memcpy(line, image.scanLine(y - 1) + 3 * r.left(), 3 * n);
+        else
+            toDisplay8(row, n, f.tonemap, f.exposure, line);
+    }
+}
+
 QImage toneMappedImage(const DisplayFrame& f) {
     QImage img(f.width, f.height, QImage::Format_RGB888);
-    for (int y = 0; y < f.height; ++y)
-        toDisplay8(&f.color[std::size_t(y) * f.width], std::size_t(f.width), f.tonemap, f.exposure,
-                   img.scanLine(y));
+    toneMapRect(f, QRect(0, 0, f.width, f.height), img);
     return img;
 }
 

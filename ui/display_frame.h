@@ -77,6 +77,11 @@ std::vector<QRect> mergeRects(std::vector<QRect> rects, const QSize& frame);
 QImage debugImage(const DisplayFrame& frame, ViewMode mode);
 /// The tone-mapped colour view (CPU path of the viewport's shader).
 QImage toneMappedImage(const DisplayFrame& frame);
+/// Tone maps the pixels of `rect` (inside the frame) into the same pixels of `image`, an
+/// RGB888 image of the frame's size. A row whose colours have the bits of the row above's in
+/// `rect` copies that row's bytes: an undersampled pass repeats each block's value over its
+/// rows, so a quarter-resolution frame maps one row in four.
+void toneMapRect(const DisplayFrame& frame, const QRect& rect, QImage& image);
 /// The selection outline is drawn about this many objects at most (the first of the
 /// selection): the OpenGL view passes them to its shader as a fixed-size uniform array.
 inline constexpr std::size_t kMaxOutlined = 32;

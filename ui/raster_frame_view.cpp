@@ -42,12 +42,11 @@ bool RasterFrameView::canShadeRects(const DisplayFrame& f, ViewMode mode, const 
 void RasterFrameView::shadeRect(const DisplayFrame& f, const std::vector<ObjectId>& selected, const QRect& rect) {
     // The outline of a pixel depends on its neighbours' ids: one pixel of margin.
     const QRect r = rect.adjusted(-1, -1, 1, 1) & QRect(0, 0, f.width, f.height);
-    for (int y = r.top(); y <= r.bottom(); ++y) {
-        uchar* line = image_.scanLine(y);
-        toDisplay8(&f.color[std::size_t(y) * f.width + r.left()], std::size_t(r.width()),
-                   f.tonemap, f.exposure, line + 3 * r.left());
-        drawOutlineRow(f, y, r.left(), r.right(), selected, line);
-    }
+    // All rows before any outline: toneMapRect copies a row's bytes to the next.
+    toneMapRect(f, r, image_);
+    if (selected.empty()) return;
+    for (int y = r.top(); y <= r.bottom(); ++y)
+        drawOutlineRow(f, y, r.left(), r.right(), selected, image_.scanLine(y));
 }
 
 void RasterFrameView::showFrame(std::shared_ptr<const DisplayFrame> frame, ViewMode mode,

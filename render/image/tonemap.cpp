@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 
 namespace rs {
 
@@ -140,11 +141,22 @@ void toDisplay8(const Color& hdr, ToneMap op, float exposure, uint8_t rgb[3]) {
 
 namespace {
 
+/// Whether two colours have the same bits (then they map to the same bytes, NaNs included).
+bool sameBits(const Color& a, const Color& b) {
+    return std::memcmp(&a, &b, sizeof(Color)) == 0;
+}
+
 /// toDisplay8's row loop for one operator (chosen once a row, not per pixel).
 template <ToneMap Op>
 void toDisplay8Row(const Color* hdr, std::size_t count, float gain, uint8_t* rgb) {
     const Srgb8Steps& steps = srgb8Steps();
     for (std::size_t i = 0; i < count; ++i) {
+        // An undersampled pass repeats one value over each block's pixels: a pixel equal to
+        // its left neighbour takes its bytes instead of being mapped again.
+        if (i > 0 && sameBits(hdr[i], hdr[i - 1])) {
+            std::memcpy(rgb + 3 * i, rgb + 3 * (i - 1), 3);
+            continue;
+        }
         // toneMap stays in [0, 1] (NaN sanitised), the table's domain.
         const Color d = toneMapGain(hdr[i], Op, gain);
         for (int c = 0; c < 3; ++c) rgb[3 * i + std::size_t(c)] = steps.code(d[c]);

@@ -18,7 +18,8 @@ float srgbDecode(float encoded);
 /// Tone maps and encodes one pixel to 8-bit sRGB.
 void toDisplay8(const Color& hdr, ToneMap op, float exposure, uint8_t rgb[3]);
 /// toDisplay8 of `count` pixels into 3 * `count` bytes (the viewport's rows: exposure's gain
-/// is computed once, and the sRGB step is a table lookup; the same bytes as pixel by pixel).
+/// is computed once, the sRGB step is a table lookup, and a pixel whose colour has the bits
+/// of its left neighbour's copies its bytes; the same bytes as pixel by pixel).
 void toDisplay8(const Color* hdr, std::size_t count, ToneMap op, float exposure, uint8_t* rgb);
 
 }  // namespace rs

@@ -160,15 +160,19 @@ bool DeepFrame::summariesMatchPixels() const {
     for (std::size_t t = 0; t < tileSummary.size(); ++t)
         if (!sameSummary(tileSummary[t], copy.tileSummary[t])) return false;
     std::vector<std::array<uint32_t, 4>> counts(tileStates.size(), std::array<uint32_t, 4>{});
+    // A tile's live segments are its pixels' counts summed: commit skips clearing the counts
+    // of a tile that has none.
+    std::vector<uint32_t> live(tileLiveSegments.size(), 0);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const std::size_t i = index(x, y);
             if (state[i] > kFinal) return false;
             ++counts[std::size_t(tileOf(x, y))][state[i]];
+            live[std::size_t(tileOf(x, y))] += segmentCount[i];
             if (!tileSampled[std::size_t(tileOf(x, y))] && (sampleCount[i] != 0 || sampleSum[i] != Color(0.0f)))
                 return false;
         }
-    return counts == tileStates;
+    return counts == tileStates && live == tileLiveSegments;
 }
 
 void DeepFrame::summarizeTile(int t) {

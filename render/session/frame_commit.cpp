@@ -82,6 +82,9 @@ public:
         frame_.segmentCount[pixel_] = uint8_t(count);
         live_ = live_ - oldCount_ + uint32_t(count);
     }
+    /// Whether no pixel of the tile keeps a segment: every count is 0 (live_ is their sum),
+    /// so clearRun() would change nothing. Not after restart(): counts not rewritten yet stay.
+    bool noneKept() const { return !fresh_ && live_ == 0; }
     /// Pixels [i, i + n) of one row keep no segments.
     void clearRun(std::size_t i, std::size_t n) {
         uint32_t removed = 0;
@@ -217,7 +220,8 @@ struct SpanValue {
 
 /// The frame's columns a span writes, through local pointers: the byte-sized stores may alias
 /// anything, which would make the compiler reload every vector's data pointer per pixel. The
-/// old states are counted here (a read-modify-write of the tile's counts per pixel otherwise).
+/// old states are counted here (a read-modify-write of the tile's counts per pixel otherwise),
+/// unless `countStates` is off: the caller knows them (reading them misses the cache).
 struct SpanWriter {
     Color* color;
     ObjectId* id;
@@ -230,6 +234,7 @@ struct SpanWriter {
     Color* sampleSum;
     uint16_t* sampleCount;
     bool clearSamples;
+    bool countStates;
     uint32_t wasState[4] = {0, 0, 0, 0};
 
     /// Pixels [i, i + n) of one row get v; N > 0 says n == N, so the loops unroll.
@@ -246,7 +251,8 @@ struct SpanWriter {
         uint8_t* const flagsOut = flags + i;
         glm::vec4* const boundOut = bound + i;
         uint32_t was[4] = {0, 0, 0, 0};
-        for (std::size_t k = 0; k < n; ++k) ++was[stateOut[k] & 3];  // States are <= kFinal.
+        if (countStates)
+            for (std::size_t k = 0; k < n; ++k) ++was[stateOut[k] & 3];  // States are <= kFinal.
         for (std::size_t k = 0; k < n; ++k) colorOut[k] = w.color;
         for (std::size_t k = 0; k < n; ++k) idOut[k] = w.id;
         for (std::size_t k = 0; k < n; ++k) depthOut[k] = w.depth;
@@ -262,6 +268,24 @@ struct SpanWriter {
         for (int s = 0; s < 4; ++s) wasState[s] += was[s];
     }
 };
+
+/// Asks for the lines of rows [y0, y1) of `r` in the buffers block spans write, for writing:
+/// eight buffers written four pixels at a time, a row of blocks four frame rows, are too many
+/// short streams for the hardware's prefetchers.
+void prefetchSpanRows(const DeepFrame& f, const PixelRect& r, int y0, int y1) {
+    const std::size_t n = std::size_t(r.x1 - r.x0);
+    for (int y = y0; y < y1; ++y) {
+        const std::size_t i = f.index(r.x0, y);
+        prefetchForWrite(f.color.data() + i, n);
+        prefetchForWrite(f.id.data() + i, n);
+        prefetchForWrite(f.depth.data() + i, n);
+        prefetchForWrite(f.normal.data() + i, n);
+        prefetchForWrite(f.cost.data() + i, n);
+        prefetchForWrite(f.hitBound.data() + i, n);
+        prefetchForWrite(f.state.data() + i, n);
+        prefetchForWrite(f.flags.data() + i, n);
+    }
+}
 
 /// The blocks of one tile a commit wrote, so each summary is recomputed once.
 class TouchedBlocks {
@@ -493,13 +517,19 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
 
     // Undersampled blocks: the block's ray over all its pixels, which keep no segments. Each
     // span row is a run of neighbouring pixels that SpanWriter fills buffer by buffer; the
-    // segments are cleared a span row at a time.
+    // segments are cleared a span row at a time. An orbit's pass finds every pixel of the
+    // tile stale and (after its first pass) none keeping segments: then the old states and
+    // segment counts are known from the tile's counts and are not read: loads that miss the
+    // cache, which the commit waited for (its stores alone it does not wait for).
     const RayList& blocks = t.blocks;
     if (blocks.size() > 0) {
+        const bool allStale = tileStates[std::size_t(tile)][kStale] == uint32_t(t.rect.area());
+        const bool clearSegments = !segments.noneKept();
         SpanWriter spans{color.data(),     id.data(),          depth.data(), normal.data(),
                          cost.data(),      state.data(),       flags.data(), hitBound.data(),
-                         sampleSum.data(), sampleCount.data(), clearSamples};
+                         sampleSum.data(), sampleCount.data(), clearSamples, !allStale};
         uint32_t spanPixels = 0;
+        uint32_t rowOfBlocks = UINT32_MAX;
         for (std::size_t k = 0; k < blocks.size(); ++k) {
             const PrimaryInfo& info = blocks.info[k];
             const SpanValue v{blocks.color[k],
@@ -517,6 +547,13 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
                 const uint32_t y = uint32_t(blocks.pixel[k]) / uint32_t(width);
                 const uint32_t x = uint32_t(blocks.pixel[k]) - y * uint32_t(width);
                 touched.addSpan(int(x), int(y), spanX * spanY, v.bound, v.flags);
+                if (y != rowOfBlocks) {
+                    // A new row of blocks (the pass gathers them row by row): the next row's
+                    // lines are asked for while this one is written.
+                    rowOfBlocks = y;
+                    prefetchSpanRows(*this, t.rect, int(y) + spanY,
+                                     std::min(t.rect.y1, int(y) + 2 * spanY));
+                }
             }
             for (int dy = 0; dy < spanY; ++dy) {
                 const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width);
@@ -528,10 +565,11 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
                 else
                     spans.row<0>(i, n, v);
                 spanPixels += uint32_t(spanX);
-                segments.clearRun(i, n);
+                if (clearSegments) segments.clearRun(i, n);
             }
         }
         auto& counts = tileStates[std::size_t(tile)];
+        if (allStale) spans.wasState[kStale] = spanPixels;
         for (int s = 0; s < 4; ++s) counts[std::size_t(s)] -= spans.wasState[s];
         counts[kInteractive] += spanPixels;
     }

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "gui_test_support.h"
+#include "image/tonemap.h"
 #include "raster_frame_view.h"
 #include "viewport_pacing.h"
 #include "scene_edits.h"
@@ -28,6 +29,8 @@ private Q_SLOTS:
     void incrementalHandover_EqualsFullCopyAfterThePass();
     void debugBuffers_HandedOverOnlyWhileShown_ThenIncrementallyEqual();
     void rasterView_RepaintsOnlyChangedRectangles_ScreenEqualsTheFullImage();
+    void rasterView_QuarterResolutionOrbit_ShowsEachPixelMappedAlone();
+    void toneMapRect_CopiesOnlyRowsEqualToTheOneAbove();
     void handover_WhileTheFrameLockIsHeld_ReturnsAtOnce_AndCatchesUpAfter();
     void exposureEdit_ChangesShownImageAndExport_UndoRestoresThem();
     void toneMapEdit_ChangesShownImage_UndoRestoresIt();
@@ -231,6 +234,95 @@ void DisplayTest::rasterView_RepaintsOnlyChangedRectangles_ScreenEqualsTheFullIm
     const ObjectId chrome = idOf(w, "chrome ball");
     w.editor()->setSelection(chrome);
     QCOMPARE(stalePixels(chrome), 0);
+}
+
+/// The colour view shaded pixel by pixel (toDisplay8 of one colour at a time, no outline):
+/// what the raster view's row and run reuse must reproduce.
+static QImage eachPixelMappedAlone(const DisplayFrame& f) {
+    QImage img(f.width, f.height, QImage::Format_RGB888);
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x)
+            toDisplay8(f.color[std::size_t(y) * std::size_t(f.width) + std::size_t(x)], f.tonemap,
+                       f.exposure, img.scanLine(y) + 3 * x);
+    return img;
+}
+
+void DisplayTest::rasterView_QuarterResolutionOrbit_ShowsEachPixelMappedAlone() {
+    // A quarter-resolution orbit pass gives each 4 x 4 block one ray's value; the raster view
+    // maps a repeated colour once and copies its bytes. The whole frame shown while moving
+    // must be the session's, and its image every pixel mapped on its own.
+    MainWindow& w = *window_;
+    w.viewport()->setGizmoVisible(false);
+    w.editor()->setSelection(std::vector<ObjectId>{});  // No outline: colours alone.
+    InteractionPolicy policy = w.session()->session().policy();
+    policy.resolution = MovingResolution::Quarter;
+    policy.governorTargetMs = 0.0;  // Exactly the settings: every orbit pass is quarter.
+    w.session()->session().setPolicy(policy);
+    QVERIFY(settle(w));
+    w.session()->beginInteraction(kNoObject);
+    SceneDocument doc = w.editor()->document();
+    doc.camera.position.x += 0.05f;
+    w.editor()->edit(QStringLiteral("Orbit"), std::move(doc), MergeKind::Drag,
+                     QStringLiteral("camera"));
+    w.session()->flushUpdate();
+    const uint64_t generation = w.session()->session().generation();
+    QVERIFY(w.session()->session().waitForPass(generation, std::chrono::seconds(60)));
+    // The pass's end is handed over by the event loop; the session waits, still moving.
+    DisplayFrame session;
+    QTRY_VERIFY((session = DisplayFrame::fromSession(w.session()->session()),
+                 w.viewport()->frame()->generation >= generation &&
+                     sameBits(w.viewport()->frame()->color, session.color)));
+    const DisplayFrame& shown = *w.viewport()->frame();
+    QVERIFY(sameBits(shown.id, session.id));
+    QVERIFY(sameBits(shown.depth, session.depth));
+    // Blocks, not pixels: each whole 4 x 4 block holds its top-left pixel's colour.
+    int blocks = 0, uniform = 0;
+    for (int by = 0; by + 4 <= shown.height; by += 4)
+        for (int bx = 0; bx + 4 <= shown.width; bx += 4, ++blocks) {
+            const Color c = shown.color[std::size_t(by) * std::size_t(shown.width) + bx];
+            bool same = true;
+            for (int y = by; y < by + 4; ++y)
+                for (int x = bx; x < bx + 4; ++x)
+                    same = same && std::memcmp(&c, &shown.color[std::size_t(y) * shown.width + x],
+                                               sizeof(Color)) == 0;
+            uniform += same;
+        }
+    QCOMPARE(uniform, blocks);
+    QCOMPARE(shownImage(), eachPixelMappedAlone(session));
+    w.session()->endInteraction();
+    QVERIFY(settle(w));
+    // And the full-resolution frame after it.
+    QCOMPARE(shownImage(), eachPixelMappedAlone(DisplayFrame::fromSession(w.session()->session())));
+}
+
+void DisplayTest::toneMapRect_CopiesOnlyRowsEqualToTheOneAbove() {
+    // Rows that repeat the one above within the rectangle, rows that differ from it only
+    // after their first pixel or only outside the rectangle, and runs of equal pixels: the
+    // rectangle's bytes must be each pixel's own, and the bytes outside it untouched.
+    DisplayFrame f;
+    f.width = 12;
+    f.height = 8;
+    f.tonemap = ToneMap::Aces;
+    f.exposure = 0.4f;
+    f.color.assign(std::size_t(f.width * f.height), Color(0.3f));
+    const auto at = [&](int x, int y) -> Color& { return f.color[std::size_t(y * f.width + x)]; };
+    for (int x = 0; x < f.width; ++x) at(x, 0) = Color(0.05f * float(x / 3), 0.2f, 0.7f);
+    for (int x = 0; x < f.width; ++x) at(x, 1) = at(x, 0);  // repeats row 0
+    for (int x = 0; x < f.width; ++x) at(x, 2) = at(x, 1);
+    at(7, 2) = Color(2.0f, 0.1f, 0.1f);  // differs after its first pixel
+    for (int x = 0; x < f.width; ++x) at(x, 3) = at(x, 2);
+    at(11, 3) = Color(0.9f);             // differs outside the rectangle
+    at(0, 3) = Color(0.0f, 0.9f, 0.0f);  // and at its left, outside too
+    for (int x = 0; x < f.width; ++x) at(x, 4) = Color(0.01f * float(x));
+    const QRect rect(1, 0, 10, 6);  // columns 1..10, rows 0..5
+    QImage image(f.width, f.height, QImage::Format_RGB888);
+    image.fill(Qt::magenta);
+    toneMapRect(f, rect, image);
+    const QImage alone = eachPixelMappedAlone(f);
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x)
+            QCOMPARE(image.pixelColor(x, y),
+                     rect.contains(x, y) ? alone.pixelColor(x, y) : QColor(Qt::magenta));
 }
 
 void DisplayTest::handover_WhileTheFrameLockIsHeld_ReturnsAtOnce_AndCatchesUpAfter() {

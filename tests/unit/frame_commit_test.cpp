@@ -312,19 +312,11 @@ TEST(FrameCommit, UndersampledBlocks_FillTheirSpans_CountsFollowMixedStates) {
     EXPECT_TRUE(f.summariesMatchPixels());
 }
 
-// A quarter-resolution pass over a whole tile: 4x4 spans cover every 8x8 block, so each block's
-// summary is built from the block rays instead of read back; it must still describe the
-// pixels (hits, misses, specular rays whose trees are not kept) after a pass that kept
-// segments, and the blocks' old segments must no longer count.
-TEST(FrameCommit, SpansCoveringWholeBlocks_SummariesFromTheRays_MatchThePixels) {
-    DeepFrame f;
-    f.resize(kWidth, kHeight);
-    ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // segments and hits everywhere
-    const TileSummary before = f.tileSummary[0];
-    ASSERT_TRUE(before.anySpecular);
-    ASSERT_FALSE(before.segmentStarts.empty());
+/// A quarter-resolution pass over all of tile 0: one 4x4 span per block ray, some misses,
+/// some specular.
+TileResult quarterPass(const DeepFrame& f, uint64_t generation) {
     TileResult t;
-    t.generation = 7;
+    t.generation = generation;
     t.rect = {0, 0, 32, 32};
     RayList& b = t.blocks;
     for (int y = 0; y < 32; y += 4)
@@ -343,12 +335,51 @@ TEST(FrameCommit, SpansCoveringWholeBlocks_SummariesFromTheRays_MatchThePixels) 
         b.info[k].touchedSpecular = k % 7 == 3;  // some blocks specular, most not
         b.rays[k] = 1;
     }
-    ASSERT_TRUE(f.commit(t, 7));
+    return t;
+}
+
+// A quarter-resolution pass over a whole tile: 4x4 spans cover every 8x8 block, so each block's
+// summary is built from the block rays instead of read back; it must still describe the
+// pixels (hits, misses, specular rays whose trees are not kept) after a pass that kept
+// segments, and the blocks' old segments must no longer count.
+TEST(FrameCommit, SpansCoveringWholeBlocks_SummariesFromTheRays_MatchThePixels) {
+    DeepFrame f;
+    f.resize(kWidth, kHeight);
+    ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // segments and hits everywhere
+    const TileSummary before = f.tileSummary[0];
+    ASSERT_TRUE(before.anySpecular);
+    ASSERT_FALSE(before.segmentStarts.empty());
+    ASSERT_TRUE(f.commit(quarterPass(f, 7), 7));
     EXPECT_TRUE(f.summariesMatchPixels());
     EXPECT_EQ(f.tileLiveSegments[0], 0u);
     EXPECT_TRUE(f.tileSummary[0].segmentStarts.empty());  // the old trees are gone
     EXPECT_TRUE(f.tileSummary[0].anyUnknown);
     EXPECT_EQ(f.tileStates[0][kInteractive], 1024u);
+}
+
+// Orbiting: every pixel of the tile is stale when its quarter-resolution pass commits, so the
+// old states are not read but known from the tile's counts; after the first such pass no
+// pixel keeps segments, so the next ones leave the counts alone. The counts, the live
+// segments and the summaries must still describe the pixels, in both cases, and the old
+// trees of the first must be gone.
+TEST(FrameCommit, OrbitPasses_AllStaleTiles_CountsAndSegmentsKnownFromTheTile) {
+    DeepFrame f;
+    f.resize(kWidth, kHeight);
+    ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // segments and hits everywhere
+    ASSERT_GT(f.tileLiveSegments[0], 0u);
+    for (int pass = 0; pass < 2; ++pass) {
+        SCOPED_TRACE("orbit pass " + std::to_string(pass));
+        f.markAllStale();
+        ASSERT_EQ(f.tileStates[0][kStale], 1024u);
+        ASSERT_TRUE(f.commit(quarterPass(f, 7), 7));
+        const std::array<uint32_t, 4> interactive = {0, 1024, 0, 0};
+        EXPECT_EQ(f.tileStates[0], interactive);
+        EXPECT_EQ(f.tileLiveSegments[0], 0u);
+        EXPECT_EQ(referencedSegments(f), 0u);
+        EXPECT_TRUE(f.summariesMatchPixels());
+    }
+    // The second tile, never traced, is still all stale.
+    EXPECT_EQ(f.tileStates[1][kStale], 1024u);
 }
 
 // An edit's marks in one block: marked pixels go stale, lose their deferred records and get

@@ -189,4 +189,34 @@ TEST(ToDisplay8, TableStepsAtExactlyTheFormulasSteps) {
     }
 }
 
+TEST(ToDisplay8, RepeatedPixelsOfARow_GetTheBytesOfEachPixelMappedAlone) {
+    // An undersampled frame repeats values along a row; the row form reuses a neighbour's
+    // bytes only where the colour has the same bits: runs, values one ulp apart, -0 beside
+    // 0, a NaN beside a number, each must give what the pixel gives alone.
+    const float ulpBelow = std::nextafter(0.5f, 0.0f);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const Color row[] = {Color(0.5f),
+                         Color(0.5f),
+                         Color(0.5f),
+                         Color(ulpBelow),
+                         Color(ulpBelow),
+                         Color(0.0f),
+                         Color(-0.0f),
+                         Color(nan, 0.2f, 0.2f),
+                         Color(0.0f, 0.2f, 0.2f),
+                         Color(3.0f, 0.1f, 0.0f),
+                         Color(3.0f, 0.1f, 0.0f),
+                         Color(0.2f)};
+    constexpr std::size_t n = sizeof(row) / sizeof(row[0]);
+    for (ToneMap op : {ToneMap::Clamp, ToneMap::Linear, ToneMap::Reinhard, ToneMap::Aces}) {
+        uint8_t out[3 * n];
+        toDisplay8(row, n, op, 0.3f, out);
+        for (std::size_t i = 0; i < n; ++i) {
+            uint8_t alone[3];
+            toDisplay8(&row[i], 1, op, 0.3f, alone);
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(out[3 * i + c], alone[c]) << i << " " << c;
+        }
+    }
+}
+
 }  // namespace rs
