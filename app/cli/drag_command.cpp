@@ -66,7 +66,29 @@ struct Step {
     double ms;
     std::size_t traced;
     int level;  ///< The governor's level for the step's pass (-1: off).
+    /// Where the step went (0 for a step whose pass was not its own): CPU time of the process
+    /// (all threads), the edit (diff, snapshot, marking), of it the marking, the planning and
+    /// the pass (its tiles, first to last).
+    double cpuMs = 0.0, editMs = 0.0, markMs = 0.0, planMs = 0.0, passMs = 0.0;
 };
+
+/// Medians of a step's phases; the rest (wall time outside them: waking the scheduler, the
+/// hand-over to the waiting caller) is the step's median less the phases' medians.
+struct Phases {
+    double cpu, edit, mark, plan, pass;
+};
+
+Phases phaseMedians(const std::vector<Step>& log) {
+    std::vector<double> cpu, edit, mark, plan, pass;
+    for (const Step& s : log) {
+        cpu.push_back(s.cpuMs);
+        edit.push_back(s.editMs);
+        mark.push_back(s.markMs);
+        plan.push_back(s.planMs);
+        pass.push_back(s.passMs);
+    }
+    return {medianOf(cpu), medianOf(edit), medianOf(mark), medianOf(plan), medianOf(pass)};
+}
 
 }  // namespace
 
@@ -113,12 +135,23 @@ int runDrag(int argc, char** argv) {
     session.beginInteraction(id);
     for (int s = 0; s < steps; ++s) {
         doc.findObject(id)->transform.translate += delta;
+        const double cpuStart = cpuMs();
         const auto start = Clock::now();
         const uint64_t gen = session.update(doc);
         PassInfo info;
         if (!session.waitForPass(gen, 600s, &info)) throw std::runtime_error("drag step timed out");
+        const double ms = msSince(start);
         const bool own = info.generation == gen;
-        log.push_back({msSince(start), own ? info.tracedPixels : 0, own ? info.governorLevel : -1});
+        Step step{ms, own ? info.tracedPixels : 0, own ? info.governorLevel : -1};
+        step.cpuMs = cpuMs() - cpuStart;
+        if (own) {
+            const SessionStats stats = session.stats();
+            step.editMs = stats.lastUpdateMs;
+            step.markMs = stats.lastMarkMs;
+            step.planMs = info.planMs;
+            step.passMs = info.ms;
+        }
+        log.push_back(step);
     }
     session.endInteraction();
     const auto refineStart = Clock::now();
@@ -176,6 +209,7 @@ int runDrag(int argc, char** argv) {
     }
     const double stepMedian = medianOf(times), fractionMedian = medianOf(fractions);
     const double levelMedian = medianOf(levels);
+    const Phases phases = phaseMedians(log);
     if (args.has("--json")) {
         std::printf("{\"steps\": [");
         for (std::size_t i = 0; i < log.size(); ++i)
@@ -188,13 +222,23 @@ int runDrag(int argc, char** argv) {
             "\"refine_ms\": %.3f, \"full_frame_ms\": %.3f, \"final_max_abs_diff\": %.3g, "
             "\"cancel_latency_ms\": %.3f, \"session_frame_ms\": %.3f, "
             "\"render_image_ms\": %.3f, \"session_frame_cpu_ms\": %.3f, "
-            "\"render_image_cpu_ms\": %.3f, \"governor_level_median\": %.1f}\n",
+            "\"render_image_cpu_ms\": %.3f, \"governor_level_median\": %.1f, "
+            "\"step_cpu_ms_median\": %.3f, \"step_edit_ms_median\": %.3f, "
+            "\"step_mark_ms_median\": %.3f, \"step_plan_ms_median\": %.3f, "
+            "\"step_pass_ms_median\": %.3f}\n",
             stepMedian, fractionMedian, refineMs, full.ms, double(maxDiff), cancelMs,
-            sessionFrameMs, imageFrameMs, sessionCpuMs, imageCpuMs, levelMedian);
+            sessionFrameMs, imageFrameMs, sessionCpuMs, imageCpuMs, levelMedian, phases.cpu,
+            phases.edit, phases.mark, phases.plan, phases.pass);
     } else {
         std::printf("dragged '%s' in %d steps (%dx%d)\n", objectName->c_str(), steps,
                     doc.render.width, doc.render.height);
         std::printf("  step time median      %10.2f ms\n", stepMedian);
+        std::printf("  step CPU median       %10.2f ms  (all threads)\n", phases.cpu);
+        std::printf(
+            "  step phases, medians  edit %.2f ms (of which marking %.2f), planning %.2f, "
+            "pass %.2f, the rest %.2f\n",
+            phases.edit, phases.mark, phases.plan, phases.pass,
+            stepMedian - phases.edit - phases.plan - phases.pass);
         std::printf("  traced fraction median %9.2f %%\n", 100.0 * fractionMedian);
         if (levelMedian >= 0.0)
             std::printf("  governor level median %10.1f  (%s)\n", levelMedian,

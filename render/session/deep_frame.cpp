@@ -1,6 +1,8 @@
 // Deep frame allocation, the edits' marks, state counts and block summaries.
 #include "session/deep_frame.h"
 
+#include "session/byte_lanes.h"
+
 #include <algorithm>
 #include <cstring>
 
@@ -54,21 +56,9 @@ void DeepFrame::allocate(int w, int h) {
     tileSampled.assign(tileRecords.size(), 0);
 }
 
-namespace {
-
-constexpr uint64_t kEachByte = 0x0101010101010101ull;
-
-/// 0x01 in each byte of `m` that is not zero, 0x00 in the others.
-uint64_t nonZeroBytes(uint64_t m) {
-    constexpr uint64_t low7 = 0x7f * kEachByte;
-    return ((((m & low7) + low7) | m) >> 7) & kEachByte;
-}
-
-/// The sum of the bytes of `v`, each 0 or 1 (a multiply, where std::popcount is a library
-/// call on the x86-64 baseline this builds for).
-uint32_t sumOfBytes(uint64_t v) { return uint32_t((v * kEachByte) >> 56); }
-
-}  // namespace
+using lanes::kEachByte;
+using lanes::nonZeroBytes;
+using lanes::sumOfBytes;
 
 void DeepFrame::applyBlockMarks(std::size_t b, const std::vector<uint8_t>& mask) {
     const int bx = int(b % std::size_t(blocksX())) * kBlock;

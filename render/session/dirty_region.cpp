@@ -2,6 +2,7 @@
 #include "session/dirty_region.h"
 
 #include "core/parallel.h"
+#include "session/byte_lanes.h"
 
 #include <algorithm>
 #include <atomic>
@@ -329,6 +330,47 @@ void resetMask(DirtyMask& mask, const DeepFrame& frame) {
 
 }  // namespace
 
+std::size_t growBlockMarks(const uint8_t* core, int width, int height, int x0, int y0,
+                           uint8_t* out) {
+    const int B = DeepFrame::kBlock;
+    const int x1 = std::min(width, x0 + B), y1 = std::min(height, y0 + B);
+    const std::size_t w = std::size_t(width);
+    std::size_t count = 0;
+    for (int y = y0; y < y1; ++y) {
+        const int ya = std::max(0, y - 1), yb = std::min(height - 1, y + 1);
+        uint8_t* row = out + std::size_t(y) * w;
+        if (x1 - x0 == B) {
+            // The OR of the three rows, then of each byte with its two neighbours: a shift
+            // each way moves byte k-1 and byte k+1 onto byte k; the pixels left and right of
+            // the block reach only its first and last byte.
+            static_assert(DeepFrame::kBlock == 8);
+            uint64_t v = 0;
+            uint8_t left = 0, right = 0;
+            for (int yy = ya; yy <= yb; ++yy) {
+                const uint8_t* p = core + std::size_t(yy) * w + std::size_t(x0);
+                uint64_t word;
+                std::memcpy(&word, p, sizeof word);
+                v |= word;
+                if (x0 > 0) left |= p[-1];
+                if (x1 < width) right |= p[B];
+            }
+            const uint64_t d = v | (v << 8) | (v >> 8) | uint64_t(left) | (uint64_t(right) << 56);
+            std::memcpy(row + x0, &d, sizeof d);
+            count += lanes::sumOfBytes(d);
+            continue;
+        }
+        for (int x = x0; x < x1; ++x) {
+            uint8_t d = 0;
+            for (int yy = ya; yy <= yb; ++yy)
+                for (int xx = std::max(0, x - 1); xx <= std::min(width - 1, x + 1); ++xx)
+                    d |= core[std::size_t(yy) * w + std::size_t(xx)];
+            row[x] = d;
+            count += d;
+        }
+    }
+    return count;
+}
+
 std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                             const DeepFrame& frame, DirtyMask& mask, MarkScope scope,
                             MarkStats* stats) {
@@ -428,7 +470,6 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
         const int b = mask.blocks[std::size_t(k)];
         const int bx = b % blocksX, by = b / blocksX;
         mask.touched[std::size_t(b)] = 1;
-        std::size_t local = 0;
         const int y1 = std::min(h, (by + 1) * B), x1 = std::min(w, (bx + 1) * B);
         if (blockMarked[std::size_t(b)] == kWhole) {
             // Every pixel is marked itself, so its grown mark is too.
@@ -436,16 +477,8 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
             count += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
             return;
         }
-        for (int y = by * B; y < y1; ++y) {
-            for (int x = bx * B; x < x1; ++x) {
-                uint8_t d = 0;
-                for (int yy = std::max(0, y - 1); yy <= std::min(h - 1, y + 1) && !d; ++yy)
-                    for (int xx = std::max(0, x - 1); xx <= std::min(w - 1, x + 1) && !d; ++xx)
-                        d = core[frame.index(xx, yy)];
-                mask.pixels[frame.index(x, y)] = d;
-                local += d;
-            }
-        }
+        const std::size_t local =
+            growBlockMarks(core.data(), w, h, bx * B, by * B, mask.pixels.data());
         count += local;
         pixelsGrown += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
     });

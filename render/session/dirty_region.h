@@ -57,6 +57,14 @@ struct DirtyMask {
     std::vector<int> blocks;
 };
 
+/// Grows marks by one pixel into the 8x8 block whose top-left pixel is (x0, y0): out[i] = 1
+/// where pixel i or one of its 8 neighbours is marked in `core` (bytes 0 or 1; both buffers
+/// width x height, row-major), else 0, for the block's pixels. Returns how many it marked.
+/// Whole block rows go eight pixels a word; a block cut by the frame's right edge, pixel by
+/// pixel.
+std::size_t growBlockMarks(const uint8_t* core, int width, int height, int x0, int y0,
+                           uint8_t* out);
+
 /// Sets mask.pixels[i] = 1 for every pixel `edit` can change, given the frame as it was
 /// traced under `before`, and 0 for every other: the old and new footprints, pixels whose ray
 /// tree met a mirror or glass, pixels showing a retinted object (any supersampled pixel, whose

@@ -215,7 +215,10 @@ void RenderSession::applyPendingLocked(std::unique_lock<std::mutex>& lock) {
 
     std::size_t marked = 0;
     if (u.edit.traced()) {  // Else nothing traced changed (names, tone mapping, ...).
+        const auto markStart = std::chrono::steady_clock::now();
         marked = markEditLocked(u.edit);
+        const auto markEnd = std::chrono::steady_clock::now();
+        stats_.lastMarkMs = std::chrono::duration<double, std::milli>(markEnd - markStart).count();
         if (u.edit.focus != kNoObject) {
             const PixelRect r =
                 screenFootprint(snapshot_->camera(), snapshot_->objectBounds(u.edit.focus));
@@ -226,9 +229,7 @@ void RenderSession::applyPendingLocked(std::unique_lock<std::mutex>& lock) {
         }
         stats_.lastDirtyPixels = marked;
         stats_.lastEditRefitted = u.edit.refitted;
-        stats_.lastUpdateMs =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count();
+        stats_.lastUpdateMs = std::chrono::duration<double, std::milli>(markEnd - start).count();
     }
     // Nothing left to trace: the frame is current for this generation (no pass will say so).
     if (marked == 0 && !pendingResize_ && !frame_.anyBelow(targetStateLocked()))

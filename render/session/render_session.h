@@ -38,6 +38,7 @@ struct SessionStats {
     std::size_t lastDirtyPixels = 0;   ///< Pixels the latest edit marked.
     bool lastEditRefitted = false;     ///< The latest edit refitted the BVH.
     double lastUpdateMs = 0.0;         ///< Diff, snapshot and dirty marking of the latest edit.
+    double lastMarkMs = 0.0;           ///< Of which marking (and applying the marks).
     uint64_t postedUpdates = 0;        ///< update() calls.
     uint64_t appliedUpdates = 0;       ///< Documents applied (posted ones coalesce).
     /// How much of the frame the latest edit's marking looked at: blocks tested against their
