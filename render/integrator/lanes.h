@@ -19,6 +19,14 @@ using MaskLanes = int32_t __attribute__((vector_size(16)));  ///< A comparison's
 /// Every lane v.
 inline FloatLanes splat(float v) { return FloatLanes{v, v, v, v}; }
 
+/// Four floats from p, and four to p (any alignment).
+inline FloatLanes loadLanes(const float* p) {
+    FloatLanes v;
+    __builtin_memcpy(&v, p, sizeof v);
+    return v;
+}
+inline void storeLanes(float* p, FloatLanes v) { __builtin_memcpy(p, &v, sizeof v); }
+
 /// float of values below 2^31 (converted as the signed integers they equal): one SSE2
 /// conversion per lane, where unsigned lanes take several.
 inline float toFloat31(uint32_t v) { return float(int32_t(v)); }

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstring>
 
+#include "integrator/centre_shadows.h"
 #include "integrator/face_hits.h"
 #include "integrator/light_sampling.h"
 #include "integrator/sampling.h"
@@ -203,19 +204,14 @@ struct TraceKernel::Workspace {
             }
         }
     }
-    /// Room for n shadow rays written by pushShadow; none written yet.
-    void shadows(std::size_t n) {
+    /// Room for n shadow rays written through shadowArrays(); none written yet.
+    ShadowRayArrays shadows(std::size_t n) {
         if (sox.size() < n)
             for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n);
         if (slight.size() < n) slight.resize(n);
         shadowCount = 0;
-    }
-    void pushShadow(const Vec3& o, float dx, float dy, float dz, float tmax, uint32_t light) {
-        const std::size_t i = shadowCount++;
-        sox[i] = o.x, soy[i] = o.y, soz[i] = o.z;
-        sdx[i] = dx, sdy[i] = dy, sdz[i] = dz;
-        stmax[i] = tmax;
-        slight[i] = light;
+        return {sox.data(), soy.data(), soz.data(), sdx.data(),
+                sdy.data(), sdz.data(), stmax.data(), slight.data()};
     }
     RayBatch shadowBatch(bool coherent) const {
         RayBatch b{sox.data(), soy.data(), soz.data(), sdx.data(), sdy.data(), sdz.data(),
@@ -443,15 +439,10 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         // the sphere lights' samples in list order.
         const uint8_t* areaOccluded = nullptr;
         if (traceShadows) {
-            ws.shadows(group * perPoint_);
-            for (const uint32_t li : centreLights_) {
-                const CentreSamples& c = ws.centres[li];
-                for (std::size_t j = first; j < end; ++j)
-                    if (c.listed[j])
-                        ws.pushShadow(shadowOrigin(Vec3(sp.px[j], sp.py[j], sp.pz[j]),
-                                                   Vec3(sp.nx[j], sp.ny[j], sp.nz[j]), eps_),
-                                      c.dx[j], c.dy[j], c.dz[j], shadowLength(c.dist[j], eps_), li);
-            }
+            const ShadowRayArrays rays = ws.shadows(group * perPoint_);
+            for (const uint32_t li : centreLights_)
+                ws.shadowCount = writeCentreShadows(sp, ws.centres[li], first, end, eps_, li, rays,
+                                                    ws.shadowCount);
             const std::size_t areaBase = ws.shadowCount;
             if (sampled) ws.shadowRays(sp, first, group, eps_, areaBase);
             // One answer past the rays, so the loop below may read it without a branch.
@@ -467,11 +458,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                 const CentreSamples& c = ws.centres[li];
                 std::vector<uint8_t>& blocked = ws.blocked[li];
                 if (blocked.size() < sp.px.size()) blocked.resize(sp.px.size());
-                for (std::size_t j = first; j < end; ++j) {
-                    const uint8_t listed = c.listed[j];
-                    blocked[j] = uint8_t(listed & ws.occluded[r]);
-                    r += listed;
-                }
+                r = readCentreAnswers(c, first, end, ws.occluded.data(), blocked.data(), r);
                 if (Bookkeeping && out.rays)
                     for (std::size_t j = first; j < end; ++j) out.rays[pts.owner[j]] += c.listed[j];
             }
