@@ -50,9 +50,15 @@ inline float select(bool m, float a, float b) { return m ? a : b; }
 inline FloatLanes select(MaskLanes m, FloatLanes a, FloatLanes b) { return m ? a : b; }
 
 inline float sqrtLanes(float v) { return std::sqrt(v); }
+/// (SSE's sqrtps where there is SSE: correctly rounded, as each lane's std::sqrt, in one
+/// instruction instead of four calls guarded for errno.)
 inline FloatLanes sqrtLanes(FloatLanes v) {
+#if defined(__SSE__)
+    return __builtin_ia32_sqrtps(v);
+#else
     for (int k = 0; k < kLaneWidth; ++k) v[k] = std::sqrt(v[k]);
     return v;
+#endif
 }
 
 /// m ? s * v^e : 0, lane by lane through the scalar std::pow, which runs only where m holds.
