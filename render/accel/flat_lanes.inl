@@ -264,9 +264,18 @@ inline void closest8(const FlatView& v, const RayBatch& rays, std::size_t first,
         ny = select(m, (h.fy + h.offset * r.dy) / radius, ny);
         nz = select(m, (h.fz + h.offset * r.dz) / radius, nz);
     }
+    const F8 t = select(slot == int32_t(kNoSlot), splat(kInfinity), best);
+    if (r.lanes == kLanes) {  // the hit arrays are structure of arrays: a store per field
+        std::memcpy(hits.t + first, &t, sizeof t);
+        std::memcpy(hits.nx + first, &nx, sizeof nx);
+        std::memcpy(hits.ny + first, &ny, sizeof ny);
+        std::memcpy(hits.nz + first, &nz, sizeof nz);
+        std::memcpy(hits.slot + first, &slot, sizeof slot);
+        return;
+    }
     for (int k = 0; k < r.lanes; ++k) {
         const std::size_t i = first + std::size_t(k);
-        hits.t[i] = slot[k] == int32_t(kNoSlot) ? kInfinity : best[k];
+        hits.t[i] = t[k];
         hits.nx[i] = nx[k], hits.ny[i] = ny[k], hits.nz[i] = nz[k];
         hits.slot[i] = uint32_t(slot[k]);
     }

@@ -29,24 +29,25 @@ void faceHits(const float* ox, const float* oy, const float* oz, const float* dx
               uint8_t* inside) {
     using L = FloatLanes;
     constexpr std::size_t w = std::size_t(kLaneWidth);
-    auto at = [](const float* a, std::size_t i) {
-        L v;
-        std::memcpy(&v, a + i, sizeof v);
-        return v;
-    };
-    auto put = [](std::vector<float>& a, std::size_t i, L v) {
-        std::memcpy(a.data() + i, &v, sizeof v);
-    };
+    using Bytes = uint8_t __attribute__((vector_size(kLaneWidth)));
+    // Local pointers: the byte stores of `inside` may alias anything, a vector's data
+    // pointer included, which would be reloaded after each.
+    float *px = sp.px.data(), *py = sp.py.data(), *pz = sp.pz.data();
+    float *nx = sp.nx.data(), *ny = sp.ny.data(), *nz = sp.nz.data();
+    float *vx = sp.vx.data(), *vy = sp.vy.data(), *vz = sp.vz.data();
+    const float *t = hits.t, *hx = hits.nx, *hy = hits.ny, *hz = hits.nz;
     std::size_t i = 0;
     for (; i + w <= n; i += w) {
         L p[3], nf[3], v[3];
-        const MaskLanes in =
-            faceHit(at(ox, i), at(oy, i), at(oz, i), at(dx, i), at(dy, i), at(dz, i), at(hits.t, i),
-                    at(hits.nx, i), at(hits.ny, i), at(hits.nz, i), p, nf, v);
-        put(sp.px, i, p[0]), put(sp.py, i, p[1]), put(sp.pz, i, p[2]);
-        put(sp.nx, i, nf[0]), put(sp.ny, i, nf[1]), put(sp.nz, i, nf[2]);
-        put(sp.vx, i, v[0]), put(sp.vy, i, v[1]), put(sp.vz, i, v[2]);
-        for (std::size_t k = 0; k < w; ++k) inside[i + k] = in[k] ? 1 : 0;
+        const MaskLanes in = faceHit(loadLanes(ox + i), loadLanes(oy + i), loadLanes(oz + i),
+                                     loadLanes(dx + i), loadLanes(dy + i), loadLanes(dz + i),
+                                     loadLanes(t + i), loadLanes(hx + i), loadLanes(hy + i),
+                                     loadLanes(hz + i), p, nf, v);
+        storeLanes(px + i, p[0]), storeLanes(py + i, p[1]), storeLanes(pz + i, p[2]);
+        storeLanes(nx + i, nf[0]), storeLanes(ny + i, nf[1]), storeLanes(nz + i, nf[2]);
+        storeLanes(vx + i, v[0]), storeLanes(vy + i, v[1]), storeLanes(vz + i, v[2]);
+        const Bytes flags = __builtin_convertvector(in & 1, Bytes);  // 1 where turned
+        std::memcpy(inside + i, &flags, sizeof flags);
     }
     for (; i < n; ++i) {
         float p[3], nf[3], v[3];

@@ -19,6 +19,14 @@ using MaskLanes = int32_t __attribute__((vector_size(16)));  ///< A comparison's
 /// Every lane v.
 inline FloatLanes splat(float v) { return FloatLanes{v, v, v, v}; }
 
+/// Four floats from p, and four to p (any alignment).
+inline FloatLanes loadLanes(const float* p) {
+    FloatLanes v;
+    __builtin_memcpy(&v, p, sizeof v);
+    return v;
+}
+inline void storeLanes(float* p, FloatLanes v) { __builtin_memcpy(p, &v, sizeof v); }
+
 /// float of values below 2^31 (converted as the signed integers they equal): one SSE2
 /// conversion per lane, where unsigned lanes take several.
 inline float toFloat31(uint32_t v) { return float(int32_t(v)); }
@@ -42,9 +50,15 @@ inline float select(bool m, float a, float b) { return m ? a : b; }
 inline FloatLanes select(MaskLanes m, FloatLanes a, FloatLanes b) { return m ? a : b; }
 
 inline float sqrtLanes(float v) { return std::sqrt(v); }
+/// (SSE's sqrtps where there is SSE: correctly rounded, as each lane's std::sqrt, in one
+/// instruction instead of four calls guarded for errno.)
 inline FloatLanes sqrtLanes(FloatLanes v) {
+#if defined(__SSE__)
+    return __builtin_ia32_sqrtps(v);
+#else
     for (int k = 0; k < kLaneWidth; ++k) v[k] = std::sqrt(v[k]);
     return v;
+#endif
 }
 
 /// m ? s * v^e : 0, lane by lane through the scalar std::pow, which runs only where m holds.

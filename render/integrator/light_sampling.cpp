@@ -185,15 +185,21 @@ void LightSampler::sampleCentres(std::size_t li, const ShadingPoints& pts, std::
     for (auto* v : {&out.dx, &out.dy, &out.dz, &out.dist, &out.nl})
         if (v->size() < p) v->resize(p);
     if (out.listed.size() < p) out.listed.resize(p);
+    // Local pointers: the flags' byte stores could alias a vector's data pointer.
+    const float *px = pts.px.data(), *py = pts.py.data(), *pz = pts.pz.data();
+    const float *nx = pts.nx.data(), *ny = pts.ny.data(), *nz = pts.nz.data();
+    float *dx = out.dx.data(), *dy = out.dy.data(), *dz = out.dz.data();
+    float *dist = out.dist.data(), *nl = out.nl.data();
+    uint8_t* listedFlags = out.listed.data();
+    using Bytes = uint8_t __attribute__((vector_size(kLaneWidth)));
     for (std::size_t i = first; i < end; i += kLaneWidth) {
-        using L = FloatLanes;
-        const TowardLight<L> t(qx, qy, qz, load<L>(pts.px, i), load<L>(pts.py, i),
-                               load<L>(pts.pz, i), load<L>(pts.nx, i), load<L>(pts.ny, i),
-                               load<L>(pts.nz, i));
-        store(out.dx, i, t.x), store(out.dy, i, t.y), store(out.dz, i, t.z);
-        store(out.dist, i, t.dist), store(out.nl, i, t.nl);
-        const MaskLanes listed = t.listed();
-        for (int k = 0; k < kLaneWidth; ++k) out.listed[i + std::size_t(k)] = uint8_t(listed[k] & 1);
+        const TowardLight<FloatLanes> t(qx, qy, qz, loadLanes(px + i), loadLanes(py + i),
+                                        loadLanes(pz + i), loadLanes(nx + i), loadLanes(ny + i),
+                                        loadLanes(nz + i));
+        storeLanes(dx + i, t.x), storeLanes(dy + i, t.y), storeLanes(dz + i, t.z);
+        storeLanes(dist + i, t.dist), storeLanes(nl + i, t.nl);
+        const Bytes listed = __builtin_convertvector(t.listed() & 1, Bytes);  // 0 or 1
+        std::memcpy(listedFlags + i, &listed, sizeof listed);
     }
 }
 

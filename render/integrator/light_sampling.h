@@ -134,8 +134,12 @@ void addCentreLight(const CompiledLight& light, const ShadingPoints& points,
                     const uint8_t* blocked, std::size_t first, std::size_t end, LightSums& sums);
 
 /// Where a shadow ray toward `s` starts (off the surface along n) and how far it goes: it
-/// stops epsilon short of the light's point.
-inline Vec3 shadowOrigin(const Vec3& p, const Vec3& n, float eps) { return p + n * eps; }
+/// stops epsilon short of the light's point. (A point, or one coordinate of one or of a lane
+/// of them: each coordinate is p + n eps.)
+template <class V>
+inline V shadowOrigin(const V& p, const V& n, float eps) {
+    return p + n * eps;
+}
 /// (One distance, or a lane of them.)
 template <class F>
 inline F shadowLength(F dist, float eps) {

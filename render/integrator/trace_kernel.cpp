@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstring>
 
+#include "integrator/centre_shadows.h"
 #include "integrator/face_hits.h"
 #include "integrator/light_sampling.h"
 #include "integrator/sampling.h"
@@ -105,8 +106,8 @@ struct LevelPoints {
     std::vector<uint32_t> material, seed, owner;
     std::vector<float> weight;     ///< Accumulated weight of the ray that hit there.
     std::vector<float> asDiffuse;  ///< Mirror/glass share shown as Lambert while moving.
-    /// Per ray of the level: whether its normal was turned, and whether its hit is shaded.
-    std::vector<uint8_t> inside, shade;
+    std::vector<uint32_t> ray;     ///< The level's ray whose hit each point is.
+    std::vector<uint8_t> inside;   ///< Per ray of the level: whether its normal was turned.
 
     /// Room for n points; none written yet (count() is 0 until finish()).
     void reserve(std::size_t n, bool lamberts) {
@@ -114,9 +115,9 @@ struct LevelPoints {
         surface.resize(n);
         if (lamberts) lambert.resize(n);
         if (material.size() < n)
-            for (auto* v : {&material, &seed, &owner}) v->resize(n);
+            for (auto* v : {&material, &seed, &owner, &ray}) v->resize(n);
         if (weight.size() < n) weight.resize(n), asDiffuse.resize(n);
-        if (inside.size() < n) inside.resize(n), shade.resize(n);
+        if (inside.size() < n) inside.resize(n);
     }
     std::size_t count() const { return shading.count; }
 };
@@ -203,19 +204,14 @@ struct TraceKernel::Workspace {
             }
         }
     }
-    /// Room for n shadow rays written by pushShadow; none written yet.
-    void shadows(std::size_t n) {
+    /// Room for n shadow rays written through shadowArrays(); none written yet.
+    ShadowRayArrays shadows(std::size_t n) {
         if (sox.size() < n)
             for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n);
         if (slight.size() < n) slight.resize(n);
         shadowCount = 0;
-    }
-    void pushShadow(const Vec3& o, float dx, float dy, float dz, float tmax, uint32_t light) {
-        const std::size_t i = shadowCount++;
-        sox[i] = o.x, soy[i] = o.y, soz[i] = o.z;
-        sdx[i] = dx, sdy[i] = dy, sdz[i] = dz;
-        stmax[i] = tmax;
-        slight[i] = light;
+        return {sox.data(), soy.data(), soz.data(), sdx.data(),
+                sdy.data(), sdz.data(), stmax.data(), slight.data()};
     }
     RayBatch shadowBatch(bool coherent) const {
         RayBatch b{sox.data(), soy.data(), soz.data(), sdx.data(), sdy.data(), sdz.data(),
@@ -309,7 +305,6 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
     scene_.engine().closestHit(level.batch(depth == 0), hits);
     counters.rays += n;
     const RenderSettings& settings = scene_.settings();
-    const auto& materials = scene_.materials();
     LevelPoints& pts = ws.points;
     pts.reserve(n, AsDiffuse);
     ShadingPoints& sp = pts.shading;
@@ -321,28 +316,37 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
              level.dz.data(), hits, n, sp, pts.inside.data());
     std::size_t count = 0;  // shading points written
     const bool leaves = depth >= options_.maxDepth;
+    // The arrays through local pointers: the compiler cannot keep a vector's data pointer in
+    // a register across stores it cannot tell apart from it.
+    const uint32_t *owners = level.owner.data(), *seeds = level.seed.data(), *slots = hits.slot;
+    const float* weights = level.weight.data();
+    const CompiledMaterial* materials = scene_.materials().data();
+    const SurfaceTerms<float>* surfaces = surfaces_.data();
+    uint32_t *pointMaterial = pts.material.data(), *pointSeed = pts.seed.data();
+    uint32_t *pointOwner = pts.owner.data(), *pointRay = pts.ray.data();
+    float* pointWeight = pts.weight.data();
+    PrimaryInfo* const primary = out.primary;
     for (std::size_t i = 0; i < n; ++i) {
-        const uint32_t owner = level.owner[i];
-        const float weight = level.weight[i];
+        const uint32_t owner = owners[i];
+        const float weight = weights[i];
         if (Bookkeeping && out.rays) ++out.rays[owner];
-        const bool found = hits.slot[i] != kNoSlot;
+        const bool found = slots[i] != kNoSlot;
         if (Bookkeeping && out.segments && depth > 0) {
             const Vec3 o(level.ox[i], level.oy[i], level.oz[i]);
             const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
             const TreeSegment s = found ? TreeSegment{o, o + d * hits.t[i], 0u} : TreeSegment{o, d, 1u};
             out.segments.append(owner, s);
         }
-        pts.shade[i] = 0;
         if (!found) {
             out.color[owner] += weight * settings.background;
             continue;
         }
         uint32_t materialIndex;
         ObjectId id;
-        scene_.describe(hits.slot[i], materialIndex, id);
+        scene_.describe(slots[i], materialIndex, id);
         const CompiledMaterial& m = materials[materialIndex];
-        if (out.primary) {
-            PrimaryInfo& info = out.primary[owner];
+        if (primary) {
+            PrimaryInfo& info = primary[owner];
             if (depth == 0) {
                 info.id = id;
                 info.depth = hits.t[i];
@@ -365,11 +369,11 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         }
         if (m.localWeight > 0.0f || (AsDiffuse && asDiffuse > 0.0f)) {
             const std::size_t j = count++;
-            pts.shade[i] = 1;
-            pts.surface.set(j, surfaces_[materialIndex]);
+            pointRay[j] = uint32_t(i);
+            pts.surface.set(j, surfaces[materialIndex]);
             if (AsDiffuse) pts.lambert.set(j, lamberts_[materialIndex]), pts.asDiffuse[j] = asDiffuse;
-            pts.material[j] = materialIndex, pts.seed[j] = level.seed[i], pts.owner[j] = owner;
-            pts.weight[j] = weight;
+            pointMaterial[j] = materialIndex, pointSeed[j] = seeds[i], pointOwner[j] = owner;
+            pointWeight[j] = weight;
         }
 
         if (leaves || (reflectivity <= 0.0f && transparency <= 0.0f)) continue;
@@ -387,7 +391,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                 reflectWeight += transparency * f;
                 const float w = weight * (transparency * (1.0f - f));
                 if (w >= options_.minWeight)
-                    next.push(p - nf * eps_, t, w, hashCombine(level.seed[i], 2u), owner);
+                    next.push(p - nf * eps_, t, w, hashCombine(seeds[i], 2u), owner);
             } else {
                 reflectWeight += transparency;
             }
@@ -396,17 +400,15 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             const float w = weight * reflectWeight;
             if (w >= options_.minWeight)
                 next.push(p + nf * eps_, d - 2.0f * glm::dot(d, nf) * nf, w,
-                          hashCombine(level.seed[i], 1u), owner);
+                          hashCombine(seeds[i], 1u), owner);
         }
     }
-    if (count < n) {  // close up: point j is the j-th shaded hit (j <= i, so in place)
-        std::size_t j = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!pts.shade[i]) continue;
+    if (count < n) {  // close up: point j is the j-th shaded hit (ray i >= j, so in place)
+        for (std::size_t j = 0; j < count; ++j) {
+            const std::size_t i = pointRay[j];
             if (j != i)
                 sp.set(j, Vec3(sp.px[i], sp.py[i], sp.pz[i]), Vec3(sp.nx[i], sp.ny[i], sp.nz[i]),
                        Vec3(sp.vx[i], sp.vy[i], sp.vz[i]));
-            ++j;
         }
     }
     sp.count = count;
@@ -443,15 +445,10 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         // the sphere lights' samples in list order.
         const uint8_t* areaOccluded = nullptr;
         if (traceShadows) {
-            ws.shadows(group * perPoint_);
-            for (const uint32_t li : centreLights_) {
-                const CentreSamples& c = ws.centres[li];
-                for (std::size_t j = first; j < end; ++j)
-                    if (c.listed[j])
-                        ws.pushShadow(shadowOrigin(Vec3(sp.px[j], sp.py[j], sp.pz[j]),
-                                                   Vec3(sp.nx[j], sp.ny[j], sp.nz[j]), eps_),
-                                      c.dx[j], c.dy[j], c.dz[j], shadowLength(c.dist[j], eps_), li);
-            }
+            const ShadowRayArrays rays = ws.shadows(group * perPoint_);
+            for (const uint32_t li : centreLights_)
+                ws.shadowCount = writeCentreShadows(sp, ws.centres[li], first, end, eps_, li, rays,
+                                                    ws.shadowCount);
             const std::size_t areaBase = ws.shadowCount;
             if (sampled) ws.shadowRays(sp, first, group, eps_, areaBase);
             // One answer past the rays, so the loop below may read it without a branch.
@@ -467,11 +464,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                 const CentreSamples& c = ws.centres[li];
                 std::vector<uint8_t>& blocked = ws.blocked[li];
                 if (blocked.size() < sp.px.size()) blocked.resize(sp.px.size());
-                for (std::size_t j = first; j < end; ++j) {
-                    const uint8_t listed = c.listed[j];
-                    blocked[j] = uint8_t(listed & ws.occluded[r]);
-                    r += listed;
-                }
+                r = readCentreAnswers(c, first, end, ws.occluded.data(), blocked.data(), r);
                 if (Bookkeeping && out.rays)
                     for (std::size_t j = first; j < end; ++j) out.rays[pts.owner[j]] += c.listed[j];
             }
@@ -508,12 +501,15 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             }
         }
 
+        const float *sumR = ws.sums.r.data(), *sumG = ws.sums.g.data(), *sumB = ws.sums.b.data();
+        const Color* ambients = ambients_.data();
+        Color* color = out.color;
         for (std::size_t j = first; j < end; ++j) {
-            const uint32_t mi = pts.material[j], owner = pts.owner[j];
-            const float weight = pts.weight[j], localWeight = materials[mi].localWeight;
+            const uint32_t mi = pointMaterial[j], owner = pointOwner[j];
+            const float weight = pointWeight[j], localWeight = materials[mi].localWeight;
             if (localWeight > 0.0f) {
-                const Color direct(ws.sums.r[j], ws.sums.g[j], ws.sums.b[j]);
-                out.color[owner] += weight * (localWeight * (ambients_[mi] + direct));
+                const Color direct(sumR[j], sumG[j], sumB[j]);
+                color[owner] += weight * (localWeight * (ambients[mi] + direct));
                 // Shown unshadowed while moving; the record lets the shadows be added later.
                 if (Bookkeeping && deferred && out.records)
                     out.records.append(owner, ShadingRecord{Vec3(sp.px[j], sp.py[j], sp.pz[j]),
@@ -523,7 +519,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             }
             if (AsDiffuse && pts.asDiffuse[j] > 0.0f) {
                 const Color direct(ws.lambertSums.r[j], ws.lambertSums.g[j], ws.lambertSums.b[j]);
-                out.color[owner] += weight * (pts.asDiffuse[j] * (lambertAmbients_[mi] + direct));
+                color[owner] += weight * (pts.asDiffuse[j] * (lambertAmbients_[mi] + direct));
             }
         }
     }
