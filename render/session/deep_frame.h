@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace rs {
@@ -44,6 +47,31 @@ struct TileSummary {
 };
 
 struct TileResult;
+
+/// std::allocator, except that a value-initialized element (resize()) is default-initialized:
+/// a trivially constructible one is left as it is instead of zero-filled, for pools that are
+/// grown and then written over (a second store to each element otherwise).
+template <class T>
+struct NoFillAllocator : std::allocator<T> {
+    template <class U>
+    struct rebind {
+        using other = NoFillAllocator<U>;
+    };
+    NoFillAllocator() = default;
+    template <class U>
+    NoFillAllocator(const NoFillAllocator<U>&) noexcept {}
+    template <class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
+
+/// A tile's pool of secondary segments.
+using SegmentVector = std::vector<TreeSegment, NoFillAllocator<TreeSegment>>;
 
 /// Structure-of-arrays deep buffer (thesis 3.3), row-major, (0, 0) top left.
 ///
@@ -85,7 +113,7 @@ struct DeepFrame {
     /// Size of each record pool after its last compaction (commit appends and compacts).
     std::vector<uint32_t> tileRecordsKept;
     /// Secondary ray segments of each pixel's ray tree, pooled per tile like the records.
-    std::vector<std::vector<TreeSegment>> tileSegments;
+    std::vector<SegmentVector> tileSegments;
     std::vector<uint32_t> segmentStart;
     std::vector<uint8_t> segmentCount;
     std::vector<uint32_t> tileLiveSegments;  ///< Segments still referenced in each pool.
