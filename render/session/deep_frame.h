@@ -1,15 +1,13 @@
 // The session's frame: HDR colour plus per-pixel id, depth, normal, cost, state and records.
 #pragma once
 
+#include "image/image.h"
 #include "integrator/whitted.h"
 #include "scene/document.h"
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <memory>
-#include <type_traits>
-#include <utility>
 #include <vector>
 
 namespace rs {
@@ -48,30 +46,9 @@ struct TileSummary {
 
 struct TileResult;
 
-/// std::allocator, except that a value-initialized element (resize()) is default-initialized:
-/// a trivially constructible one is left as it is instead of zero-filled, for pools that are
-/// grown and then written over (a second store to each element otherwise).
-template <class T>
-struct NoFillAllocator : std::allocator<T> {
-    template <class U>
-    struct rebind {
-        using other = NoFillAllocator<U>;
-    };
-    NoFillAllocator() = default;
-    template <class U>
-    NoFillAllocator(const NoFillAllocator<U>&) noexcept {}
-    template <class U>
-    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
-        ::new (static_cast<void*>(p)) U;
-    }
-    template <class U, class... Args>
-    void construct(U* p, Args&&... args) {
-        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-    }
-};
-
-/// A tile's pool of secondary segments.
-using SegmentVector = std::vector<TreeSegment, NoFillAllocator<TreeSegment>>;
+/// A tile's pool of secondary segments: grown by resize() and then written over, so grown
+/// without zero-filling first (a second store to each segment otherwise).
+using SegmentVector = std::vector<TreeSegment, DefaultInitAllocator<TreeSegment>>;
 
 /// Structure-of-arrays deep buffer (thesis 3.3), row-major, (0, 0) top left.
 ///
