@@ -1,6 +1,7 @@
 // The session's frame: HDR colour plus per-pixel id, depth, normal, cost, state and records.
 #pragma once
 
+#include "image/image.h"
 #include "integrator/whitted.h"
 #include "scene/document.h"
 
@@ -45,6 +46,10 @@ struct TileSummary {
 
 struct TileResult;
 
+/// A tile's pool of secondary segments: grown by resize() and then written over, so grown
+/// without zero-filling first (a second store to each segment otherwise).
+using SegmentVector = std::vector<TreeSegment, DefaultInitAllocator<TreeSegment>>;
+
 /// Structure-of-arrays deep buffer (thesis 3.3), row-major, (0, 0) top left.
 ///
 /// Who writes what: resize() allocates; tiles write only through commit(), under the session's
@@ -85,7 +90,7 @@ struct DeepFrame {
     /// Size of each record pool after its last compaction (commit appends and compacts).
     std::vector<uint32_t> tileRecordsKept;
     /// Secondary ray segments of each pixel's ray tree, pooled per tile like the records.
-    std::vector<std::vector<TreeSegment>> tileSegments;
+    std::vector<SegmentVector> tileSegments;
     std::vector<uint32_t> segmentStart;
     std::vector<uint8_t> segmentCount;
     std::vector<uint32_t> tileLiveSegments;  ///< Segments still referenced in each pool.

@@ -57,7 +57,7 @@ public:
         } else {
             const uint8_t* counts = list.segments.count.data() + k;
             for (std::size_t j = 0; j < n; ++j) added += counts[j];
-            pool_.resize(base + added);
+            pool_.resize(base + added);  // Not zero-filled first (SegmentVector).
             TreeSegment* out = pool_.data() + base;
             uint32_t at = base;
             for (std::size_t j = 0; j < n; ++j) {
@@ -65,7 +65,13 @@ public:
                 startOut[j] = at;
                 countOut[j] = count;
                 if (count == 0) continue;
-                std::copy_n(list.segments.of(k + j, kSegmentsPerPixel), count, out + (at - base));
+                // Most trees are one or two segments: copied here, not by a library call per
+                // pixel (a floor that reflects gives nearly half the frame's pixels one).
+                const TreeSegment* from = list.segments.of(k + j, kSegmentsPerPixel);
+                TreeSegment* to = out + (at - base);
+                to[0] = from[0];
+                if (count > 1) to[1] = from[1];
+                if (count > 2) std::copy_n(from + 2, count - 2, to + 2);
                 at += count;
             }
         }
@@ -97,7 +103,7 @@ public:
     /// mostly garbage.
     void compactIfWasteful(const PixelRect& r) {
         if (pool_.size() <= 2 * std::size_t(live_) + 4096) return;
-        std::vector<TreeSegment> fresh;
+        SegmentVector fresh;
         fresh.reserve(live_);
         for (int y = r.y0; y < r.y1; ++y) {
             for (int x = r.x0; x < r.x1; ++x) {
@@ -113,7 +119,7 @@ public:
 
 private:
     DeepFrame& frame_;
-    std::vector<TreeSegment>& pool_;
+    SegmentVector& pool_;
     uint32_t& live_;
     std::size_t pixel_ = 0;
     uint32_t oldCount_ = 0, start_ = 0;
@@ -193,6 +199,8 @@ struct TracedColumns {
         const uint8_t* extra = list.extra.data() + k0;
         const uint8_t* recordOverflow = Records ? list.records.overflow.data() + k0 : nullptr;
         const uint8_t* segmentOverflow = Segments ? list.segments.overflow.data() + k0 : nullptr;
+        const Vec3* origin = list.origin.data() + k0;
+        const Vec3* dir = list.dir.data() + k0;
         for (std::size_t j = 0; j < n; ++j) {
             const PrimaryInfo& p = info[j];
             id[j] = p.id;
@@ -202,7 +210,7 @@ struct TracedColumns {
             if constexpr (Records) f |= recordOverflow[j] ? 0 : kDeferredValid;
             if constexpr (Segments) f |= segmentOverflow[j] ? kTreeUnknown : 0;
             flags[j] = f;
-            bound[j] = list.hitBound(k0 + j);
+            bound[j] = RayList::hitBoundOf(origin[j], dir[j], p);
         }
     }
 };

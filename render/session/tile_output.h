@@ -52,9 +52,14 @@ struct RayList {
     bool trace(const TraceKernel& kernel, bool keepRecords, bool keepSegments,
                TraceCounters& counters, const std::function<bool()>& stale);
     /// The hit point of ray k as a bounding sphere of radius 0 (radius < 0 for a miss).
-    glm::vec4 hitBound(std::size_t k) const {
-        if (info[k].id == kNoObject) return glm::vec4(0.0f, 0.0f, 0.0f, -1.0f);
-        return glm::vec4(origin[k] + dir[k] * info[k].depth, 0.0f);
+    glm::vec4 hitBound(std::size_t k) const { return hitBoundOf(origin[k], dir[k], info[k]); }
+
+    /// The same for a camera ray and what it hit. Always inlined: the commit's per-pixel loop
+    /// called it out of line (1.4-1.8 % of a drag run's samples).
+    [[gnu::always_inline]] static glm::vec4 hitBoundOf(const Vec3& origin, const Vec3& dir,
+                                                       const PrimaryInfo& info) {
+        if (info.id == kNoObject) return glm::vec4(0.0f, 0.0f, 0.0f, -1.0f);
+        return glm::vec4(origin + dir * info.depth, 0.0f);
     }
 };
 
