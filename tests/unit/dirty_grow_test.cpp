@@ -22,7 +22,7 @@ uint8_t grownByDefinition(const std::vector<uint8_t>& core, int w, int h, int x,
 // are and are not whole blocks (a block cut by the right or bottom edge goes pixel by pixel).
 TEST(DirtyGrow, BlockMarks_EachPixelMarkedWhenItOrANeighbourIs) {
     std::mt19937 rng(7);
-    for (const auto [w, h] : {std::pair{64, 48}, std::pair{45, 37}, std::pair{9, 8}, std::pair{8, 9}}) {
+    for (const auto& [w, h] : {std::pair{64, 48}, std::pair{45, 37}, std::pair{9, 8}, std::pair{8, 9}}) {
         for (const int oneIn : {2, 11, 40}) {
             std::vector<uint8_t> core(std::size_t(w) * std::size_t(h));
             for (uint8_t& m : core) m = rng() % unsigned(oneIn) == 0;
