@@ -157,18 +157,18 @@ std::string checkOff(std::string_view text, std::uintmax_t fileSize, bool comple
         if (dimensions > 3 || overflowed) return {};  // the importer refuses more than 3
         car.nextToken();
     }
-    car.nextToken();
-    const std::size_t vertexAt = car.offset();
-    const uint32_t vertices = car.readCount(overflowed);
-    if (overflowed)
-        return "OFF header declares a vertex count too large to be read: " +
-               std::string(text.substr(vertexAt, 32));
-    car.nextToken();
-    const std::size_t faceAt = car.offset();
-    const uint32_t faces = car.readCount(overflowed);
-    if (overflowed)
-        return "OFF header declares a face count too large to be read: " +
-               std::string(text.substr(faceAt, 32));
+    // A count whose digits overflow is refused outright: the importer would wrap it.
+    const auto readClaim = [&](const char* what, uint32_t& count) -> std::string {
+        car.nextToken();
+        const std::size_t at = car.offset();
+        count = car.readCount(overflowed);
+        if (!overflowed) return {};
+        return std::string("OFF header declares a ") + what + " count too large to be read: " +
+               std::string(text.substr(at, 32));
+    };
+    uint32_t vertices = 0, faces = 0;
+    if (std::string why = readClaim("vertex", vertices); !why.empty()) return why;
+    if (std::string why = readClaim("face", faces); !why.empty()) return why;
     car.nextToken();
     car.readCount(overflowed);  // the edge count, which the importer skips
     car.nextToken();

@@ -1,0 +1,177 @@
+// A tile's segment and record pools as DeepFrame::commit appends to them and compacts them
+// (frame_commit.cpp): where a written pixel's secondary segments and deferred records go.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "session/deep_frame.h"
+#include "session/tile_output.h"
+
+namespace rs {
+
+/// A tile's segment pool, append-only: a written pixel's segments go to the end and its old
+/// ones become garbage, so a commit costs what it writes, not the whole tile; compact() drops
+/// the garbage when it outweighs what is live.
+class SegmentPool {
+public:
+    SegmentPool(DeepFrame& frame, int tile)
+        : frame_(frame),
+          pool_(frame.tileSegments[std::size_t(tile)]),
+          live_(frame.tileLiveSegments[std::size_t(tile)]) {}
+
+    /// Pixel i's segments become its old ones (when `keepOld`) followed by `count` from `first`
+    /// (several lists: call add() for each, then end()).
+    void begin(std::size_t i, bool keepOld) {
+        pixel_ = i;
+        oldCount_ = fresh_ ? 0 : frame_.segmentCount[i];
+        start_ = uint32_t(pool_.size());
+        if (keepOld) {
+            const uint32_t oldStart = frame_.segmentStart[i];
+            for (uint32_t k = 0; k < oldCount_; ++k) pool_.push_back(pool_[oldStart + k]);
+        }
+    }
+    /// Drops every old segment: the commit rewrites each pixel of the tile (a full-tile pass),
+    /// so none stays referenced; the pool starts over instead of growing into garbage.
+    void restart() {
+        pool_.clear();
+        live_ = 0;
+        fresh_ = true;
+    }
+    void add(const TreeSegment* first, std::size_t count) {
+        pool_.insert(pool_.end(), first, first + count);
+    }
+    /// Pixels [i, i + n) of one row get the segments of rays [k, k + n) of `list` (none when
+    /// the trace kept none) instead of their old ones: a run of traced pixels in one go, the
+    /// pool grown once for the run.
+    void replaceRun(std::size_t i, std::size_t n, const RayList& list, std::size_t k) {
+        uint32_t removed = 0, added = 0;
+        if (!fresh_)
+            for (std::size_t j = 0; j < n; ++j) removed += frame_.segmentCount[i + j];
+        uint32_t* startOut = frame_.segmentStart.data() + i;
+        uint8_t* countOut = frame_.segmentCount.data() + i;
+        const uint32_t base = uint32_t(pool_.size());
+        if (!list.withSegments) {
+            std::fill_n(startOut, n, base);
+            std::fill_n(countOut, n, uint8_t(0));
+        } else {
+            const uint8_t* counts = list.segments.count.data() + k;
+            for (std::size_t j = 0; j < n; ++j) added += counts[j];
+            pool_.resize(base + added);  // Not zero-filled first (SegmentVector).
+            TreeSegment* out = pool_.data() + base;
+            uint32_t at = base;
+            for (std::size_t j = 0; j < n; ++j) {
+                const uint8_t count = counts[j];  // At most kSegmentsPerPixel: always indexable.
+                startOut[j] = at;
+                countOut[j] = count;
+                if (count == 0) continue;
+                // Most trees are one or two segments: copied here, not by a library call per
+                // pixel (a floor that reflects gives nearly half the frame's pixels one).
+                const TreeSegment* from = list.segments.of(k + j, kSegmentsPerPixel);
+                TreeSegment* to = out + (at - base);
+                to[0] = from[0];
+                if (count > 1) to[1] = from[1];
+                if (count > 2) std::copy_n(from + 2, count - 2, to + 2);
+                at += count;
+            }
+        }
+        live_ = live_ - removed + added;
+    }
+    void end() {
+        std::size_t count = pool_.size() - start_;
+        if (count > 255) {  // Too many to index: forget them and always re-trace.
+            pool_.resize(start_);
+            count = 0;
+            frame_.flags[pixel_] |= kTreeUnknown;
+        }
+        frame_.segmentStart[pixel_] = start_;
+        frame_.segmentCount[pixel_] = uint8_t(count);
+        live_ = live_ - oldCount_ + uint32_t(count);
+    }
+    /// Whether no pixel of the tile keeps a segment: every count is 0 (live_ is their sum),
+    /// so clearRun() would change nothing. Not after restart(): counts not rewritten yet stay.
+    bool noneKept() const { return !fresh_ && live_ == 0; }
+    /// Pixels [i, i + n) of one row keep no segments.
+    void clearRun(std::size_t i, std::size_t n) {
+        uint32_t removed = 0;
+        for (std::size_t j = 0; j < n; ++j) removed += frame_.segmentCount[i + j];
+        if (!fresh_) live_ -= removed;
+        std::fill_n(frame_.segmentStart.begin() + std::ptrdiff_t(i), n, uint32_t(pool_.size()));
+        std::fill_n(frame_.segmentCount.begin() + std::ptrdiff_t(i), n, uint8_t(0));
+    }
+    /// Rewrites the pool with only the segments pixels of `r` still reference, when it is
+    /// mostly garbage.
+    void compactIfWasteful(const PixelRect& r) {
+        if (pool_.size() <= 2 * std::size_t(live_) + 4096) return;
+        SegmentVector fresh;
+        fresh.reserve(live_);
+        for (int y = r.y0; y < r.y1; ++y) {
+            for (int x = r.x0; x < r.x1; ++x) {
+                const std::size_t i = frame_.index(x, y);
+                const uint32_t start = frame_.segmentStart[i];
+                frame_.segmentStart[i] = uint32_t(fresh.size());
+                fresh.insert(fresh.end(), pool_.begin() + start,
+                             pool_.begin() + start + frame_.segmentCount[i]);
+            }
+        }
+        pool_.swap(fresh);
+    }
+
+private:
+    DeepFrame& frame_;
+    SegmentVector& pool_;
+    uint32_t& live_;
+    std::size_t pixel_ = 0;
+    uint32_t oldCount_ = 0, start_ = 0;
+    bool fresh_ = false;
+};
+
+/// A tile's record pool, append-only like its segment pool: a traced pixel's records go to
+/// the end and its old ones become garbage, so a commit costs what it traces, not the tile.
+/// Records stop being referenced in several places (a pixel losing kDeferredValid), so the
+/// pool does not count what is live: it is compacted once it has grown by more than it held
+/// after the last compaction plus one record a pixel, which bounds it at twice that and
+/// keeps a compaction's scan of the tile amortized over as many appended records.
+class RecordPool {
+public:
+    RecordPool(DeepFrame& frame, int tile)
+        : frame_(frame),
+          pool_(frame.tileRecords[std::size_t(tile)]),
+          kept_(frame.tileRecordsKept[std::size_t(tile)]) {}
+
+    /// Every pixel of the tile is traced again: no old record stays referenced.
+    void restart() {
+        pool_.clear();
+        kept_ = 0;
+    }
+    void append(std::size_t i, const ShadingRecord* first, uint8_t count) {
+        frame_.recordStart[i] = uint32_t(pool_.size());
+        frame_.recordCount[i] = count;
+        pool_.insert(pool_.end(), first, first + count);
+    }
+    /// Keeps only the records of the pixels of `r` that still wait for deferred shadows.
+    void compactIfWasteful(const PixelRect& r) {
+        if (pool_.size() <= 2 * std::size_t(kept_) + std::size_t(r.area())) return;
+        std::vector<ShadingRecord> fresh;
+        for (int y = r.y0; y < r.y1; ++y) {
+            for (int x = r.x0; x < r.x1; ++x) {
+                const std::size_t i = frame_.index(x, y);
+                if (!(frame_.flags[i] & kDeferredValid)) continue;
+                const uint32_t start = frame_.recordStart[i];
+                frame_.recordStart[i] = uint32_t(fresh.size());
+                fresh.insert(fresh.end(), pool_.begin() + start,
+                             pool_.begin() + start + frame_.recordCount[i]);
+            }
+        }
+        pool_.swap(fresh);
+        kept_ = uint32_t(pool_.size());
+    }
+
+private:
+    DeepFrame& frame_;
+    std::vector<ShadingRecord>& pool_;
+    uint32_t& kept_;
+};
+
+}  // namespace rs
