@@ -42,7 +42,7 @@ constexpr std::size_t kDamageKept = 4096;
 constexpr int kDamageBlock = 8;
 
 template <class T>
-void copyRect(std::vector<T>& dst, const std::vector<T>& src, int width, const QRect& r) {
+void copyRect(LargeVector<T>& dst, const LargeVector<T>& src, int width, const QRect& r) {
     for (int y = r.top(); y <= r.bottom(); ++y) {
         const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(r.left());
         std::memcpy(dst.data() + i, src.data() + i, sizeof(T) * std::size_t(r.width()));
@@ -50,7 +50,7 @@ void copyRect(std::vector<T>& dst, const std::vector<T>& src, int width, const Q
 }
 
 template <class T>
-bool differs(const std::vector<T>& a, const std::vector<T>& b, int width, const QRect& r) {
+bool differs(const LargeVector<T>& a, const LargeVector<T>& b, int width, const QRect& r) {
     for (int y = r.top(); y <= r.bottom(); ++y) {
         const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(r.left());
         if (std::memcmp(a.data() + i, b.data() + i, sizeof(T) * std::size_t(r.width())) != 0)

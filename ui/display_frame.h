@@ -1,6 +1,7 @@
 // A GUI-side copy of the session's deep frame and the CPU shading of its debug views.
 #pragma once
 
+#include "core/large_blocks.h"
 #include "scene/document.h"
 
 #include <QImage>
@@ -30,12 +31,12 @@ bool showsDebugBuffers(ViewMode mode);
 struct DisplayFrame {
     int width = 0;
     int height = 0;
-    std::vector<Color> color;
-    std::vector<ObjectId> id;
-    std::vector<Vec3> normal;
-    std::vector<float> depth;
-    std::vector<uint32_t> cost;
-    std::vector<uint8_t> flags;
+    LargeVector<Color> color;
+    LargeVector<ObjectId> id;
+    LargeVector<Vec3> normal;
+    LargeVector<float> depth;
+    LargeVector<uint32_t> cost;
+    LargeVector<uint8_t> flags;
     ToneMap tonemap = ToneMap::Clamp;
     float exposure = 0.0f;
     uint64_t generation = 0;  ///< Newest edit whose traced pixels this frame holds.

@@ -1,6 +1,7 @@
 // Linear HDR images: the renderer's output and the tests' references.
 #pragma once
 
+#include "core/large_blocks.h"
 #include "core/math.h"
 
 #include <memory>
@@ -10,11 +11,11 @@
 
 namespace rs {
 
-/// std::allocator whose value-less construct leaves trivial types uninitialised, so a vector
+/// An allocator whose value-less construct leaves trivial types uninitialised, so a vector
 /// can be sized without writing it first (a renderer that writes every pixel need not clear a
-/// 1280x720 float image, 11 MB, before it starts).
+/// 1280x720 float image, 11 MB, before it starts); frame-sized blocks get huge pages.
 template <class T>
-struct DefaultInitAllocator : std::allocator<T> {
+struct DefaultInitAllocator : LargeBlockAllocator<T> {
     template <class U>
     struct rebind {
         using other = DefaultInitAllocator<U>;

@@ -70,19 +70,19 @@ struct DeepFrame {
     int width = 0;
     int height = 0;
     int tileSize = 32;
-    std::vector<Color> color;       ///< What is shown (linear HDR).
-    std::vector<Color> base;        ///< Centre sample when supersampling; adaptive decisions read it.
-    std::vector<Color> sampleSum;   ///< Running sum of supersamples (progressive refinement).
-    std::vector<uint16_t> sampleCount;
-    std::vector<ObjectId> id;       ///< Object seen through the pixel centre.
-    std::vector<float> depth;       ///< Distance to that hit (infinity: background).
-    std::vector<Vec3> normal;       ///< Its unit normal.
-    std::vector<uint32_t> cost;     ///< Rays traced for the pixel's latest value.
-    std::vector<uint8_t> state;     ///< PixelState.
-    std::vector<uint8_t> flags;     ///< PixelFlag bits.
+    LargeVector<Color> color;       ///< What is shown (linear HDR).
+    LargeVector<Color> base;        ///< Centre sample when supersampling; adaptive decisions read it.
+    LargeVector<Color> sampleSum;   ///< Running sum of supersamples (progressive refinement).
+    LargeVector<uint16_t> sampleCount;
+    LargeVector<ObjectId> id;       ///< Object seen through the pixel centre.
+    LargeVector<float> depth;       ///< Distance to that hit (infinity: background).
+    LargeVector<Vec3> normal;       ///< Its unit normal.
+    LargeVector<uint32_t> cost;     ///< Rays traced for the pixel's latest value.
+    LargeVector<uint8_t> state;     ///< PixelState.
+    LargeVector<uint8_t> flags;     ///< PixelFlag bits.
     /// Bounding sphere (centre, radius) of the pixel's camera-ray hit points; radius < 0 when
     /// nothing was hit. Shadow-aware dirty regions test segments from it to each light.
-    std::vector<glm::vec4> hitBound;
+    LargeVector<glm::vec4> hitBound;
     /// Deferred shading records, pooled per tile; a pixel's are [recordStart, +recordCount).
     std::vector<std::vector<ShadingRecord>> tileRecords;
     std::vector<uint32_t> recordStart;

@@ -100,7 +100,7 @@ static int maxDifference(const QImage& a, const QImage& b) {
 }
 
 template <class T>
-static bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+static bool sameBits(const LargeVector<T>& a, const LargeVector<T>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(T) * a.size()) == 0;
 }
 
