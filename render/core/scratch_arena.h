@@ -14,8 +14,14 @@ namespace rs {
 constexpr std::size_t kScratchArenaBytes = std::size_t(4) << 20;
 
 /// Whether scratch memory comes from arenas at all. Sanitizer builds serve every block from
-/// the sanitizers' own allocators, so ASan and TSan keep checking bounds, use and races.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+/// the sanitizers' own allocators, so ASan and TSan keep checking bounds, use and races
+/// (GCC names them with __SANITIZE_*__, clang before 16 only through __has_feature).
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define RS_SCRATCH_SANITIZED 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__) || defined(RS_SCRATCH_SANITIZED)
 constexpr bool kScratchArenas = false;
 #else
 constexpr bool kScratchArenas = true;
