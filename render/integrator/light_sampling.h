@@ -30,7 +30,8 @@ struct LightSpan {
 };
 
 /// A shading point's light samples and their spans, per-thread scratch (the trace kernel's
-/// workspace keeps them from call to call).
+/// workspace keeps them from call to call). The structures of arrays below are scratch too
+/// (core/scratch_arena.h): kept in a thread's workspace or on its stack, never past its end.
 using LightSamples = ScratchVector<LightSample>;
 using LightSpans = ScratchVector<LightSpan>;
 
