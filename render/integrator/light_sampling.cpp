@@ -33,7 +33,7 @@ struct TowardLight {
 
 /// Appends the sample toward q unless it is not listed; true when it was appended.
 inline bool appendSample(const Vec3& q, const Vec3& p, const Vec3& n,
-                         std::vector<LightSample>& samples) {
+                         LightSamples& samples) {
     const TowardLight<float> t(q.x, q.y, q.z, p.x, p.y, p.z, n.x, n.y, n.z);
     if (!t.listed()) return false;
     samples.push_back({Vec3(t.x, t.y, t.z), t.dist, t.nl});
@@ -42,7 +42,7 @@ inline bool appendSample(const Vec3& q, const Vec3& p, const Vec3& n,
 
 /// Appends the listed ones of a lane of samples toward q, in lane order; returns how many.
 inline uint32_t appendSamples(FloatLanes qx, FloatLanes qy, FloatLanes qz, const Vec3& p,
-                              const Vec3& n, std::vector<LightSample>& samples) {
+                              const Vec3& n, LightSamples& samples) {
     const TowardLight<FloatLanes> t(qx, qy, qz, p.x, p.y, p.z, n.x, n.y, n.z);
     const MaskLanes listed = t.listed();
     uint32_t count = 0;
@@ -80,12 +80,12 @@ inline F share(F termSum, float power, float drawn) {
 }
 
 template <class V>
-inline V load(const std::vector<float>& v, std::size_t i) {
+inline V load(const ScratchVector<float>& v, std::size_t i) {
     V out;
     std::memcpy(&out, v.data() + i, sizeof out);
     return out;
 }
-inline void store(std::vector<float>& v, std::size_t i, FloatLanes x) {
+inline void store(ScratchVector<float>& v, std::size_t i, FloatLanes x) {
     std::memcpy(v.data() + i, &x, sizeof x);
 }
 /// Lanes of a byte flag per point: all ones where the byte is not 0 (one compare of the
@@ -137,14 +137,14 @@ LightSampler::LightSampler(const CompiledScene& scene, Lanes lanes)
       laned_(lanes == Lanes::Four ? std::min(shadowSamples_, strata_.laned()) : 0) {}
 
 void LightSampler::sample(const Vec3& p, const Vec3& n, uint32_t seed, bool area,
-                          std::vector<LightSample>& samples, std::vector<LightSpan>& spans) const {
+                          LightSamples& samples, LightSpans& spans) const {
     for (std::size_t li = 0; li < scene_.lights().size(); ++li)
         sampleLight(li, p, n, seed, area, samples, spans);
 }
 
 void LightSampler::sampleLight(std::size_t li, const Vec3& p, const Vec3& n, uint32_t seed,
-                               bool area, std::vector<LightSample>& samples,
-                               std::vector<LightSpan>& spans) const {
+                               bool area, LightSamples& samples,
+                               LightSpans& spans) const {
     const int shadowSamples = shadowSamples_, laned = laned_;
     const CompiledLight& light = scene_.lights()[li];
     LightSpan span{uint32_t(li), uint32_t(samples.size()), 0, 1};

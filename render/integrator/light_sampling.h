@@ -3,6 +3,7 @@
 // The trace kernel, deferred shadows and every engine's shadow queries go through these.
 #pragma once
 
+#include "core/scratch_arena.h"
 #include "integrator/sampling.h"
 #include "snapshot/compiled_scene.h"
 
@@ -28,10 +29,16 @@ struct LightSpan {
     uint32_t drawn;
 };
 
+/// A shading point's light samples and their spans, per-thread scratch (the trace kernel's
+/// workspace keeps them from call to call). The structures of arrays below are scratch too
+/// (core/scratch_arena.h): kept in a thread's workspace or on its stack, never past its end.
+using LightSamples = ScratchVector<LightSample>;
+using LightSpans = ScratchVector<LightSpan>;
+
 /// Shading points as structure of arrays, padded to whole lanes (so lane loops may read the
 /// last group whole): position, unit normal facing the viewer, unit direction to the viewer.
 struct ShadingPoints {
-    std::vector<float> px, py, pz, nx, ny, nz, vx, vy, vz;
+    ScratchVector<float> px, py, pz, nx, ny, nz, vx, vy, vz;
     std::size_t count = 0;
 
     /// Room for n points (and the padding); count becomes n, the contents are to be written.
@@ -53,7 +60,7 @@ SurfaceTerms<float> surfaceTerms(const CompiledMaterial& m);
 
 /// SurfaceTerms of each shading point of a ShadingPoints, structure of arrays, padded alike.
 struct SurfaceArrays {
-    std::vector<float> r, g, b, specular, cutoff, shininess;
+    ScratchVector<float> r, g, b, specular, cutoff, shininess;
 
     void resize(std::size_t n);
     void set(std::size_t i, const SurfaceTerms<float>& t) {
@@ -66,13 +73,13 @@ struct SurfaceArrays {
 /// or any light when sphere lights are not sampled): LightSample's fields and whether it is
 /// listed, structure of arrays.
 struct CentreSamples {
-    std::vector<float> dx, dy, dz, dist, nl;
-    std::vector<uint8_t> listed;
+    ScratchVector<float> dx, dy, dz, dist, nl;
+    ScratchVector<uint8_t> listed;
 };
 
 /// Sums of light terms (r, g, b) of each point of a ShadingPoints, padded alike.
 struct LightSums {
-    std::vector<float> r, g, b;
+    ScratchVector<float> r, g, b;
     /// n points, all sums 0.
     void zero(std::size_t n);
 };
@@ -92,7 +99,7 @@ public:
     /// the viewer): `shadowSamples` stratified points of each sphere light when `area`, else
     /// the light's centre; `seed` decorrelates the pattern per camera sample.
     void sample(const Vec3& p, const Vec3& n, uint32_t seed, bool area,
-                std::vector<LightSample>& samples, std::vector<LightSpan>& spans) const;
+                LightSamples& samples, LightSpans& spans) const;
 
     /// True when light `li` is sampled at its centre alone (sample()'s rule): a point light,
     /// or any light when not `area` or when the scene asks for no shadow samples.
@@ -101,7 +108,7 @@ public:
     }
     /// sample()'s samples of light `li` alone, appended with their span when any is listed.
     void sampleLight(std::size_t li, const Vec3& p, const Vec3& n, uint32_t seed, bool area,
-                     std::vector<LightSample>& samples, std::vector<LightSpan>& spans) const;
+                     LightSamples& samples, LightSpans& spans) const;
     /// Light `li`'s centre sample from points [first, end) of `points` (first a multiple of
     /// kLaneWidth), four points at a time: the bits sample() gives for each point alone.
     void sampleCentres(std::size_t li, const ShadingPoints& points, std::size_t first,

@@ -2,6 +2,7 @@
 #include "integrator/renderer.h"
 
 #include "core/parallel.h"
+#include "core/scratch_arena.h"
 #include "integrator/sampling.h"
 #include "integrator/trace_kernel.h"
 
@@ -40,9 +41,9 @@ Color renderPixel(const WhittedIntegrator& integrator, const CameraModel& camera
 bool supersamplePixels(const TraceKernel& kernel, const int32_t* xs, const int32_t* ys,
                        std::size_t count, int spp, Color* out, TraceCounters& counters,
                        const std::function<bool()>& stale) {
-    thread_local std::vector<Vec3> origins, dirs;
-    thread_local std::vector<uint32_t> seeds;
-    thread_local std::vector<Color> colors;
+    thread_local ScratchVector<Vec3> origins, dirs;
+    thread_local ScratchVector<uint32_t> seeds;
+    thread_local ScratchVector<Color> colors;
     const CameraModel& camera = kernel.scene().camera();
     const std::size_t perCall = std::max<std::size_t>(1, kSampleBatch / std::size_t(spp));
     for (std::size_t first = 0; first < count; first += perCall) {
@@ -130,8 +131,8 @@ bool forEachTile(int width, int rowBegin, int rowEnd, const RenderOptions& optio
 
 /// A tile's pixels as lists (row-major), optionally only those `pick` selects.
 template <class Pick>
-void tilePixels(int x0, int y0, int x1, int y1, std::vector<int32_t>& xs,
-                std::vector<int32_t>& ys, Pick&& pick) {
+void tilePixels(int x0, int y0, int x1, int y1, ScratchVector<int32_t>& xs,
+                ScratchVector<int32_t>& ys, Pick&& pick) {
     xs.clear();
     ys.clear();
     for (int y = y0; y < y1; ++y)
@@ -186,12 +187,14 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
         // the full pattern when supersampling everywhere. Ids come from the centre ray.
         result.cancelled = !forEachTile(w, t0, t1, options, result.rays,
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
-                thread_local std::vector<int32_t> xs, ys;
-                thread_local std::vector<Vec3> columns, origins, dirs;
-                thread_local std::vector<uint32_t> seeds;
-                thread_local std::vector<Color> colors;
-                thread_local std::vector<PrimaryInfo> infos;
-                thread_local std::vector<ObjectId> tileIds;
+                // Each worker's tile buffers, in its huge-page scratch arena (a cold render
+                // would otherwise fault them in 4 KiB at a time on its first tiles).
+                thread_local ScratchVector<int32_t> xs, ys;
+                thread_local ScratchVector<Vec3> columns, origins, dirs;
+                thread_local ScratchVector<uint32_t> seeds;
+                thread_local ScratchVector<Color> colors;
+                thread_local ScratchVector<PrimaryInfo> infos;
+                thread_local ScratchVector<ObjectId> tileIds;
                 if (cancelled()) return clearTile(x0, x1, y0, y1);
                 // The centre rays row by row (row-major, as tilePixels lists them), with what
                 // depends on the column alone or on the row alone worked out once.
@@ -249,8 +252,8 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
         ImageRgb refined = result.image;
         result.cancelled = !forEachTile(w, r0, r1, options, result.rays,
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
-                thread_local std::vector<int32_t> xs, ys;
-                thread_local std::vector<Color> colors;
+                thread_local ScratchVector<int32_t> xs, ys;
+                thread_local ScratchVector<Color> colors;
                 if (cancelled()) return;
                 tilePixels(x0, y0, x1, y1, xs, ys, [&](int x, int y) {
                     return needsSupersampling(result.image.pixels.data(), ids.data(),

@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
-#include <fstream>
-#include <sstream>
 #include <string>
+
+#include "vm_flags.h"
 
 namespace rs {
 namespace {
@@ -18,32 +18,8 @@ constexpr bool kMapped = false;  // The sanitizers' own allocators serve every b
 constexpr bool kMapped = true;
 #endif
 
-/// Whether the kernel gives transparent huge pages at all (not "[never]", not built without).
-bool kernelHasHugePages() {
-    std::ifstream enabled("/sys/kernel/mm/transparent_hugepage/enabled");
-    std::string mode;
-    return std::getline(enabled, mode) && mode.find("[never]") == std::string::npos;
-}
-
-/// The VmFlags line of /proc/self/smaps for the mapping that holds `p` ("" if none).
-std::string vmFlagsOf(const void* p) {
-    std::ifstream smaps("/proc/self/smaps");
-    const auto at = reinterpret_cast<std::uintptr_t>(p);
-    std::string line;
-    bool inside = false;
-    while (std::getline(smaps, line)) {
-        std::uintptr_t lo = 0, hi = 0;
-        char dash = 0;
-        std::istringstream head(line);
-        if (head >> std::hex >> lo >> dash >> hi && dash == '-' && line.find(' ') != std::string::npos &&
-            line.find(':') > line.find(' ')) {
-            inside = lo <= at && at < hi;
-            continue;
-        }
-        if (inside && line.rfind("VmFlags:", 0) == 0) return line;
-    }
-    return "";
-}
+using test::kernelHasHugePages;
+using test::vmFlagsOf;
 
 TEST(LargeBlocks, FrameSizedBlockIsHugePageAlignedAndAdvised) {
     if (!kMapped) GTEST_SKIP() << "sanitizer build: plain operator new";
@@ -53,8 +29,6 @@ TEST(LargeBlocks, FrameSizedBlockIsHugePageAlignedAndAdvised) {
     for (std::size_t i = 0; i < bytes; i += 4096) p[i] = 1;  // All of it is ours to write.
     p[bytes - 1] = 2;
 #if defined(__linux__)
-    // "hg": the mapping asked for huge pages (MADV_HUGEPAGE), which Debian's THP "madvise"
-    // default requires before it gives any.
     if (kernelHasHugePages()) {
         const std::string flags = vmFlagsOf(p);
         EXPECT_NE(flags.find(" hg"), std::string::npos) << "VmFlags: " << flags;

@@ -130,8 +130,8 @@ TEST(LightSamplerLanes, FourAtATimeListsTheBitsOfOneAtATime) {
             const Vec3 n = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0.0f, 1e-3f, 0.0f));
             const uint32_t seed = rng();
             for (bool area : {true, false}) {
-                std::vector<LightSample> s4, s1;
-                std::vector<LightSpan> p4, p1;
+                LightSamples s4, s1;
+                LightSpans p4, p1;
                 four.sample(p, n, seed, area, s4, p4);
                 one.sample(p, n, seed, area, s1, p1);
                 ASSERT_EQ(s4.size(), s1.size());
@@ -214,8 +214,8 @@ TEST(LightSamplerLanes, CentreLightsOfFourPointsHaveTheBitsOfOnePointAtATime) {
                     const Vec3 p(points.px[j], points.py[j], points.pz[j]);
                     const Vec3 normal(points.nx[j], points.ny[j], points.nz[j]);
                     const Vec3 view(points.vx[j], points.vy[j], points.vz[j]);
-                    std::vector<LightSample> samples;
-                    std::vector<LightSpan> spans;
+                    LightSamples samples;
+                    LightSpans spans;
                     sampler.sampleLight(li, p, normal, 0u, false, samples, spans);
                     ASSERT_EQ(centres.listed[j], spans.empty() ? 0 : 1) << "point " << j;
                     if (spans.empty()) continue;
@@ -256,8 +256,8 @@ TEST(LightSamplerLanes, SphereLightSamplesLieOnTheLightsDisk) {
     const SceneDocument doc = lightsScene(rng, 16);
     const CompiledScene scene(doc, nullptr, EngineKind::Builtin);
     const LightSampler sampler(scene);
-    std::vector<LightSample> samples;
-    std::vector<LightSpan> spans;
+    LightSamples samples;
+    LightSpans spans;
     const Vec3 p(0.0f, -2.9f, 0.0f), n(0.0f, 1.0f, 0.0f);
     sampler.sample(p, n, 1234u, true, samples, spans);
     ASSERT_FALSE(spans.empty());
