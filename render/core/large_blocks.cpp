@@ -10,10 +10,10 @@
 
 namespace rs {
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(RS_SANITIZED_ALLOCATIONS)
 
-// The sanitizers' allocators check bounds and races on blocks of exactly the size asked for.
 void* largeAllocate(std::size_t bytes) {
+    if (bytes > kLargestBlockBytes) throw std::bad_alloc();
     return ::operator new(bytes);
 }
 
@@ -29,7 +29,7 @@ constexpr std::size_t kHeader = sizeof(void*);
 }  // namespace
 
 void* largeAllocate(std::size_t bytes) {
-    if (bytes > SIZE_MAX - 2 * kLargeBlockBytes - kHeader) throw std::bad_alloc();
+    if (bytes > kLargestBlockBytes) throw std::bad_alloc();
     // Whole huge pages: a range that ends inside one gets 4 KiB pages there (a 1280x720
     // image's last 0.27 of a huge page was 135 faults, a millisecond of a cold render).
     const std::size_t span = (bytes + kLargeBlockBytes - 1) & ~(kLargeBlockBytes - 1);

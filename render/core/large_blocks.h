@@ -6,10 +6,31 @@
 #include <new>
 #include <vector>
 
+// Whether this is an ASan or TSan build (GCC names them with __SANITIZE_*__, clang before 16
+// only through __has_feature): their allocators then serve every block at exactly the size
+// asked, so they keep checking bounds, use and races.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define RS_SANITIZED_ALLOCATIONS 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define RS_SANITIZED_ALLOCATIONS 1
+#endif
+
 namespace rs {
+
+#if defined(RS_SANITIZED_ALLOCATIONS)
+constexpr bool kSanitizedAllocations = true;
+#else
+constexpr bool kSanitizedAllocations = false;
+#endif
 
 /// Blocks of at least this many bytes come from largeAllocate().
 constexpr std::size_t kLargeBlockBytes = std::size_t(2) << 20;
+/// The largest block largeAllocate() tries for (1 TiB, far beyond any frame): bigger asks throw
+/// std::bad_alloc in every build, where the sanitizers' allocators would abort instead.
+constexpr std::size_t kLargestBlockBytes = std::size_t(1) << 40;
 
 /// `bytes` of memory aligned to 2 MB, which the kernel is asked to back with transparent huge
 /// pages (Debian's default "madvise" mode gives them only to memory that asks). The first
@@ -17,7 +38,8 @@ constexpr std::size_t kLargeBlockBytes = std::size_t(2) << 20;
 /// microseconds: writing a 1280x720 float image (11 MB, 2,700 pages) for the first time took
 /// 25-30 ms here, longer than tracing it, against 0.5-3 ms for its six huge pages. The block
 /// comes from malloc, so memory freed earlier is reused as malloc reuses it (without faults).
-/// Throws std::bad_alloc when no memory is left.
+/// Throws std::bad_alloc when no memory is left or `bytes` exceeds kLargestBlockBytes.
+/// Sanitizer builds use plain operator new.
 void* largeAllocate(std::size_t bytes);
 /// Gives back a block largeAllocate() returned.
 void largeFree(void* p) noexcept;

@@ -1,6 +1,8 @@
 // Per-thread scratch memory in huge pages: a bump arena per thread for workspaces that only grow.
 #pragma once
 
+#include "core/large_blocks.h"
+
 #include <cstddef>
 #include <memory>
 #include <new>
@@ -13,19 +15,9 @@ namespace rs {
 /// take about 1.5 MB of it after doubling growth); only the pages written are faulted.
 constexpr std::size_t kScratchArenaBytes = std::size_t(4) << 20;
 
-/// Whether scratch memory comes from arenas at all. Sanitizer builds serve every block from
-/// the sanitizers' own allocators, so ASan and TSan keep checking bounds, use and races
-/// (GCC names them with __SANITIZE_*__, clang before 16 only through __has_feature).
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define RS_SCRATCH_SANITIZED 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__) || defined(RS_SCRATCH_SANITIZED)
-constexpr bool kScratchArenas = false;
-#else
-constexpr bool kScratchArenas = true;
-#endif
+/// Whether scratch memory comes from arenas at all: not in sanitizer builds, whose own
+/// allocators then serve every block, so ASan and TSan keep checking bounds, use and races.
+constexpr bool kScratchArenas = !kSanitizedAllocations;
 
 /// `bytes` aligned to `align` (a power of two, at most 64) from the calling thread's arena,
 /// or nullptr when the arena is full (or there is none: sanitizer builds, or more threads

@@ -12,11 +12,7 @@
 namespace rs {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kMapped = false;  // The sanitizers' own allocators serve every block.
-#else
-constexpr bool kMapped = true;
-#endif
+constexpr bool kMapped = !kSanitizedAllocations;  // Else plain operator new serves every block.
 
 using test::kernelHasHugePages;
 using test::vmFlagsOf;

@@ -479,9 +479,9 @@ static uint64_t orbitStepHeldMidPass(RenderSession& session, TileGate& gate, Sce
 }
 
 /// Holds a governed orbit step mid-pass, posts another move, and checks that the move cuts
-/// the pass and ends exact after release.
-static void heldPassIsCutByTheNextEdit(RenderSession& session, SceneDocument& doc) {
-    TileGate gate;
+/// the pass and ends exact after release. The caller declares `gate` before `session`, so the
+/// session's workers (joined by its destructor) never call a gate that is gone.
+static void heldPassIsCutByTheNextEdit(RenderSession& session, TileGate& gate, SceneDocument& doc) {
     const uint64_t step = orbitStepHeldMidPass(session, gate, doc);
     doc.camera.position.x += 0.1f;
     const uint64_t next = session.update(doc);
@@ -493,10 +493,10 @@ static void heldPassIsCutByTheNextEdit(RenderSession& session, SceneDocument& do
 
 TEST(RenderSession, WhileMoving_AGovernedPassWithinItsTimeFinishes_TheEditsWaitForIt) {
     SceneDocument doc = testRoom();
+    TileGate gate;  // Outlives the session, whose workers may still call it.
     RenderSession session(2);
     // However long the test holds the pass, it is in time.
     governedAndComplete(session, doc, 60000.0);
-    TileGate gate;
     const uint64_t step = orbitStepHeldMidPass(session, gate, doc);
     // Two more mouse moves while the pass runs: they coalesce and wait for it.
     uint64_t last = 0;
@@ -517,17 +517,19 @@ TEST(RenderSession, WhileMoving_AGovernedPassWithinItsTimeFinishes_TheEditsWaitF
 
 TEST(RenderSession, WhileMoving_WithWholeFramesOff_EveryEditCutsThePass) {
     SceneDocument doc = testRoom();
+    TileGate gate;
     RenderSession session(2);
     // However long the test holds the pass, it is in time: only the policy lets it be cut.
     governedAndComplete(session, doc, 60000.0, /*wholeFrames=*/false);
-    heldPassIsCutByTheNextEdit(session, doc);
+    heldPassIsCutByTheNextEdit(session, gate, doc);
 }
 
 TEST(RenderSession, WhileMoving_APassOverItsTimeIsCutByTheNextEdit) {
     SceneDocument doc = testRoom();
+    TileGate gate;
     RenderSession session(2);
     governedAndComplete(session, doc, 1e-3);  // Any pass held mid-way is long over its time.
-    heldPassIsCutByTheNextEdit(session, doc);
+    heldPassIsCutByTheNextEdit(session, gate, doc);
 }
 
 TEST(RenderSession, EditsFromAnotherThreadWhileRendering_EndExact) {
