@@ -236,6 +236,7 @@ TraceKernel::TraceKernel(const CompiledScene& scene, const TraceOptions& options
         lamberts_.push_back(surfaceTerms(lambert));
         ambients_.push_back(settings.ambient * m.color * m.diffuse);
         lambertAmbients_.push_back(settings.ambient * m.color);
+        specular_.push_back(m.reflectivity > 0.0f || m.transparency > 0.0f);
     }
     // What the options fix for every level: which lights are sampled at their centre alone
     // (four points at a time) and which over their disk (point by point), and how many
@@ -270,7 +271,7 @@ bool TraceKernel::trace(const CameraBatch& rays, const TraceOutput& out, TraceCo
 bool TraceKernel::traceLevels(Workspace& ws, Level& start, int depth, const TraceOutput& out,
                               TraceCounters& counters, const std::function<bool()>& stale) const {
     // Settings constant for the whole call pick the instance: no per-hit branch on them.
-    const bool bookkeeping = out.rays || out.segments || out.records;
+    const bool bookkeeping = out.primary || out.rays || out.segments || out.records;
     const bool asDiffuse = options_.reflectionAsDiffuse || options_.refractionAsDiffuse;
     const auto shade = bookkeeping ? (asDiffuse ? &TraceKernel::shadeLevel<true, true>
                                                 : &TraceKernel::shadeLevel<true, false>)
@@ -297,6 +298,62 @@ bool TraceKernel::traceLevels(Workspace& ws, Level& start, int depth, const Trac
         ++depth;
     }
     return true;
+}
+
+void TraceKernel::keepBooks(const Level& level, const HitBatch& hits, int depth,
+                            const TraceOutput& out) const {
+    // Every array through a local pointer: the byte-sized stores (counts, flags) may alias
+    // anything, so the compiler would reload each pointer from its vector after each one.
+    const std::size_t n = level.size();
+    const uint32_t* const owners = level.owner.data();
+    const uint32_t* const slots = hits.slot;
+    const float* const t = hits.t;
+    if (uint32_t* const rays = out.rays)
+        for (std::size_t i = 0; i < n; ++i) ++rays[owners[i]];
+    if (out.segments && depth > 0) {
+        const float *ox = level.ox.data(), *oy = level.oy.data(), *oz = level.oz.data();
+        const float *dx = level.dx.data(), *dy = level.dy.data(), *dz = level.dz.data();
+        TreeSegment* const data = out.segments.data;
+        uint32_t* const rayOf = out.segments.ray;
+        uint8_t *const count = out.segments.count, *const overflow = out.segments.overflow;
+        const int capacity = out.segments.capacity;
+        std::size_t used = *out.segments.used;
+        for (std::size_t i = 0; i < n; ++i) {
+            const uint32_t owner = owners[i];
+            if (count[owner] >= capacity) {
+                overflow[owner] = 1;
+                continue;
+            }
+            ++count[owner];
+            const Vec3 o(ox[i], oy[i], oz[i]), d(dx[i], dy[i], dz[i]);
+            data[used] = slots[i] != kNoSlot ? TreeSegment{o, o + d * t[i], 0u} : TreeSegment{o, d, 1u};
+            rayOf[used++] = owner;
+        }
+        *out.segments.used = used;
+    }
+    PrimaryInfo* const primary = out.primary;
+    if (!primary) return;
+    const uint8_t* const specular = specular_.data();
+    if (depth == 0) {
+        const float *nx = hits.nx, *ny = hits.ny, *nz = hits.nz;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (slots[i] == kNoSlot) continue;
+            uint32_t materialIndex;
+            ObjectId id;
+            scene_.describe(slots[i], materialIndex, id);
+            primary[owners[i]] = PrimaryInfo{id, t[i], Vec3(nx[i], ny[i], nz[i]),
+                                             specular[materialIndex] != 0};
+        }
+        return;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (slots[i] == kNoSlot) continue;
+        uint32_t materialIndex;
+        ObjectId id;
+        scene_.describe(slots[i], materialIndex, id);
+        bool& touched = primary[owners[i]].touchedSpecular;
+        touched = touched | (specular[materialIndex] != 0);
+    }
 }
 
 template <bool Bookkeeping, bool AsDiffuse>
@@ -328,18 +385,11 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
     uint32_t *pointMaterial = pts.material.data(), *pointSeed = pts.seed.data();
     uint32_t *pointOwner = pts.owner.data(), *pointRay = pts.ray.data();
     float* pointWeight = pts.weight.data();
-    PrimaryInfo* const primary = out.primary;
+    if (Bookkeeping) keepBooks(level, hits, depth, out);
     for (std::size_t i = 0; i < n; ++i) {
         const uint32_t owner = owners[i];
         const float weight = weights[i];
-        if (Bookkeeping && out.rays) ++out.rays[owner];
         const bool found = slots[i] != kNoSlot;
-        if (Bookkeeping && out.segments && depth > 0) {
-            const Vec3 o(level.ox[i], level.oy[i], level.oz[i]);
-            const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
-            const TreeSegment s = found ? TreeSegment{o, o + d * hits.t[i], 0u} : TreeSegment{o, d, 1u};
-            out.segments.append(owner, s);
-        }
         if (!found) {
             out.color[owner] += weight * settings.background;
             continue;
@@ -348,15 +398,6 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         ObjectId id;
         scene_.describe(slots[i], materialIndex, id);
         const CompiledMaterial& m = materials[materialIndex];
-        if (primary) {
-            PrimaryInfo& info = primary[owner];
-            if (depth == 0) {
-                info.id = id;
-                info.depth = hits.t[i];
-                info.normal = Vec3(hits.nx[i], hits.ny[i], hits.nz[i]);
-            }
-            if (m.reflectivity > 0.0f || m.transparency > 0.0f) info.touchedSpecular = true;
-        }
 
         // While moving, mirror and glass shares may be shown as plain Lambert (thesis 4.2).
         float reflectivity = m.reflectivity, transparency = m.transparency, asDiffuse = 0.0f;

@@ -3,6 +3,7 @@
 // of scene-format.md, written once). Full renders, every session pass and single rays use it.
 #pragma once
 
+#include "image/image.h"
 #include "integrator/light_sampling.h"
 #include "integrator/whitted.h"
 
@@ -22,40 +23,81 @@ struct CameraBatch {
     bool coherent = true;  ///< Neighbouring rays are neighbouring pixels.
 };
 
-/// Fixed-capacity lists, one per camera ray: list i is data[i * capacity ...], with its
-/// length and an overflow flag (more items than fit: the caller must not trust the list).
+/// Lists of up to `capacity` items, one per camera ray, appended densely in the order the
+/// trace makes them (level by level), each item with its ray: what a tile keeps stays a few
+/// cache lines instead of `capacity` slots a ray. Ray i's list has count[i] items; overflow[i]
+/// says more did not fit (the caller must not trust the list). PerRayStorage::group() puts
+/// each ray's items together for reading.
 template <class T>
 struct PerRayLists {
     T* data = nullptr;
+    uint32_t* ray = nullptr;  ///< The ray of each appended item.
+    std::size_t* used = nullptr;
     int capacity = 0;
     uint8_t* count = nullptr;
     uint8_t* overflow = nullptr;
 
     explicit operator bool() const { return data != nullptr; }
-    void clear(std::size_t ray) const { count[ray] = 0, overflow[ray] = 0; }
-    void append(uint32_t ray, const T& value) const {
-        uint8_t& c = count[ray];
-        if (c < capacity)
-            data[std::size_t(ray) * std::size_t(capacity) + c++] = value;
-        else
-            overflow[ray] = 1;
+    void clear(std::size_t r) const { count[r] = 0, overflow[r] = 0; }
+    void append(uint32_t r, const T& value) const {
+        uint8_t& c = count[r];
+        if (c < capacity) {
+            ++c;
+            const std::size_t at = (*used)++;
+            data[at] = value;
+            ray[at] = r;
+        } else {
+            overflow[r] = 1;
+        }
     }
 };
 
-/// Storage for PerRayLists of `capacity` items for n rays, reused between calls.
+/// Storage for PerRayLists of n rays, reused between calls (grown, never zero-filled).
 template <class T>
 struct PerRayStorage {
-    std::vector<T> items;
+    using Items = std::vector<T, DefaultInitAllocator<T>>;
+    Items appended;  ///< In the order the trace made them.
+    std::vector<uint32_t, DefaultInitAllocator<uint32_t>> ray;
+    std::size_t used = 0;
+    Items items;  ///< Grouped by ray when `appended` is not.
+    std::vector<uint32_t> first;  ///< Ray i's items are of(i)[0, count[i]): [first[i], first[i + 1]).
     std::vector<uint8_t> count, overflow;
 
+    /// Empty lists for n rays of at most `capacity` items each.
     PerRayLists<T> lists(std::size_t n, int capacity) {
-        items.resize(n * std::size_t(capacity));
+        const std::size_t most = n * std::size_t(capacity);
+        if (appended.size() < most) appended.resize(most), ray.resize(most);
         count.resize(n), overflow.resize(n);
-        return {items.data(), capacity, count.data(), overflow.data()};
+        used = 0;
+        return {appended.data(), ray.data(), &used, capacity, count.data(), overflow.data()};
     }
-    const T* of(std::size_t ray, int capacity) const { return items.data() + ray * std::size_t(capacity); }
-};
+    /// After the lists are written: each ray's items together, in the order they were
+    /// appended (a stable counting sort by ray).
+    void group() {
+        const std::size_t n = count.size();
+        first.resize(n + 1);
+        uint32_t at = 0;
+        for (std::size_t i = 0; i < n; ++i) first[i] = at, at += count[i];
+        first[n] = at;
+        grouped_ = appended.data();
+        for (std::size_t k = 1; k < used; ++k) {
+            if (ray[k] >= ray[k - 1]) continue;
+            // Out of order (a deeper level's items after a later ray's): scattered to their
+            // rays' places. A tree of one level is in order already and is not copied.
+            items.resize(used);
+            thread_local std::vector<uint32_t> next;
+            next.assign(first.begin(), first.end() - 1);
+            for (std::size_t j = 0; j < used; ++j) items[next[ray[j]]++] = appended[j];
+            grouped_ = items.data();
+            break;
+        }
+    }
+    /// Ray r's items (count[r] of them), after group().
+    const T* of(std::size_t r) const { return grouped_ + first[r]; }
 
+private:
+    const T* grouped_ = nullptr;
+};
 /// Where the results of camera ray i go. Only `color` is required.
 struct TraceOutput {
     Color* color = nullptr;
@@ -103,6 +145,10 @@ private:
     template <bool Bookkeeping, bool AsDiffuse>
     void shadeLevel(Workspace& ws, const Level& level, int depth, Level& next,
                     const TraceOutput& out, TraceCounters& counters) const;
+    /// What a level adds to the outputs besides colour: each ray counted to its camera ray,
+    /// its segment (below the camera level), the first hit and whether a mirror or glass was
+    /// met. A loop of its own, so the shading loop is the one a colour-only trace runs.
+    void keepBooks(const Level& level, const HitBatch& hits, int depth, const TraceOutput& out) const;
 
     const CompiledScene& scene_;
     TraceOptions options_;
@@ -114,6 +160,8 @@ private:
     /// Each material's ambient term (the scene's ambient times colour times diffuse), and
     /// as plain Lambert (ambient times colour).
     std::vector<Color> ambients_, lambertAmbients_;
+    /// 1 for each material that reflects or refracts (a pixel's tree that meets it is marked).
+    std::vector<uint8_t> specular_;
     bool area_ = false;          ///< Sphere lights are sampled over their disk.
     bool traceShadows_ = false;  ///< Shadow rays are traced now (not Off, not Deferred).
     /// Lights sampled at their centre (four points at a time) and over their disk, in the

@@ -23,14 +23,18 @@ Color WhittedIntegrator::traceCamera(const Ray& ray, uint32_t seed, TraceCounter
     Color color;
     PrimaryInfo info;
     uint8_t recordCount = 0, recordOverflow = 0, segmentCount = 0, segmentOverflow = 0;
+    // One ray: its lists, appended densely, are the sinks as they are (every item is ray 0's).
+    uint32_t rayOf[kSinkLimit];
+    std::size_t records = 0, segmentsUsed = 0;
     TraceOutput out;
     out.color = &color;
     out.primary = &info;
     if (sink && sink->capacity > 0)
-        out.records = {sink->data, std::min(sink->capacity, kSinkLimit), &recordCount, &recordOverflow};
+        out.records = {sink->data, rayOf, &records, std::min(sink->capacity, kSinkLimit),
+                       &recordCount, &recordOverflow};
     if (segments && segments->capacity > 0)
-        out.segments = {segments->data, std::min(segments->capacity, kSinkLimit), &segmentCount,
-                        &segmentOverflow};
+        out.segments = {segments->data, rayOf, &segmentsUsed,
+                        std::min(segments->capacity, kSinkLimit), &segmentCount, &segmentOverflow};
     kernel_->trace(CameraBatch{&ray.origin, &ray.dir, &seed, 1, true}, out, counters);
     if (primary) *primary = info;
     if (sink) {

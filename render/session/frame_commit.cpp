@@ -356,7 +356,7 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         if (wholeTile) records.restart();
         for (std::size_t k = 0; k < traced.size(); ++k) {
             const uint8_t n = traced.records.overflow[k] ? 0 : traced.records.count[k];
-            records.append(traced.pixel[k], traced.records.of(k, kRecordsPerPixel), n);
+            records.append(traced.pixel[k], traced.records.of(k), n);
         }
         records.compactIfWasteful(t.rect);
     }
@@ -463,7 +463,7 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
             const std::size_t q = std::size_t(j);
             const std::size_t n =
                 std::min<std::size_t>(samples.segments.count[q], kSegmentsPerPixel - kept);
-            segments.add(samples.segments.of(q, kSegmentsPerPixel), n);
+            segments.add(samples.segments.of(q), n);
             kept += n;
         }
         segments.end();

@@ -35,8 +35,12 @@ bool RayList::trace(const TraceKernel& kernel, bool keepRecords, bool keepSegmen
     out.rays = rays.data();
     if (keepRecords) out.records = records.lists(n, kRecordsPerPixel);
     if (keepSegments) out.segments = segments.lists(n, kSegmentsPerPixel);
-    return kernel.trace(CameraBatch{origin.data(), dir.data(), seed.data(), n, true}, out, counters,
-                        stale);
+    if (!kernel.trace(CameraBatch{origin.data(), dir.data(), seed.data(), n, true}, out, counters,
+                      stale))
+        return false;
+    if (keepRecords) records.group();
+    if (keepSegments) segments.group();
+    return true;
 }
 
 }  // namespace rs

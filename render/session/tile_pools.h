@@ -56,24 +56,17 @@ public:
             std::fill_n(startOut, n, base);
             std::fill_n(countOut, n, uint8_t(0));
         } else {
+            // A run's rays are consecutive in the list, so their segments are one stretch of
+            // the grouped items: copied in one go.
             const uint8_t* counts = list.segments.count.data() + k;
-            for (std::size_t j = 0; j < n; ++j) added += counts[j];
+            const uint32_t* first = list.segments.first.data() + k;
+            added = first[n] - first[0];
             pool_.resize(base + added);  // Not zero-filled first (SegmentVector).
-            TreeSegment* out = pool_.data() + base;
-            uint32_t at = base;
+            std::copy_n(list.segments.of(k), added, pool_.data() + base);
+            const uint32_t shift = base - first[0];
             for (std::size_t j = 0; j < n; ++j) {
-                const uint8_t count = counts[j];  // At most kSegmentsPerPixel: always indexable.
-                startOut[j] = at;
-                countOut[j] = count;
-                if (count == 0) continue;
-                // Most trees are one or two segments: copied here, not by a library call per
-                // pixel (a floor that reflects gives nearly half the frame's pixels one).
-                const TreeSegment* from = list.segments.of(k + j, kSegmentsPerPixel);
-                TreeSegment* to = out + (at - base);
-                to[0] = from[0];
-                if (count > 1) to[1] = from[1];
-                if (count > 2) std::copy_n(from + 2, count - 2, to + 2);
-                at += count;
+                startOut[j] = first[j] + shift;
+                countOut[j] = counts[j];
             }
         }
         live_ = live_ - removed + added;

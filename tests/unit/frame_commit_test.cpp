@@ -72,6 +72,7 @@ TileResult resultFor(const std::vector<std::size_t>& pixels, int salt, uint64_t 
         lists.clear(k);
         for (int s = 0; s < m.segments; ++s) lists.append(uint32_t(k), segmentOf(r.pixel[k], salt, s));
     }
+    r.segments.group();
     return t;
 }
 
@@ -180,6 +181,7 @@ TileResult withRecords(const std::vector<std::size_t>& pixels, int salt, uint64_
         lists.clear(k);
         for (int j = 0; j < int(r.pixel[k] % 3) + 1; ++j) lists.append(uint32_t(k), recordOf(r.pixel[k], salt, j));
     }
+    r.records.group();
     return t;
 }
 
