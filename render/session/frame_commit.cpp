@@ -187,38 +187,46 @@ public:
         whole_ = true;
     }
     bool whole() const { return whole_; }
-    /// Adds pixels [x0, x0 + n) of row y as summarizeBlock reads them: their hit points
-    /// (radius 0), and for a pixel whose tree met a mirror or glass, its unknown flag and its
-    /// segments (pool[starts[j], +counts[j])). Each block's part of the run is gathered in
-    /// locals first, then added to the block's summary (min and max: the same bits).
-    void includeRun(int x0, int y, std::size_t n, const glm::vec4* bounds, const uint8_t* flags,
-                    const TreeSegment* pool, const uint32_t* starts, const uint8_t* counts) {
+    /// Adds pixels [x0, x0 + n) of row y, which rays [k0, k0 + n) of `list` wrote, as
+    /// summarizeBlock reads them: their hit points (radius 0), and for a pixel whose tree met
+    /// a mirror or glass, whether its tree is unknown and its segments. Taken from the list,
+    /// which is in the cache, not read back from the frame's lines just written. Each block's
+    /// part of the run is gathered in locals first, then added to the block's summary (min
+    /// and max: the same bits).
+    void includeRun(int x0, int y, const RayList& list, std::size_t k0, std::size_t n) {
+        const PrimaryInfo* info = list.info.data() + k0;
+        const Vec3* origin = list.origin.data() + k0;
+        const Vec3* dir = list.dir.data() + k0;
+        const bool withSegments = list.withSegments;
         for (std::size_t j = 0; j < n;) {
             const int x = x0 + int(j);
             const std::size_t end =
                 std::min(n, j + std::size_t(DeepFrame::kBlock - (x - r_.x0) % DeepFrame::kBlock));
             Aabb hits, segmentStarts, segmentEnds;
-            uint8_t specularFlags = 0;  // The flags of its pixels that met a mirror or glass.
-            bool escape = false;
+            bool specular = false, unknown = false, escape = false;
             for (; j < end; ++j) {
-                const glm::vec4 hit = bounds[j];
+                const glm::vec4 hit = RayList::hitBoundOf(origin[j], dir[j], info[j]);
                 if (hit.w >= 0.0f) hits.expand(Vec3(hit));
-                if (!(flags[j] & kTouchedSpecular)) continue;
-                specularFlags |= flags[j];
-                const TreeSegment* segs = pool + starts[j];
-                for (std::size_t k = 0; k < counts[j]; ++k) {
-                    segmentStarts.expand(segs[k].a);
-                    if (segs[k].escapes)
+                if (!info[j].touchedSpecular) continue;
+                specular = true;
+                const std::size_t k = k0 + j;
+                if (list.extra[k] & kTreeUnknown) unknown = true;
+                if (!withSegments) continue;
+                if (list.segments.overflow[k]) unknown = true;
+                const TreeSegment* segs = list.segments.of(k);
+                for (std::size_t q = 0; q < list.segments.count[k]; ++q) {
+                    segmentStarts.expand(segs[q].a);
+                    if (segs[q].escapes)
                         escape = true;
                     else
-                        segmentEnds.expand(segs[k].b);
+                        segmentEnds.expand(segs[q].b);
                 }
             }
             TileSummary& sum = sums_[blockOf(x, y)];
             sum.hitBox.expand(hits);
-            if (!specularFlags) continue;
+            if (!specular) continue;
             sum.anySpecular = true;
-            if (specularFlags & kTreeUnknown) sum.anyUnknown = true;
+            if (unknown) sum.anyUnknown = true;
             sum.segmentStarts.expand(segmentStarts);
             sum.segmentEnds.expand(segmentEnds);
             if (escape) sum.anyEscape = true;
@@ -338,10 +346,7 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         std::fill_n(state.begin() + to, count, t.tracedState);
         segments.replaceRun(i0, n, traced, k0);
         touched.addRun(int(x0), int(y), int(n));
-        if (whole)
-            touched.includeRun(int(x0), int(y), n, out.bound, out.flags,
-                               tileSegments[std::size_t(tile)].data(), segmentStart.data() + i0,
-                               segmentCount.data() + i0);
+        if (whole) touched.includeRun(int(x0), int(y), traced, k0, n);
         k0 += n;
     }
     if (wholeTile && traced.size() > 0) {
