@@ -19,6 +19,19 @@ void prefetchForWrite(const T* v, std::size_t n) {
         __builtin_prefetch(reinterpret_cast<const void*>(p), 1, 3);
 }
 
+/// An Aabb of points kept as six floats, which the compiler holds in registers (an Aabb's
+/// vectors it kept on the stack, a load and a store per point and axis); the same
+/// comparisons as Aabb::expand, so the same bits.
+struct BoxOfPoints {
+    float x0 = kInfinity, y0 = kInfinity, z0 = kInfinity;
+    float x1 = -kInfinity, y1 = -kInfinity, z1 = -kInfinity;
+    void add(const Vec3& p) {
+        x0 = p.x < x0 ? p.x : x0, y0 = p.y < y0 ? p.y : y0, z0 = p.z < z0 ? p.z : z0;
+        x1 = x1 < p.x ? p.x : x1, y1 = y1 < p.y ? p.y : y1, z1 = z1 < p.z ? p.z : z1;
+    }
+    Aabb box() const { return Aabb{Vec3(x0, y0, z0), Vec3(x1, y1, z1)}; }
+};
+
 /// The frame's columns a run of camera rays writes besides colour, cost and state, through
 /// local pointers: the byte-sized stores (flags) may alias anything, which would make the
 /// compiler reload every vector's data pointer per pixel. Records and Segments say whether
@@ -190,46 +203,55 @@ public:
     /// Adds pixels [x0, x0 + n) of row y, which rays [k0, k0 + n) of `list` wrote, as
     /// summarizeBlock reads them: their hit points (radius 0), and for a pixel whose tree met
     /// a mirror or glass, whether its tree is unknown and its segments. Taken from the list,
-    /// which is in the cache, not read back from the frame's lines just written. Each block's
-    /// part of the run is gathered in locals first, then added to the block's summary (min
-    /// and max: the same bits).
+    /// which is in the cache, not read back from the frame's lines just written (the same
+    /// bits: min and max).
     void includeRun(int x0, int y, const RayList& list, std::size_t k0, std::size_t n) {
         const PrimaryInfo* info = list.info.data() + k0;
         const Vec3* origin = list.origin.data() + k0;
         const Vec3* dir = list.dir.data() + k0;
         const bool withSegments = list.withSegments;
-        for (std::size_t j = 0; j < n;) {
-            const int x = x0 + int(j);
+        const uint8_t* extra = list.extra.data() + k0;
+        const uint8_t* overflow = withSegments ? list.segments.overflow.data() + k0 : nullptr;
+        const uint32_t* first = withSegments ? list.segments.first.data() + k0 : nullptr;
+        const TreeSegment* items = withSegments ? list.segments.of(0) : nullptr;
+        for (std::size_t j0 = 0; j0 < n;) {
+            const int x = x0 + int(j0);
             const std::size_t end =
-                std::min(n, j + std::size_t(DeepFrame::kBlock - (x - r_.x0) % DeepFrame::kBlock));
-            Aabb hits, segmentStarts, segmentEnds;
-            bool specular = false, unknown = false, escape = false;
-            for (; j < end; ++j) {
-                const glm::vec4 hit = RayList::hitBoundOf(origin[j], dir[j], info[j]);
-                if (hit.w >= 0.0f) hits.expand(Vec3(hit));
-                if (!info[j].touchedSpecular) continue;
-                specular = true;
-                const std::size_t k = k0 + j;
-                if (list.extra[k] & kTreeUnknown) unknown = true;
-                if (!withSegments) continue;
-                if (list.segments.overflow[k]) unknown = true;
-                const TreeSegment* segs = list.segments.of(k);
-                for (std::size_t q = 0; q < list.segments.count[k]; ++q) {
-                    segmentStarts.expand(segs[q].a);
-                    if (segs[q].escapes)
-                        escape = true;
-                    else
-                        segmentEnds.expand(segs[q].b);
-                }
+                std::min(n, j0 + std::size_t(DeepFrame::kBlock - (x - r_.x0) % DeepFrame::kBlock));
+            // The hit points, and which pixels met a mirror or glass with a tree not known.
+            BoxOfPoints hits;
+            bool specular = false, unknown = false;
+            for (std::size_t j = j0; j < end; ++j) {
+                const bool s = info[j].touchedSpecular;
+                specular |= s;
+                unknown |= s && ((extra[j] & kTreeUnknown) || (overflow && overflow[j]));
+                if (info[j].id == kNoObject) continue;  // hitBoundOf's radius < 0: a miss.
+                hits.add(origin[j] + dir[j] * info[j].depth);
             }
             TileSummary& sum = sums_[blockOf(x, y)];
-            sum.hitBox.expand(hits);
-            if (!specular) continue;
-            sum.anySpecular = true;
-            if (unknown) sum.anyUnknown = true;
-            sum.segmentStarts.expand(segmentStarts);
-            sum.segmentEnds.expand(segmentEnds);
-            if (escape) sum.anyEscape = true;
+            sum.hitBox.expand(hits.box());
+            if (specular) {
+                sum.anySpecular = true;
+                if (unknown) sum.anyUnknown = true;
+            }
+            // Only a tree that met a mirror or glass has secondary segments, and the grouped
+            // list keeps neighbouring rays' segments together: the block's are one stretch.
+            if (specular && withSegments) {
+                BoxOfPoints starts, ends;
+                bool escape = false;
+                for (uint32_t q = first[j0]; q < first[end]; ++q) {
+                    const TreeSegment& segment = items[q];
+                    starts.add(segment.a);
+                    if (segment.escapes)
+                        escape = true;
+                    else
+                        ends.add(segment.b);
+                }
+                sum.segmentStarts.expand(starts.box());
+                sum.segmentEnds.expand(ends.box());
+                if (escape) sum.anyEscape = true;
+            }
+            j0 = end;
         }
     }
     /// Block summaries of the marked blocks, then the tile's.

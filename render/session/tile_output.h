@@ -19,13 +19,17 @@ constexpr int kSegmentsPerPixel = 24;
 
 /// Camera rays of one list of a tile and everything the kernel writes back for them.
 struct RayList {
-    std::vector<Vec3> origin, dir;
-    std::vector<uint32_t> seed;
-    std::vector<std::size_t> pixel;  ///< Frame index (block entries: the block's top-left).
-    std::vector<uint8_t> extra;      ///< Flags or span packed by the pass.
-    std::vector<Color> color;
-    std::vector<PrimaryInfo> info;
-    std::vector<uint32_t> rays;
+    /// Grown without zero-filling first: every new entry is written before it is read (the
+    /// kernel fills its outputs; addCentreRun() its rays).
+    template <class T>
+    using Column = std::vector<T, DefaultInitAllocator<T>>;
+    Column<Vec3> origin, dir;
+    Column<uint32_t> seed;
+    Column<std::size_t> pixel;  ///< Frame index (block entries: the block's top-left).
+    Column<uint8_t> extra;      ///< Flags or span packed by the pass.
+    Column<Color> color;
+    Column<PrimaryInfo> info;
+    Column<uint32_t> rays;
     PerRayStorage<ShadingRecord> records;
     PerRayStorage<TreeSegment> segments;
     bool withRecords = false, withSegments = false;  ///< What the latest trace kept.
