@@ -259,7 +259,7 @@ bool TraceKernel::trace(const CameraBatch& rays, const TraceOutput& out, TraceCo
         const std::size_t end = std::min(rays.count, start + kCameraChunk);
         std::fill(out.color + start, out.color + end, Color(0.0f));
         if (out.primary) std::fill(out.primary + start, out.primary + end, PrimaryInfo{});
-        if (out.rays) std::fill(out.rays + start, out.rays + end, 0u);
+        if (out.rays) std::fill(out.rays + start, out.rays + end, 1u);  // Each counts itself.
         for (std::size_t i = start; out.records && i < end; ++i) out.records.clear(i);
         for (std::size_t i = start; out.segments && i < end; ++i) out.segments.clear(i);
         ws.ping.setCamera(rays, start, end);
@@ -308,7 +308,7 @@ void TraceKernel::keepBooks(const Level& level, const HitBatch& hits, int depth,
     const uint32_t* const owners = level.owner.data();
     const uint32_t* const slots = hits.slot;
     const float* const t = hits.t;
-    if (uint32_t* const rays = out.rays)
+    if (uint32_t* const rays = out.rays; rays && depth > 0)  // trace() counted the camera rays.
         for (std::size_t i = 0; i < n; ++i) ++rays[owners[i]];
     if (out.segments && depth > 0) {
         const float *ox = level.ox.data(), *oy = level.oy.data(), *oz = level.oz.data();
@@ -318,6 +318,8 @@ void TraceKernel::keepBooks(const Level& level, const HitBatch& hits, int depth,
         uint8_t *const count = out.segments.count, *const overflow = out.segments.overflow;
         const int capacity = out.segments.capacity;
         std::size_t used = *out.segments.used;
+        uint32_t last = used > 0 ? rayOf[used - 1] : 0;
+        bool unordered = false;
         for (std::size_t i = 0; i < n; ++i) {
             const uint32_t owner = owners[i];
             if (count[owner] >= capacity) {
@@ -328,8 +330,11 @@ void TraceKernel::keepBooks(const Level& level, const HitBatch& hits, int depth,
             const Vec3 o(ox[i], oy[i], oz[i]), d(dx[i], dy[i], dz[i]);
             data[used] = slots[i] != kNoSlot ? TreeSegment{o, o + d * t[i], 0u} : TreeSegment{o, d, 1u};
             rayOf[used++] = owner;
+            unordered |= owner < last;
+            last = owner;
         }
         *out.segments.used = used;
+        if (unordered) *out.segments.unordered = true;
     }
     PrimaryInfo* const primary = out.primary;
     if (!primary) return;

@@ -33,6 +33,7 @@ struct PerRayLists {
     T* data = nullptr;
     uint32_t* ray = nullptr;  ///< The ray of each appended item.
     std::size_t* used = nullptr;
+    bool* unordered = nullptr;  ///< Set when an item's ray is below the one before it.
     int capacity = 0;
     uint8_t* count = nullptr;
     uint8_t* overflow = nullptr;
@@ -44,6 +45,7 @@ struct PerRayLists {
         if (c < capacity) {
             ++c;
             const std::size_t at = (*used)++;
+            if (at > 0 && r < ray[at - 1]) *unordered = true;
             data[at] = value;
             ray[at] = r;
         } else {
@@ -59,6 +61,7 @@ struct PerRayStorage {
     Items appended;  ///< In the order the trace made them.
     std::vector<uint32_t, DefaultInitAllocator<uint32_t>> ray;
     std::size_t used = 0;
+    bool unordered = false;
     Items items;  ///< Grouped by ray when `appended` is not.
     std::vector<uint32_t> first;  ///< Ray i's items are of(i)[0, count[i]): [first[i], first[i + 1]).
     std::vector<uint8_t> count, overflow;
@@ -69,7 +72,8 @@ struct PerRayStorage {
         if (appended.size() < most) appended.resize(most), ray.resize(most);
         count.resize(n), overflow.resize(n);
         used = 0;
-        return {appended.data(), ray.data(), &used, capacity, count.data(), overflow.data()};
+        unordered = false;
+        return {appended.data(), ray.data(), &used, &unordered, capacity, count.data(), overflow.data()};
     }
     /// After the lists are written: each ray's items together, in the order they were
     /// appended (a stable counting sort by ray).
@@ -79,25 +83,18 @@ struct PerRayStorage {
         uint32_t at = 0;
         for (std::size_t i = 0; i < n; ++i) first[i] = at, at += count[i];
         first[n] = at;
-        grouped_ = appended.data();
-        for (std::size_t k = 1; k < used; ++k) {
-            if (ray[k] >= ray[k - 1]) continue;
-            // Out of order (a deeper level's items after a later ray's): scattered to their
-            // rays' places. A tree of one level is in order already and is not copied.
-            items.resize(used);
-            thread_local std::vector<uint32_t> next;
-            next.assign(first.begin(), first.end() - 1);
-            for (std::size_t j = 0; j < used; ++j) items[next[ray[j]]++] = appended[j];
-            grouped_ = items.data();
-            break;
-        }
+        if (!unordered) return;  // A tree of one level: in ray order already, not copied.
+        // Out of order (a deeper level's items after a later ray's): scattered to their rays'
+        // places.
+        items.resize(used);
+        thread_local std::vector<uint32_t> next;
+        next.assign(first.begin(), first.end() - 1);
+        for (std::size_t j = 0; j < used; ++j) items[next[ray[j]]++] = appended[j];
     }
     /// Ray r's items (count[r] of them), after group().
-    const T* of(std::size_t r) const { return grouped_ + first[r]; }
-
-private:
-    const T* grouped_ = nullptr;
+    const T* of(std::size_t r) const { return (unordered ? items : appended).data() + first[r]; }
 };
+
 /// Where the results of camera ray i go. Only `color` is required.
 struct TraceOutput {
     Color* color = nullptr;

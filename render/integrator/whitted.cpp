@@ -26,14 +26,15 @@ Color WhittedIntegrator::traceCamera(const Ray& ray, uint32_t seed, TraceCounter
     // One ray: its lists, appended densely, are the sinks as they are (every item is ray 0's).
     uint32_t rayOf[kSinkLimit];
     std::size_t records = 0, segmentsUsed = 0;
+    bool unordered = false;  // One ray: never.
     TraceOutput out;
     out.color = &color;
     out.primary = &info;
     if (sink && sink->capacity > 0)
-        out.records = {sink->data, rayOf, &records, std::min(sink->capacity, kSinkLimit),
+        out.records = {sink->data, rayOf, &records, &unordered, std::min(sink->capacity, kSinkLimit),
                        &recordCount, &recordOverflow};
     if (segments && segments->capacity > 0)
-        out.segments = {segments->data, rayOf, &segmentsUsed,
+        out.segments = {segments->data, rayOf, &segmentsUsed, &unordered,
                         std::min(segments->capacity, kSinkLimit), &segmentCount, &segmentOverflow};
     kernel_->trace(CameraBatch{&ray.origin, &ray.dir, &seed, 1, true}, out, counters);
     if (primary) *primary = info;

@@ -107,6 +107,19 @@ bool baseTile(const TileInput& in, TileResult& out) {
     const auto deferred = [&](std::size_t i) {
         return state[i] == kInteractive && (flags[i] & kDeferredValid);
     };
+    if (f.tileStates[std::size_t(in.job.tile)][kStale] == uint32_t(r.area())) {
+        // Every pixel stale (a camera move, a new frame): all traced, none resolved, and
+        // nothing per pixel to decide (this tile's counts only its own commit writes).
+        const std::size_t n = std::size_t(r.x1 - r.x0);
+        for (int y = r.y0; y < r.y1; ++y) {
+            const std::size_t i0 = in.index(r.x0, y);
+            const std::size_t k = out.traced.addCentreRun(in.camera, in.columns, r.x0, y, n, i0);
+            uint8_t* extra = out.traced.extra.data() + k;
+            for (std::size_t j = 0; j < n; ++j) extra[j] = uint8_t(flags[i0 + j] & kTracedLastUpdate);
+        }
+        out.tracedState = in.doneState();
+        return out.traced.trace(in.kernel, false, true, in.counters, in.stale);
+    }
     for (int y = r.y0; y < r.y1; ++y) {
         for (int x = r.x0; x < r.x1; ++x) {
             const std::size_t i = in.index(x, y);
