@@ -66,8 +66,30 @@ RenderSession::~RenderSession() {
 }
 
 void RenderSession::setObserver(SessionObserver* observer) {
-    std::lock_guard lock(mutex_);
+    std::unique_lock lock(mutex_);
+    // Between passes, with no call to the observer under way: then the workers' next reads of
+    // observer_ come after this lock is released (a pass starts under it).
+    done_.wait(lock, [&] { return !running_ && notifying_ == 0; });
     observer_ = observer;
+}
+
+template <class Call>
+void RenderSession::notifyObserver(std::unique_lock<std::mutex>& lock, Call&& call) {
+    SessionObserver* observer = observer_;
+    ++notifying_;
+    lock.unlock();
+    done_.notify_all();
+    try {
+        if (observer) call(*observer);
+    } catch (...) {
+        lock.lock();
+        --notifying_;
+        done_.notify_all();
+        throw;
+    }
+    lock.lock();
+    --notifying_;
+    done_.notify_all();
 }
 
 void RenderSession::setThreads(int threads) {
@@ -124,14 +146,10 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
     try {
         copy.emplace(doc);
     } catch (...) {
-        SessionObserver* observer = nullptr;
-        uint64_t current = 0;
-        {
-            std::lock_guard lock(mutex_);
-            observer = observer_;
-            current = postedGeneration_;
-        }
-        if (observer) observer->error(failureMessage(std::current_exception()));
+        const std::string message = failureMessage(std::current_exception());
+        std::unique_lock lock(mutex_);
+        const uint64_t current = postedGeneration_;
+        notifyObserver(lock, [&](SessionObserver& o) { o.error(message); });
         return current;
     }
     uint64_t gen;
@@ -193,10 +211,8 @@ void RenderSession::applyPendingLocked(std::unique_lock<std::mutex>& lock) {
     if (failure) {
         // The document applied last stays; its work goes on. Reported before waiters learn
         // of it.
-        SessionObserver* observer = observer_;
-        lock.unlock();
-        if (observer) observer->error(failureMessage(failure));
-        lock.lock();
+        const std::string message = failureMessage(failure);
+        notifyObserver(lock, [&](SessionObserver& o) { o.error(message); });
         applying_ = false;
         failedGeneration_ = std::max(failedGeneration_, gen);
         done_.notify_all();
@@ -348,7 +364,7 @@ bool RenderSession::waitUntilComplete(std::chrono::milliseconds timeout) {
     std::unique_lock lock(mutex_);
     return done_.wait_for(lock, timeout, [&] {
         return hasDocument_ && !pendingDoc_ && !applying_ && !releasePending_ && !running_ &&
-               !pendingResize_ && !frame_.anyBelow(kFinal);
+               notifying_ == 0 && !pendingResize_ && !frame_.anyBelow(kFinal);
     });
 }
 
@@ -400,11 +416,7 @@ void RenderSession::run() {
                 frame_ = DeepFrame{};
             }
             const uint64_t failed = generation_.load();
-            SessionObserver* observer = observer_;
-            lock.unlock();
-            done_.notify_all();
-            if (observer) observer->error(message);
-            lock.lock();
+            notifyObserver(lock, [&](SessionObserver& o) { o.error(message); });
             wake_.wait(lock, [&] { return stop_ || pendingDoc_ || generation_.load() != failed; });
             if (stop_) return;
         }
@@ -484,15 +496,11 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         ++stats_.passes;
         const bool complete = !info.cancelled && !pendingDoc_ && !releasePending_ && !pendingResize_ &&
                               !frame_.anyBelow(kFinal);
-        SessionObserver* observer = observer_;
         const uint64_t gen = generation_.load();
-        lock.unlock();
-        done_.notify_all();
-        if (observer) {
-            observer->passDone(info);
-            if (complete && gen == plan.generation) observer->frameComplete(gen);
-        }
-        lock.lock();
+        notifyObserver(lock, [&](SessionObserver& o) {
+            o.passDone(info);
+            if (complete && gen == plan.generation) o.frameComplete(gen);
+        });
     }
 }
 

@@ -64,7 +64,10 @@ public:
     RenderSession(const RenderSession&) = delete;
     RenderSession& operator=(const RenderSession&) = delete;
 
-    /// Sets the observer (may be null). Call before the first update or while idle.
+    /// Sets the observer (may be null). Waits until no pass runs and no call to the old
+    /// observer is under way, so the old one may be destroyed when this returns; meant for
+    /// before the first update or while idle (it waits for the session to be between passes).
+    /// Not from inside an observer callback.
     void setObserver(SessionObserver* observer);
     void setThreads(int threads);
     void setPolicy(const InteractionPolicy& policy);
@@ -97,7 +100,8 @@ public:
     /// Waits until a pass of `generation` (or later) has completed uncancelled.
     bool waitForPass(uint64_t generation, std::chrono::milliseconds timeout,
                      PassInfo* info = nullptr);
-    /// Waits until every pixel is final for the current generation.
+    /// Waits until every pixel is final for the current generation and the observer's calls
+    /// for it (passDone, frameComplete) have returned.
     bool waitUntilComplete(std::chrono::milliseconds timeout);
 
     /// Runs `f(frame, snapshot)` with tile commits held off; keep it short (copy what you need).
@@ -219,6 +223,14 @@ private:
     int passLevel_ = -1;  ///< Its governor level (-1: not governed).
     SessionStats stats_;
     SessionObserver* observer_ = nullptr;
+    /// Calls to the observer under way outside mutex_ from the scheduler or update(): what
+    /// waitUntilComplete() and setObserver() wait for. Workers' tileDone calls are inside a
+    /// pass (running_).
+    int notifying_ = 0;
+    /// Calls `call(observer)` with mutex_ (held by `lock`) released, counted in notifying_;
+    /// waiters are woken before and after it.
+    template <class Call>
+    void notifyObserver(std::unique_lock<std::mutex>& lock, Call&& call);
 
     std::unique_ptr<BackgroundArena> arena_;  ///< Its tracers run below the GUI thread.
     /// The arena's size for a thread count (0: the machine's).
