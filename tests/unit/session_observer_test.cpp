@@ -1,4 +1,5 @@
-// What the session promises about its observer's calls: waitUntilComplete() returns after the
+// What the session promises about its observer's calls (named RenderSession* so the
+// ThreadSanitizer stage of `setup.sh test` runs them): waitUntilComplete() returns after the
 // calls for the completed frame have returned, and setObserver() after any call to the old
 // observer, so the caller may destroy it then.
 #include <gtest/gtest.h>
@@ -35,7 +36,7 @@ private:
     }
 };
 
-TEST(SessionObserver, WaitUntilComplete_ReturnsAfterTheObserversCallsForTheFrame) {
+TEST(RenderSessionObserver, WaitUntilComplete_ReturnsAfterTheObserversCallsForTheFrame) {
     SlowObserver observer;
     RenderSession session(2);
     session.setObserver(&observer);
@@ -46,7 +47,7 @@ TEST(SessionObserver, WaitUntilComplete_ReturnsAfterTheObserversCallsForTheFrame
     session.setObserver(nullptr);
 }
 
-TEST(SessionObserver, SetObserver_WaitsForACallToTheOldOneUnderWay_ThenItMayGo) {
+TEST(RenderSessionObserver, SetObserver_WaitsForACallToTheOldOneUnderWay_ThenItMayGo) {
     auto observer = std::make_unique<SlowObserver>();
     RenderSession session(2);
     session.setObserver(observer.get());
