@@ -12,6 +12,7 @@
 #include "integrator/face_hits.h"
 #include "integrator/light_sampling.h"
 #include "integrator/sampling.h"
+#include "integrator/trace_level.h"
 
 namespace rs {
 
@@ -30,74 +31,6 @@ constexpr std::size_t kLevelCap = std::size_t(1) << 18;
 constexpr std::size_t kSampleCap = 1024;
 
 }  // namespace
-
-/// One level's rays as structure of arrays. The arrays only grow (reserve), and push writes
-/// each field by index: no per-field capacity check, no allocation once they have grown.
-struct TraceKernel::Level {
-    ScratchVector<float> ox, oy, oz, dx, dy, dz, tmax, weight;
-    ScratchVector<uint32_t> seed, owner;
-    std::size_t count = 0;
-
-    std::size_t size() const { return count; }
-    void clear() { count = 0; }
-    /// Room for `n` rays in all, so that push may be called until size() == n.
-    void reserve(std::size_t n) {
-        if (n <= ox.size()) return;
-        const std::size_t grown = std::max(n, 2 * ox.size());
-        for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tmax, &weight}) v->resize(grown);
-        seed.resize(grown);
-        owner.resize(grown);
-    }
-    /// Appends a ray; reserve() must have made room for it.
-    void push(const Vec3& o, const Vec3& d, float w, uint32_t s, uint32_t who) {
-        const std::size_t i = count++;
-        ox[i] = o.x, oy[i] = o.y, oz[i] = o.z;
-        dx[i] = d.x, dy[i] = d.y, dz[i] = d.z;
-        tmax[i] = kInfinity;
-        weight[i] = w;
-        seed[i] = s;
-        owner[i] = who;
-    }
-    /// Camera rays [begin, end) of `rays` as the level (weight 1; owner: index in `rays`;
-    /// seeds of 0 when `rays.seed` is null),
-    /// written field by field through local pointers.
-    void setCamera(const CameraBatch& rays, std::size_t begin, std::size_t end) {
-        const std::size_t n = end - begin;
-        reserve(n);
-        float *pox = ox.data(), *poy = oy.data(), *poz = oz.data();
-        float *pdx = dx.data(), *pdy = dy.data(), *pdz = dz.data();
-        for (std::size_t j = 0; j < n; ++j) {
-            const Vec3 &o = rays.origin[begin + j], &d = rays.dir[begin + j];
-            pox[j] = o.x, poy[j] = o.y, poz[j] = o.z;
-            pdx[j] = d.x, pdy[j] = d.y, pdz[j] = d.z;
-        }
-        std::fill_n(tmax.data(), n, kInfinity);
-        std::fill_n(weight.data(), n, 1.0f);
-        if (rays.seed)
-            std::copy_n(rays.seed + begin, n, seed.data());
-        else
-            std::fill_n(seed.data(), n, 0u);
-        for (std::size_t j = 0; j < n; ++j) owner[j] = uint32_t(begin + j);
-        count = n;
-    }
-    void append(const Level& from, std::size_t begin, std::size_t end) {
-        reserve(count + (end - begin));
-        auto copy = [&](auto& to, const auto& src) {
-            std::copy(src.begin() + std::ptrdiff_t(begin), src.begin() + std::ptrdiff_t(end),
-                      to.begin() + std::ptrdiff_t(count));
-        };
-        copy(ox, from.ox), copy(oy, from.oy), copy(oz, from.oz);
-        copy(dx, from.dx), copy(dy, from.dy), copy(dz, from.dz);
-        copy(tmax, from.tmax), copy(weight, from.weight);
-        copy(seed, from.seed), copy(owner, from.owner);
-        count += end - begin;
-    }
-    RayBatch batch(bool coherent) const {
-        RayBatch b{ox.data(), oy.data(), oz.data(), dx.data(), dy.data(), dz.data(), tmax.data(), size()};
-        b.coherent = coherent;
-        return b;
-    }
-};
 
 /// A level's shading points as structure of arrays: where and how each is lit (the light
 /// lanes read these), and what its sum goes back to.
@@ -298,67 +231,6 @@ bool TraceKernel::traceLevels(Workspace& ws, Level& start, int depth, const Trac
         ++depth;
     }
     return true;
-}
-
-void TraceKernel::keepBooks(const Level& level, const HitBatch& hits, int depth,
-                            const TraceOutput& out) const {
-    // Every array through a local pointer: the byte-sized stores (counts, flags) may alias
-    // anything, so the compiler would reload each pointer from its vector after each one.
-    const std::size_t n = level.size();
-    const uint32_t* const owners = level.owner.data();
-    const uint32_t* const slots = hits.slot;
-    const float* const t = hits.t;
-    if (uint32_t* const rays = out.rays; rays && depth > 0)  // trace() counted the camera rays.
-        for (std::size_t i = 0; i < n; ++i) ++rays[owners[i]];
-    if (out.segments && depth > 0) {
-        const float *ox = level.ox.data(), *oy = level.oy.data(), *oz = level.oz.data();
-        const float *dx = level.dx.data(), *dy = level.dy.data(), *dz = level.dz.data();
-        TreeSegment* const data = out.segments.data;
-        uint32_t* const rayOf = out.segments.ray;
-        uint8_t *const count = out.segments.count, *const overflow = out.segments.overflow;
-        const int capacity = out.segments.capacity;
-        std::size_t used = *out.segments.used;
-        uint32_t last = used > 0 ? rayOf[used - 1] : 0;
-        bool unordered = false;
-        for (std::size_t i = 0; i < n; ++i) {
-            const uint32_t owner = owners[i];
-            if (count[owner] >= capacity) {
-                overflow[owner] = 1;
-                continue;
-            }
-            ++count[owner];
-            const Vec3 o(ox[i], oy[i], oz[i]), d(dx[i], dy[i], dz[i]);
-            data[used] = slots[i] != kNoSlot ? TreeSegment{o, o + d * t[i], 0u} : TreeSegment{o, d, 1u};
-            rayOf[used++] = owner;
-            unordered |= owner < last;
-            last = owner;
-        }
-        *out.segments.used = used;
-        if (unordered) *out.segments.unordered = true;
-    }
-    PrimaryInfo* const primary = out.primary;
-    if (!primary) return;
-    const uint8_t* const specular = specular_.data();
-    if (depth == 0) {
-        const float *nx = hits.nx, *ny = hits.ny, *nz = hits.nz;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (slots[i] == kNoSlot) continue;
-            uint32_t materialIndex;
-            ObjectId id;
-            scene_.describe(slots[i], materialIndex, id);
-            primary[owners[i]] = PrimaryInfo{id, t[i], Vec3(nx[i], ny[i], nz[i]),
-                                             specular[materialIndex] != 0};
-        }
-        return;
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-        if (slots[i] == kNoSlot) continue;
-        uint32_t materialIndex;
-        ObjectId id;
-        scene_.describe(slots[i], materialIndex, id);
-        bool& touched = primary[owners[i]].touchedSpecular;
-        touched = touched | (specular[materialIndex] != 0);
-    }
 }
 
 template <bool Bookkeeping, bool AsDiffuse>
