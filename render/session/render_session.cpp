@@ -79,17 +79,17 @@ void RenderSession::notifyObserver(std::unique_lock<std::mutex>& lock, Call&& ca
     ++notifying_;
     lock.unlock();
     done_.notify_all();
-    try {
-        if (observer) call(*observer);
-    } catch (...) {
-        lock.lock();
-        --notifying_;
-        done_.notify_all();
-        throw;
-    }
-    lock.lock();
-    --notifying_;
-    done_.notify_all();
+    // Relocked and uncounted on the way out, also when the call throws.
+    struct Done {
+        RenderSession& session;
+        std::unique_lock<std::mutex>& lock;
+        ~Done() {
+            lock.lock();
+            --session.notifying_;
+            session.done_.notify_all();
+        }
+    } done{*this, lock};
+    if (observer) call(*observer);
 }
 
 void RenderSession::setThreads(int threads) {
