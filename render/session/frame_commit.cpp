@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cstdint>
 
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
 #include "session/deep_frame.h"
 #include "session/tile_output.h"
 #include "session/tile_pools.h"
@@ -19,18 +23,62 @@ void prefetchForWrite(const T* v, std::size_t n) {
         __builtin_prefetch(reinterpret_cast<const void*>(p), 1, 3);
 }
 
-/// An Aabb of points kept as six floats, which the compiler holds in registers (an Aabb's
-/// vectors it kept on the stack, a load and a store per point and axis); the same
-/// comparisons as Aabb::expand, so the same bits.
+#if defined(__SSE2__)
+/// A Vec3 as the first three lanes of a vector (the fourth 0), read with three loads.
+inline __m128 lanes(const Vec3& v) {
+    const __m128 xy = _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&v.x)));
+    return _mm_movelh_ps(xy, _mm_load_ss(&v.z));
+}
+#endif
+
+/// An Aabb of points held in registers (an Aabb's vectors the compiler kept on the stack, a
+/// load and a store per point and axis), with Aabb::expand's comparisons (p < min ? p : min,
+/// max < p ? p : max: what minps and maxps compute), so the same bits.
 struct BoxOfPoints {
-    float x0 = kInfinity, y0 = kInfinity, z0 = kInfinity;
-    float x1 = -kInfinity, y1 = -kInfinity, z1 = -kInfinity;
-    void add(const Vec3& p) {
-        x0 = p.x < x0 ? p.x : x0, y0 = p.y < y0 ? p.y : y0, z0 = p.z < z0 ? p.z : z0;
-        x1 = x1 < p.x ? p.x : x1, y1 = y1 < p.y ? p.y : y1, z1 = z1 < p.z ? p.z : z1;
+#if defined(__SSE2__)
+    __m128 lo = _mm_set1_ps(kInfinity), hi = _mm_set1_ps(-kInfinity);
+    void add(__m128 p) { lo = _mm_min_ps(p, lo), hi = _mm_max_ps(p, hi); }
+    void add(const Vec3& p) { add(lanes(p)); }
+    /// The centre of a bound of radius 0, unless its radius is < 0.
+    void addBound(const glm::vec4& b) {
+        const __m128 v = _mm_loadu_ps(&b.x);
+        if (_mm_comige_ss(_mm_shuffle_ps(v, v, 3), _mm_setzero_ps())) add(v);
     }
-    Aabb box() const { return Aabb{Vec3(x0, y0, z0), Vec3(x1, y1, z1)}; }
+    Aabb box() const {
+        alignas(16) float l[4], h[4];
+        _mm_store_ps(l, lo), _mm_store_ps(h, hi);
+        return Aabb{Vec3(l[0], l[1], l[2]), Vec3(h[0], h[1], h[2])};
+    }
+#else
+    Aabb b;
+    void add(const Vec3& p) { b.expand(p); }
+    void addBound(const glm::vec4& v) {
+        if (v.w >= 0.0f) b.expand(Vec3(v));
+    }
+    Aabb box() const { return b; }
+#endif
 };
+
+#if defined(__SSE2__)
+/// The hit point of a camera ray that hit something (RayList::hitBoundOf's centre), as one
+/// multiply and one add a lane: the same bits.
+inline __m128 hitPoint(const Vec3& origin, const Vec3& dir, float depth) {
+    return _mm_add_ps(lanes(origin), _mm_mul_ps(lanes(dir), _mm_set1_ps(depth)));
+}
+#endif
+
+/// RayList::hitBoundOf(origin, dir, info) into *out: the same bits, the hit point's lanes
+/// computed together (a hit's depth is finite, so its fourth lane is 0 * depth + 0 = 0).
+inline void storeHitBound(glm::vec4* out, const Vec3& origin, const Vec3& dir,
+                          const PrimaryInfo& info) {
+#if defined(__SSE2__)
+    const __m128 bound = info.id == kNoObject ? _mm_setr_ps(0.0f, 0.0f, 0.0f, -1.0f)
+                                              : hitPoint(origin, dir, info.depth);
+    _mm_storeu_ps(&out->x, bound);
+#else
+    *out = RayList::hitBoundOf(origin, dir, info);
+#endif
+}
 
 /// The frame's columns a run of camera rays writes besides colour, cost and state, through
 /// local pointers: the byte-sized stores (flags) may alias anything, which would make the
@@ -61,7 +109,7 @@ struct TracedColumns {
             if constexpr (Records) f |= recordOverflow[j] ? 0 : kDeferredValid;
             if constexpr (Segments) f |= segmentOverflow[j] ? kTreeUnknown : 0;
             flags[j] = f;
-            bound[j] = RayList::hitBoundOf(origin[j], dir[j], p);
+            storeHitBound(bound + j, origin[j], dir[j], p);
         }
     }
 };
@@ -201,33 +249,33 @@ public:
     }
     bool whole() const { return whole_; }
     /// Adds pixels [x0, x0 + n) of row y, which rays [k0, k0 + n) of `list` wrote, as
-    /// summarizeBlock reads them: their hit points (radius 0), and for a pixel whose tree met
-    /// a mirror or glass, whether its tree is unknown and its segments. Taken from the list,
-    /// which is in the cache, not read back from the frame's lines just written (the same
-    /// bits: min and max).
-    void includeRun(int x0, int y, const RayList& list, std::size_t k0, std::size_t n) {
-        const PrimaryInfo* info = list.info.data() + k0;
-        const Vec3* origin = list.origin.data() + k0;
-        const Vec3* dir = list.dir.data() + k0;
+    /// summarizeBlock reads them: their hit bounds and flags (the run's `bound` and `flags`,
+    /// just written: still in the cache, one vector load a pixel) and, for a pixel whose tree
+    /// met a mirror or glass, its segments (from the list, grouped by ray: a block's are one
+    /// stretch).
+    void includeRun(int x0, int y, const glm::vec4* bound, const uint8_t* flags,
+                    const RayList& list, std::size_t k0, std::size_t n) {
         const bool withSegments = list.withSegments;
-        const uint8_t* extra = list.extra.data() + k0;
-        const uint8_t* overflow = withSegments ? list.segments.overflow.data() + k0 : nullptr;
         const uint32_t* first = withSegments ? list.segments.first.data() + k0 : nullptr;
         const TreeSegment* items = withSegments ? list.segments.of(0) : nullptr;
         for (std::size_t j0 = 0; j0 < n;) {
             const int x = x0 + int(j0);
             const std::size_t end =
                 std::min(n, j0 + std::size_t(DeepFrame::kBlock - (x - r_.x0) % DeepFrame::kBlock));
-            // The hit points, and which pixels met a mirror or glass with a tree not known.
+            // The hit points (a camera ray's bound has radius 0, or < 0 for a miss), and
+            // which pixels met a mirror or glass with a tree not known.
             BoxOfPoints hits;
-            bool specular = false, unknown = false;
+            uint8_t any = 0;
             for (std::size_t j = j0; j < end; ++j) {
-                const bool s = info[j].touchedSpecular;
-                specular |= s;
-                unknown |= s && ((extra[j] & kTreeUnknown) || (overflow && overflow[j]));
-                if (info[j].id == kNoObject) continue;  // hitBoundOf's radius < 0: a miss.
-                hits.add(origin[j] + dir[j] * info[j].depth);
+                any |= flags[j];
+                hits.addBound(bound[j]);
             }
+            const bool specular = any & kTouchedSpecular;
+            bool unknown = false;
+            if (any & kTreeUnknown)
+                for (std::size_t j = j0; j < end; ++j)
+                    unknown |= (flags[j] & (kTouchedSpecular | kTreeUnknown)) ==
+                               (kTouchedSpecular | kTreeUnknown);
             TileSummary& sum = sums_[blockOf(x, y)];
             sum.hitBox.expand(hits.box());
             if (specular) {
@@ -321,12 +369,16 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     const RayList& traced = t.traced;
     const bool writeBase = t.tracedState >= kBase && t.keepBase;
     const bool whole = touched.whole();
+    const std::size_t rowWidth = std::size_t(t.rect.x1 - t.rect.x0);
     for (std::size_t k0 = 0; k0 < traced.size();) {
         const std::size_t i0 = traced.pixel[k0];
         // Frames hold at most kMaxImagePixels (< 2^32): one 32-bit division, not two 64-bit.
         const uint32_t y = uint32_t(i0) / uint32_t(width), x0 = uint32_t(i0) - y * uint32_t(width);
         const std::size_t rowLeft = std::size_t(uint32_t(width) - x0);
         std::size_t n = 1;  // The run ends with the row.
+        if (wholeTile && k0 + rowWidth <= traced.size() && rowWidth <= rowLeft &&
+            traced.pixel[k0 + rowWidth - 1] == i0 + rowWidth - 1)
+            n = rowWidth;  // Row-major, one ray a pixel: the run is the tile's row.
         while (n < rowLeft && k0 + n < traced.size() && traced.pixel[k0 + n] == i0 + n) ++n;
         const auto from = std::ptrdiff_t(k0), to = std::ptrdiff_t(i0), count = std::ptrdiff_t(n);
         if (wholeTile && y + 1 < uint32_t(t.rect.y1)) {
@@ -368,7 +420,8 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         std::fill_n(state.begin() + to, count, t.tracedState);
         segments.replaceRun(i0, n, traced, k0);
         touched.addRun(int(x0), int(y), int(n));
-        if (whole) touched.includeRun(int(x0), int(y), traced, k0, n);
+        if (whole)
+            touched.includeRun(int(x0), int(y), out.bound, out.flags, traced, k0, n);
         k0 += n;
     }
     if (wholeTile && traced.size() > 0) {
