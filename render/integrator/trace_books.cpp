@@ -21,28 +21,12 @@ void TraceKernel::keepBooks(const Level& level, const HitBatch& hits, int depth,
     if (out.segments && depth > 0) {
         const float *ox = level.ox.data(), *oy = level.oy.data(), *oz = level.oz.data();
         const float *dx = level.dx.data(), *dy = level.dy.data(), *dz = level.dz.data();
-        TreeSegment* const data = out.segments.data;
-        uint32_t* const rayOf = out.segments.ray;
-        uint8_t *const count = out.segments.count, *const overflow = out.segments.overflow;
-        const int capacity = out.segments.capacity;
-        std::size_t used = *out.segments.used;
-        uint32_t last = used > 0 ? rayOf[used - 1] : 0;
-        bool unordered = false;
+        PerRayAppender<TreeSegment> segments(out.segments);
         for (std::size_t i = 0; i < n; ++i) {
-            const uint32_t owner = owners[i];
-            if (count[owner] >= capacity) {
-                overflow[owner] = 1;
-                continue;
-            }
-            ++count[owner];
             const Vec3 o(ox[i], oy[i], oz[i]), d(dx[i], dy[i], dz[i]);
-            data[used] = slots[i] != kNoSlot ? TreeSegment{o, o + d * t[i], 0u} : TreeSegment{o, d, 1u};
-            rayOf[used++] = owner;
-            unordered |= owner < last;
-            last = owner;
+            segments.append(owners[i], slots[i] != kNoSlot ? TreeSegment{o, o + d * t[i], 0u}
+                                                           : TreeSegment{o, d, 1u});
         }
-        *out.segments.used = used;
-        if (unordered) *out.segments.unordered = true;
     }
     PrimaryInfo* const primary = out.primary;
     if (!primary) return;

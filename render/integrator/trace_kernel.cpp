@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <optional>
 
 #include "core/scratch_arena.h"
 #include "integrator/centre_shadows.h"
@@ -425,6 +426,8 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         const float *sumR = ws.sums.r.data(), *sumG = ws.sums.g.data(), *sumB = ws.sums.b.data();
         const Color* ambients = ambients_.data();
         Color* color = out.color;
+        std::optional<PerRayAppender<ShadingRecord>> records;
+        if (Bookkeeping && deferred && out.records) records.emplace(out.records);
         for (std::size_t j = first; j < end; ++j) {
             const uint32_t mi = pointMaterial[j], owner = pointOwner[j];
             const float weight = pointWeight[j], localWeight = materials[mi].localWeight;
@@ -432,11 +435,11 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                 const Color direct(sumR[j], sumG[j], sumB[j]);
                 color[owner] += weight * (localWeight * (ambients[mi] + direct));
                 // Shown unshadowed while moving; the record lets the shadows be added later.
-                if (Bookkeeping && deferred && out.records)
-                    out.records.append(owner, ShadingRecord{Vec3(sp.px[j], sp.py[j], sp.pz[j]),
-                                                            Vec3(sp.nx[j], sp.ny[j], sp.nz[j]),
-                                                            Vec3(sp.vx[j], sp.vy[j], sp.vz[j]),
-                                                            weight * localWeight, mi, pts.seed[j]});
+                if (Bookkeeping && records)
+                    records->append(owner, ShadingRecord{Vec3(sp.px[j], sp.py[j], sp.pz[j]),
+                                                         Vec3(sp.nx[j], sp.ny[j], sp.nz[j]),
+                                                         Vec3(sp.vx[j], sp.vy[j], sp.vz[j]),
+                                                         weight * localWeight, mi, pts.seed[j]});
             }
             if (AsDiffuse && pts.asDiffuse[j] > 0.0f) {
                 const Color direct(ws.lambertSums.r[j], ws.lambertSums.g[j], ws.lambertSums.b[j]);

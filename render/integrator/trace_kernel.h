@@ -40,18 +40,53 @@ struct PerRayLists {
 
     explicit operator bool() const { return data != nullptr; }
     void clear(std::size_t r) const { count[r] = 0, overflow[r] = 0; }
-    void append(uint32_t r, const T& value) const {
-        uint8_t& c = count[r];
-        if (c < capacity) {
-            ++c;
-            const std::size_t at = (*used)++;
-            if (at > 0 && r < ray[at - 1]) *unordered = true;
-            data[at] = value;
-            ray[at] = r;
-        } else {
-            overflow[r] = 1;
-        }
+};
+
+/// Appends to PerRayLists: the one rule for it (an item a ray up to `capacity`, then the
+/// ray's overflow flag; "unordered" once a ray comes below the one before it). The number of
+/// items and the latest ray are held here, in registers across a loop of appends, and
+/// written back by the destructor: through the lists' pointers, every byte-sized count store
+/// would make the compiler reload them.
+template <class T>
+class PerRayAppender {
+public:
+    explicit PerRayAppender(const PerRayLists<T>& lists)
+        : data_(lists.data),
+          ray_(lists.ray),
+          count_(lists.count),
+          overflow_(lists.overflow),
+          capacity_(lists.capacity),
+          lists_(lists),
+          used_(*lists.used),
+          last_(used_ > 0 ? lists.ray[used_ - 1] : 0) {}
+    PerRayAppender(const PerRayAppender&) = delete;
+    PerRayAppender& operator=(const PerRayAppender&) = delete;
+    ~PerRayAppender() {
+        *lists_.used = used_;
+        if (unordered_) *lists_.unordered = true;
     }
+    void append(uint32_t r, const T& value) {
+        if (count_[r] >= capacity_) {
+            overflow_[r] = 1;
+            return;
+        }
+        ++count_[r];
+        data_[used_] = value;
+        ray_[used_++] = r;
+        unordered_ |= r < last_;
+        last_ = r;
+    }
+
+private:
+    T* const data_;
+    uint32_t* const ray_;
+    uint8_t* const count_;
+    uint8_t* const overflow_;
+    const int capacity_;
+    const PerRayLists<T>& lists_;
+    std::size_t used_;
+    uint32_t last_;
+    bool unordered_ = false;
 };
 
 /// Storage for PerRayLists of n rays, reused between calls (grown, never zero-filled).

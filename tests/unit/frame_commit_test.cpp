@@ -64,13 +64,17 @@ TileResult resultFor(const std::vector<std::size_t>& pixels, int salt, uint64_t 
     r.color.resize(n), r.info.resize(n), r.rays.resize(n);
     r.withSegments = true;
     const PerRayLists<TreeSegment> lists = r.segments.lists(n, kSegmentsPerPixel);
-    for (std::size_t k = 0; k < n; ++k) {
-        const Made m = made(r.pixel[k], salt);
-        r.color[k] = m.color;
-        r.info[k] = m.info;
-        r.rays[k] = m.rays;
-        lists.clear(k);
-        for (int s = 0; s < m.segments; ++s) lists.append(uint32_t(k), segmentOf(r.pixel[k], salt, s));
+    {
+        PerRayAppender<TreeSegment> segments(lists);
+        for (std::size_t k = 0; k < n; ++k) {
+            const Made m = made(r.pixel[k], salt);
+            r.color[k] = m.color;
+            r.info[k] = m.info;
+            r.rays[k] = m.rays;
+            lists.clear(k);
+            for (int s = 0; s < m.segments; ++s)
+                segments.append(uint32_t(k), segmentOf(r.pixel[k], salt, s));
+        }
     }
     r.segments.group();
     return t;
@@ -177,9 +181,13 @@ TileResult withRecords(const std::vector<std::size_t>& pixels, int salt, uint64_
     RayList& r = t.traced;
     r.withRecords = true;
     const PerRayLists<ShadingRecord> lists = r.records.lists(r.size(), kRecordsPerPixel);
-    for (std::size_t k = 0; k < r.size(); ++k) {
-        lists.clear(k);
-        for (int j = 0; j < int(r.pixel[k] % 3) + 1; ++j) lists.append(uint32_t(k), recordOf(r.pixel[k], salt, j));
+    {
+        PerRayAppender<ShadingRecord> records(lists);
+        for (std::size_t k = 0; k < r.size(); ++k) {
+            lists.clear(k);
+            for (int j = 0; j < int(r.pixel[k] % 3) + 1; ++j)
+                records.append(uint32_t(k), recordOf(r.pixel[k], salt, j));
+        }
     }
     r.records.group();
     return t;
