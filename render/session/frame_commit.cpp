@@ -2,6 +2,7 @@
 // buffers each kind of result writes, the record and segment pools, the block summaries).
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -24,10 +25,12 @@ void prefetchForWrite(const T* v, std::size_t n) {
 }
 
 #if defined(__SSE2__)
-/// A Vec3 as the first three lanes of a vector (the fourth 0), read with three loads.
+/// A Vec3 as the first three lanes of a vector (the fourth 0), read with two loads (x and y
+/// as one 8-byte load: copied, since a Vec3 is only 4-byte aligned).
 inline __m128 lanes(const Vec3& v) {
-    const __m128 xy = _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&v.x)));
-    return _mm_movelh_ps(xy, _mm_load_ss(&v.z));
+    double xy;
+    std::memcpy(&xy, &v.x, sizeof xy);
+    return _mm_movelh_ps(_mm_castpd_ps(_mm_set_sd(xy)), _mm_load_ss(&v.z));
 }
 #endif
 
