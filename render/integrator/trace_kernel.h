@@ -56,14 +56,15 @@ public:
           count_(lists.count),
           overflow_(lists.overflow),
           capacity_(lists.capacity),
-          lists_(lists),
+          usedOut_(lists.used),
+          unorderedOut_(lists.unordered),
           used_(*lists.used),
           last_(used_ > 0 ? lists.ray[used_ - 1] : 0) {}
     PerRayAppender(const PerRayAppender&) = delete;
     PerRayAppender& operator=(const PerRayAppender&) = delete;
     ~PerRayAppender() {
-        *lists_.used = used_;
-        if (unordered_) *lists_.unordered = true;
+        *usedOut_ = used_;
+        if (unordered_) *unorderedOut_ = true;
     }
     void append(uint32_t r, const T& value) {
         if (count_[r] >= capacity_) {
@@ -83,7 +84,8 @@ private:
     uint8_t* const count_;
     uint8_t* const overflow_;
     const int capacity_;
-    const PerRayLists<T>& lists_;
+    std::size_t* const usedOut_;  ///< Where the lists keep these (the destructor writes them).
+    bool* const unorderedOut_;
     std::size_t used_;
     uint32_t last_;
     bool unordered_ = false;

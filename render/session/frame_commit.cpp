@@ -2,12 +2,8 @@
 // buffers each kind of result writes, the record and segment pools, the block summaries).
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 
-#if defined(__SSE2__)
-#include <immintrin.h>
-#endif
-
+#include "core/vec_lanes.h"
 #include "session/deep_frame.h"
 #include "session/tile_output.h"
 #include "session/tile_pools.h"
@@ -23,16 +19,6 @@ void prefetchForWrite(const T* v, std::size_t n) {
     for (auto p = reinterpret_cast<std::uintptr_t>(v) & ~std::uintptr_t(63); p < last; p += 64)
         __builtin_prefetch(reinterpret_cast<const void*>(p), 1, 3);
 }
-
-#if defined(__SSE2__)
-/// A Vec3 as the first three lanes of a vector (the fourth 0), read with two loads (x and y
-/// as one 8-byte load: copied, since a Vec3 is only 4-byte aligned).
-inline __m128 lanes(const Vec3& v) {
-    double xy;
-    std::memcpy(&xy, &v.x, sizeof xy);
-    return _mm_movelh_ps(_mm_castpd_ps(_mm_set_sd(xy)), _mm_load_ss(&v.z));
-}
-#endif
 
 /// An Aabb of points held in registers (an Aabb's vectors the compiler kept on the stack, a
 /// load and a store per point and axis), with Aabb::expand's comparisons (p < min ? p : min,
@@ -61,27 +47,6 @@ struct BoxOfPoints {
     Aabb box() const { return b; }
 #endif
 };
-
-#if defined(__SSE2__)
-/// The hit point of a camera ray that hit something (RayList::hitBoundOf's centre), as one
-/// multiply and one add a lane: the same bits.
-inline __m128 hitPoint(const Vec3& origin, const Vec3& dir, float depth) {
-    return _mm_add_ps(lanes(origin), _mm_mul_ps(lanes(dir), _mm_set1_ps(depth)));
-}
-#endif
-
-/// RayList::hitBoundOf(origin, dir, info) into *out: the same bits, the hit point's lanes
-/// computed together (a hit's depth is finite, so its fourth lane is 0 * depth + 0 = 0).
-inline void storeHitBound(glm::vec4* out, const Vec3& origin, const Vec3& dir,
-                          const PrimaryInfo& info) {
-#if defined(__SSE2__)
-    const __m128 bound = info.id == kNoObject ? _mm_setr_ps(0.0f, 0.0f, 0.0f, -1.0f)
-                                              : hitPoint(origin, dir, info.depth);
-    _mm_storeu_ps(&out->x, bound);
-#else
-    *out = RayList::hitBoundOf(origin, dir, info);
-#endif
-}
 
 /// The frame's columns a run of camera rays writes besides colour, cost and state, through
 /// local pointers: the byte-sized stores (flags) may alias anything, which would make the
@@ -112,7 +77,7 @@ struct TracedColumns {
             if constexpr (Records) f |= recordOverflow[j] ? 0 : kDeferredValid;
             if constexpr (Segments) f |= segmentOverflow[j] ? kTreeUnknown : 0;
             flags[j] = f;
-            storeHitBound(bound + j, origin[j], dir[j], p);
+            bound[j] = RayList::hitBoundOf(origin[j], dir[j], p);
         }
     }
 };
