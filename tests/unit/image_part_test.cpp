@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstring>
 #include <filesystem>
 
@@ -84,8 +86,11 @@ bool sameBits(const Color& a, const Color& b) { return std::memcmp(&a, &b, sizeo
 class PartFiles : public ::testing::Test {
 protected:
     void SetUp() override {
+        // The process id too: two checkouts' suites running at once (CI beside a developer's
+        // run) would otherwise share the folder, and one's TearDown remove the other's parts.
         dir_ = fs::path(testing::TempDir()) /
-               ("raystudio-parts-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+               ("raystudio-parts-" + std::to_string(::getpid()) + "-" +
+                std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::create_directories(dir_);
     }
     void TearDown() override { fs::remove_all(dir_); }
