@@ -96,7 +96,7 @@ int runDrag(int argc, char** argv) {
     OptionSpec spec;
     spec.valued = {"--object",        "--to",     "--steps",     "--policy",     "--threads",
                    "--width",         "--height", "--max-depth", "--min-weight", "--shadow-samples",
-                   "--supersampling", "--engine"};
+                   "--supersampling", "--engine",   "--frames"};
     spec.flags = {"--verify", "--json"};
     Arguments args(argc, argv, 2, spec);
     const EngineKind engine = engineOption(args);
@@ -107,6 +107,7 @@ int runDrag(int argc, char** argv) {
     if (!to) throw UsageError{"missing --to X,Y,Z"};
     const Vec3 target = parseVec3(*to);
     const int steps = args.intValue("--steps", 1, 100000).value_or(30);
+    const int frameRounds = args.intValue("--frames", 1, 1000).value_or(5);
     const int threads = args.intValue("--threads", 1, 1024).value_or(0);
     const InteractionPolicy policy = parsePolicy(args.value("--policy").value_or("default"));
 
@@ -182,9 +183,8 @@ int runDrag(int argc, char** argv) {
     // same scene and size, interleaved so both see the same machine load; medians. Also the
     // CPU time each used (the process's, all threads): on a machine others load, what a
     // frame costs, where wall time also says how much of the machine it got.
-    constexpr int kFrameRounds = 5;
     std::vector<double> sessionFrames, imageFrames, sessionCpu, imageCpu;
-    for (int k = 0; k < kFrameRounds; ++k) {
+    for (int k = 0; k < frameRounds; ++k) {
         nudged.camera.target.x = doc.camera.target.x + (k % 2 ? -1e-3f : 1e-3f);
         const double sessionCpuStart = cpuMs();
         const auto frameStart = Clock::now();
@@ -222,12 +222,13 @@ int runDrag(int argc, char** argv) {
             "\"refine_ms\": %.3f, \"full_frame_ms\": %.3f, \"final_max_abs_diff\": %.3g, "
             "\"cancel_latency_ms\": %.3f, \"session_frame_ms\": %.3f, "
             "\"render_image_ms\": %.3f, \"session_frame_cpu_ms\": %.3f, "
-            "\"render_image_cpu_ms\": %.3f, \"governor_level_median\": %.1f, "
+            "\"render_image_cpu_ms\": %.3f, \"session_frames\": %d, "
+            "\"governor_level_median\": %.1f, "
             "\"step_cpu_ms_median\": %.3f, \"step_edit_ms_median\": %.3f, "
             "\"step_mark_ms_median\": %.3f, \"step_plan_ms_median\": %.3f, "
             "\"step_pass_ms_median\": %.3f}\n",
             stepMedian, fractionMedian, refineMs, full.ms, double(maxDiff), cancelMs,
-            sessionFrameMs, imageFrameMs, sessionCpuMs, imageCpuMs, levelMedian, phases.cpu,
+            sessionFrameMs, imageFrameMs, sessionCpuMs, imageCpuMs, frameRounds, levelMedian, phases.cpu,
             phases.edit, phases.mark, phases.plan, phases.pass);
     } else {
         std::printf("dragged '%s' in %d steps (%dx%d)\n", objectName->c_str(), steps,
@@ -250,11 +251,11 @@ int runDrag(int argc, char** argv) {
         std::printf(
             "  session frame         %10.2f ms  (renderImage %.2f ms, ratio %.3f; medians of %d)\n",
             sessionFrameMs, imageFrameMs, imageFrameMs > 0 ? sessionFrameMs / imageFrameMs : 0.0,
-            kFrameRounds);
+            frameRounds);
         std::printf(
             "  session frame CPU     %10.2f ms  (renderImage %.2f ms, ratio %.3f; medians of %d)\n",
             sessionCpuMs, imageCpuMs, imageCpuMs > 0 ? sessionCpuMs / imageCpuMs : 0.0,
-            kFrameRounds);
+            frameRounds);
         std::printf("  final max abs diff    %10.3g\n", double(maxDiff));
     }
     if (args.has("--verify") && maxDiff > 1e-5f) {

@@ -30,7 +30,7 @@ const char* const kUsage =
     "  drag SCENE --object NAME --to X,Y,Z [--steps N] [--policy default|none|FILE]\n"
     "             [--threads N] [--verify] [--json] [--width W] [--height H] [--max-depth D]\n"
     "             [--min-weight W] [--shadow-samples N] [--supersampling N]\n"
-    "             [--engine embree|builtin]\n"
+    "             [--engine embree|builtin] [--frames N]\n"
     "      drag an object through the interactive session, refine, compare with a full render\n"
     "  render SCENE --tile I/N -o PART.exr [--ids] [render options]\n"
     "      render part I of N (0-based band of rows) into a linear EXR that records its place\n"

@@ -167,6 +167,23 @@ TEST_F(CliTest, DragJson_ReportsTheSessionFrameAndRenderImageInWallAndCpuTime) {
     }
 }
 
+TEST_F(CliTest, DragFrames_SetsHowManySessionFramesAreTimedAndRejectsBadCounts) {
+    CliRun r = cli("drag " + kRoom + " --object 'blue ball' --to 0,1,-5 --steps 1" +
+                   " --threads 2 --width 16 --height 9 --frames 3 --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["session_frames"].get<int>(), 3) << r.out;
+    r = cli("drag " + kRoom + " --object 'blue ball' --to 0,1,-5 --steps 1 --width 16 --height 9");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("medians of 5"), std::string::npos) << r.out;  // the default
+    for (const char* bad : {"0", "-1", "1001", "x", ""}) {
+        r = cli("drag " + kRoom + " --object 'blue ball' --to 0,1,-5 --width 8 --height 8" +
+                " --frames '" + bad + "'");
+        EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.err;
+        EXPECT_NE(r.err.find("--frames"), std::string::npos) << r.err;
+        EXPECT_EQ(r.out, "") << bad;
+    }
+}
+
 TEST_F(CliTest, MinWeight_OutsideZeroToOne_Exits2NamingTheOption) {
     for (const char* bad : {"1", "1.5", "-0.1", "abc", "nan", "inf", "0.5x", ""}) {
         for (const char* command : {"render", "bench", "drag"}) {
