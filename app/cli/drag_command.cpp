@@ -96,7 +96,7 @@ int runDrag(int argc, char** argv) {
     OptionSpec spec;
     spec.valued = {"--object",        "--to",     "--steps",     "--policy",     "--threads",
                    "--width",         "--height", "--max-depth", "--min-weight", "--shadow-samples",
-                   "--supersampling", "--engine",   "--frames"};
+                   "--supersampling", "--engine", "--frames"};
     spec.flags = {"--verify", "--json"};
     Arguments args(argc, argv, 2, spec);
     const EngineKind engine = engineOption(args);
@@ -228,8 +228,8 @@ int runDrag(int argc, char** argv) {
             "\"step_mark_ms_median\": %.3f, \"step_plan_ms_median\": %.3f, "
             "\"step_pass_ms_median\": %.3f}\n",
             stepMedian, fractionMedian, refineMs, full.ms, double(maxDiff), cancelMs,
-            sessionFrameMs, imageFrameMs, sessionCpuMs, imageCpuMs, frameRounds, levelMedian, phases.cpu,
-            phases.edit, phases.mark, phases.plan, phases.pass);
+            sessionFrameMs, imageFrameMs, sessionCpuMs, imageCpuMs, frameRounds, levelMedian,
+            phases.cpu, phases.edit, phases.mark, phases.plan, phases.pass);
     } else {
         std::printf("dragged '%s' in %d steps (%dx%d)\n", objectName->c_str(), steps,
                     doc.render.width, doc.render.height);
