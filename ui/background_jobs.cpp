@@ -97,7 +97,7 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
             options.cancel = cancelled.get();
             result = loadMesh(file, smoothNormals, options);
         } catch (...) {
-            result = {nullptr, file + ": " + describeFailure(std::current_exception())};
+            result = {nullptr, file + ": " + describeFailure(std::current_exception()), {}};
         }
         toGui.post([=] {
             if (dialog) dialog->deleteLater();

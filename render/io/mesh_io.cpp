@@ -81,10 +81,12 @@ std::string firstMessage(const ChildOutcome& outcome) {
     return "";
 }
 
-/// Why the child's outcome is not a mesh, or "" when its output is to be decoded.
+/// Why the child's outcome is not a mesh, or "" when its output is to be decoded; `crashed`
+/// says whether the child itself failed (a signal other than its budget's, or an error exit).
 std::string describeFailure(const ChildOutcome& outcome, std::uintmax_t memoryBytes,
-                            std::chrono::milliseconds wallTime,
-                            std::chrono::milliseconds cpuTime) {
+                            std::chrono::milliseconds wallTime, std::chrono::milliseconds cpuTime,
+                            bool& crashed) {
+    crashed = false;
     using Ending = ChildOutcome::Ending;
     switch (outcome.ending) {
         case Ending::NotStarted:
@@ -104,10 +106,12 @@ std::string describeFailure(const ChildOutcome& outcome, std::uintmax_t memoryBy
             if (outcome.status == SIGKILL)
                 return "the import process was killed (" + describeSignal(SIGKILL) +
                        "), probably by the system for lack of memory";
+            crashed = true;
             return "assimp crashed while reading it (" + describeSignal(outcome.status) + ")" +
                    firstMessage(outcome);
         case Ending::Exited:
-            if (outcome.status != 0)
+            crashed = outcome.status != 0;
+            if (crashed)
                 return "the import process failed (exit status " + std::to_string(outcome.status) +
                        ")" + firstMessage(outcome);
             return "";
@@ -170,10 +174,13 @@ MeshLoadResult loadMesh(const std::string& path, bool smoothNormals,
     const ChildOutcome outcome = runInChildProcess(
         [&](int fd) { importIntoPipe(fd, file.string(), smoothNormals, limits.memoryBytes); },
         limits);
+    bool crashed = false;
     if (std::string why = describeFailure(outcome, limits.memoryBytes, limits.wallTime,
-                                          limits.cpuTime.value_or(limits.wallTime));
-        !why.empty())
+                                          limits.cpuTime.value_or(limits.wallTime), crashed);
+        !why.empty()) {
+        if (crashed) result.childMessages = outcome.messages;
         return fail(why);
+    }
     MeshLoadResult decoded = decodeMeshWire(outcome.output, file.string());
     if (!decoded.ok()) return fail(decoded.error);
     return decoded;

@@ -16,6 +16,10 @@ namespace rs {
 struct MeshLoadResult {
     std::shared_ptr<const MeshData> mesh;
     std::string error;
+    /// What the import's child process wrote on stderr when it crashed or exited with an
+    /// error (a sanitizer's report, assimp's assertion), else "": `error` quotes only its
+    /// first line, and a refusal's `error` may quote the file's own bytes.
+    std::string childMessages;
     bool ok() const { return mesh != nullptr; }
 };
 

@@ -48,9 +48,29 @@ TEST(MeshImportChild, AssimpAbortingOnAFile_IsAnErrorNamingItAndThisProcessGoesO
         EXPECT_NE(r.error.find(path), std::string::npos) << r.error;
         EXPECT_NE(r.error.find("assimp crashed while reading"), std::string::npos) << r.error;
         EXPECT_NE(r.error.find("signal 6"), std::string::npos) << r.error;
+        // The child's own stderr comes with it whole; the error quotes its first line.
+        const std::size_t quote = r.error.find("): ");
+        ASSERT_NE(quote, std::string::npos) << r.error;
+        EXPECT_NE(r.childMessages.find(r.error.substr(quote + 3)), std::string::npos)
+            << r.childMessages;
     }
     // Still here, and the loader still works.
     EXPECT_TRUE(loadMesh(std::string(RAYSTUDIO_TEST_DATA) + "/meshes/cube.obj", true).ok());
+}
+
+// The fuzzer's input whose refusal quoted "runtime error" from the file (session 15): a
+// refusal before any child runs carries no child messages, whatever its error quotes.
+TEST(MeshImportChild, ARefusalQuotingTheFile_CarriesNoChildMessages) {
+    const std::string input =
+        readBytes(std::string(RAYSTUDIO_TEST_DATA) +
+                  "/../fuzz/corpus/mesh_loader/harness-echoed-runtime-error");
+    ASSERT_GT(input.size(), 1u);
+    const std::string path = scratch("echoed-runtime-error.off").string();
+    std::ofstream(path, std::ios::binary) << input.substr(1);
+    const MeshLoadResult r = loadMesh(path, false);
+    EXPECT_FALSE(r.ok());
+    EXPECT_NE(r.error.find("runtime error"), std::string::npos) << r.error;
+    EXPECT_EQ(r.childMessages, "") << r.error;
 }
 
 template <typename T>
