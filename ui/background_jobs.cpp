@@ -100,7 +100,12 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
             result = {nullptr, file + ": " + describeFailure(std::current_exception()), {}};
         }
         toGui.post([=] {
-            if (dialog) dialog->deleteLater();
+            if (dialog) {
+                // Hidden now: done() may open a modal error box, whose own event loop does
+                // not run the deferred delete, and the dialog would stay on top of it.
+                dialog->hide();
+                dialog->deleteLater();
+            }
             if (!*cancelled) done(result);
         });
     });

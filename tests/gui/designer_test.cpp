@@ -17,6 +17,7 @@
 #include <QApplication>
 #include <QTimer>
 #include <QMessageBox>
+#include <QProgressDialog>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QLabel>
@@ -49,6 +50,7 @@ private Q_SLOTS:
     void aboutDialog_NamesVersionEngineAndLibraryLicences();
     void toolbarAndMenus_HaveIcons_AndTheWindowItsIcon();
     void badSceneFile_ShowsErrorAndKeepsDocument();
+    void badMeshImport_ErrorShowsWithTheProgressDialogGone();
     void addSphereLight_UndoRedo();
     void debugViews_ProduceImages();
 
@@ -382,6 +384,30 @@ static double frameEnergy(const DisplayFrame& f) {
     double e = 0.0;
     for (const Color& c : f.color) e += double(c.x + c.y + c.z);
     return e;
+}
+
+void DesignerTest::badMeshImport_ErrorShowsWithTheProgressDialogGone() {
+    // The error box is modal (its own event loop), so the import's progress dialog must be
+    // hidden before it opens: a deferred delete waits for the outer loop, and the dialog
+    // stayed on top of the error until the user dismissed it.
+    int visibleDialogs = -1;
+    setErrorHandler([&](const QString& title, const QString& text) {
+        errors_ << title + ": " + text;
+        visibleDialogs = 0;
+        for (QProgressDialog* d : window_->findChildren<QProgressDialog*>())
+            visibleDialogs += d->isVisible() ? 1 : 0;
+    });
+    const std::size_t objects = window_->editor()->document().objects.size();
+    window_->importMesh(QStringLiteral("/nonexistent/raystudio/no-such-mesh.obj"));
+    // As a slow import shows it (after its minimum duration); the result is posted to this
+    // thread, so it cannot have arrived yet.
+    const auto dialogs = window_->findChildren<QProgressDialog*>();
+    QCOMPARE(dialogs.size(), 1);
+    dialogs.first()->show();
+    QTRY_COMPARE_WITH_TIMEOUT(errors_.size(), 1, 20000);
+    QVERIFY2(errors_.first().contains(QStringLiteral("no-such-mesh.obj")), qPrintable(errors_.first()));
+    QCOMPARE(visibleDialogs, 0);
+    QCOMPARE(window_->editor()->document().objects.size(), objects);  // Nothing added.
 }
 
 void DesignerTest::addSphereLight_UndoRedo() {
