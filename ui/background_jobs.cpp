@@ -101,8 +101,10 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
         }
         toGui.post([=] {
             if (dialog) {
-                // Hidden now: done() may open a modal error box, whose own event loop does
-                // not run the deferred delete, and the dialog would stay on top of it.
+                // Put away now: done() may open a modal error box, whose own event loop does
+                // not run the deferred delete, and the dialog would stay on top of it, or
+                // show itself there when its minimum duration ends (reset() stops that timer).
+                dialog->reset();
                 dialog->hide();
                 dialog->deleteLater();
             }

@@ -15,6 +15,7 @@
 #include <QComboBox>
 #include <QToolBar>
 #include <QApplication>
+#include <QEventLoop>
 #include <QTimer>
 #include <QMessageBox>
 #include <QProgressDialog>
@@ -387,26 +388,32 @@ static double frameEnergy(const DisplayFrame& f) {
 }
 
 void DesignerTest::badMeshImport_ErrorShowsWithTheProgressDialogGone() {
-    // The error box is modal (its own event loop), so the import's progress dialog must be
-    // hidden before it opens: a deferred delete waits for the outer loop, and the dialog
-    // stayed on top of the error until the user dismissed it.
+    // The error box is modal: its own event loop runs while the user reads it. The import's
+    // progress dialog must be gone for all of that time: neither left on top (a deferred
+    // delete waits for the outer loop) nor shown by its minimum-duration timer.
     int visibleDialogs = -1;
     setErrorHandler([&](const QString& title, const QString& text) {
         errors_ << title + ": " + text;
+        // A nested loop, as a modal box runs, past the dialog's 300 ms (not QTest::qWait,
+        // which also runs the deferred deletes a modal box's loop leaves alone).
+        QEventLoop modal;
+        QTimer::singleShot(600, &modal, &QEventLoop::quit);
+        modal.exec();
         visibleDialogs = 0;
         for (QProgressDialog* d : window_->findChildren<QProgressDialog*>())
             visibleDialogs += d->isVisible() ? 1 : 0;
     });
     const std::size_t objects = window_->editor()->document().objects.size();
     window_->importMesh(QStringLiteral("/nonexistent/raystudio/no-such-mesh.obj"));
-    // As a slow import shows it (after its minimum duration); the result is posted to this
-    // thread, so it cannot have arrived yet.
+    // Shown, as a slow import shows it; the result is posted to this thread, so it cannot
+    // have arrived yet.
     const auto dialogs = window_->findChildren<QProgressDialog*>();
     QCOMPARE(dialogs.size(), 1);
     dialogs.first()->show();
-    QTRY_COMPARE_WITH_TIMEOUT(errors_.size(), 1, 20000);
-    QVERIFY2(errors_.first().contains(QStringLiteral("no-such-mesh.obj")), qPrintable(errors_.first()));
+    QTRY_VERIFY_WITH_TIMEOUT(visibleDialogs >= 0, 20000);
     QCOMPARE(visibleDialogs, 0);
+    QCOMPARE(errors_.size(), 1);
+    QVERIFY2(errors_.first().contains(QStringLiteral("no-such-mesh.obj")), qPrintable(errors_.first()));
     QCOMPARE(window_->editor()->document().objects.size(), objects);  // Nothing added.
 }
 
