@@ -32,16 +32,23 @@ fs::path scratch(const std::string& name) {
     return dir / name;
 }
 
+/// Fuzz corpus input `input` (tests/fuzz/corpus/mesh_loader/) as the fuzzer hands it to the
+/// loader: its first byte picks the extension (mesh_loader_fuzz.cpp), the file is the rest,
+/// written as `name` in the scratch folder. "" when the input is missing.
+std::string corpusFile(const std::string& input, const std::string& name) {
+    const std::string bytes =
+        readBytes(std::string(RAYSTUDIO_TEST_DATA) + "/../fuzz/corpus/mesh_loader/" + input);
+    if (bytes.size() < 2) return "";
+    const std::string path = scratch(name).string();
+    std::ofstream(path, std::ios::binary) << bytes.substr(1);
+    return path;
+}
+
 // The malformed binary PLY the mesh loader fuzzer found (tests/fuzz/corpus/mesh_loader/):
-// Debian's assimp 5.2 fails an assertion in its triangulation on it and aborts. A fuzz input's
-// first byte picks the extension (mesh_loader_fuzz.cpp); the file is the rest.
+// Debian's assimp 5.2 fails an assertion in its triangulation on it and aborts.
 TEST(MeshImportChild, AssimpAbortingOnAFile_IsAnErrorNamingItAndThisProcessGoesOn) {
-    const std::string input =
-        readBytes(std::string(RAYSTUDIO_TEST_DATA) +
-                  "/../fuzz/corpus/mesh_loader/assimp-triangulate-assert.ply");
-    ASSERT_GT(input.size(), 1u);
-    const std::string path = scratch("triangulate-assert.ply").string();
-    std::ofstream(path, std::ios::binary) << input.substr(1);
+    const std::string path = corpusFile("assimp-triangulate-assert.ply", "triangulate-assert.ply");
+    ASSERT_NE(path, "");
     for (bool smooth : {false, true}) {
         const MeshLoadResult r = loadMesh(path, smooth);
         EXPECT_FALSE(r.ok());
@@ -61,12 +68,8 @@ TEST(MeshImportChild, AssimpAbortingOnAFile_IsAnErrorNamingItAndThisProcessGoesO
 // The fuzzer's input whose refusal quoted "runtime error" from the file (session 15): a
 // refusal before any child runs carries no child messages, whatever its error quotes.
 TEST(MeshImportChild, ARefusalQuotingTheFile_CarriesNoChildMessages) {
-    const std::string input =
-        readBytes(std::string(RAYSTUDIO_TEST_DATA) +
-                  "/../fuzz/corpus/mesh_loader/harness-echoed-runtime-error");
-    ASSERT_GT(input.size(), 1u);
-    const std::string path = scratch("echoed-runtime-error.off").string();
-    std::ofstream(path, std::ios::binary) << input.substr(1);
+    const std::string path = corpusFile("harness-echoed-runtime-error", "echoed-runtime-error.off");
+    ASSERT_NE(path, "");
     const MeshLoadResult r = loadMesh(path, false);
     EXPECT_FALSE(r.ok());
     EXPECT_NE(r.error.find("runtime error"), std::string::npos) << r.error;
