@@ -3,18 +3,17 @@
 // orphan to offer for recovery.
 #include "autosave.h"
 
-#include "io/scene_io.h"
-#include "scene_editor.h"
-#include "scene_file_writer.h"
-
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QStandardPaths>
-
 #include <algorithm>
+
+#include "io/scene_io.h"
+#include "scene_editor.h"
+#include "scene_file_writer.h"
 
 namespace rs::ui {
 

@@ -3,16 +3,15 @@
 // an autosave found at start whose session is no longer running belongs to a crash.
 #pragma once
 
-#include "scene/document.h"
-
 #include <QDateTime>
 #include <QLockFile>
 #include <QObject>
 #include <QString>
 #include <QTimer>
-
 #include <memory>
 #include <vector>
+
+#include "scene/document.h"
 
 namespace rs::ui {
 

@@ -1,22 +1,21 @@
 // Worker threads with atomic cancellation and queued progress (no GUI-thread waiting).
 #include "background_jobs.h"
 
-#include "gui_mailbox.h"
-#include "image/image_io.h"
-#include "image/tonemap.h"
-#include "integrator/renderer.h"
-#include "snapshot/compiled_scene.h"
-
 #include <QCoreApplication>
 #include <QPointer>
 #include <QProgressDialog>
 #include <QThread>
-
 #include <atomic>
 #include <exception>
 #include <memory>
 #include <new>
 #include <string>
+
+#include "gui_mailbox.h"
+#include "image/image_io.h"
+#include "image/tonemap.h"
+#include "integrator/renderer.h"
+#include "snapshot/compiled_scene.h"
 
 namespace rs::ui {
 
@@ -87,7 +86,8 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
     QPointer<QProgressDialog> dialog =
         makeProgress(parent, QObject::tr("Loading %1 ...").arg(path), 0);
     auto cancelled = std::make_shared<std::atomic<bool>>(false);
-    QObject::connect(dialog, &QProgressDialog::canceled, dialog, [cancelled] { *cancelled = true; });
+    QObject::connect(dialog, &QProgressDialog::canceled, dialog,
+                     [cancelled] { *cancelled = true; });
     const GuiMailbox toGui(parent ? static_cast<QObject*>(parent) : dialog.data());
     startWorker(dialog, cancelled, [=, file = path.toStdString()] {
         MeshLoadResult result;
@@ -114,8 +114,8 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
 }
 
 QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QString& path,
-                           int threads, EngineKind engine, std::shared_ptr<std::atomic<bool>> cancel,
-                           RenderReport report) {
+                           int threads, EngineKind engine,
+                           std::shared_ptr<std::atomic<bool>> cancel, RenderReport report) {
     const GuiMailbox toGui(receiver);
     return startWorker(receiver, cancel, [=, file = path.toStdString()] {
         std::string error = imageSizeError(doc.render.width, doc.render.height);
@@ -145,7 +145,8 @@ QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QS
                 ok = !result.cancelled && !*cancel &&
                      writeImage(file, result.image, doc.render.tonemap, doc.render.exposure, error);
             } catch (...) {
-                error = "rendering " + file + " failed: " + describeFailure(std::current_exception());
+                error =
+                    "rendering " + file + " failed: " + describeFailure(std::current_exception());
             }
         }
         toGui.post([=, done = report.done] {

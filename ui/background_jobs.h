@@ -2,17 +2,16 @@
 // progress dialog, and the final-quality render (RenderQueue shows its progress).
 #pragma once
 
-#include "accel/ray_engine.h"
-#include "io/mesh_io.h"
-#include "scene/document.h"
-
 #include <QImage>
 #include <QRect>
 #include <QString>
-
 #include <atomic>
 #include <functional>
 #include <memory>
+
+#include "accel/ray_engine.h"
+#include "io/mesh_io.h"
+#include "scene/document.h"
 
 class QObject;
 class QThread;
@@ -39,8 +38,8 @@ struct RenderReport {
 /// was set first. Reports go to `receiver`'s thread; when it is destroyed the render is
 /// cancelled and waited for. Returns the worker (it deletes itself when done).
 QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QString& path,
-                           int threads, EngineKind engine, std::shared_ptr<std::atomic<bool>> cancel,
-                           RenderReport report);
+                           int threads, EngineKind engine,
+                           std::shared_ptr<std::atomic<bool>> cancel, RenderReport report);
 
 /// Cancels every job started with `parent` and waits until their threads have stopped (a
 /// closing window): no result is delivered. Returns within a tile of a render.

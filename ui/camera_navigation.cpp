@@ -1,10 +1,9 @@
 // Camera navigation math (turntable orbit, keeping the view upright).
 #include "camera_navigation.h"
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 
 namespace rs::ui {
 

@@ -1,9 +1,9 @@
 // Orbit, pan, dolly, frame and axis views on a camera (the viewport's view camera).
 #pragma once
 
-#include "scene/document.h"
-
 #include <limits>
+
+#include "scene/document.h"
 
 namespace rs::ui {
 

@@ -1,9 +1,6 @@
 // The Submit to Cluster dialog: fields, the farm submit process and its answer.
 #include "cluster_submit_dialog.h"
 
-#include "integrator/image_part.h"
-#include "scene/document.h"
-
 #include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -18,9 +15,14 @@
 #include <QSpinBox>
 #include <QStandardPaths>
 
+#include "integrator/image_part.h"
+#include "scene/document.h"
+
 namespace rs::ui {
 
-bool clusterSubmitAvailable() { return !QStandardPaths::findExecutable("sbatch").isEmpty(); }
+bool clusterSubmitAvailable() {
+    return !QStandardPaths::findExecutable("sbatch").isEmpty();
+}
 
 QString farmCliPath() {
     const QString beside = QDir(QCoreApplication::applicationDirPath()).filePath("raystudio-cli");
@@ -37,7 +39,8 @@ ClusterSubmitDialog::ClusterSubmitDialog(const QString& scenePath, int width, in
     form->addRow(tr("Scene"), new QLabel(QDir::toNativeSeparators(scenePath), this));
 
     const QFileInfo scene(scenePath);
-    output_ = new QLineEdit(scene.dir().filePath(scene.completeBaseName().remove(".scene") + ".exr"), this);
+    output_ = new QLineEdit(
+        scene.dir().filePath(scene.completeBaseName().remove(".scene") + ".exr"), this);
     output_->setObjectName("clusterOutput");
     auto* browse = new QPushButton(tr("Browse..."), this);
     connect(browse, &QPushButton::clicked, this, [this] {
@@ -107,15 +110,26 @@ void ClusterSubmitDialog::updateNote() {
 }
 
 QStringList ClusterSubmitDialog::arguments() const {
-    QStringList args{"farm", "submit", scenePath_, "-o", QFileInfo(output_->text()).absoluteFilePath(),
-                     "--parts", QString::number(parts_->value()), "--width",
-                     QString::number(width_->value()), "--height", QString::number(height_->value())};
-    if (!partition_->text().trimmed().isEmpty()) args << "--partition" << partition_->text().trimmed();
+    QStringList args{"farm",
+                     "submit",
+                     scenePath_,
+                     "-o",
+                     QFileInfo(output_->text()).absoluteFilePath(),
+                     "--parts",
+                     QString::number(parts_->value()),
+                     "--width",
+                     QString::number(width_->value()),
+                     "--height",
+                     QString::number(height_->value())};
+    if (!partition_->text().trimmed().isEmpty())
+        args << "--partition" << partition_->text().trimmed();
     if (!time_->text().trimmed().isEmpty()) args << "--time" << time_->text().trimmed();
     return args;
 }
 
-QString ClusterSubmitDialog::resultText() const { return result_->text(); }
+QString ClusterSubmitDialog::resultText() const {
+    return result_->text();
+}
 
 void ClusterSubmitDialog::submit() {
     if (process_) return;  // one submission at a time
@@ -127,8 +141,9 @@ void ClusterSubmitDialog::submit() {
         const QString out = QString::fromLocal8Bit(process_->readAllStandardOutput()).trimmed();
         const QString err = QString::fromLocal8Bit(process_->readAllStandardError()).trimmed();
         const bool ok = status == QProcess::NormalExit && code == 0;
-        result_->setText(ok ? tr("Submitted:\n%1\nFollow it with: raystudio-cli farm status JOB").arg(out)
-                            : tr("Not submitted:\n%1").arg(err.isEmpty() ? tr("exit code %1").arg(code) : err));
+        result_->setText(
+            ok ? tr("Submitted:\n%1\nFollow it with: raystudio-cli farm status JOB").arg(out)
+               : tr("Not submitted:\n%1").arg(err.isEmpty() ? tr("exit code %1").arg(code) : err));
         process_->deleteLater();
         process_ = nullptr;
         submit_->setEnabled(true);

@@ -3,15 +3,14 @@
 // swaps took more CPU than the ray tracer).
 #include "display_choice.h"
 
-#include "gl_frame_view.h"
-#include "raster_frame_view.h"
-
 #include <QGuiApplication>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
-
 #include <optional>
+
+#include "gl_frame_view.h"
+#include "raster_frame_view.h"
 
 namespace rs::ui {
 
@@ -32,8 +31,7 @@ QString queryRenderer() {
     surface.setFormat(context.format());
     surface.create();
     if (!context.makeCurrent(&surface)) return {};
-    const auto* name = reinterpret_cast<const char*>(
-        context.functions()->glGetString(GL_RENDERER));
+    const auto* name = reinterpret_cast<const char*>(context.functions()->glGetString(GL_RENDERER));
     // A context that cannot even name its renderer still draws: call it a GPU of no name.
     QString renderer = name && *name ? QString::fromUtf8(name) : QStringLiteral("unknown");
     context.doneCurrent();
@@ -43,9 +41,12 @@ QString queryRenderer() {
 
 const char* displayKindName(DisplayKind kind) {
     switch (kind) {
-        case DisplayKind::OpenGL: return "opengl";
-        case DisplayKind::Software: return "software";
-        case DisplayKind::Automatic: break;
+        case DisplayKind::OpenGL:
+            return "opengl";
+        case DisplayKind::Software:
+            return "software";
+        case DisplayKind::Automatic:
+            break;
     }
     return "automatic";
 }

@@ -1,14 +1,14 @@
 // Copying the deep frame and shading its views on the CPU (the raster viewport and tests).
 #include "display_frame.h"
 
-#include "image/tonemap.h"
-#include "session/deep_frame.h"
-#include "session/render_session.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <tuple>
+
+#include "image/tonemap.h"
+#include "session/deep_frame.h"
+#include "session/render_session.h"
 
 namespace rs::ui {
 
@@ -61,7 +61,9 @@ bool differs(const LargeVector<T>& a, const LargeVector<T>& b, int width, const 
 
 }  // namespace
 
-bool showsDebugBuffers(ViewMode mode) { return mode == ViewMode::Normals || mode == ViewMode::Cost; }
+bool showsDebugBuffers(ViewMode mode) {
+    return mode == ViewMode::Normals || mode == ViewMode::Cost;
+}
 
 void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, bool allFlags) {
     const QRect all(0, 0, f.width, f.height);
@@ -260,12 +262,15 @@ QImage debugImage(const DisplayFrame& f, ViewMode mode) {
             const std::size_t i = std::size_t(y) * f.width + x;
             uchar* p = line + 3 * x;
             switch (mode) {
-                case ViewMode::ObjectIds: idColor(f.id[i], p); break;
+                case ViewMode::ObjectIds:
+                    idColor(f.id[i], p);
+                    break;
                 case ViewMode::Normals:
                     for (int c = 0; c < 3; ++c)
                         p[c] = f.id[i] == kNoObject || !hasNormals
                                    ? 0
-                                   : uint8_t(std::clamp(0.5f + 0.5f * f.normal[i][c], 0.0f, 1.0f) * 255.0f);
+                                   : uint8_t(std::clamp(0.5f + 0.5f * f.normal[i][c], 0.0f, 1.0f) *
+                                             255.0f);
                     break;
                 case ViewMode::Depth: {
                     const float d = std::isfinite(f.depth[i]) && maxDepth > 0.0f
@@ -290,7 +295,8 @@ QImage debugImage(const DisplayFrame& f, ViewMode mode) {
                     p[2] = traced ? uint8_t(c[2] / 2) : uint8_t(c[2] / 3);
                     break;
                 }
-                case ViewMode::Color: break;
+                case ViewMode::Color:
+                    break;
             }
         }
     }

@@ -1,19 +1,18 @@
 // A GUI-side copy of the session's deep frame and the CPU shading of its debug views.
 #pragma once
 
-#include "core/large_blocks.h"
-#include "scene/document.h"
-
 #include <QImage>
 #include <QRect>
-
 #include <cstdint>
 #include <vector>
+
+#include "core/large_blocks.h"
+#include "scene/document.h"
 
 namespace rs {
 class RenderSession;
 struct DeepFrame;
-}
+}  // namespace rs
 
 namespace rs::ui {
 
@@ -57,15 +56,16 @@ struct DisplayFrame {
     bool empty() const { return width <= 0 || height <= 0; }
     ObjectId idAt(int x, int y) const {
         return x >= 0 && y >= 0 && x < width && y < height ? id[std::size_t(y) * width + x]
-                                                            : kNoObject;
+                                                           : kNoObject;
     }
     /// Copies the session's current frame (the whole frame under its lock: tests compare with
     /// it). Tone map and exposure are the snapshot's, which edits that trace nothing may keep.
     static DisplayFrame fromSession(const RenderSession& session);
 
     /// Copies `rects` of `f` into this frame (all of it when the sizes differ, or normals and
-    /// costs are wanted and missing) and records them as damage of a new serial; `flags` (1 byte a pixel, changed by edits outside any tile) is
-    /// copied whole when `allFlags`. Call with the frame lock held.
+    /// costs are wanted and missing) and records them as damage of a new serial; `flags` (1 byte a
+    /// pixel, changed by edits outside any tile) is copied whole when `allFlags`. Call with the
+    /// frame lock held.
     void refresh(const DeepFrame& f, const std::vector<QRect>& rects, bool allFlags);
     /// The rectangles that changed after `seen`, or false when that serial is too old to say.
     bool changedSince(uint64_t seen, std::vector<QRect>& rects) const;

@@ -4,14 +4,22 @@
 namespace rs::ui {
 
 DocumentCommand::DocumentCommand(SceneEditor* editor, const QString& text, SceneDocument before,
-                                 SceneDocument after, MergeKind merge, QString mergeKey,
-                                 int serial)
-    : QUndoCommand(text), editor_(editor), before_(std::move(before)), after_(std::move(after)),
-      merge_(merge), mergeKey_(std::move(mergeKey)), serial_(serial) {}
+                                 SceneDocument after, MergeKind merge, QString mergeKey, int serial)
+    : QUndoCommand(text),
+      editor_(editor),
+      before_(std::move(before)),
+      after_(std::move(after)),
+      merge_(merge),
+      mergeKey_(std::move(mergeKey)),
+      serial_(serial) {}
 
-void DocumentCommand::undo() { editor_->replaceDocument(before_); }
+void DocumentCommand::undo() {
+    editor_->replaceDocument(before_);
+}
 
-void DocumentCommand::redo() { editor_->replaceDocument(after_); }
+void DocumentCommand::redo() {
+    editor_->replaceDocument(after_);
+}
 
 bool DocumentCommand::mergeWith(const QUndoCommand* other) {
     const auto* o = dynamic_cast<const DocumentCommand*>(other);

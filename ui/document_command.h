@@ -1,10 +1,10 @@
 // Undo command that stores the document before and after a change and applies by replacing.
 #pragma once
 
+#include <QUndoCommand>
+
 #include "scene/document.h"
 #include "scene_editor.h"
-
-#include <QUndoCommand>
 
 namespace rs::ui {
 

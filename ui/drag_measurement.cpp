@@ -93,9 +93,9 @@ private:
     void post(int i, QPoint start);
     QJsonObject analyse(Clock::time_point begin, Clock::time_point end) const;
     struct FullFrames {
-        double passMs = 0.0;   ///< The session's passes of the frame (median).
-        double shownMs = 0.0;  ///< Posting the edit to the complete frame painted (median).
-        double renderMs = 0.0; ///< renderImage of the same view document (median).
+        double passMs = 0.0;    ///< The session's passes of the frame (median).
+        double shownMs = 0.0;   ///< Posting the edit to the complete frame painted (median).
+        double renderMs = 0.0;  ///< renderImage of the same view document (median).
         int rounds = 0;
     };
     bool measureFullFrames(FullFrames& out);
@@ -475,13 +475,15 @@ int Measurement::run() {
     std::printf("  interactive pass     median %6.1f ms   (%d passes, %d cancelled)\n",
                 num("interactive_pass_median_ms"), o[QStringLiteral("interactive_passes")].toInt(),
                 o[QStringLiteral("interactive_passes_cancelled")].toInt());
-    std::printf("  governor level       median %4.0f (%s)   max %.0f\n", num("governor_level_median"),
+    std::printf("  governor level       median %4.0f (%s)   max %.0f\n",
+                num("governor_level_median"),
                 Governor::levelName(int(num("governor_level_median"))), num("governor_level_max"));
     std::printf(
         "  frame hand-over      mean   %6.2f ms   max %6.2f ms   (copying %.2f ms of the mean)\n",
         num("handover_mean_ms"), num("handover_max_ms"), num("handover_copy_mean_ms"));
     std::printf("  hand-overs           %6d        %d found the frame lock held and came back\n",
-                o[QStringLiteral("handovers")].toInt(), o[QStringLiteral("handovers_busy")].toInt());
+                o[QStringLiteral("handovers")].toInt(),
+                o[QStringLiteral("handovers_busy")].toInt());
     const int slowestAt = o[QStringLiteral("input_handling_max_at")].toInt();
     const int events = o[QStringLiteral("moves")].toInt() + 2;  // The press, moves, the release.
     const char* slowest = slowestAt == 0            ? "the press"
@@ -541,7 +543,8 @@ int runRequestedMeasurement(const QCommandLineParser& parser) {
     r.frames = parser.value(QStringLiteral("frames")).toInt(&ok);
     r.json = parser.isSet(QStringLiteral("json"));
     if (!parseDisplayKind(parser.value(QStringLiteral("view")), r.display)) {
-        std::fprintf(stderr, "raystudio: --view must be automatic, opengl or software, not \"%s\"\n",
+        std::fprintf(stderr,
+                     "raystudio: --view must be automatic, opengl or software, not \"%s\"\n",
                      qPrintable(parser.value(QStringLiteral("view"))));
         return 2;
     }

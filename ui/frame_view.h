@@ -2,14 +2,13 @@
 // made, QPainter otherwise (e.g. the offscreen platform).
 #pragma once
 
-#include "display_frame.h"
-
 #include <QImage>
 #include <QRect>
-
 #include <cstdint>
 #include <functional>
 #include <memory>
+
+#include "display_frame.h"
 
 class QWidget;
 

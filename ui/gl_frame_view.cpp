@@ -1,16 +1,18 @@
 // GlFrameView: texture upload of the deep frame and the full-screen draw.
 #include "gl_frame_view.h"
 
+#include <QtCore/qfloat16.h>
+
 #include <QElapsedTimer>
 #include <QFile>
 #include <QOpenGLPaintDevice>
 #include <QPainter>
 #include <QWidget>
-#include <QtCore/qfloat16.h>
-
 #include <algorithm>
 
-static void initRayStudioResources() { Q_INIT_RESOURCE(raystudio); }
+static void initRayStudioResources() {
+    Q_INIT_RESOURCE(raystudio);
+}
 
 namespace rs::ui {
 
@@ -52,10 +54,11 @@ void GlFrameView::showFrame(std::shared_ptr<const DisplayFrame> frame, ViewMode 
 
 void GlFrameView::initializeGL() {
     initializeOpenGLFunctions();
-    const bool ok =
-        program_.addShaderFromSourceCode(QOpenGLShader::Vertex, shaderSource(":/shaders/frame.vert")) &&
-        program_.addShaderFromSourceCode(QOpenGLShader::Fragment, shaderSource(":/shaders/frame.frag")) &&
-        program_.link();
+    const bool ok = program_.addShaderFromSourceCode(QOpenGLShader::Vertex,
+                                                     shaderSource(":/shaders/frame.vert")) &&
+                    program_.addShaderFromSourceCode(QOpenGLShader::Fragment,
+                                                     shaderSource(":/shaders/frame.frag")) &&
+                    program_.link();
     if (!ok) {
         qWarning("RayStudio: frame shader failed: %s", qPrintable(program_.log()));
         return;
@@ -194,9 +197,9 @@ void GlFrameView::paintGL() {
     std::copy_n(selected_.begin(), count, outlined);
     glUniform1uiv(program_.uniformLocation("selected"), GLsizei(kMaxOutlined), outlined);
     program_.setUniformValue("selectedCount", int(count));
-    program_.setUniformValue("outlineColor", QVector3D(kOutlineRgb[0] / 255.0f,
-                                                       kOutlineRgb[1] / 255.0f,
-                                                       kOutlineRgb[2] / 255.0f));
+    program_.setUniformValue(
+        "outlineColor",
+        QVector3D(kOutlineRgb[0] / 255.0f, kOutlineRgb[1] / 255.0f, kOutlineRgb[2] / 255.0f));
     vao_.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
     vao_.release();

@@ -5,13 +5,13 @@
 // window through OpenGL, which with software GL cost more than the rest of the frame.
 #pragma once
 
-#include "frame_view.h"
-
 #include <QElapsedTimer>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
 #include <QOpenGLWindow>
+
+#include "frame_view.h"
 
 namespace rs::ui {
 

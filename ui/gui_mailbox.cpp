@@ -4,7 +4,6 @@
 #include <QCoreApplication>
 #include <QEvent>
 #include <QObject>
-
 #include <mutex>
 #include <vector>
 
@@ -25,7 +24,8 @@ public:
         return type;
     }
 
-    Waker(QObject* context, std::shared_ptr<State> state) : QObject(context), state_(std::move(state)) {}
+    Waker(QObject* context, std::shared_ptr<State> state)
+        : QObject(context), state_(std::move(state)) {}
 
     ~Waker() override {
         std::vector<std::function<void()>> dropped;

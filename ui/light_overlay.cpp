@@ -2,13 +2,12 @@
 // them itself, in front of whatever surface lies behind.
 #include "light_overlay.h"
 
-#include "display_frame.h"
-#include "passepartout.h"
-
 #include <QPainter>
-
 #include <algorithm>
 #include <cmath>
+
+#include "display_frame.h"
+#include "passepartout.h"
 
 namespace rs::ui {
 

@@ -1,13 +1,12 @@
 // Lights in the viewport: glyphs drawn with QPainter over the frame, and picking them.
 #pragma once
 
-#include "scene/document.h"
-#include "view_projection.h"
-
 #include <QColor>
 #include <QPointF>
-
 #include <vector>
+
+#include "scene/document.h"
+#include "view_projection.h"
 
 class QPainter;
 

@@ -1,6 +1,19 @@
 // MainWindow construction: actions, menus, toolbar, docks, status bar and settings.
 #include "main_window.h"
 
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+#include <tuple>
+
 #include "action_icons.h"
 #include "autosave.h"
 #include "background_jobs.h"
@@ -19,20 +32,6 @@
 #include "shortcuts_dialog.h"
 #include "user_confirmation.h"
 #include "viewport.h"
-
-#include <QActionGroup>
-#include <QApplication>
-#include <QCloseEvent>
-#include <QDockWidget>
-#include <QFileInfo>
-#include <QLabel>
-#include <QMenuBar>
-#include <QMessageBox>
-#include <QSettings>
-#include <QStatusBar>
-#include <QToolBar>
-
-#include <tuple>
 
 namespace rs::ui {
 
@@ -75,9 +74,8 @@ MainWindow::MainWindow(QWidget* parent)
             [this](bool clean) { setWindowModified(!clean); });
     connect(editor_, &SceneEditor::filePathChanged, this, &MainWindow::updateTitle);
     connect(session_.get(), &SessionController::passFinished, this, &MainWindow::onPassFinished);
-    connect(session_.get(), &SessionController::updateRateChanged, this, [this](double rate) {
-        statusUps_->setText(tr("%1 upd/s").arg(rate, 0, 'f', 0));
-    });
+    connect(session_.get(), &SessionController::updateRateChanged, this,
+            [this](double rate) { statusUps_->setText(tr("%1 upd/s").arg(rate, 0, 'f', 0)); });
     connect(autosave_, &Autosave::failed, this, [this](const QString& error) {
         statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 10000);
     });
@@ -139,7 +137,8 @@ void MainWindow::createActions() {
     snapToFloorAct_->setObjectName(QStringLiteral("snapToFloor"));
     snapToFloorAct_->setCheckable(true);
     snapToFloorAct_->setStatusTip(tr("New objects rest on the surface below where you look"));
-    snapToFloorAct_->setChecked(QSettings().value(QStringLiteral("placement/snapToFloor")).toBool());
+    snapToFloorAct_->setChecked(
+        QSettings().value(QStringLiteral("placement/snapToFloor")).toBool());
     connect(snapToFloorAct_, &QAction::toggled, this,
             [](bool on) { QSettings().setValue(QStringLiteral("placement/snapToFloor"), on); });
 }
@@ -172,10 +171,13 @@ void MainWindow::createMenus() {
     file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save)
         ->setIcon(actionIcon("document-save", "document-save"));
     file->addAction(tr("Save &As..."), this, &MainWindow::saveAs)
-        ->setShortcuts(standardOr(QKeySequence::SaveAs, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)));
+        ->setShortcuts(
+            standardOr(QKeySequence::SaveAs, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)));
     file->addSeparator();
-    file->addAction(tr("&Import Mesh..."), QKeySequence(Qt::CTRL | Qt::Key_I), this, &MainWindow::importMeshDialog);
-    file->addAction(tr("&Export Image..."), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportImageDialog);
+    file->addAction(tr("&Import Mesh..."), QKeySequence(Qt::CTRL | Qt::Key_I), this,
+                    &MainWindow::importMeshDialog);
+    file->addAction(tr("&Export Image..."), QKeySequence(Qt::CTRL | Qt::Key_E), this,
+                    &MainWindow::exportImageDialog);
     file->addSeparator();
     file->addAction(tr("&Quit"), this, &QWidget::close)
         ->setShortcuts(standardOr(QKeySequence::Quit, QKeySequence(Qt::CTRL | Qt::Key_Q)));
@@ -208,9 +210,11 @@ void MainWindow::createMenus() {
     local->setCheckable(true);
     local->setStatusTip(tr("Gizmo and axis locks along the active object's own axes"));
     edit->addSeparator();
-    edit->addAction(tr("&Box Select"), QKeySequence(Qt::Key_B), viewport_, &Viewport::beginBoxSelect);
+    edit->addAction(tr("&Box Select"), QKeySequence(Qt::Key_B), viewport_,
+                    &Viewport::beginBoxSelect);
     edit->addSeparator();
-    edit->addAction(tr("&Preferences..."), QKeySequence::Preferences, this, &MainWindow::showPreferences);
+    edit->addAction(tr("&Preferences..."), QKeySequence::Preferences, this,
+                    &MainWindow::showPreferences);
 
     QMenu* add = menuBar()->addMenu(tr("&Add"));
     add->addActions(addActions_.mid(0, 5));
@@ -220,7 +224,8 @@ void MainWindow::createMenus() {
     add->addAction(snapToFloorAct_);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    view->addAction(tr("&Frame Selection"), QKeySequence(Qt::Key_F), viewport_, &Viewport::frameSelection);
+    view->addAction(tr("&Frame Selection"), QKeySequence(Qt::Key_F), viewport_,
+                    &Viewport::frameSelection);
     QAction* gizmo = view->addAction(tr("Show &Gizmo"), viewport_, &Viewport::setGizmoVisible);
     gizmo->setObjectName(QStringLiteral("showGizmo"));
     gizmo->setCheckable(true);
@@ -245,13 +250,13 @@ void MainWindow::createMenus() {
     view->addSeparator();
     auto* modes = new QActionGroup(this);
     const std::pair<QString, ViewMode> entries[] = {
-        {tr("&Colour"), ViewMode::Color},       {tr("Object &ids"), ViewMode::ObjectIds},
-        {tr("&Normals"), ViewMode::Normals},    {tr("&Depth"), ViewMode::Depth},
+        {tr("&Colour"), ViewMode::Color},          {tr("Object &ids"), ViewMode::ObjectIds},
+        {tr("&Normals"), ViewMode::Normals},       {tr("&Depth"), ViewMode::Depth},
         {tr("Ray &cost heatmap"), ViewMode::Cost}, {tr("&Re-traced pixels"), ViewMode::Retraced}};
     int n = 1;
     for (const auto& [text, mode] : entries) {
-        QAction* a = view->addAction(text, QKeySequence(Qt::ALT | Qt::Key(Qt::Key_0 + n++)), viewport_,
-                                     [this, m = mode] { viewport_->setViewMode(m); });
+        QAction* a = view->addAction(text, QKeySequence(Qt::ALT | Qt::Key(Qt::Key_0 + n++)),
+                                     viewport_, [this, m = mode] { viewport_->setViewMode(m); });
         a->setCheckable(true);
         a->setChecked(mode == ViewMode::Color);
         modes->addAction(a);
@@ -259,8 +264,8 @@ void MainWindow::createMenus() {
     view->addSeparator();
 
     QMenu* render = menuBar()->addMenu(tr("&Render"));
-    QAction* renderAct =
-        render->addAction(tr("&Render Image..."), QKeySequence(Qt::Key_F12), this, &MainWindow::renderImageDialog);
+    QAction* renderAct = render->addAction(tr("&Render Image..."), QKeySequence(Qt::Key_F12), this,
+                                           &MainWindow::renderImageDialog);
     renderAct->setIcon(actionIcon(nullptr, "render-image"));
     if (clusterSubmitAvailable())  // only where Slurm's client is installed
         render->addAction(tr("Submit to &Cluster..."), this, &MainWindow::submitToClusterDialog);
@@ -285,7 +290,8 @@ void MainWindow::createMenus() {
     tools->addAction(undo);
     tools->addAction(redo);
     tools->addAction(renderAct);
-    for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        view->addAction(dock->toggleViewAction());
     view->addAction(tools->toggleViewAction());
 }
 
@@ -302,9 +308,10 @@ void MainWindow::createStatusBar() {
     statusRetraced_ = label(tr("Share of the frame's pixels the last pass re-traced"));
     statusPass_ = label(tr("Kind of the last pass (interactive, base, supersampling)"));
     statusRays_ = label(tr("Rays per second in the last pass"));
-    statusGovernor_ = label(tr("What the governor turned down in the last interactive pass to "
-                               "keep its frame rate; \"as set\" once the frame refines at the "
-                               "scene's settings (Preferences)"));
+    statusGovernor_ =
+        label(tr("What the governor turned down in the last interactive pass to "
+                 "keep its frame rate; \"as set\" once the frame refines at the "
+                 "scene's settings (Preferences)"));
     statusGovernor_->setObjectName(QStringLiteral("statusGovernor"));
     // Leftmost of the permanent widgets: a running render is what the user looks for first.
     renderStatus_ = new RenderStatus(renders_, this);
@@ -343,27 +350,29 @@ bool MainWindow::maybeCancelRenders() {
     if (!renders_->busy()) return true;
     const int queued = renders_->queued();
     const QString text =
-        queued ? tr("A render is running and %1 more are queued. Cancel them and close?")
-                     .arg(queued)
-               : tr("A render is running. Cancel it and close?");
+        queued
+            ? tr("A render is running and %1 more are queued. Cancel them and close?").arg(queued)
+            : tr("A render is running. Cancel it and close?");
     return confirm(this, tr("Render running"), text);
 }
 
 void MainWindow::onPassFinished(const PassInfo& info) {
     static const char* const kinds[] = {"interactive", "base", "supersample"};
     statusFrame_->setText(tr("%1 ms").arg(info.ms, 0, 'f', 1));
-    const double share = info.totalPixels ? 100.0 * double(info.tracedPixels) / double(info.totalPixels) : 0.0;
+    const double share =
+        info.totalPixels ? 100.0 * double(info.tracedPixels) / double(info.totalPixels) : 0.0;
     statusRetraced_->setText(tr("%1% re-traced").arg(share, 0, 'f', 1));
-    statusPass_->setText(tr("pass: %1%2").arg(QString::fromLatin1(kinds[int(info.kind)]),
-                                               info.cancelled ? tr(" (cut short)") : QString()));
+    statusPass_->setText(tr("pass: %1%2")
+                             .arg(QString::fromLatin1(kinds[int(info.kind)]),
+                                  info.cancelled ? tr(" (cut short)") : QString()));
     const double mrays = info.ms > 0.0 ? double(info.rays) / info.ms / 1000.0 : 0.0;
     statusRays_->setText(tr("%1 Mrays/s").arg(mrays, 0, 'f', 2));
     // Refining passes (base, supersampling) are at the scene's own settings: a level the
     // last drag needed (the box proxy, say) no longer describes the picture after release.
     const int level = info.kind == PassKind::Interactive ? info.governorLevel : 0;
-    statusGovernor_->setText(level < 0 ? tr("governor: off")
-                                       : tr("governor: %1").arg(QString::fromLatin1(
-                                             Governor::levelName(level))));
+    statusGovernor_->setText(
+        level < 0 ? tr("governor: off")
+                  : tr("governor: %1").arg(QString::fromLatin1(Governor::levelName(level))));
 }
 
 void MainWindow::onSessionError(const QString& message) {
@@ -378,7 +387,8 @@ void MainWindow::onSessionError(const QString& message) {
 
 void MainWindow::readSettings() {
     QSettings s;
-    if (!restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray())) resize(1400, 850);
+    if (!restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray()))
+        resize(1400, 850);
     restoreState(s.value(QStringLiteral("window/state")).toByteArray());
 }
 
@@ -467,8 +477,8 @@ void MainWindow::about() {
            "<li>Qt %3 (LGPL 3)</li><li>Embree 3 (Apache 2.0)</li><li>oneTBB (Apache 2.0)</li>"
            "<li>OpenImageIO (Apache 2.0)</li><li>Open Asset Import Library (BSD 3-clause)</li>"
            "<li>GLM (MIT)</li><li>JSON for Modern C++ (MIT)</li></ul>")
-            .arg(QApplication::applicationVersion(),
-                 QString::fromLatin1(engineName(prefs_.engine)), QString::fromLatin1(qVersion())));
+            .arg(QApplication::applicationVersion(), QString::fromLatin1(engineName(prefs_.engine)),
+                 QString::fromLatin1(qVersion())));
 }
 
 }  // namespace rs::ui

@@ -2,15 +2,14 @@
 // actions, menus, toolbar, status bar, file handling and settings.
 #pragma once
 
+#include <QMainWindow>
+#include <QPoint>
+#include <memory>
+#include <optional>
+
 #include "placement.h"
 #include "preferences.h"
 #include "scene_edits.h"
-
-#include <QMainWindow>
-#include <QPoint>
-
-#include <memory>
-#include <optional>
 
 class QAction;
 class QDialog;

@@ -1,26 +1,4 @@
 // MainWindow file handling (new, open, save, recent, drop, import, export) and scene edits.
-#include "main_window.h"
-
-#include "autosave.h"
-#include "background_jobs.h"
-#include "cluster_submit_dialog.h"
-#include "display_frame.h"
-#include "error_reporter.h"
-#include "image/image_io.h"
-#include "integrator/cost_estimate.h"
-#include "io/scene_io.h"
-#include "outliner_view.h"
-#include "placement.h"
-#include "render_queue.h"
-#include "scene_file_writer.h"
-#include "scene_editor.h"
-#include "session_controller.h"
-#include "snapshot/compiled_scene.h"
-#include "user_confirmation.h"
-#include "viewport.h"
-
-#include <algorithm>
-
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDragEnterEvent>
@@ -31,6 +9,26 @@
 #include <QMimeData>
 #include <QSpinBox>
 #include <QStatusBar>
+#include <algorithm>
+
+#include "autosave.h"
+#include "background_jobs.h"
+#include "cluster_submit_dialog.h"
+#include "display_frame.h"
+#include "error_reporter.h"
+#include "image/image_io.h"
+#include "integrator/cost_estimate.h"
+#include "io/scene_io.h"
+#include "main_window.h"
+#include "outliner_view.h"
+#include "placement.h"
+#include "render_queue.h"
+#include "scene_editor.h"
+#include "scene_file_writer.h"
+#include "session_controller.h"
+#include "snapshot/compiled_scene.h"
+#include "user_confirmation.h"
+#include "viewport.h"
 
 namespace rs::ui {
 
@@ -38,8 +36,8 @@ namespace {
 const QString kSceneFilter = QObject::tr("RayStudio scenes (*.scene.json *.json)");
 const QString kMeshFilter =
     QObject::tr("Meshes (*.obj *.ply *.stl *.gltf *.glb *.fbx *.dae *.3ds *.off);;All files (*)");
-const QString kImageFilter =
-    QObject::tr("PNG (*.png);;JPEG (*.jpg *.jpeg);;TIFF (*.tif *.tiff);;OpenEXR (*.exr);;Radiance HDR (*.hdr)");
+const QString kImageFilter = QObject::tr(
+    "PNG (*.png);;JPEG (*.jpg *.jpeg);;TIFF (*.tif *.tiff);;OpenEXR (*.exr);;Radiance HDR (*.hdr)");
 
 bool isSceneFile(const QString& path) {
     return path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive);
@@ -48,9 +46,10 @@ bool isSceneFile(const QString& path) {
 
 bool MainWindow::maybeSave() {
     if (editor_->undoStack()->isClean()) return true;
-    const auto answer = QMessageBox::warning(
-        this, tr("RayStudio"), tr("The scene has been modified.\nDo you want to save your changes?"),
-        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    const auto answer =
+        QMessageBox::warning(this, tr("RayStudio"),
+                             tr("The scene has been modified.\nDo you want to save your changes?"),
+                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save) return save();
     return answer == QMessageBox::Discard;
 }
@@ -73,7 +72,8 @@ void MainWindow::newFile() {
 
 void MainWindow::open() {
     if (!maybeSave()) return;
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Scene"), QString(), kSceneFilter);
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open Scene"), QString(), kSceneFilter);
     if (!path.isEmpty()) openFile(path);
 }
 
@@ -81,7 +81,8 @@ bool MainWindow::openFile(const QString& path) {
     SceneLoadResult result = loadScene(path.toStdString());
     if (!result.ok()) {
         reportError(this, tr("Cannot open scene"),
-                    tr("%1 could not be opened:\n\n%2").arg(path, QString::fromStdString(result.errorText())));
+                    tr("%1 could not be opened:\n\n%2")
+                        .arg(path, QString::fromStdString(result.errorText())));
         return false;
     }
     editor_->resetDocument(std::move(result.document), QFileInfo(path).absoluteFilePath());
@@ -95,7 +96,8 @@ bool MainWindow::save() {
 }
 
 bool MainWindow::saveAs() {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Scene"), editor_->filePath(), kSceneFilter);
+    QString path =
+        QFileDialog::getSaveFileName(this, tr("Save Scene"), editor_->filePath(), kSceneFilter);
     if (path.isEmpty()) return false;
     if (!isSceneFile(path)) path += QStringLiteral(".scene.json");
     return saveFile(path);
@@ -105,7 +107,8 @@ bool MainWindow::saveFile(const QString& path) {
     const QFileInfo info(path);
     QString error;
     if (!writeSceneFile(path, editor_->document(), error)) {
-        reportError(this, tr("Cannot save scene"), tr("%1 could not be written:\n%2").arg(path, error));
+        reportError(this, tr("Cannot save scene"),
+                    tr("%1 could not be written:\n%2").arg(path, error));
         return false;
     }
     editor_->undoStack()->setClean();
@@ -124,7 +127,8 @@ void MainWindow::setRenderSize(int width, int height) {
 }
 
 void MainWindow::importMeshDialog() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Import Mesh"), QString(), kMeshFilter);
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Import Mesh"), QString(), kMeshFilter);
     if (!path.isEmpty()) importMesh(path);
 }
 
@@ -206,7 +210,8 @@ void MainWindow::renderImageDialog() {
     connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
     form->addRow(buttons);
     if (dialog.exec() != QDialog::Accepted) return;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Render Image To"), QString(), kImageFilter);
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Render Image To"), QString(), kImageFilter);
     if (path.isEmpty()) return;
     renderImage(path, width->value(), height->value());
 }
@@ -220,7 +225,8 @@ ClusterSubmitDialog* MainWindow::submitToClusterDialog() {
             return nullptr;
     }
     const SceneDocument& doc = editor_->document();
-    auto* dialog = new ClusterSubmitDialog(editor_->filePath(), doc.render.width, doc.render.height, this);
+    auto* dialog =
+        new ClusterSubmitDialog(editor_->filePath(), doc.render.width, doc.render.height, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->show();
     return dialog;
@@ -327,8 +333,9 @@ void MainWindow::duplicateSelection() {
     for (ObjectId id : editor_->selectedIds())
         if (const ObjectId copy = duplicate(doc, id); copy != kNoObject) copies.push_back(copy);
     if (copies.empty()) return;
-    editor_->edit(copies.size() == 1 ? tr("Duplicate") : tr("Duplicate %1 items").arg(copies.size()),
-                  std::move(doc));
+    editor_->edit(
+        copies.size() == 1 ? tr("Duplicate") : tr("Duplicate %1 items").arg(copies.size()),
+        std::move(doc));
     editor_->setSelection(copies);
 }
 

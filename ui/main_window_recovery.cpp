@@ -1,16 +1,15 @@
 // MainWindow's side of crash recovery: offering a crashed session's autosave at start.
-#include "main_window.h"
-
-#include "autosave.h"
-#include "error_reporter.h"
-#include "io/scene_io.h"
-#include "scene_editor.h"
-
 #include <QFileInfo>
 #include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QStatusBar>
+
+#include "autosave.h"
+#include "error_reporter.h"
+#include "io/scene_io.h"
+#include "main_window.h"
+#include "scene_editor.h"
 
 namespace rs::ui {
 

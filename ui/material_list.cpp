@@ -1,17 +1,16 @@
 // MaterialList: list widget, buttons and the edits of scene_edits.h they push.
 #include "material_list.h"
 
-#include "scene_edits.h"
-#include "scene_editor.h"
-
 #include <QGridLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
-
 #include <unordered_map>
+
+#include "scene_editor.h"
+#include "scene_edits.h"
 
 namespace rs::ui {
 
@@ -88,7 +87,9 @@ bool MaterialList::setCurrent(const std::string& name) {
     return false;
 }
 
-QString MaterialList::message() const { return message_->text(); }
+QString MaterialList::message() const {
+    return message_->text();
+}
 
 void MaterialList::showMessage(const QString& text) {
     message_->setText(text);
@@ -155,7 +156,8 @@ void MaterialList::duplicateMaterial() {
     SceneDocument doc = editor_->document();
     const std::string name = rs::ui::duplicateMaterial(doc, current());
     if (name.empty()) return;
-    editor_->edit(tr("Duplicate material %1").arg(QString::fromStdString(current())), std::move(doc));
+    editor_->edit(tr("Duplicate material %1").arg(QString::fromStdString(current())),
+                  std::move(doc));
     setCurrent(name);
 }
 
@@ -168,7 +170,8 @@ void MaterialList::onItemChanged(QListWidgetItem* item) {
     const std::string to = item->text().toStdString();
     if (from == to) return;
     // After the in-place editor has finished with the item: the edit rebuilds the list.
-    QMetaObject::invokeMethod(this, [this, from, to] { applyRename(from, to); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this, from, to] { applyRename(from, to); }, Qt::QueuedConnection);
 }
 
 void MaterialList::applyRename(const std::string& from, const std::string& to) {

@@ -2,13 +2,12 @@
 // Assign to the selection, each one undo step; names checked as the scene format requires.
 #pragma once
 
-#include "scene/document.h"
-
 #include <QStringList>
 #include <QWidget>
-
 #include <string>
 #include <vector>
+
+#include "scene/document.h"
 
 class QLabel;
 class QListWidget;
@@ -60,7 +59,7 @@ private:
     QPushButton* delete_;
     QPushButton* assign_;
     QLabel* message_;
-    QString refused_;  ///< A refused rename's error, shown until the next change.
+    QString refused_;    ///< A refused rename's error, shown until the next change.
     QStringList shown_;  ///< "name/users" of each material listed.
 };
 

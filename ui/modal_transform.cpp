@@ -2,11 +2,10 @@
 // selection. Typed values win over the cursor, as in Blender.
 #include "modal_transform.h"
 
-#include "transform_edits.h"
-
 #include <Qt>
-
 #include <cmath>
+
+#include "transform_edits.h"
 
 namespace rs::ui {
 

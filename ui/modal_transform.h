@@ -1,13 +1,12 @@
 // One G / R / S gesture (Blender's modal transforms): axis locks, typed values, snapping.
 #pragma once
 
-#include "scene/document.h"
-#include "view_projection.h"
-
 #include <QPointF>
 #include <QString>
-
 #include <vector>
+
+#include "scene/document.h"
+#include "view_projection.h"
 
 namespace rs::ui {
 
@@ -65,7 +64,7 @@ private:
     Vec3 pivot_;
     QPointF startCursor_, cursor_;
     bool snap_ = false;
-    int axis_ = -1;  ///< -1 free, else 0/1/2 for X/Y/Z.
+    int axis_ = -1;       ///< -1 free, else 0/1/2 for X/Y/Z.
     bool plane_ = false;  ///< Locked to the plane normal to axis_ instead of along it.
     Mat3 axes_{1.0f};
     QString typed_;

@@ -1,8 +1,8 @@
 // OutlinerModel: ids are cached per row so edits that keep the structure only Q_EMIT dataChanged.
 #include "outliner_model.h"
 
-#include "scene_edits.h"
 #include "scene_editor.h"
+#include "scene_edits.h"
 
 namespace rs::ui {
 
@@ -60,7 +60,9 @@ int OutlinerModel::rowCount(const QModelIndex& parent) const {
     return 0;
 }
 
-int OutlinerModel::columnCount(const QModelIndex&) const { return 1; }
+int OutlinerModel::columnCount(const QModelIndex&) const {
+    return 1;
+}
 
 ObjectId OutlinerModel::idOf(const QModelIndex& i) const {
     if (!i.isValid()) return kNoObject;

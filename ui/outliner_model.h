@@ -1,9 +1,9 @@
 // Item model of the outliner: the camera, the lights and the objects of the document.
 #pragma once
 
-#include "scene/document.h"
-
 #include <QAbstractItemModel>
+
+#include "scene/document.h"
 
 namespace rs::ui {
 

@@ -2,10 +2,10 @@
 // place, context menu.
 #include "outliner_view.h"
 
+#include <QHeaderView>
+
 #include "outliner_model.h"
 #include "scene_editor.h"
-
-#include <QHeaderView>
 
 namespace rs::ui {
 

@@ -11,7 +11,6 @@
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
-
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -51,8 +50,10 @@ void paintSwatch(QPushButton* b, const Vec3& c) {
     const Vec3 shown = glm::clamp(c / std::max({1.0f, c.x, c.y, c.z}), Vec3(0.0f), Vec3(1.0f));
     const QColor q = QColor::fromRgbF(shown.x, shown.y, shown.z);
     const QString text = q.lightnessF() > 0.5 ? QStringLiteral("black") : QStringLiteral("white");
-    b->setStyleSheet(QStringLiteral("background-color: %1; color: %2; min-height: 18px;").arg(q.name(), text));
-    b->setText(QStringLiteral("%1, %2, %3").arg(c.x, 0, 'g', 3).arg(c.y, 0, 'g', 3).arg(c.z, 0, 'g', 3));
+    b->setStyleSheet(
+        QStringLiteral("background-color: %1; color: %2; min-height: 18px;").arg(q.name(), text));
+    b->setText(
+        QStringLiteral("%1, %2, %3").arg(c.x, 0, 'g', 3).arg(c.y, 0, 'g', 3).arg(c.z, 0, 'g', 3));
 }
 
 ParamEditor floatEditor(const ParamDescriptor& d, QWidget* parent,
@@ -74,7 +75,8 @@ ParamEditor floatEditor(const ParamDescriptor& d, QWidget* parent,
         });
     }
     layout->addWidget(spin, 1);
-    QObject::connect(spin, &QDoubleSpinBox::valueChanged, w, [onChange](double v) { onChange(float(v)); });
+    QObject::connect(spin, &QDoubleSpinBox::valueChanged, w,
+                     [onChange](double v) { onChange(float(v)); });
     auto set = [=](const ParamValue& v) {
         const double x = std::get<float>(v);
         const QSignalBlocker b1(spin);
@@ -112,7 +114,9 @@ ParamEditor vecEditor(const ParamDescriptor& d, QWidget* parent,
 }
 
 /// Largest component: the colour's value (HSV), which HDR colours take beyond 1.
-float valueOf(const Vec3& c) { return std::max({c.x, c.y, c.z}); }
+float valueOf(const Vec3& c) {
+    return std::max({c.x, c.y, c.z});
+}
 
 /// `c` rescaled so that its value is `v` (a grey of `v` for black).
 Vec3 withValue(const Vec3& c, float v) {
@@ -172,17 +176,21 @@ ParamEditor colorEditor(const ParamDescriptor& d, QWidget* parent,
 }  // namespace
 
 ParamEditor makeParamEditor(const ParamDescriptor& d, QWidget* parent,
-                            std::function<void(const ParamValue&)> onChange, ParamPreview onPreview) {
+                            std::function<void(const ParamValue&)> onChange,
+                            ParamPreview onPreview) {
     switch (d.type) {
-        case ParamType::Float: return floatEditor(d, parent, std::move(onChange));
-        case ParamType::Vec3: return vecEditor(d, parent, std::move(onChange));
+        case ParamType::Float:
+            return floatEditor(d, parent, std::move(onChange));
+        case ParamType::Vec3:
+            return vecEditor(d, parent, std::move(onChange));
         case ParamType::Color:
             return colorEditor(d, parent, std::move(onChange), std::move(onPreview));
         case ParamType::Int: {
             auto* spin = new QSpinBox(parent);
             spin->setRange(int(d.min), int(d.max));
             spin->setKeyboardTracking(false);
-            QObject::connect(spin, &QSpinBox::valueChanged, spin, [onChange](int v) { onChange(v); });
+            QObject::connect(spin, &QSpinBox::valueChanged, spin,
+                             [onChange](int v) { onChange(v); });
             return {spin, [spin](const ParamValue& v) {
                         const QSignalBlocker b(spin);
                         spin->setValue(std::get<int>(v));

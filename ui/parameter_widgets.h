@@ -2,10 +2,10 @@
 // combos), one factory for every kind the render side describes.
 #pragma once
 
-#include "scene/parameters.h"
-
 #include <functional>
 #include <optional>
+
+#include "scene/parameters.h"
 
 class QWidget;
 

@@ -1,13 +1,13 @@
 // Placement of new objects by a ray cast through the view camera; see placement.h.
 #include "placement.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "scene/parameters.h"
 #include "scene_edits.h"
 #include "snapshot/compiled_scene.h"
 #include "transform_edits.h"
-
-#include <algorithm>
-#include <cmath>
 
 namespace rs::ui {
 

@@ -16,7 +16,7 @@ struct Placement {
     Vec3 point{0.0f};   ///< The surface point hit, else a point `fallbackDistance` along the ray.
     Vec3 normal{0.0f};  ///< The hit surface's normal on the viewer's side; -direction when none.
     Vec3 viewDir{0.0f, 0.0f, -1.0f};  ///< Unit direction of the ray.
-    float distance = 0.0f;  ///< From the ray's origin to `point`.
+    float distance = 0.0f;            ///< From the ray's origin to `point`.
     bool onSurface = false;
 };
 

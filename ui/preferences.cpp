@@ -1,11 +1,6 @@
 // Preferences storage and the dialog, one control per InteractionPolicy member.
 #include "preferences.h"
 
-#include "view_projection.h"
-
-#include <algorithm>
-#include <cmath>
-
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -14,6 +9,10 @@
 #include <QSettings>
 #include <QSpinBox>
 #include <QThread>
+#include <algorithm>
+#include <cmath>
+
+#include "view_projection.h"
 
 namespace rs::ui {
 
@@ -30,7 +29,8 @@ Preferences loadPreferences() {
                              .toStdString(),
                          p.engine))
         p.engine = EngineKind::Embree;
-    p.autosaveSeconds = std::max(0, s.value(QStringLiteral("autosave/seconds"), p.autosaveSeconds).toInt());
+    p.autosaveSeconds =
+        std::max(0, s.value(QStringLiteral("autosave/seconds"), p.autosaveSeconds).toInt());
     p.previewDivider = s.value(QStringLiteral("viewport/previewDivider"), 1).toInt();
     if (!validPreviewDivider(p.previewDivider)) p.previewDivider = 1;
     if (!parseDisplayKind(s.value(QStringLiteral("viewport/display")).toString(), p.display))
@@ -85,18 +85,20 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     auto notify = [this] { Q_EMIT changed(prefs_); };
 
     // The viewport traces its own size; the document's render size is Render Image's.
-    auto* preview = enumCombo(this, "previewScale",
-                              {tr("1 (every pixel)"), tr("1/2"), tr("1/4")},
-                              prefs_.previewDivider == 4 ? 2 : prefs_.previewDivider == 2 ? 1 : 0);
-    preview->setToolTip(tr("The viewport traces this share of its pixels a side (Blender's pixel size)"));
+    auto* preview = enumCombo(this, "previewScale", {tr("1 (every pixel)"), tr("1/2"), tr("1/4")},
+                              prefs_.previewDivider == 4   ? 2
+                              : prefs_.previewDivider == 2 ? 1
+                                                           : 0);
+    preview->setToolTip(
+        tr("The viewport traces this share of its pixels a side (Blender's pixel size)"));
     connect(preview, &QComboBox::currentIndexChanged, this, [=, this](int i) {
         prefs_.previewDivider = 1 << i;
         notify();
     });
     form->addRow(tr("Viewport preview scale"), preview);
 
-    auto* display = enumCombo(this, "display", {tr("Automatic"), tr("OpenGL"), tr("Software")},
-                              prefs_.display);
+    auto* display =
+        enumCombo(this, "display", {tr("Automatic"), tr("OpenGL"), tr("Software")}, prefs_.display);
     display->setToolTip(
         tr("Automatic: OpenGL on a graphics card, Software (QPainter, only the changed "
            "rectangles) on software OpenGL such as llvmpipe, whose drawing takes the cores "
@@ -131,7 +133,8 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     governorNote->setWordWrap(true);
     form->addRow(governorNote);
 
-    auto* resolution = enumCombo(this, "resolution", {tr("Full"), tr("Half"), tr("Quarter")}, p.resolution);
+    auto* resolution =
+        enumCombo(this, "resolution", {tr("Full"), tr("Half"), tr("Quarter")}, p.resolution);
     connect(resolution, &QComboBox::currentIndexChanged, this, [=, this](int i) {
         prefs_.policy.resolution = MovingResolution(i);
         notify();
@@ -139,15 +142,22 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     form->addRow(tr("Resolution while moving"), resolution);
 
     auto* interleaved = check(this, "interleaved", tr("2-pass interleaved frames"), p.interleaved);
-    connect(interleaved, &QCheckBox::toggled, this, [=, this](bool on) { prefs_.policy.interleaved = on; notify(); });
+    connect(interleaved, &QCheckBox::toggled, this, [=, this](bool on) {
+        prefs_.policy.interleaved = on;
+        notify();
+    });
     form->addRow(tr("Interleaving"), interleaved);
 
     auto* proxy = check(this, "boxProxy", tr("Trace the moving object as its box"), p.boxProxy);
-    connect(proxy, &QCheckBox::toggled, this, [=, this](bool on) { prefs_.policy.boxProxy = on; notify(); });
+    connect(proxy, &QCheckBox::toggled, this, [=, this](bool on) {
+        prefs_.policy.boxProxy = on;
+        notify();
+    });
     form->addRow(tr("Box proxy"), proxy);
 
-    auto* refraction = enumCombo(this, "refraction",
-                                 {tr("Full"), tr("Diffuse"), tr("Diffuse except selected")}, p.refraction);
+    auto* refraction =
+        enumCombo(this, "refraction", {tr("Full"), tr("Diffuse"), tr("Diffuse except selected")},
+                  p.refraction);
     connect(refraction, &QComboBox::currentIndexChanged, this, [=, this](int i) {
         prefs_.policy.refraction = RefractionMode(i);
         notify();
@@ -166,40 +176,58 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     depth->setRange(-1, 64);
     depth->setSpecialValueText(tr("Scene's max depth"));
     depth->setValue(p.maxDepthWhileMoving);
-    connect(depth, &QSpinBox::valueChanged, this, [=, this](int v) { prefs_.policy.maxDepthWhileMoving = v; notify(); });
+    connect(depth, &QSpinBox::valueChanged, this, [=, this](int v) {
+        prefs_.policy.maxDepthWhileMoving = v;
+        notify();
+    });
     form->addRow(tr("Depth while moving"), depth);
 
-    auto* shadows = enumCombo(this, "shadows",
-                              {tr("Full"), tr("Hard only"), tr("Off"), tr("Deferred (added after release)")},
-                              p.shadows);
+    auto* shadows = enumCombo(
+        this, "shadows",
+        {tr("Full"), tr("Hard only"), tr("Off"), tr("Deferred (added after release)")}, p.shadows);
     connect(shadows, &QComboBox::currentIndexChanged, this, [=, this](int i) {
         prefs_.policy.shadows = MovingShadows(i);
         notify();
     });
     form->addRow(tr("Shadows while moving"), shadows);
 
-    auto* supersample = check(this, "supersample", tr("Supersample while moving"), p.supersampleWhileMoving);
-    connect(supersample, &QCheckBox::toggled, this, [=, this](bool on) { prefs_.policy.supersampleWhileMoving = on; notify(); });
+    auto* supersample =
+        check(this, "supersample", tr("Supersample while moving"), p.supersampleWhileMoving);
+    connect(supersample, &QCheckBox::toggled, this, [=, this](bool on) {
+        prefs_.policy.supersampleWhileMoving = on;
+        notify();
+    });
     form->addRow(tr("Supersampling"), supersample);
 
-    auto* dirty = check(this, "dirtyRegions", tr("Re-trace only what an edit can change"), p.dirtyRegions);
-    connect(dirty, &QCheckBox::toggled, this, [=, this](bool on) { prefs_.policy.dirtyRegions = on; notify(); });
+    auto* dirty =
+        check(this, "dirtyRegions", tr("Re-trace only what an edit can change"), p.dirtyRegions);
+    connect(dirty, &QCheckBox::toggled, this, [=, this](bool on) {
+        prefs_.policy.dirtyRegions = on;
+        notify();
+    });
     form->addRow(tr("Dirty regions"), dirty);
 
-    auto* whole = check(this, "wholeFrames", tr("Show only whole frames while moving"), p.wholeFramesWhileMoving);
-    whole->setToolTip(tr("Each pass runs to its end and the view keeps the last complete picture until the "
-                         "next one is done. Off: every mouse move restarts the pass and tiles show as they "
-                         "come, fresher but mixed from several moves."));
-    connect(whole, &QCheckBox::toggled, this, [=, this](bool on) { prefs_.policy.wholeFramesWhileMoving = on; notify(); });
+    auto* whole = check(this, "wholeFrames", tr("Show only whole frames while moving"),
+                        p.wholeFramesWhileMoving);
+    whole->setToolTip(
+        tr("Each pass runs to its end and the view keeps the last complete picture until the "
+           "next one is done. Off: every mouse move restarts the pass and tiles show as they "
+           "come, fresher but mixed from several moves."));
+    connect(whole, &QCheckBox::toggled, this, [=, this](bool on) {
+        prefs_.policy.wholeFramesWhileMoving = on;
+        notify();
+    });
     form->addRow(tr("Whole frames"), whole);
-
 
     auto* threads = new QSpinBox(this);
     threads->setObjectName(QStringLiteral("threads"));
     threads->setRange(0, std::max(64, QThread::idealThreadCount()));
     threads->setSpecialValueText(tr("All cores"));
     threads->setValue(prefs_.threads);
-    connect(threads, &QSpinBox::valueChanged, this, [=, this](int v) { prefs_.threads = v; notify(); });
+    connect(threads, &QSpinBox::valueChanged, this, [=, this](int v) {
+        prefs_.threads = v;
+        notify();
+    });
     form->addRow(tr("Render threads"), threads);
 
     // Render Image runs beside the viewport; fewer threads here leave the viewport its share.
@@ -216,7 +244,8 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
 
     // Same image either way (tested); Embree is faster on meshes and large scenes, the
     // built-in one is the thesis's own BVH with refit.
-    auto* engine = enumCombo(this, "engine", {tr("Embree"), tr("Built-in BVH (thesis)")}, prefs_.engine);
+    auto* engine =
+        enumCombo(this, "engine", {tr("Embree"), tr("Built-in BVH (thesis)")}, prefs_.engine);
     connect(engine, &QComboBox::currentIndexChanged, this, [=, this](int i) {
         prefs_.engine = EngineKind(i);
         notify();
@@ -228,7 +257,10 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     autosave->setSuffix(tr(" s"));
     autosave->setSpecialValueText(tr("Off"));
     autosave->setValue(prefs_.autosaveSeconds);
-    connect(autosave, &QSpinBox::valueChanged, this, [=, this](int v) { prefs_.autosaveSeconds = v; notify(); });
+    connect(autosave, &QSpinBox::valueChanged, this, [=, this](int v) {
+        prefs_.autosaveSeconds = v;
+        notify();
+    });
     form->addRow(tr("Autosave every"), autosave);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);

@@ -2,20 +2,20 @@
 // QSettings, and the dialog that edits them live.
 #pragma once
 
+#include <QDialog>
+
 #include "accel/ray_engine.h"
 #include "display_choice.h"
 #include "session/interaction_policy.h"
-
-#include <QDialog>
 
 namespace rs::ui {
 
 /// What Preferences holds.
 struct Preferences {
     InteractionPolicy policy;
-    int threads = 0;  ///< 0: all cores.
+    int threads = 0;                         ///< 0: all cores.
     EngineKind engine = EngineKind::Embree;  ///< Who answers the ray queries.
-    int renderThreads = 0;  ///< Render Image's threads, shared with the viewport; 0: all cores.
+    int renderThreads = 0;     ///< Render Image's threads, shared with the viewport; 0: all cores.
     int autosaveSeconds = 60;  ///< Autosave interval while the document is modified; 0: off.
     /// The viewport traces 1 / previewDivider of its device pixels a side (1, 2 or 4).
     int previewDivider = 1;
@@ -32,8 +32,8 @@ Preferences loadPreferences();
 /// Writes preferences to QSettings (the policy as policyToJson text).
 void savePreferences(const Preferences& prefs);
 
-/// One control per interaction policy setting plus the thread count and the ray engine; every change is
-/// announced at once through changed() so the session follows live.
+/// One control per interaction policy setting plus the thread count and the ray engine; every
+/// change is announced at once through changed() so the session follows live.
 class PreferencesDialog : public QDialog {
     Q_OBJECT
 public:

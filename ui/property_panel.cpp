@@ -1,17 +1,17 @@
 // PropertyPanel: generic sections over descriptors plus the material chooser.
 #include "property_panel.h"
 
-#include "io/mesh_io.h"
-#include "parameter_widgets.h"
-#include "scene_edits.h"
-#include "scene_editor.h"
-
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QVBoxLayout>
+
+#include "io/mesh_io.h"
+#include "parameter_widgets.h"
+#include "scene_editor.h"
+#include "scene_edits.h"
 
 namespace rs::ui {
 
@@ -42,7 +42,9 @@ QString PropertyPanel::signature() const {
     const ObjectId id = editor_->selection();
     QString s = QString::number(id) + QLatin1Char('/') + QString::number(doc.materials.size());
     if (const Object* o = doc.findObject(id))
-        s += QStringLiteral("/o%1/%2").arg(o->geometry.index()).arg(QString::fromStdString(o->material));
+        s += QStringLiteral("/o%1/%2")
+                 .arg(o->geometry.index())
+                 .arg(QString::fromStdString(o->material));
     if (const Light* l = doc.findLight(id)) s += QStringLiteral("/l%1").arg(int(l->type));
     for (const Material& m : doc.materials) s += QLatin1Char('|') + QString::fromStdString(m.name);
     return s;
@@ -65,7 +67,8 @@ void PropertyPanel::showError(const QString& text) {
     errorLabel_->setVisible(!text.isEmpty());
 }
 
-bool PropertyPanel::applyEdit(const QString& section, const std::string& key, const ParamValue& value) {
+bool PropertyPanel::applyEdit(const QString& section, const std::string& key,
+                              const ParamValue& value) {
     for (const auto& [name, apply] : appliers_)
         if (name == section) return apply(key, value);
     return false;
@@ -132,7 +135,8 @@ void PropertyPanel::addMaterialChooser(ObjectId id) {
     auto* combo = new QComboBox(box);
     combo->addItem(kDefaultMaterial);
     for (const Material& m : doc.materials) combo->addItem(QString::fromStdString(m.name));
-    combo->setCurrentIndex(o->material.empty() ? 0 : combo->findText(QString::fromStdString(o->material)));
+    combo->setCurrentIndex(
+        o->material.empty() ? 0 : combo->findText(QString::fromStdString(o->material)));
     connect(combo, &QComboBox::activated, this, [this, id, combo](int index) {
         SceneDocument doc = editor_->document();
         Object* obj = doc.findObject(id);
@@ -142,15 +146,17 @@ void PropertyPanel::addMaterialChooser(ObjectId id) {
     });
     form->addRow(tr("Material"), combo);
     const int users = o->material.empty() ? 0 : materialUsers(doc, o->material);
-    auto* usage = new QLabel(users > 1 ? tr("Shared: used by %1 objects; edits change all of them").arg(users)
-                                       : o->material.empty() ? tr("Built-in, not editable")
-                                                             : tr("Used by this object only"),
-                             box);
+    auto* usage =
+        new QLabel(users > 1 ? tr("Shared: used by %1 objects; edits change all of them").arg(users)
+                   : o->material.empty() ? tr("Built-in, not editable")
+                                         : tr("Used by this object only"),
+                   box);
     usage->setObjectName(QStringLiteral("materialUsage"));
     usage->setWordWrap(true);
     form->addRow(usage);
     if (users != 1) {
-        auto* unique = new QPushButton(o->material.empty() ? tr("New material") : tr("Make unique"), box);
+        auto* unique =
+            new QPushButton(o->material.empty() ? tr("New material") : tr("Make unique"), box);
         unique->setObjectName(QStringLiteral("makeUnique"));
         connect(unique, &QPushButton::clicked, this, [this, id] {
             SceneDocument doc = editor_->document();
@@ -208,20 +214,21 @@ void PropertyPanel::rebuild() {
         layout_->addWidget(summary);
     }
     if (const Object* o = doc.findObject(id)) {
-        addSection(QString::fromLatin1(kindLabel(geometryKind(o->geometry))), QStringLiteral("geometry"),
-                   geometryKind(o->geometry), [id](auto& d) {
+        addSection(QString::fromLatin1(kindLabel(geometryKind(o->geometry))),
+                   QStringLiteral("geometry"), geometryKind(o->geometry), [id](auto& d) {
                        auto* obj = d.findObject(id);
                        return obj ? &obj->geometry : decltype(&obj->geometry){};
                    });
         if (!std::holds_alternative<PlaneGeometry>(o->geometry))
-            addSection(tr("Transform"), QStringLiteral("transform"), ParamKind::Transform, [id](auto& d) {
-                auto* obj = d.findObject(id);
-                return obj ? &obj->transform : decltype(&obj->transform){};
-            });
+            addSection(tr("Transform"), QStringLiteral("transform"), ParamKind::Transform,
+                       [id](auto& d) {
+                           auto* obj = d.findObject(id);
+                           return obj ? &obj->transform : decltype(&obj->transform){};
+                       });
         addMaterialChooser(id);
     } else if (const Light* l = doc.findLight(id)) {
-        addSection(QString::fromLatin1(kindLabel(lightKind(*l))), QStringLiteral("light"), lightKind(*l),
-                   [id](auto& d) { return d.findLight(id); });
+        addSection(QString::fromLatin1(kindLabel(lightKind(*l))), QStringLiteral("light"),
+                   lightKind(*l), [id](auto& d) { return d.findLight(id); });
     } else {
         if (id == SceneEditor::kCameraSelection)
             addSection(tr("Camera"), QStringLiteral("camera"), ParamKind::Camera,

@@ -2,13 +2,12 @@
 // (geometry, transform, material, light, camera, render settings).
 #pragma once
 
-#include "scene/document.h"
-#include "scene/parameters.h"
-
 #include <QScrollArea>
-
 #include <functional>
 #include <vector>
+
+#include "scene/document.h"
+#include "scene/parameters.h"
 
 class QLabel;
 class QVBoxLayout;

@@ -1,15 +1,14 @@
 // RasterFrameView, and fitRect, which both views use.
 #include "raster_frame_view.h"
 
-#include "image/tonemap.h"
-
 #include <QElapsedTimer>
 #include <QPaintEvent>
 #include <QPainter>
 #include <QRegion>
-
 #include <algorithm>
 #include <cmath>
+
+#include "image/tonemap.h"
 
 namespace rs::ui {
 
@@ -30,7 +29,8 @@ RasterFrameView::RasterFrameView(QWidget* parent) : QWidget(parent) {
     setAttribute(Qt::WA_OpaquePaintEvent);
 }
 
-bool RasterFrameView::canShadeRects(const DisplayFrame& f, ViewMode mode, const std::vector<ObjectId>& selected,
+bool RasterFrameView::canShadeRects(const DisplayFrame& f, ViewMode mode,
+                                    const std::vector<ObjectId>& selected,
                                     std::vector<QRect>& rects) const {
     // Debug views normalise over the whole frame; everything else changes only where pixels did.
     return mode == ViewMode::Color && shadedFrame_ == &f && shadedMode_ == mode &&
@@ -39,7 +39,8 @@ bool RasterFrameView::canShadeRects(const DisplayFrame& f, ViewMode mode, const 
            f.changedSince(shadedSerial_, rects);
 }
 
-void RasterFrameView::shadeRect(const DisplayFrame& f, const std::vector<ObjectId>& selected, const QRect& rect) {
+void RasterFrameView::shadeRect(const DisplayFrame& f, const std::vector<ObjectId>& selected,
+                                const QRect& rect) {
     // The outline of a pixel depends on its neighbours' ids: one pixel of margin.
     const QRect r = rect.adjusted(-1, -1, 1, 1) & QRect(0, 0, f.width, f.height);
     // All rows before any outline: toneMapRect copies a row's bytes to the next.
@@ -99,7 +100,8 @@ void RasterFrameView::showFrame(std::shared_ptr<const DisplayFrame> frame, ViewM
     update();
 }
 
-QRect RasterFrameView::reshadeOutline(const DisplayFrame& f, const std::vector<ObjectId>& selected) {
+QRect RasterFrameView::reshadeOutline(const DisplayFrame& f,
+                                      const std::vector<ObjectId>& selected) {
     // Only pixels of an object outlined before or now, or next to one, can change, and of
     // those only the ones at an id edge (the press that selects: this is on its clock).
     const QRect bounds = outlinedBounds(f, selected, shadedSelected_);

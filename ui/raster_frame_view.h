@@ -2,10 +2,10 @@
 // shaded image is kept and only the rectangles the frame reports as changed are shaded again.
 #pragma once
 
-#include "frame_view.h"
-
 #include <QElapsedTimer>
 #include <QWidget>
+
+#include "frame_view.h"
 
 namespace rs::ui {
 
@@ -30,8 +30,7 @@ protected:
 private:
     /// True when image_ can be brought up to date by re-shading `rects` alone.
     bool canShadeRects(const DisplayFrame& frame, ViewMode mode,
-                       const std::vector<ObjectId>& selected,
-                       std::vector<QRect>& rects) const;
+                       const std::vector<ObjectId>& selected, std::vector<QRect>& rects) const;
     void shadeRect(const DisplayFrame& frame, const std::vector<ObjectId>& selected,
                    const QRect& rect);
     /// Brings image_ from shadedSelected_ to `selected` where only the outline can differ:

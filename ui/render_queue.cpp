@@ -1,9 +1,9 @@
 // One worker at a time: the renders share the cores with the viewport's session already.
 #include "render_queue.h"
 
-#include "background_jobs.h"
-
 #include <QThread>
+
+#include "background_jobs.h"
 
 namespace rs::ui {
 
@@ -63,8 +63,8 @@ void RenderQueue::startNext() {
         if (isCurrent(self)) Q_EMIT tileReady(tile, where);
     };
     report.done = [this, self](bool ok, const QString& error) { onDone(self, ok, error); };
-    running_->thread = renderToFileAsync(this, job.doc, job.path, job.threads, job.engine, running_->cancel,
-                                         std::move(report));
+    running_->thread = renderToFileAsync(this, job.doc, job.path, job.threads, job.engine,
+                                         running_->cancel, std::move(report));
 }
 
 void RenderQueue::onDone(quint64 serial, bool ok, const QString& error) {

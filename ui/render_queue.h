@@ -2,19 +2,18 @@
 // background while the designer stays editable, with progress and an estimate of the time left.
 #pragma once
 
-#include "accel/ray_engine.h"
-#include "scene/document.h"
-
 #include <QElapsedTimer>
 #include <QImage>
 #include <QObject>
 #include <QPointer>
 #include <QRect>
 #include <QString>
-
 #include <atomic>
 #include <deque>
 #include <memory>
+
+#include "accel/ray_engine.h"
+#include "scene/document.h"
 
 class QThread;
 

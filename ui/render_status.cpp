@@ -2,16 +2,15 @@
 // progress must stay visible while the designer reports other things.
 #include "render_status.h"
 
-#include "render_queue.h"
-
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
-
 #include <algorithm>
 #include <cmath>
+
+#include "render_queue.h"
 
 namespace rs::ui {
 

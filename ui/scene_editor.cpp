@@ -1,9 +1,9 @@
 // SceneEditor: document ownership, undoable edits and selection bookkeeping.
 #include "scene_editor.h"
 
-#include "document_command.h"
-
 #include <algorithm>
+
+#include "document_command.h"
 
 namespace rs::ui {
 
@@ -12,8 +12,8 @@ SceneEditor::SceneEditor(QObject* parent) : QObject(parent) {}
 void SceneEditor::edit(const QString& text, SceneDocument after, MergeKind merge,
                        const QString& mergeKey) {
     // QUndoStack takes ownership of the command.
-    undo_.push(new DocumentCommand(this, text, doc_, std::move(after), merge, mergeKey,
-                                   mergeSerial_));
+    undo_.push(
+        new DocumentCommand(this, text, doc_, std::move(after), merge, mergeKey, mergeSerial_));
 }
 
 void SceneEditor::replaceDocument(SceneDocument doc) {

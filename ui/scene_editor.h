@@ -2,14 +2,13 @@
 // the viewport, outliner and property panel observe.
 #pragma once
 
-#include "scene/document.h"
-
 #include <QObject>
 #include <QString>
 #include <QUndoStack>
-
 #include <optional>
 #include <vector>
+
+#include "scene/document.h"
 
 namespace rs::ui {
 

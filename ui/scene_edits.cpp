@@ -206,7 +206,8 @@ std::string materialDeleteError(const SceneDocument& doc, const std::string& nam
     if (users.empty()) return {};
     std::string list = "\"" + users[0] + "\"";
     constexpr std::size_t kNamed = 3;
-    for (std::size_t i = 1; i < std::min(users.size(), kNamed); ++i) list += ", \"" + users[i] + "\"";
+    for (std::size_t i = 1; i < std::min(users.size(), kNamed); ++i)
+        list += ", \"" + users[i] + "\"";
     if (users.size() > kNamed) list += " and " + std::to_string(users.size() - kNamed) + " more";
     return "\"" + name + "\" is used by " + list + "; assign those another material first";
 }

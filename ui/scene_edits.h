@@ -2,11 +2,11 @@
 // functions on a SceneDocument so commands and tests can use them alike.
 #pragma once
 
-#include "scene/document.h"
-
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "scene/document.h"
 
 namespace rs::ui {
 

@@ -1,10 +1,10 @@
 // Atomic scene saves through QSaveFile (temporary file in the same folder, renamed on commit).
 #include "scene_file_writer.h"
 
-#include "io/scene_io.h"
-
 #include <QFileInfo>
 #include <QSaveFile>
+
+#include "io/scene_io.h"
 
 namespace rs::ui {
 

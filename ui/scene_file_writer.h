@@ -2,9 +2,9 @@
 // mid-write leaves the previous file whole.
 #pragma once
 
-#include "scene/document.h"
-
 #include <QString>
+
+#include "scene/document.h"
 
 namespace rs::ui {
 

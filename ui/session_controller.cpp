@@ -1,7 +1,6 @@
 // SessionController: worker-thread callbacks to GUI-thread signals at display rate.
 #include "session_controller.h"
 
-
 #include <algorithm>
 #include <chrono>
 #include <utility>
@@ -14,12 +13,10 @@ constexpr std::size_t kMaxListedTiles = 16384;
 /// How soon a hand-over that found the frame lock held tries again. A tile commit holds it
 /// for microseconds, an edit's dirty marking for a few milliseconds.
 constexpr int kBusyRetryMs = 2;
-}
+}  // namespace
 
 SessionController::SessionController(int threads, QObject* parent)
-    : QObject(parent),
-      session_(std::make_unique<RenderSession>(threads)),
-      mailbox_(this) {
+    : QObject(parent), session_(std::make_unique<RenderSession>(threads)), mailbox_(this) {
     qRegisterMetaType<rs::PassInfo>();
     repaintTimer_.setSingleShot(true);
     connect(&repaintTimer_, &QTimer::timeout, this, &SessionController::onRepaintTimer);
@@ -98,8 +95,8 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
     const auto start = std::chrono::steady_clock::now();
     // Before the tiles are taken: every tile of the pass that made the frame whole is in them.
     const uint64_t wholeMark = session_->wholeMark();
-    const bool onlyWhole = wait == FrameWait::TryOnly && interacting_ &&
-                           session_->policy().wholeFramesWhileMoving;
+    const bool onlyWhole =
+        wait == FrameWait::TryOnly && interacting_ && session_->policy().wholeFramesWhileMoving;
     bool whole = false, torn = false;
     std::vector<QRect> tiles;
     bool everything = false;

@@ -2,20 +2,19 @@
 // to the display, and the frame is handed to the display without waiting on the session.
 #pragma once
 
-#include "display_frame.h"
-#include "gui_mailbox.h"
-#include "session/render_session.h"
-
+#include <QElapsedTimer>
 #include <QObject>
 #include <QRect>
-#include <QElapsedTimer>
 #include <QTimer>
-
 #include <atomic>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <vector>
+
+#include "display_frame.h"
+#include "gui_mailbox.h"
+#include "session/render_session.h"
 
 Q_DECLARE_METATYPE(rs::PassInfo)
 

@@ -3,17 +3,17 @@
 // controller itself needs no change to report a failed render.
 #pragma once
 
+#include <QString>
+#include <functional>
+
 #include "gui_mailbox.h"
 #include "session/session_observer.h"
-
-#include <QString>
-
-#include <functional>
 
 namespace rs::ui {
 
 /// A SessionObserver that forwards to `next` and queues errors to `onError` on `context`'s
-/// thread (construct it there). Must outlive the session it observes (declare it before the session's owner).
+/// thread (construct it there). Must outlive the session it observes (declare it before the
+/// session's owner).
 class SessionErrorRelay : public SessionObserver {
 public:
     SessionErrorRelay(SessionObserver* next, QObject* context,

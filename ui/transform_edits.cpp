@@ -2,12 +2,11 @@
 // centre sits in its geometry turns and grows in place.
 #include "transform_edits.h"
 
-#include "scene_edits.h"
-
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene_edits.h"
 
 namespace rs::ui {
 

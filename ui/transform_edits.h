@@ -1,10 +1,10 @@
 // Move, rotate and scale of objects and lights about a pivot: the document side of G, R, S.
 #pragma once
 
-#include "scene/document.h"
-
 #include <optional>
 #include <vector>
+
+#include "scene/document.h"
 
 namespace rs::ui {
 

@@ -2,10 +2,10 @@
 // passepartout share.
 #include "view_projection.h"
 
-#include "frame_view.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "frame_view.h"
 
 namespace rs::ui {
 
@@ -37,8 +37,8 @@ Camera fitOutputFrame(const Camera& view, const QSize& frameSize, const QSize& o
     return c;
 }
 
-ViewProjection::ViewProjection(const Camera& view, const QSize& outputSize,
-                               const QSize& frameSize, const QSize& widget)
+ViewProjection::ViewProjection(const Camera& view, const QSize& outputSize, const QSize& frameSize,
+                               const QSize& widget)
     : frame_(frameSize.expandedTo(QSize(1, 1))) {
     const QSize output = outputSize.expandedTo(QSize(1, 1));
     camera_ = CameraModel(fitOutputFrame(view, frame_, output), frame_.width(), frame_.height());

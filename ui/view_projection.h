@@ -2,16 +2,15 @@
 // traced at the viewport's own size (times the preview scale) with the output frame fitted in.
 #pragma once
 
-#include "scene/document.h"
-#include "snapshot/camera_model.h"
-
 #include <QPoint>
 #include <QPointF>
 #include <QRect>
 #include <QRectF>
 #include <QSize>
-
 #include <optional>
+
+#include "scene/document.h"
+#include "snapshot/camera_model.h"
 
 namespace rs::ui {
 

@@ -2,23 +2,22 @@
 // the routing of mouse and keys to view navigation, the gizmo and G/R/S gestures.
 #include "viewport.h"
 
-#include "camera_navigation.h"
-#include "passepartout.h"
-#include "command_shortcut_filter.h"
-#include "scene_edits.h"
-#include "scene_editor.h"
-#include "session_controller.h"
-#include "transform_edits.h"
-#include "viewport_overlay.h"
-
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QVBoxLayout>
 #include <QWheelEvent>
-
 #include <algorithm>
 #include <cmath>
+
+#include "camera_navigation.h"
+#include "command_shortcut_filter.h"
+#include "passepartout.h"
+#include "scene_editor.h"
+#include "scene_edits.h"
+#include "session_controller.h"
+#include "transform_edits.h"
+#include "viewport_overlay.h"
 
 namespace rs::ui {
 
@@ -38,7 +37,9 @@ Vec3 closestOnAxis(const Vec3& a, const Vec3& axis, const Vec3& o, const Vec3& d
 
 Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* parent,
                    DisplayKind display)
-    : QWidget(parent), editor_(editor), session_(session),
+    : QWidget(parent),
+      editor_(editor),
+      session_(session),
       overlay_(new ViewportOverlay([this](QPainter& p) { paintOverlay(p); }, this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -122,7 +123,8 @@ void Viewport::showNewPixels() {
     frame_ = session_->displayFrame(SessionController::FrameWait::TryOnly);
     // A busy lock brings frameUpdated again shortly (the pass's end still pending then).
     if (session_->handoverStats().busy == busy) pacing_.handedOver(paceClock_.elapsed());
-    if (frame_->serial != serial) showHandedOver(before);  // Else the lock was busy, or nothing new.
+    if (frame_->serial != serial)
+        showHandedOver(before);  // Else the lock was busy, or nothing new.
 }
 
 void Viewport::showHandedOver(const QSize& before) {
@@ -193,8 +195,9 @@ void Viewport::beginBoxSelect() {
     if (gesture_ || drag_ != Drag::None) return;
     boxArmed_ = true;
     syncModal();
-    Q_EMIT statusMessage(tr("Box select: drag a rectangle (Shift or Ctrl adds to the selection, "
-                            "Esc cancels)"));
+    Q_EMIT statusMessage(
+        tr("Box select: drag a rectangle (Shift or Ctrl adds to the selection, "
+           "Esc cancels)"));
 }
 
 void Viewport::paintOverlay(QPainter& p) const {
@@ -353,7 +356,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* e) {
             orbitView(delta);
         } else {
             Camera c = viewCamera_;
-            pan(c, float(delta.x()) / std::max(1, height()), float(delta.y()) / std::max(1, height()));
+            pan(c, float(delta.x()) / std::max(1, height()),
+                float(delta.y()) / std::max(1, height()));
             setView(c);
         }
     }
@@ -441,7 +445,10 @@ void Viewport::keyPressEvent(QKeyEvent* e) {
         }
     }
     if (drag_ == Drag::Object) {
-        const int axis = e->key() == Qt::Key_X ? 0 : e->key() == Qt::Key_Y ? 1 : e->key() == Qt::Key_Z ? 2 : -1;
+        const int axis = e->key() == Qt::Key_X   ? 0
+                         : e->key() == Qt::Key_Y ? 1
+                         : e->key() == Qt::Key_Z ? 2
+                                                 : -1;
         if (axis >= 0) {
             axisLock_ = axisLock_ == axis ? -1 : axis;
             updateObjectDrag(lastPos_);

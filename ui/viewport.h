@@ -3,6 +3,14 @@
 // G/R/S gestures and view navigation.
 #pragma once
 
+#include <QElapsedTimer>
+#include <QPoint>
+#include <QRegion>
+#include <QTimer>
+#include <QWidget>
+#include <memory>
+#include <optional>
+
 #include "display_choice.h"
 #include "display_frame.h"
 #include "frame_view.h"
@@ -12,15 +20,6 @@
 #include "transform_gizmo.h"
 #include "view_projection.h"
 #include "viewport_pacing.h"
-
-#include <QElapsedTimer>
-#include <QPoint>
-#include <QRegion>
-#include <QTimer>
-#include <QWidget>
-
-#include <memory>
-#include <optional>
 
 namespace rs::ui {
 
@@ -196,16 +195,16 @@ private:
 
     Drag drag_ = Drag::None;
     QPoint pressPos_, lastPos_;
-    ObjectId dragId_ = kNoObject;  ///< The entity pressed.
+    ObjectId dragId_ = kNoObject;    ///< The entity pressed.
     std::vector<ObjectId> dragIds_;  ///< Every entity the drag moves (the selection).
     bool boxArmed_ = false;
     bool localAxes_ = false;
     bool gizmoVisible_ = true;
     bool ownEdit_ = false;
     SceneDocument dragStartDoc_;
-    Vec3 anchor_{0.0f};       ///< Centre of the dragged object at press.
-    Vec3 grabOffset_{0.0f};   ///< Press point on the drag plane minus the anchor.
-    int axisLock_ = -1;       ///< -1 free, else 0/1/2 for X/Y/Z.
+    Vec3 anchor_{0.0f};      ///< Centre of the dragged object at press.
+    Vec3 grabOffset_{0.0f};  ///< Press point on the drag plane minus the anchor.
+    int axisLock_ = -1;      ///< -1 free, else 0/1/2 for X/Y/Z.
 
     int divider_ = 1;
     QSize tracedSize_;     ///< Empty until the first post.

@@ -1,13 +1,12 @@
 // Viewport G / R / S gestures, from keys or from a gizmo handle: one merged undo step each,
 // under the session's drag policies (the same beginInteraction / endInteraction the mouse
 // drag uses), whether they move, rotate or scale.
-#include "viewport.h"
+#include <QCursor>
 
 #include "scene_editor.h"
 #include "scene_edits.h"
 #include "session_controller.h"
-
-#include <QCursor>
+#include "viewport.h"
 
 namespace rs::ui {
 

@@ -1,14 +1,13 @@
 // Viewport view camera: navigation moves it and never the document; the session renders the
 // document through it (a camera edit to the session, no undo step, no modified flag).
-#include "viewport.h"
+#include <algorithm>
 
 #include "camera_navigation.h"
 #include "scene_editor.h"
 #include "session_controller.h"
 #include "snapshot/compiled_scene.h"
 #include "transform_edits.h"
-
-#include <algorithm>
+#include "viewport.h"
 
 namespace rs::ui {
 

@@ -23,8 +23,7 @@ public:
     /// A wheel step's view changes keep coming for about this long after it.
     static constexpr int kInputQuietMs = 250;
 
-    explicit RepaintPacing(int stillIntervalMs = kStillIntervalMs,
-                           int inputQuietMs = kInputQuietMs)
+    explicit RepaintPacing(int stillIntervalMs = kStillIntervalMs, int inputQuietMs = kInputQuietMs)
         : interval_(stillIntervalMs), quiet_(inputQuietMs) {}
 
     /// A drag, orbit, pan or gesture holds the mouse (on) or has ended (off).

@@ -1,13 +1,12 @@
 // `raystudio-cli bench`: the thesis's chapter 4.2 feature-cost experiments on one scene.
-#include "arguments.h"
-#include "commands.h"
-
-#include "integrator/renderer.h"
-
 #include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#include "arguments.h"
+#include "commands.h"
+#include "integrator/renderer.h"
 
 namespace rs::cli {
 
@@ -84,10 +83,11 @@ int runBench(int argc, char** argv) {
         std::printf("[");
         for (std::size_t i = 0; i < results.size(); ++i) {
             const Measurement& m = results[i];
-            std::printf("%s{\"experiment\": \"%s\", \"value\": %d, \"median_ms\": %.3f, "
-                        "\"rays\": %llu}",
-                        i ? ", " : "", m.experiment.c_str(), m.value, m.medianMs,
-                        static_cast<unsigned long long>(m.rays));
+            std::printf(
+                "%s{\"experiment\": \"%s\", \"value\": %d, \"median_ms\": %.3f, "
+                "\"rays\": %llu}",
+                i ? ", " : "", m.experiment.c_str(), m.value, m.medianMs,
+                static_cast<unsigned long long>(m.rays));
         }
         std::printf("]\n");
     }

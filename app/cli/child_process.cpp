@@ -2,8 +2,6 @@
 // with exec in the child; no shell, so arguments need no quoting.
 #include "child_process.h"
 
-#include "io/child_process.h"
-
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -12,6 +10,8 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "io/child_process.h"
+
 namespace rs::cli {
 
 bool onPath(const std::string& program) {
@@ -19,8 +19,9 @@ bool onPath(const std::string& program) {
     std::istringstream dirs(path ? path : "");
     for (std::string dir; std::getline(dirs, dir, ':');) {
         const std::string file = (dir.empty() ? std::string(".") : dir) + "/" + program;
-        struct stat st{};
-        if (::stat(file.c_str(), &st) == 0 && S_ISREG(st.st_mode) && ::access(file.c_str(), X_OK) == 0)
+        struct stat st {};
+        if (::stat(file.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+            ::access(file.c_str(), X_OK) == 0)
             return true;
     }
     return false;

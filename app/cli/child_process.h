@@ -8,7 +8,7 @@ namespace rs::cli {
 
 /// What a finished command printed and how it ended.
 struct ChildResult {
-    int exitCode = -1;   ///< -1 when it could not be started or died from a signal.
+    int exitCode = -1;  ///< -1 when it could not be started or died from a signal.
     bool timedOut = false;
     std::string output;  ///< stdout and stderr together.
 };

@@ -1,19 +1,18 @@
 // `raystudio-cli farm submit|status`: final renders on a Slurm cluster. Slurm schedules,
 // retries and accounts; we only write the two batch scripts and call sbatch, squeue, sacct.
-#include "arguments.h"
-#include "child_process.h"
-#include "commands.h"
-#include "farm_scripts.h"
-
-#include "image/image_io.h"
-#include "integrator/cost_estimate.h"
-#include "integrator/image_part.h"
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+
+#include "arguments.h"
+#include "child_process.h"
+#include "commands.h"
+#include "farm_scripts.h"
+#include "image/image_io.h"
+#include "integrator/cost_estimate.h"
+#include "integrator/image_part.h"
 
 namespace rs::cli {
 
@@ -24,8 +23,9 @@ namespace fs = std::filesystem;
 constexpr int kSchedulerTimeoutS = 60;  ///< sbatch, squeue, sacct must answer within this.
 
 /// The render options farm submit accepts and forwards to every part.
-const std::vector<std::string> kForwarded = {"--width", "--height", "--max-depth", "--min-weight",
-                                             "--shadow-samples", "--supersampling", "--engine"};
+const std::vector<std::string> kForwarded = {"--width",      "--height",         "--max-depth",
+                                             "--min-weight", "--shadow-samples", "--supersampling",
+                                             "--engine"};
 
 /// An absolute path Slurm's #SBATCH lines and the scripts can carry unquoted.
 fs::path jobPath(const std::string& option, const std::string& text) {
@@ -49,8 +49,10 @@ std::string parsedJobId(const ChildResult& r) {
 std::string schedulerFailure(const std::string& what, const ChildResult& r) {
     std::string out = r.output;
     while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
-    if (r.timedOut) return what + " did not answer within " + std::to_string(kSchedulerTimeoutS) + " s";
-    return what + " failed (exit " + std::to_string(r.exitCode) + ")" + (out.empty() ? "" : ": " + out);
+    if (r.timedOut)
+        return what + " did not answer within " + std::to_string(kSchedulerTimeoutS) + " s";
+    return what + " failed (exit " + std::to_string(r.exitCode) + ")" +
+           (out.empty() ? "" : ": " + out);
 }
 
 int runSubmit(int argc, char** argv) {
@@ -93,7 +95,8 @@ int runSubmit(int argc, char** argv) {
     (void)engineOption(args);
     if (std::string bad = partError({0, job.parts}, doc.render.height); !bad.empty())
         throw UsageError{"--parts: " + bad};
-    if (const std::string over = budgetExceeded(estimateCost(doc)); !over.empty() && !args.has("--force")) {
+    if (const std::string over = budgetExceeded(estimateCost(doc));
+        !over.empty() && !args.has("--force")) {
         std::fprintf(stderr, "raystudio-cli farm submit: %s; pass --force to render it anyway\n",
                      over.c_str());
         return 2;
@@ -108,14 +111,18 @@ int runSubmit(int argc, char** argv) {
 
     const std::string render = renderScript(job), merge = mergeScript(job);
     if (args.has("--dry-run")) {
-        std::printf("# ---- %s/render.sbatch (sbatch --parsable)\n%s", job.partsDir.c_str(), render.c_str());
-        std::printf("# ---- %s/merge.sbatch (sbatch --parsable --dependency=afterok:RENDER_JOB)\n%s",
-                    job.partsDir.c_str(), merge.c_str());
+        std::printf("# ---- %s/render.sbatch (sbatch --parsable)\n%s", job.partsDir.c_str(),
+                    render.c_str());
+        std::printf(
+            "# ---- %s/merge.sbatch (sbatch --parsable --dependency=afterok:RENDER_JOB)\n%s",
+            job.partsDir.c_str(), merge.c_str());
         return 0;
     }
     if (!onPath("sbatch")) {
-        std::fprintf(stderr, "raystudio-cli farm submit: sbatch is not on PATH (install Slurm's "
-                             "client, slurm-client, or run on a login node); --dry-run prints the scripts\n");
+        std::fprintf(
+            stderr,
+            "raystudio-cli farm submit: sbatch is not on PATH (install Slurm's "
+            "client, slurm-client, or run on a login node); --dry-run prints the scripts\n");
         return 1;
     }
     fs::create_directories(fs::path(job.partsDir) / "logs", ec);
@@ -124,29 +131,35 @@ int runSubmit(int argc, char** argv) {
     if (!ec) std::ofstream(renderFile) << render;
     if (!ec) std::ofstream(mergeFile) << merge;
     if (ec || !fs::is_regular_file(renderFile) || !fs::is_regular_file(mergeFile)) {
-        std::fprintf(stderr, "raystudio-cli farm submit: cannot write the job scripts in '%s'%s%s\n",
+        std::fprintf(stderr,
+                     "raystudio-cli farm submit: cannot write the job scripts in '%s'%s%s\n",
                      job.partsDir.c_str(), ec ? ": " : "", ec ? ec.message().c_str() : "");
         return 2;
     }
-    const ChildResult r1 = runChild({"sbatch", "--parsable", renderFile.string()}, kSchedulerTimeoutS);
+    const ChildResult r1 =
+        runChild({"sbatch", "--parsable", renderFile.string()}, kSchedulerTimeoutS);
     const std::string renderId = parsedJobId(r1);
     if (renderId.empty()) {
         std::fprintf(stderr, "raystudio-cli farm submit: %s\n",
                      schedulerFailure("sbatch " + renderFile.string(), r1).c_str());
         return 1;
     }
-    const ChildResult r2 = runChild({"sbatch", "--parsable", "--dependency=afterok:" + renderId,
-                                     mergeFile.string()}, kSchedulerTimeoutS);
+    const ChildResult r2 =
+        runChild({"sbatch", "--parsable", "--dependency=afterok:" + renderId, mergeFile.string()},
+                 kSchedulerTimeoutS);
     const std::string mergeId = parsedJobId(r2);
     if (mergeId.empty()) {
-        std::fprintf(stderr, "raystudio-cli farm submit: %s (render job %s stays queued; scancel %s "
-                             "to drop it)\n",
+        std::fprintf(stderr,
+                     "raystudio-cli farm submit: %s (render job %s stays queued; scancel %s "
+                     "to drop it)\n",
                      schedulerFailure("sbatch " + mergeFile.string(), r2).c_str(), renderId.c_str(),
                      renderId.c_str());
         return 1;
     }
-    std::printf("render job %s: %d parts into %s\n", renderId.c_str(), job.parts, job.partsDir.c_str());
-    std::printf("merge job %s: writes %s after every part succeeded\n", mergeId.c_str(), job.output.c_str());
+    std::printf("render job %s: %d parts into %s\n", renderId.c_str(), job.parts,
+                job.partsDir.c_str());
+    std::printf("merge job %s: writes %s after every part succeeded\n", mergeId.c_str(),
+                job.output.c_str());
     return 0;
 }
 
@@ -161,21 +174,26 @@ int runStatus(int argc, char** argv) {
         return 1;
     }
     // One line per array task: id, state, elapsed time, node or reason.
-    ChildResult q = runChild({"squeue", "-h", "-r", "-t", "all", "-j", id, "-o", "%i %T %M %R"}, kSchedulerTimeoutS);
+    ChildResult q = runChild({"squeue", "-h", "-r", "-t", "all", "-j", id, "-o", "%i %T %M %R"},
+                             kSchedulerTimeoutS);
     if (q.timedOut) {
-        std::fprintf(stderr, "raystudio-cli farm status: %s\n", schedulerFailure("squeue", q).c_str());
+        std::fprintf(stderr, "raystudio-cli farm status: %s\n",
+                     schedulerFailure("squeue", q).c_str());
         return 1;
     }
     std::string lines = q.exitCode == 0 ? q.output : std::string();
     if (lines.empty() && onPath("sacct")) {  // gone from the queue: ask accounting, if kept
         ChildResult a = runChild({"sacct", "-n", "-X", "-P", "--delimiter= ", "-j", id, "-o",
-                                  "JobID,State,Elapsed,NodeList"}, kSchedulerTimeoutS);
+                                  "JobID,State,Elapsed,NodeList"},
+                                 kSchedulerTimeoutS);
         if (a.exitCode == 0) lines = a.output;
     }
     if (lines.empty()) {
-        std::fprintf(stderr, "raystudio-cli farm status: job %s is neither queued (squeue) nor in "
-                             "the accounting records (sacct): finished longer ago than the cluster "
-                             "keeps jobs, or never submitted\n", id.c_str());
+        std::fprintf(stderr,
+                     "raystudio-cli farm status: job %s is neither queued (squeue) nor in "
+                     "the accounting records (sacct): finished longer ago than the cluster "
+                     "keeps jobs, or never submitted\n",
+                     id.c_str());
         return 2;
     }
     std::map<std::string, int> states;
@@ -188,7 +206,8 @@ int runStatus(int argc, char** argv) {
         ++tasks, ++states[state];
     }
     std::string summary;
-    for (const auto& [state, n] : states) summary += (summary.empty() ? "" : ", ") + std::to_string(n) + " " + state;
+    for (const auto& [state, n] : states)
+        summary += (summary.empty() ? "" : ", ") + std::to_string(n) + " " + state;
     std::printf("job %s: %d task%s: %s\n%s", id.c_str(), tasks, tasks == 1 ? "" : "s",
                 summary.c_str(), lines.c_str());
     return 0;
@@ -200,8 +219,10 @@ int runFarm(int argc, char** argv) {
     const std::string sub = argc > 2 ? argv[2] : "";
     if (sub == "submit") return runSubmit(argc, argv);
     if (sub == "status") return runStatus(argc, argv);
-    throw UsageError{sub.empty() ? "expects a sub-command: farm submit SCENE -o OUT --parts N, or farm status JOB"
-                                 : "unknown sub-command '" + sub + "' (farm submit, farm status)"};
+    throw UsageError{
+        sub.empty()
+            ? "expects a sub-command: farm submit SCENE -o OUT --parts N, or farm status JOB"
+            : "unknown sub-command '" + sub + "' (farm submit, farm status)"};
 }
 
 }  // namespace rs::cli

@@ -47,9 +47,10 @@ std::string renderScript(const FarmJob& job) {
     text += commonOptions(job);
     text += "set -euo pipefail\n";
     text += "part=$(printf '%04d' \"$SLURM_ARRAY_TASK_ID\")\n";
-    text += "exec " + shellQuote(job.cli) + " render " + shellQuote(job.scene) + " --tile \"$SLURM_ARRAY_TASK_ID/" +
-            std::to_string(job.parts) + "\" -o " + shellQuote(job.partsDir + "/part-") +
-            "\"$part\".exr --threads " + std::to_string(job.cpusPerTask);
+    text += "exec " + shellQuote(job.cli) + " render " + shellQuote(job.scene) +
+            " --tile \"$SLURM_ARRAY_TASK_ID/" + std::to_string(job.parts) + "\" -o " +
+            shellQuote(job.partsDir + "/part-") + "\"$part\".exr --threads " +
+            std::to_string(job.cpusPerTask);
     for (const std::string& arg : job.renderArgs) {
         text += ' ';  // Not `" " + shellQuote(arg)`: that temporary trips GCC 12's -Wrestrict.
         text += shellQuote(arg);
@@ -68,22 +69,28 @@ std::string mergeScript(const FarmJob& job) {
     text += "set -euo pipefail\n";
     text += "parts=()\n";
     text += "for ((i = 0; i < " + std::to_string(job.parts) + "; ++i)); do\n";
-    text += "    parts+=(" + shellQuote(job.partsDir + "/part-") + "\"$(printf '%04d' \"$i\")\".exr)\n";
+    text +=
+        "    parts+=(" + shellQuote(job.partsDir + "/part-") + "\"$(printf '%04d' \"$i\")\".exr)\n";
     text += "done\n";
-    text += "exec " + shellQuote(job.cli) + " merge \"${parts[@]}\" -o " + shellQuote(job.output) + "\n";
+    text += "exec " + shellQuote(job.cli) + " merge \"${parts[@]}\" -o " + shellQuote(job.output) +
+            "\n";
     return text;
 }
 
 std::string partitionError(const std::string& value) {
     bool ok = !value.empty() && value.size() <= 64;
     for (char c : value)
-        ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.');
-    return ok ? std::string() : "--partition expects a partition name (letters, digits, '_', '-', '.'), got '" + value + "'";
+        ok =
+            ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.');
+    return ok ? std::string()
+              : "--partition expects a partition name (letters, digits, '_', '-', '.'), got '" +
+                    value + "'";
 }
 
 std::string timeLimitError(const std::string& value) {
     // Slurm's forms: minutes, MM:SS, HH:MM:SS, D-HH, D-HH:MM, D-HH:MM:SS (digits, ':' and '-').
-    bool ok = !value.empty() && value.size() <= 16 && std::isdigit(static_cast<unsigned char>(value.front())) &&
+    bool ok = !value.empty() && value.size() <= 16 &&
+              std::isdigit(static_cast<unsigned char>(value.front())) &&
               std::isdigit(static_cast<unsigned char>(value.back()));
     int dashes = 0, colons = 0;
     for (char c : value) {
@@ -92,7 +99,8 @@ std::string timeLimitError(const std::string& value) {
     }
     ok = ok && dashes <= 1 && colons <= 2 && (dashes == 0 || value.find('-') < value.find(':'));
     return ok ? std::string()
-              : "--time expects a Slurm time limit (MINUTES, HH:MM:SS or D-HH:MM:SS), got '" + value + "'";
+              : "--time expects a Slurm time limit (MINUTES, HH:MM:SS or D-HH:MM:SS), got '" +
+                    value + "'";
 }
 
 }  // namespace rs::cli

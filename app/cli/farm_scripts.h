@@ -14,8 +14,8 @@ struct FarmJob {
     std::string partsDir;  ///< Where the parts and the logs go (OUT + ".parts").
     int parts = 1;
     int cpusPerTask = 1;
-    std::string partition;  ///< Empty: the cluster's default partition.
-    std::string time;       ///< Empty: the partition's default limit.
+    std::string partition;                ///< Empty: the cluster's default partition.
+    std::string time;                     ///< Empty: the partition's default limit.
     std::vector<std::string> renderArgs;  ///< Render options forwarded to every part.
 };
 

@@ -1,13 +1,13 @@
 // raystudio-cli entry point: dispatches to the sub-commands and maps failures to exit codes.
-#include "arguments.h"
-#include "commands.h"
-#include "raystudio_version.h"
-
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <new>
 #include <string>
+
+#include "arguments.h"
+#include "commands.h"
+#include "raystudio_version.h"
 
 namespace {
 

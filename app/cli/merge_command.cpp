@@ -1,12 +1,11 @@
 // `raystudio-cli merge`: part files of one render (render --tile I/N) into the final image.
-#include "arguments.h"
-#include "commands.h"
-
-#include "image/image_io.h"
-#include "image/part_merge.h"
-
 #include <cstdio>
 #include <sstream>
+
+#include "arguments.h"
+#include "commands.h"
+#include "image/image_io.h"
+#include "image/part_merge.h"
 
 namespace rs::cli {
 

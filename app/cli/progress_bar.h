@@ -1,8 +1,9 @@
 // A one-line progress bar on stderr, drawn only when stderr is a terminal.
 #pragma once
 
-#include <cstdio>
 #include <unistd.h>
+
+#include <cstdio>
 
 namespace rs::cli {
 

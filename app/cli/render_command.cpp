@@ -1,19 +1,20 @@
-// `raystudio-cli render`: one scene to one image file (or one part of it), with optional JSON stats.
+// `raystudio-cli render`: one scene to one image file (or one part of it), with optional JSON
+// stats.
+#include <tbb/info.h>
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+
 #include "arguments.h"
 #include "commands.h"
-#include "progress_bar.h"
-
 #include "image/image_io.h"
 #include "image/part_file.h"
 #include "integrator/cost_estimate.h"
 #include "integrator/image_part.h"
 #include "integrator/renderer.h"
 #include "io/render_fingerprint.h"
-
-#include <cctype>
-#include <cstdio>
-#include <filesystem>
-#include <tbb/info.h>
+#include "progress_bar.h"
 
 namespace rs::cli {
 
@@ -42,8 +43,9 @@ PartHeader partHeader(const SceneDocument& doc, EngineKind engine, const ImagePa
 
 int runRender(int argc, char** argv) {
     OptionSpec spec;
-    spec.valued = {"--output",     "--width",          "--height",        "--max-depth",
-                   "--min-weight", "--shadow-samples", "--supersampling", "--threads", "--engine"};
+    spec.valued = {"--output",        "--width",      "--height",
+                   "--max-depth",     "--min-weight", "--shadow-samples",
+                   "--supersampling", "--threads",    "--engine"};
     spec.valued.insert("--tile");
     spec.flags = {"--stats", "--force", "--ids"};
     spec.aliases = {{"-o", "--output"}};
@@ -82,7 +84,8 @@ int runRender(int argc, char** argv) {
     // message, not an afternoon. A part is held to its own share of the work.
     SceneDocument costed = doc;
     if (options.endRow >= 0) costed.render.height = options.endRow - options.firstRow;
-    if (const std::string over = budgetExceeded(estimateCost(costed)); !over.empty() && !args.has("--force")) {
+    if (const std::string over = budgetExceeded(estimateCost(costed));
+        !over.empty() && !args.has("--force")) {
         std::fprintf(stderr, "raystudio-cli render: %s; pass --force to render it anyway\n",
                      over.c_str());
         return 2;
@@ -105,10 +108,11 @@ int runRender(int argc, char** argv) {
     }
     if (args.has("--stats")) {
         const double mrays = result.ms > 0.0 ? double(result.rays) / (result.ms * 1000.0) : 0.0;
-        std::printf("{\"ms\": %.3f, \"width\": %d, \"height\": %d, \"rays\": %llu, "
-                    "\"mrays_per_s\": %.3f}\n",
-                    result.ms, doc.render.width, doc.render.height,
-                    static_cast<unsigned long long>(result.rays), mrays);
+        std::printf(
+            "{\"ms\": %.3f, \"width\": %d, \"height\": %d, \"rays\": %llu, "
+            "\"mrays_per_s\": %.3f}\n",
+            result.ms, doc.render.width, doc.render.height,
+            static_cast<unsigned long long>(result.rays), mrays);
     }
     return 0;
 }

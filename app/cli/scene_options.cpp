@@ -1,15 +1,16 @@
 // Loading scenes for commands and applying the shared render-setting overrides.
+#include <cstdio>
+
 #include "arguments.h"
 #include "commands.h"
-
-#include <cstdio>
 
 namespace rs::cli {
 
 bool loadSceneOrReport(const std::string& path, SceneDocument& doc) {
     SceneLoadResult result = loadScene(path);
     if (!result.ok()) {
-        for (const SceneError& e : result.errors) std::fprintf(stderr, "%s\n", e.toString().c_str());
+        for (const SceneError& e : result.errors)
+            std::fprintf(stderr, "%s\n", e.toString().c_str());
         return false;
     }
     doc = std::move(result.document);

@@ -1,8 +1,8 @@
 // `raystudio-cli validate`: prints ok, or every error of the scene file with its location.
+#include <cstdio>
+
 #include "arguments.h"
 #include "commands.h"
-
-#include <cstdio>
 
 namespace rs::cli {
 

@@ -1,18 +1,17 @@
 // raystudio: the designer. Opens the scene given on the command line, or the bundled
 // reference room found next to the build tree or the installed data.
-#include "default_scene.h"
-#include "drag_measurement.h"
-#include "main_window.h"
-#include "raystudio_version.h"
-
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QIcon>
 #include <QSurfaceFormat>
-
 #include <cstdio>
 #include <cstring>
+
+#include "default_scene.h"
+#include "drag_measurement.h"
+#include "main_window.h"
+#include "raystudio_version.h"
 
 namespace {
 int usageError(const char* message) {
@@ -21,24 +20,29 @@ int usageError(const char* message) {
 }
 /// The designer's options (--help lists them; a headless machine can ask for it too).
 struct Options {
-    QCommandLineOption autosave{QStringLiteral("autosave-seconds"),
-                                QStringLiteral("Autosave interval for this run, overriding Preferences (0: off)."),
-                                QStringLiteral("seconds")};
-    QCommandLineOption recover{QStringLiteral("recover"),
-                               QStringLiteral("What to do with a crashed session's autosave: ask (default), yes or no."),
-                               QStringLiteral("ask|yes|no"), QStringLiteral("ask")};
+    QCommandLineOption autosave{
+        QStringLiteral("autosave-seconds"),
+        QStringLiteral("Autosave interval for this run, overriding Preferences (0: off)."),
+        QStringLiteral("seconds")};
+    QCommandLineOption recover{
+        QStringLiteral("recover"),
+        QStringLiteral("What to do with a crashed session's autosave: ask (default), yes or no."),
+        QStringLiteral("ask|yes|no"), QStringLiteral("ask")};
     // For the packaging test and bug reports: opens the scene as a start would, prints the
     // path it opened on stdout and exits (1 when nothing could be opened).
-    QCommandLineOption opened{QStringLiteral("print-opened-scene"),
-                              QStringLiteral("Open the scene (or the default one), print its path and exit.")};
+    QCommandLineOption opened{
+        QStringLiteral("print-opened-scene"),
+        QStringLiteral("Open the scene (or the default one), print its path and exit.")};
 };
 
 void describe(QCommandLineParser& parser, const Options& options) {
-    parser.setApplicationDescription(QStringLiteral("Interactive Whitted ray-traced scene designer"));
+    parser.setApplicationDescription(
+        QStringLiteral("Interactive Whitted ray-traced scene designer"));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("scene"),
-                                 QStringLiteral("Scene file to open (default: the bundled reference room)."));
+    parser.addPositionalArgument(
+        QStringLiteral("scene"),
+        QStringLiteral("Scene file to open (default: the bundled reference room)."));
     rs::ui::addMeasurementOptions(parser);
     // Both exist for scripted runs (the recovery tests, kiosks): a short interval and no dialog.
     parser.addOption(options.autosave);

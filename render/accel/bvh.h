@@ -1,12 +1,12 @@
 // Bounding volume hierarchy over primitive boxes: binned SAH build, flat nodes, refit.
 #pragma once
 
-#include "core/math.h"
-
 #include <cstdint>
 #include <span>
 #include <utility>
 #include <vector>
+
+#include "core/math.h"
 
 namespace rs {
 
@@ -55,7 +55,7 @@ private:
 
     std::vector<Node> nodes_;
     std::vector<uint32_t> primIndices_;
-    std::vector<uint32_t> parent_;    ///< Parent of each node (root: itself).
+    std::vector<uint32_t> parent_;      ///< Parent of each node (root: itself).
     std::vector<uint32_t> leafOfPrim_;  ///< Leaf node holding each primitive.
     std::vector<Aabb> primBounds_;      ///< Kept for refitPrimitive.
     int maxLeafSize_ = 4;               ///< Kept so refit can rebuild on a count change.

@@ -1,12 +1,13 @@
 // The thesis's engine: a binned-SAH AABB BVH with the Williams et al. slab test, refitted
-// bottom-up on moves (thesis 3.1, 3.2), planes outside it; a few world spheres are tested flat instead.
+// bottom-up on moves (thesis 3.1, 3.2), planes outside it; a few world spheres are tested flat
+// instead.
 #pragma once
+
+#include <vector>
 
 #include "accel/bvh.h"
 #include "accel/flat_set.h"
 #include "accel/ray_engine.h"
-
-#include <vector>
 
 namespace rs {
 

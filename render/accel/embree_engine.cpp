@@ -40,8 +40,9 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
 
 /// The lane's ray as the project's Ray (with the reciprocals the box test uses).
 Ray laneRay(RTCRayN* ray, unsigned N, unsigned i) {
-    return Ray::make(Vec3(RTCRayN_org_x(ray, N, i), RTCRayN_org_y(ray, N, i), RTCRayN_org_z(ray, N, i)),
-                     Vec3(RTCRayN_dir_x(ray, N, i), RTCRayN_dir_y(ray, N, i), RTCRayN_dir_z(ray, N, i)));
+    return Ray::make(
+        Vec3(RTCRayN_org_x(ray, N, i), RTCRayN_org_y(ray, N, i), RTCRayN_org_z(ray, N, i)),
+        Vec3(RTCRayN_dir_x(ray, N, i), RTCRayN_dir_y(ray, N, i), RTCRayN_dir_z(ray, N, i)));
 }
 
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
@@ -190,7 +191,8 @@ EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* pr
     for (uint32_t i = 0; i < prims.size(); ++i) {
         const auto* mesh = std::get_if<MeshShape>(&prims[i].shape);
         if (!mesh) {
-            const bool worldSphere = !prims[i].hasFrame && std::holds_alternative<SphereShape>(prims[i].shape);
+            const bool worldSphere =
+                !prims[i].hasFrame && std::holds_alternative<SphereShape>(prims[i].shape);
             (worldSphere ? spherePrims_ : userPrims_).push_back(i);
             continue;
         }
@@ -213,8 +215,8 @@ EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* pr
         // A translation, or a uniform scale without rotation: no matrix work a hit.
         const Mat3& m = mi.frame->dirToObject;
         mi.scaleOnly = m[0][0] > 0.0f && m[0][0] == m[1][1] && m[1][1] == m[2][2] &&
-                       m[0][1] == 0.0f && m[0][2] == 0.0f && m[1][0] == 0.0f &&
-                       m[1][2] == 0.0f && m[2][0] == 0.0f && m[2][1] == 0.0f;
+                       m[0][1] == 0.0f && m[0][2] == 0.0f && m[1][0] == 0.0f && m[1][2] == 0.0f &&
+                       m[2][0] == 0.0f && m[2][1] == 0.0f;
     }
     if (!userPrims_.empty()) {
         RTCGeometry user = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_USER);
@@ -230,9 +232,9 @@ EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* pr
     if (!spherePrims_.empty()) {
         // Embree's sphere primitive is tested in SIMD inside its BVH leaves: no callback.
         RTCGeometry spheres = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_SPHERE_POINT);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-            spheres, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float),
-            spherePrims_.size()));
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(spheres, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                              RTC_FORMAT_FLOAT4, 4 * sizeof(float),
+                                                              spherePrims_.size()));
         for (std::size_t k = 0; k < spherePrims_.size(); ++k) {
             const SphereShape& s = std::get<SphereShape>(prims[spherePrims_[k]].shape);
             v[4 * k] = s.center.x, v[4 * k + 1] = s.center.y, v[4 * k + 2] = s.center.z;
@@ -245,7 +247,9 @@ EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* pr
     rtcCommitScene(scene_);
 }
 
-EmbreeEngine::~EmbreeEngine() { rtcReleaseScene(scene_); }
+EmbreeEngine::~EmbreeEngine() {
+    rtcReleaseScene(scene_);
+}
 
 std::shared_ptr<const RayEngine> EmbreeEngine::updated(const SceneGeometry& geometry,
                                                        std::span<const uint32_t>) const {
@@ -254,8 +258,9 @@ std::shared_ptr<const RayEngine> EmbreeEngine::updated(const SceneGeometry& geom
     return std::make_shared<const EmbreeEngine>(geometry, this);
 }
 
-inline float EmbreeEngine::MeshInstance::distance(const Vec3& ng, const Vec3& v0, const RayBatch& rays,
-                                           std::size_t i, float tEmbree, float tmax) const {
+inline float EmbreeEngine::MeshInstance::distance(const Vec3& ng, const Vec3& v0,
+                                                  const RayBatch& rays, std::size_t i,
+                                                  float tEmbree, float tmax) const {
     // Embree moves the ray into the object's frame with an inverse of its own, which differs
     // from the frame's objectFromWorld in the last bits; at grazing angles that shifts t by
     // up to ~3e-5 relative (engine parity test). The distance to the plane of Embree's
@@ -283,8 +288,8 @@ inline Vec3 EmbreeEngine::MeshInstance::toWorld(const Vec3& n) const {
 void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    context.flags = rays.coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                                  : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    context.flags =
+        rays.coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     const auto& prims = *geometry_.primitives;
     // Planes first, with the same rule as every engine: their t bounds the tree's walk.
     // Without planes the loop below writes every ray's answer, misses included.
@@ -308,7 +313,8 @@ void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const 
                 const Vec3 ng(p.rh.hit.Ng_x[k], p.rh.hit.Ng_y[k], p.rh.hit.Ng_z[k]);
                 // The far end Embree was given: the planes' hit, else the ray's own.
                 const float tmax = hasPlanes_ && hits.slot[i] != kNoSlot ? hits.t[i] : rays.tmax[i];
-                p.rh.ray.tfar[k] = mi.distance(ng, mi.mesh->firstVertex(tri), rays, i, p.rh.ray.tfar[k], tmax);
+                p.rh.ray.tfar[k] =
+                    mi.distance(ng, mi.mesh->firstVertex(tri), rays, i, p.rh.ray.tfar[k], tmax);
                 normal = mi.smooth ? mi.toWorld(mi.mesh->normal(tri, p.rh.hit.u[k], p.rh.hit.v[k]))
                                    : mi.toWorld(ng);
             } else if (p.rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID &&
@@ -316,7 +322,8 @@ void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const 
                 slot = spherePrims_[p.rh.hit.primID[k]];
                 // The outward normal from the centre, as intersect(SphereShape) defines it.
                 const SphereShape& s = std::get<SphereShape>(prims[slot].shape);
-                const Vec3 o(rays.ox[i], rays.oy[i], rays.oz[i]), d(rays.dx[i], rays.dy[i], rays.dz[i]);
+                const Vec3 o(rays.ox[i], rays.oy[i], rays.oz[i]),
+                    d(rays.dx[i], rays.dy[i], rays.dz[i]);
                 normal = divide((o - s.center) + p.rh.ray.tfar[k] * d, s.radius);
             } else if (p.rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID) {
                 slot = userPrims_[p.rh.hit.primID[k]];
@@ -340,15 +347,16 @@ void EmbreeEngine::anyHit(const RayBatch& rays, uint8_t* occluded) const {
     if (flatOnly_) return planes_.anyHit(rays, occluded);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    context.flags = rays.coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                                  : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    context.flags =
+        rays.coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     Packet p;
     for (std::size_t first = 0; first < rays.count; first += kPacket) {
         const int n = int(std::min<std::size_t>(kPacket, rays.count - first));
         loadPacket(p, rays, first, n);
         // Bounded objects first: a shadow ray toward a light inside a room never reaches a wall.
         rtcOccluded8(p.valid, scene_, &context, &p.rh.ray);
-        for (int k = 0; k < n; ++k) occluded[first + std::size_t(k)] = p.rh.ray.tfar[k] == -kInfinity;
+        for (int k = 0; k < n; ++k)
+            occluded[first + std::size_t(k)] = p.rh.ray.tfar[k] == -kInfinity;
     }
     planes_.anyHit(rays, occluded, /*skipBlocked=*/true);
 }

@@ -5,13 +5,13 @@
 // few world spheres is answered by the flat set alone, which costs less there.
 #pragma once
 
-#include "accel/flat_set.h"
-#include "accel/ray_engine.h"
-
 #include <embree3/rtcore.h>
 
 #include <memory>
 #include <vector>
+
+#include "accel/flat_set.h"
+#include "accel/ray_engine.h"
 
 namespace rs {
 
@@ -46,8 +46,8 @@ private:
     RTCScene scene_ = nullptr;
     unsigned userGeomID_ = RTC_INVALID_GEOMETRY_ID;
     unsigned sphereGeomID_ = RTC_INVALID_GEOMETRY_ID;
-    std::vector<uint32_t> spherePrims_;    ///< Primitive index of each sphere primID.
-    std::vector<uint32_t> userPrims_;      ///< Primitive index of each user-geometry primID.
+    std::vector<uint32_t> spherePrims_;  ///< Primitive index of each sphere primID.
+    std::vector<uint32_t> userPrims_;    ///< Primitive index of each user-geometry primID.
     /// What a hit on one mesh instance needs, by geomID (meshes only; slot kNoSlot elsewhere).
     struct MeshInstance {
         uint32_t slot = kNoSlot;  ///< Index into the primitives.

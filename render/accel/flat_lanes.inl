@@ -11,10 +11,18 @@ constexpr int kLanes = 8;
 using F8 = float __attribute__((vector_size(32)));
 using I8 = int32_t __attribute__((vector_size(32)));
 
-inline F8 splat(float v) { return F8{v, v, v, v, v, v, v, v}; }
-inline I8 splatI(int32_t v) { return I8{v, v, v, v, v, v, v, v}; }
-inline F8 select(I8 m, F8 a, F8 b) { return m ? a : b; }
-inline I8 select(I8 m, I8 a, I8 b) { return m ? a : b; }
+inline F8 splat(float v) {
+    return F8{v, v, v, v, v, v, v, v};
+}
+inline I8 splatI(int32_t v) {
+    return I8{v, v, v, v, v, v, v, v};
+}
+inline F8 select(I8 m, F8 a, F8 b) {
+    return m ? a : b;
+}
+inline I8 select(I8 m, I8 a, I8 b) {
+    return m ? a : b;
+}
 
 inline F8 sqrt8(F8 x) {
 #if defined(RS_FLAT_AVX2)
@@ -71,15 +79,17 @@ inline F8 load8(const float* p, std::size_t first, int lanes) {
 inline Rays8 loadRays(const RayBatch& r, std::size_t first) {
     const std::size_t left = r.count - first;
     const int lanes = left < std::size_t(kLanes) ? int(left) : kLanes;
-    return {load8(r.ox, first, lanes), load8(r.oy, first, lanes), load8(r.oz, first, lanes),
-            load8(r.dx, first, lanes), load8(r.dy, first, lanes), load8(r.dz, first, lanes),
+    return {load8(r.ox, first, lanes),   load8(r.oy, first, lanes),
+            load8(r.oz, first, lanes),   load8(r.dx, first, lanes),
+            load8(r.dy, first, lanes),   load8(r.dz, first, lanes),
             load8(r.tmax, first, lanes), lanes};
 }
 
 /// intersect(PlaneShape)'s quotient (PlaneSet's distances) for one plane and eight rays.
 inline F8 planeDistance(const Rays8& r, const FlatView& v, int j) {
     const F8 denom = r.dx * v.nx[j] + r.dy * v.ny[j] + r.dz * v.nz[j];
-    const F8 num = (v.px[j] - r.ox) * v.nx[j] + (v.py[j] - r.oy) * v.ny[j] + (v.pz[j] - r.oz) * v.nz[j];
+    const F8 num =
+        (v.px[j] - r.ox) * v.nx[j] + (v.py[j] - r.oy) * v.ny[j] + (v.pz[j] - r.oz) * v.nz[j];
     return num / denom;
 }
 
@@ -142,7 +152,9 @@ inline F8 highest(F8 x) {
     x = max8(x, __builtin_shufflevector(x, x, 2, 3, 0, 1, 6, 7, 4, 5));
     return max8(x, __builtin_shufflevector(x, x, 1, 0, 3, 2, 5, 4, 7, 6));
 }
-inline float magnitude(float x) { return x < 0.0f ? -x : x; }
+inline float magnitude(float x) {
+    return x < 0.0f ? -x : x;
+}
 
 /// Spheres (and planes) from this many on are culled for a group of rays before the lanes
 /// test them.
@@ -235,7 +247,8 @@ inline unsigned planeCandidates(const FlatView& v, const SegmentBox& b, int from
 /// Closest hits of rays [first, first + 8): planes first in order, then spheres in order,
 /// each taken only when strictly nearer (so the first of equal hits wins, as in the scalar
 /// scans). The sphere normal is (f + offset d) / radius of the winner, as intersect() has it.
-inline void closest8(const FlatView& v, const RayBatch& rays, std::size_t first, const HitBatch& hits) {
+inline void closest8(const FlatView& v, const RayBatch& rays, std::size_t first,
+                     const HitBatch& hits) {
     const Rays8 r = loadRays(rays, first);
     F8 best = r.tmax;
     I8 slot = splatI(int32_t(kNoSlot));
@@ -300,7 +313,8 @@ inline void any8(const FlatView& v, const RayBatch& rays, std::size_t first, uin
     const unsigned all = (1u << r.lanes) - 1u;
     unsigned blocked = 0;
     if (skipBlocked)
-        for (int k = 0; k < r.lanes; ++k) blocked |= unsigned(occluded[first + std::size_t(k)] != 0) << k;
+        for (int k = 0; k < r.lanes; ++k)
+            blocked |= unsigned(occluded[first + std::size_t(k)] != 0) << k;
     if (blocked == all) return;
     const F8 a = r.dx * r.dx + r.dy * r.dy + r.dz * r.dz;
     // One box for both culls, made where there are enough spheres or planes to pay for it.

@@ -83,7 +83,8 @@ bool FlatSet::suits(const std::vector<Primitive>& primitives) {
     return true;
 }
 
-FlatSet::FlatSet(const std::vector<PlanePrimitive>& planes, const std::vector<Primitive>* primitives)
+FlatSet::FlatSet(const std::vector<PlanePrimitive>& planes,
+                 const std::vector<Primitive>* primitives)
     : primitives_(primitives) {
     Tables& t = tables_;
     for (std::size_t i = 0; primitives && i < primitives->size(); ++i) {
@@ -94,8 +95,10 @@ FlatSet::FlatSet(const std::vector<PlanePrimitive>& planes, const std::vector<Pr
             // Widened so that rounding in the filter never drops a ray the exact test hits.
             const Aabb& b = p.worldBounds;
             const Vec3 pad = 1e-4f * (glm::abs(b.min) + glm::abs(b.max) + Vec3(1.0f));
-            t.lox.push_back(b.min.x - pad.x), t.loy.push_back(b.min.y - pad.y), t.loz.push_back(b.min.z - pad.z);
-            t.hix.push_back(b.max.x + pad.x), t.hiy.push_back(b.max.y + pad.y), t.hiz.push_back(b.max.z + pad.z);
+            t.lox.push_back(b.min.x - pad.x), t.loy.push_back(b.min.y - pad.y),
+                t.loz.push_back(b.min.z - pad.z);
+            t.hix.push_back(b.max.x + pad.x), t.hiy.push_back(b.max.y + pad.y),
+                t.hiz.push_back(b.max.z + pad.z);
             continue;
         }
         t.cx.push_back(s->center.x), t.cy.push_back(s->center.y), t.cz.push_back(s->center.z);
@@ -104,14 +107,17 @@ FlatSet::FlatSet(const std::vector<PlanePrimitive>& planes, const std::vector<Pr
         // The cull before the lanes (sphereCandidates) keeps a sphere unless its distance to
         // the rays' box exceeds this: the radius plus a margin 100 times the rounding of the
         // exact test (about 1e-6 of the coordinates involved).
-        t.reach.push_back(s->radius + 1e-4f * (1.0f + std::abs(s->center.x) + std::abs(s->center.y) +
-                                               std::abs(s->center.z) + s->radius));
+        t.reach.push_back(s->radius +
+                          1e-4f * (1.0f + std::abs(s->center.x) + std::abs(s->center.y) +
+                                   std::abs(s->center.z) + s->radius));
         t.prim.push_back(uint32_t(i));
     }
     t.planes = int(planes.size());
     for (const PlanePrimitive& p : planes) {
-        t.px.push_back(p.shape.point.x), t.py.push_back(p.shape.point.y), t.pz.push_back(p.shape.point.z);
-        t.nx.push_back(p.shape.normal.x), t.ny.push_back(p.shape.normal.y), t.nz.push_back(p.shape.normal.z);
+        t.px.push_back(p.shape.point.x), t.py.push_back(p.shape.point.y),
+            t.pz.push_back(p.shape.point.z);
+        t.nx.push_back(p.shape.normal.x), t.ny.push_back(p.shape.normal.y),
+            t.nz.push_back(p.shape.normal.z);
         // For the planes' cull (planeCandidates), which leaves a margin for their rounding.
         const Vec3 q = p.shape.point, n = p.shape.normal;
         t.pn.push_back(glm::dot(q, n));
@@ -129,7 +135,8 @@ FlatSet::FlatSet(const std::vector<PlanePrimitive>& planes, const std::vector<Pr
 namespace {
 
 inline Ray rayAt(const RayBatch& rays, std::size_t i) {
-    return Ray::make(Vec3(rays.ox[i], rays.oy[i], rays.oz[i]), Vec3(rays.dx[i], rays.dy[i], rays.dz[i]));
+    return Ray::make(Vec3(rays.ox[i], rays.oy[i], rays.oz[i]),
+                     Vec3(rays.dx[i], rays.dy[i], rays.dz[i]));
 }
 
 FlatView view(const FlatSet::Tables& t) {
@@ -168,7 +175,8 @@ void FlatSet::closestHit(const RayBatch& rays, const HitBatch& hits, Lanes lanes
                 const std::size_t i = first + std::size_t(__builtin_ctz(m));
                 ShapeHit sh;
                 float& bound = tmax[i - first];
-                if (!intersectPrimitive((*primitives_)[others_[o]], rayAt(rays, i), 0.0f, bound, sh))
+                if (!intersectPrimitive((*primitives_)[others_[o]], rayAt(rays, i), 0.0f, bound,
+                                        sh))
                     continue;
                 bound = sh.t;
                 hits.t[i] = sh.t;
@@ -197,13 +205,15 @@ void FlatSet::anyHit(const RayBatch& rays, uint8_t* occluded, bool skipBlocked, 
         for (std::size_t i = first; i < end; ++i) open |= unsigned(occluded[i] == 0) << (i - first);
         if (!open) continue;
         float tmax[8];
-        for (std::size_t i = first; i < first + 8; ++i) tmax[i - first] = rays.tmax[std::min(i, end - 1)];
+        for (std::size_t i = first; i < first + 8; ++i)
+            tmax[i - first] = rays.tmax[std::min(i, end - 1)];
         othersMasks(v, rays, first, tmax, masks, lanes);
         for (std::size_t o = 0; o < others_.size() && open; ++o) {
             for (unsigned m = masks[o] & open; m; m &= m - 1) {
                 const std::size_t i = first + std::size_t(__builtin_ctz(m));
                 ShapeHit sh;
-                if (intersectPrimitive((*primitives_)[others_[o]], rayAt(rays, i), 0.0f, rays.tmax[i], sh)) {
+                if (intersectPrimitive((*primitives_)[others_[o]], rayAt(rays, i), 0.0f,
+                                       rays.tmax[i], sh)) {
                     occluded[i] = 1;
                     open &= ~(1u << (i - first));
                 }

@@ -9,11 +9,11 @@
 // and framed spheres go through intersectPrimitive ray by ray.
 #pragma once
 
-#include "accel/primitive.h"
-#include "accel/ray_engine.h"
-
 #include <cstdint>
 #include <vector>
+
+#include "accel/primitive.h"
+#include "accel/ray_engine.h"
 
 namespace rs {
 
@@ -44,7 +44,6 @@ public:
     /// already 1 on entry are skipped when `skipBlocked` (an engine's tree answered first).
     void anyHit(const RayBatch& rays, uint8_t* occluded, bool skipBlocked = false,
                 Lanes lanes = Lanes::Best) const;
-
 
     /// The shape tables, structure of arrays (read by the lane loops).
     struct Tables {

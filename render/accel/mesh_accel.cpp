@@ -52,16 +52,16 @@ bool MeshAccel::intersectTriangle(uint32_t tri, const Ray& ray, float& t, float&
     if (!validTriangle(tri)) return false;
     const uint32_t* idx = &data_->indices[3 * std::size_t(tri)];
     // The same construction as ensureBvh's triangles, so the same bits.
-    const TriangleShape shape = TriangleShape::make(data_->positions[idx[0]], data_->positions[idx[1]],
-                                                    data_->positions[idx[2]]);
+    const TriangleShape shape = TriangleShape::make(
+        data_->positions[idx[0]], data_->positions[idx[1]], data_->positions[idx[2]]);
     return rs::intersect(shape, ray, 0.0f, kInfinity, t, b1, b2);
 }
 
 Vec3 MeshAccel::normal(uint32_t tri, float b1, float b2) const {
     const uint32_t* idx = &data_->indices[3 * static_cast<std::size_t>(tri)];
     const Vec3& p0 = data_->positions[idx[0]];
-    const Vec3 geometric = glm::normalize(glm::cross(data_->positions[idx[1]] - p0,
-                                                     data_->positions[idx[2]] - p0));
+    const Vec3 geometric =
+        glm::normalize(glm::cross(data_->positions[idx[1]] - p0, data_->positions[idx[2]] - p0));
     if (!smooth_) return geometric;
     const auto& normals = data_->normals;
     const Vec3 n = (1.0f - b1 - b2) * normals[idx[0]] + b1 * normals[idx[1]] + b2 * normals[idx[2]];

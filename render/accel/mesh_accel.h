@@ -2,13 +2,13 @@
 // use) the thesis's triangle BVH, all in object space.
 #pragma once
 
-#include "accel/bvh.h"
-#include "geometry/shapes.h"
-#include "scene/mesh_data.h"
-
 #include <memory>
 #include <mutex>
 #include <vector>
+
+#include "accel/bvh.h"
+#include "geometry/shapes.h"
+#include "scene/mesh_data.h"
 
 namespace rs {
 

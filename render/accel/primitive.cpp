@@ -22,8 +22,7 @@ bool intersectShape(const BoundedShape& shape, const Ray& ray, float tmin, float
 
 }  // namespace
 
-bool intersectPrimitive(const Primitive& p, const Ray& ray, float tmin, float tmax,
-                        ShapeHit& hit) {
+bool intersectPrimitive(const Primitive& p, const Ray& ray, float tmin, float tmax, ShapeHit& hit) {
     if (!p.hasFrame) return intersectShape(p.shape, ray, tmin, tmax, hit);
     // Test in the object's frame: t is unchanged because the direction is mapped linearly too.
     const Frame& f = p.frame;

@@ -2,13 +2,13 @@
 // of their own), the unbounded planes kept outside the tree, and the one test of a primitive.
 #pragma once
 
-#include "accel/mesh_accel.h"
-#include "geometry/shapes.h"
-#include "scene/document.h"
-
 #include <memory>
 #include <variant>
 #include <vector>
+
+#include "accel/mesh_accel.h"
+#include "geometry/shapes.h"
+#include "scene/document.h"
 
 namespace rs {
 

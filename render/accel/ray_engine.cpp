@@ -41,8 +41,8 @@ bool RayEngine::anyHit(const Ray& ray, float tmax) const {
 std::shared_ptr<const RayEngine> buildEngine(EngineKind kind, const SceneGeometry& geometry,
                                              const RayEngine* previous) {
     if (kind == EngineKind::Embree)
-        return std::make_shared<const EmbreeEngine>(
-            geometry, dynamic_cast<const EmbreeEngine*>(previous));
+        return std::make_shared<const EmbreeEngine>(geometry,
+                                                    dynamic_cast<const EmbreeEngine*>(previous));
     return std::make_shared<const BvhEngine>(geometry);
 }
 

@@ -2,14 +2,14 @@
 // light. Two engines answer them: Embree (the default) and the thesis's own BVH.
 #pragma once
 
-#include "accel/primitive.h"
-#include "core/math.h"
-
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
 #include <string_view>
+
+#include "accel/primitive.h"
+#include "core/math.h"
 
 namespace rs {
 

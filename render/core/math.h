@@ -1,15 +1,14 @@
 // Small POD math types for the hot path: rays with precomputed reciprocals, boxes, colours.
 #pragma once
 
-#include <glm/glm.hpp>
-
 #include <algorithm>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <limits>
 
 namespace rs {
 
-using Vec3 = glm::vec3;  ///< float x, y, z: POD, direct member access (thesis 4.1).
+using Vec3 = glm::vec3;   ///< float x, y, z: POD, direct member access (thesis 4.1).
 using Color = glm::vec3;  ///< Linear HDR radiance, r = x, g = y, b = z.
 using Mat4 = glm::mat4;
 using Mat3 = glm::mat3;
@@ -118,6 +117,8 @@ inline bool intersectSlabs(const Aabb& b, const Ray& r, float tmin, float tmax) 
 }
 
 /// Luminance of a linear Rec.709 colour.
-inline float luminance(const Color& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+inline float luminance(const Color& c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
 
 }  // namespace rs

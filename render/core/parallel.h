@@ -54,8 +54,10 @@ template <class Range, class Body, class... Extra>
 void parallelFor(const Range& range, const Body& body, Extra&&...) {
     std::vector<Range> pieces{range};
     for (std::size_t i = 0; i < pieces.size() && pieces.size() < 64;) {
-        if (pieces[i].is_divisible()) pieces.push_back(Range(pieces[i], tbb::split()));
-        else ++i;
+        if (pieces[i].is_divisible())
+            pieces.push_back(Range(pieces[i], tbb::split()));
+        else
+            ++i;
     }
     detail::forkJoin(pieces.size(), [&](std::size_t k) { body(pieces[k]); });
 }
@@ -63,7 +65,8 @@ void parallelFor(const Range& range, const Body& body, Extra&&...) {
 /// parallel_for over the integers [first, last).
 template <class Body>
 void parallelForIndex(int first, int last, const Body& body) {
-    if (last > first) detail::forkJoin(std::size_t(last - first), [&](std::size_t k) { body(first + int(k)); });
+    if (last > first)
+        detail::forkJoin(std::size_t(last - first), [&](std::size_t k) { body(first + int(k)); });
 }
 
 /// Runs `f` (which starts parallel loops) and waits for it.

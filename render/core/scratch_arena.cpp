@@ -1,11 +1,11 @@
 // Per-thread bump arenas in huge pages, kept for the process and reused by later threads.
 #include "core/scratch_arena.h"
 
-#include "core/large_blocks.h"
-
 #include <atomic>
 #include <cstdint>
 #include <mutex>
+
+#include "core/large_blocks.h"
 
 namespace rs {
 

@@ -1,13 +1,13 @@
 // Per-thread scratch memory in huge pages: a bump arena per thread for workspaces that only grow.
 #pragma once
 
-#include "core/large_blocks.h"
-
 #include <cstddef>
 #include <memory>
 #include <new>
 #include <type_traits>
 #include <vector>
+
+#include "core/large_blocks.h"
 
 namespace rs {
 

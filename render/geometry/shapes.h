@@ -1,10 +1,10 @@
 // Render-ready shapes and their ray intersection routines (world space unless noted).
 #pragma once
 
-#include "core/math.h"
-
 #include <cmath>
 #include <utility>
+
+#include "core/math.h"
 
 namespace rs {
 
@@ -62,8 +62,8 @@ bool intersect(const TriangleShape& s, const Ray& ray, float tmin, float tmax, f
 /// Second half of the sphere test, from the re-centred quadratic (see intersect(SphereShape)):
 /// picks the root in (tmin, tmax), giving t and its offset from the closest approach tProj.
 /// Shared with the four-wide sphere test of the scene queries so both give identical bits.
-inline bool solveRecentredSphere(float a, float tProj, float bHalf, float c, float tmin,
-                                 float tmax, float& t, float& offset) {
+inline bool solveRecentredSphere(float a, float tProj, float bHalf, float c, float tmin, float tmax,
+                                 float& t, float& offset) {
     const float disc = bHalf * bHalf - a * c;
     if (!(disc >= 0.0f)) return false;  // also rejects NaN (zero direction)
     const float root = std::sqrt(disc);

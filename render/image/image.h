@@ -1,13 +1,13 @@
 // Linear HDR images: the renderer's output and the tests' references.
 #pragma once
 
-#include "core/large_blocks.h"
-#include "core/math.h"
-
 #include <memory>
 #include <new>
 #include <utility>
 #include <vector>
+
+#include "core/large_blocks.h"
+#include "core/math.h"
 
 namespace rs {
 

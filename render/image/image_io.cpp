@@ -102,7 +102,8 @@ std::string imageFormatError(const std::string& path) {
     const std::string ext = lowerExtension(path);
     if (kindForExtension(ext, kind)) return {};
     return "cannot write '" + path + "': " +
-           (ext.empty() ? std::string("no file extension") : "unsupported extension '" + ext + "'") +
+           (ext.empty() ? std::string("no file extension")
+                        : "unsupported extension '" + ext + "'") +
            " (supported: " + kSupportedExtensions + ")";
 }
 
@@ -122,9 +123,12 @@ bool writeImage(const std::string& path, const ImageRgb& image, ToneMap op, floa
 
     // Write next to the target and rename over it, so readers and crashes never see a
     // half-written image and a failed write leaves any previous file untouched.
-    return writeAtomically(path, [&](const fs::path& tmp) {
-        return writeWithOiio(path, tmp, image, kind, op, exposure, error);
-    }, error);
+    return writeAtomically(
+        path,
+        [&](const fs::path& tmp) {
+            return writeWithOiio(path, tmp, image, kind, op, exposure, error);
+        },
+        error);
 }
 
 bool readImage(const std::string& path, ImageRgb& image, std::string& error) {

@@ -1,10 +1,10 @@
 // Image files through OpenImageIO; the format follows the extension.
 #pragma once
 
+#include <string>
+
 #include "image/image.h"
 #include "scene/document.h"
-
-#include <string>
 
 namespace rs {
 

@@ -2,13 +2,13 @@
 // metadata carry the part's place and origin.
 #include "image/part_file.h"
 
-#include "image/temporary_file.h"
-
 #include <OpenImageIO/imageio.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <system_error>
+
+#include "image/temporary_file.h"
 
 namespace rs {
 
@@ -47,12 +47,12 @@ bool writeFile(const fs::path& tmp, const std::string& path, const PartHeader& h
     spec.channelnames = {"R", "G", "B"};
     if (withIds) {
         spec.channelnames.push_back("id");
-        spec.channelformats = {OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT,
-                               OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::UINT32};
+        spec.channelformats = {OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT,
+                               OIIO::TypeDesc::UINT32};
     }
     spec.attribute("oiio:ColorSpace", "Linear");
-    spec.attribute(kPartKey, std::to_string(header.part.index) + "/" +
-                                 std::to_string(header.part.count));
+    spec.attribute(kPartKey,
+                   std::to_string(header.part.index) + "/" + std::to_string(header.part.count));
     spec.attribute(kFingerprintKey, header.fingerprint);
     spec.attribute(kToneMapKey, int(header.tonemap));
     spec.attribute(kExposureKey, header.exposure);
@@ -84,9 +84,9 @@ bool writePart(const std::string& path, const PartHeader& header, const ImageRgb
         error = "cannot write '" + path + "': the band's size does not match its part";
         return false;
     }
-    return writeAtomically(path, [&](const fs::path& tmp) {
-        return writeFile(tmp, path, header, band, ids, error);
-    }, error);
+    return writeAtomically(
+        path, [&](const fs::path& tmp) { return writeFile(tmp, path, header, band, ids, error); },
+        error);
 }
 
 bool readPartHeader(const std::string& path, PartHeader& header, std::string& error) {
@@ -102,8 +102,9 @@ bool readPartHeader(const std::string& path, PartHeader& header, std::string& er
     };
     const std::string partText = spec.get_string_attribute(kPartKey);
     if (partText.empty() || spec.get_string_attribute(kFingerprintKey).empty())
-        return refuse("is not a RayStudio part (no raystudio:part metadata; write parts with "
-                      "render --tile I/N)");
+        return refuse(
+            "is not a RayStudio part (no raystudio:part metadata; write parts with "
+            "render --tile I/N)");
     PartHeader h;
     std::string why;
     if (!parseImagePart(partText, h.part, why)) return refuse("has a bad raystudio:part: " + why);
@@ -125,11 +126,14 @@ bool readPartHeader(const std::string& path, PartHeader& header, std::string& er
                       std::to_string(h.rows.end) + ") that part " + partText + " of a " +
                       std::to_string(h.fullWidth) + "x" + std::to_string(h.fullHeight) +
                       " image covers");
-    if (spec.nchannels < 3 || spec.nchannels > 4 || spec.channelformat(0) != OIIO::TypeDesc::FLOAT ||
-        spec.channelformat(1) != OIIO::TypeDesc::FLOAT || spec.channelformat(2) != OIIO::TypeDesc::FLOAT)
+    if (spec.nchannels < 3 || spec.nchannels > 4 ||
+        spec.channelformat(0) != OIIO::TypeDesc::FLOAT ||
+        spec.channelformat(1) != OIIO::TypeDesc::FLOAT ||
+        spec.channelformat(2) != OIIO::TypeDesc::FLOAT)
         return refuse("is not float RGB (parts keep the renderer's 32-bit floats)");
     h.hasIds = spec.nchannels == 4;
-    if (h.hasIds && (spec.channelnames[3] != "id" || spec.channelformat(3) != OIIO::TypeDesc::UINT32))
+    if (h.hasIds &&
+        (spec.channelnames[3] != "id" || spec.channelformat(3) != OIIO::TypeDesc::UINT32))
         return refuse("has a fourth channel that is not the uint32 'id' channel");
     header = std::move(h);
     return true;

@@ -2,22 +2,22 @@
 // window inside the display window) and what it was rendered from (a render fingerprint).
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "image/image.h"
 #include "integrator/image_part.h"
 #include "scene/document.h"
-
-#include <string>
-#include <vector>
 
 namespace rs {
 
 /// What a part file says about itself (its EXR header).
 struct PartHeader {
     ImagePart part;
-    int fullWidth = 0;   ///< The whole image (display window).
+    int fullWidth = 0;  ///< The whole image (display window).
     int fullHeight = 0;
-    RowRange rows;        ///< Rows of the whole image this part holds (data window).
-    std::string fingerprint;  ///< renderFingerprint of the scene, settings and engine.
+    RowRange rows;                     ///< Rows of the whole image this part holds (data window).
+    std::string fingerprint;           ///< renderFingerprint of the scene, settings and engine.
     ToneMap tonemap = ToneMap::Clamp;  ///< For a merge into a display format.
     float exposure = 0.0f;
     bool hasIds = false;  ///< An "id" channel (uint32 object ids) follows R, G, B.

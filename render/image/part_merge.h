@@ -1,11 +1,11 @@
 // Merging part files back into the final image, refusing sets that are not one whole render.
 #pragma once
 
-#include "image/image.h"
-#include "image/part_file.h"
-
 #include <string>
 #include <vector>
+
+#include "image/image.h"
+#include "image/part_file.h"
 
 namespace rs {
 

@@ -74,7 +74,7 @@ uint8_t encode8(float d) {
 /// table is encode8 itself, evaluated 255 x 30 times once; the code is monotonic in d.
 struct Srgb8Steps {
     static constexpr uint32_t kOne = 0x3f800000u;  // 1.0f, code 255.
-    static constexpr int kBucketShift = 16;          // buckets of 2^16 patterns: 1/128 apart
+    static constexpr int kBucketShift = 16;        // buckets of 2^16 patterns: 1/128 apart
     /// at[255] is above every input: code 255 has no step after it.
     float at[256];
     /// The code of each bucket's first pattern. Within a bucket (a relative width of 1/128)
@@ -168,10 +168,14 @@ void toDisplay8Row(const Color* hdr, std::size_t count, float gain, uint8_t* rgb
 void toDisplay8(const Color* hdr, std::size_t count, ToneMap op, float exposure, uint8_t* rgb) {
     const float gain = std::exp2(exposure);
     switch (op) {
-        case ToneMap::Clamp: return toDisplay8Row<ToneMap::Clamp>(hdr, count, gain, rgb);
-        case ToneMap::Linear: return toDisplay8Row<ToneMap::Linear>(hdr, count, gain, rgb);
-        case ToneMap::Reinhard: return toDisplay8Row<ToneMap::Reinhard>(hdr, count, gain, rgb);
-        case ToneMap::Aces: return toDisplay8Row<ToneMap::Aces>(hdr, count, gain, rgb);
+        case ToneMap::Clamp:
+            return toDisplay8Row<ToneMap::Clamp>(hdr, count, gain, rgb);
+        case ToneMap::Linear:
+            return toDisplay8Row<ToneMap::Linear>(hdr, count, gain, rgb);
+        case ToneMap::Reinhard:
+            return toDisplay8Row<ToneMap::Reinhard>(hdr, count, gain, rgb);
+        case ToneMap::Aces:
+            return toDisplay8Row<ToneMap::Aces>(hdr, count, gain, rgb);
     }
     toDisplay8Row<ToneMap::Clamp>(hdr, count, gain, rgb);
 }

@@ -1,11 +1,11 @@
 // HDR to display mapping: exposure, tone operator, sRGB encoding.
 #pragma once
 
-#include "core/math.h"
-#include "scene/document.h"
-
 #include <cstddef>
 #include <cstdint>
+
+#include "core/math.h"
+#include "scene/document.h"
 
 namespace rs {
 

@@ -2,10 +2,10 @@
 // (a room's walls all face its light), point by point elsewhere.
 #include "integrator/centre_shadows.h"
 
-#include "integrator/lanes.h"
-
 #include <algorithm>
 #include <cstring>
+
+#include "integrator/lanes.h"
 
 namespace rs {
 
@@ -22,8 +22,8 @@ inline bool allListed(const uint8_t* listed, std::size_t i, std::size_t end) {
 
 }  // namespace
 
-std::size_t writeCentreShadows(const ShadingPoints& pts, const CentreSamples& c,
-                               std::size_t first, std::size_t end, float eps, uint32_t light,
+std::size_t writeCentreShadows(const ShadingPoints& pts, const CentreSamples& c, std::size_t first,
+                               std::size_t end, float eps, uint32_t light,
                                const ShadowRayArrays& out, std::size_t r) {
     const uint8_t* listed = c.listed.data();
     const float *px = pts.px.data(), *py = pts.py.data(), *pz = pts.pz.data();

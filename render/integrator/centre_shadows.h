@@ -2,10 +2,10 @@
 // are not sampled), four shading points at a time, and their answers back to the points.
 #pragma once
 
-#include "integrator/light_sampling.h"
-
 #include <cstddef>
 #include <cstdint>
+
+#include "integrator/light_sampling.h"
 
 namespace rs {
 

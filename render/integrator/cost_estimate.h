@@ -3,10 +3,10 @@
 // unless the user insists (raystudio-cli render --force, the designer's Render Image prompt).
 #pragma once
 
-#include "scene/document.h"
-
 #include <cstdint>
 #include <string>
+
+#include "scene/document.h"
 
 namespace rs {
 

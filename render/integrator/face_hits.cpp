@@ -1,9 +1,9 @@
 // Where the hits of a level lie and which way they face, four rays at a time.
 #include "integrator/face_hits.h"
 
-#include "integrator/lanes.h"
-
 #include <cstring>
+
+#include "integrator/lanes.h"
 
 namespace rs {
 
@@ -39,10 +39,10 @@ void faceHits(const float* ox, const float* oy, const float* oz, const float* dx
     std::size_t i = 0;
     for (; i + w <= n; i += w) {
         L p[3], nf[3], v[3];
-        const MaskLanes in = faceHit(loadLanes(ox + i), loadLanes(oy + i), loadLanes(oz + i),
-                                     loadLanes(dx + i), loadLanes(dy + i), loadLanes(dz + i),
-                                     loadLanes(t + i), loadLanes(hx + i), loadLanes(hy + i),
-                                     loadLanes(hz + i), p, nf, v);
+        const MaskLanes in =
+            faceHit(loadLanes(ox + i), loadLanes(oy + i), loadLanes(oz + i), loadLanes(dx + i),
+                    loadLanes(dy + i), loadLanes(dz + i), loadLanes(t + i), loadLanes(hx + i),
+                    loadLanes(hy + i), loadLanes(hz + i), p, nf, v);
         storeLanes(px + i, p[0]), storeLanes(py + i, p[1]), storeLanes(pz + i, p[2]);
         storeLanes(nx + i, nf[0]), storeLanes(ny + i, nf[1]), storeLanes(nz + i, nf[2]);
         storeLanes(vx + i, v[0]), storeLanes(vy + i, v[1]), storeLanes(vz + i, v[2]);

@@ -2,10 +2,10 @@
 // closest hits (the trace kernel's first step of shading a level).
 #pragma once
 
-#include "integrator/light_sampling.h"
-
 #include <cstddef>
 #include <cstdint>
+
+#include "integrator/light_sampling.h"
 
 namespace rs {
 

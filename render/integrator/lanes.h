@@ -17,7 +17,9 @@ using UintLanes = uint32_t __attribute__((vector_size(16)));
 using MaskLanes = int32_t __attribute__((vector_size(16)));  ///< A comparison's result.
 
 /// Every lane v.
-inline FloatLanes splat(float v) { return FloatLanes{v, v, v, v}; }
+inline FloatLanes splat(float v) {
+    return FloatLanes{v, v, v, v};
+}
 
 /// Four floats from p, and four to p (any alignment).
 inline FloatLanes loadLanes(const float* p) {
@@ -25,31 +27,45 @@ inline FloatLanes loadLanes(const float* p) {
     __builtin_memcpy(&v, p, sizeof v);
     return v;
 }
-inline void storeLanes(float* p, FloatLanes v) { __builtin_memcpy(p, &v, sizeof v); }
+inline void storeLanes(float* p, FloatLanes v) {
+    __builtin_memcpy(p, &v, sizeof v);
+}
 
 /// float of values below 2^31 (converted as the signed integers they equal): one SSE2
 /// conversion per lane, where unsigned lanes take several.
-inline float toFloat31(uint32_t v) { return float(int32_t(v)); }
+inline float toFloat31(uint32_t v) {
+    return float(int32_t(v));
+}
 inline FloatLanes toFloat31(UintLanes v) {
     return __builtin_convertvector(reinterpret_cast<MaskLanes>(v), FloatLanes);
 }
 
 /// |v| (the sign bit cleared, as std::abs does).
-inline float absLanes(float v) { return std::abs(v); }
+inline float absLanes(float v) {
+    return std::abs(v);
+}
 inline FloatLanes absLanes(FloatLanes v) {
     return reinterpret_cast<FloatLanes>(reinterpret_cast<UintLanes>(v) & 0x7fffffffu);
 }
 
 /// Whether the mask holds anywhere (the one mask, or any lane).
-inline bool anyLane(bool m) { return m; }
+inline bool anyLane(bool m) {
+    return m;
+}
 inline bool anyLane(MaskLanes m) {
     return (m[0] | m[1] | m[2] | m[3]) != 0;
 }
 
-inline float select(bool m, float a, float b) { return m ? a : b; }
-inline FloatLanes select(MaskLanes m, FloatLanes a, FloatLanes b) { return m ? a : b; }
+inline float select(bool m, float a, float b) {
+    return m ? a : b;
+}
+inline FloatLanes select(MaskLanes m, FloatLanes a, FloatLanes b) {
+    return m ? a : b;
+}
 
-inline float sqrtLanes(float v) { return std::sqrt(v); }
+inline float sqrtLanes(float v) {
+    return std::sqrt(v);
+}
 /// (SSE's sqrtps where there is SSE: correctly rounded, as each lane's std::sqrt, in one
 /// instruction instead of four calls guarded for errno.)
 inline FloatLanes sqrtLanes(FloatLanes v) {
@@ -62,7 +78,9 @@ inline FloatLanes sqrtLanes(FloatLanes v) {
 }
 
 /// m ? s * v^e : 0, lane by lane through the scalar std::pow, which runs only where m holds.
-inline float scaledPowWhere(bool m, float s, float v, float e) { return m ? s * std::pow(v, e) : 0.0f; }
+inline float scaledPowWhere(bool m, float s, float v, float e) {
+    return m ? s * std::pow(v, e) : 0.0f;
+}
 inline FloatLanes scaledPowWhere(MaskLanes m, FloatLanes s, FloatLanes v, FloatLanes e) {
     FloatLanes r{};
     for (int k = 0; k < kLaneWidth; ++k)
@@ -78,7 +96,8 @@ inline void sinCosQuarter(F a, F& s, F& c) {
     const F z = a * a;
     s = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z * a + a;
     c = (((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
-         0.5f * z) + 1.0f;
+         0.5f * z) +
+        1.0f;
 }
 
 }  // namespace rs

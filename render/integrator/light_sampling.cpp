@@ -1,11 +1,11 @@
 // Light samples and the Lambert + Phong sum over them.
 #include "integrator/light_sampling.h"
 
-#include "integrator/sampling.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+
+#include "integrator/sampling.h"
 
 namespace rs {
 
@@ -32,8 +32,7 @@ struct TowardLight {
 };
 
 /// Appends the sample toward q unless it is not listed; true when it was appended.
-inline bool appendSample(const Vec3& q, const Vec3& p, const Vec3& n,
-                         LightSamples& samples) {
+inline bool appendSample(const Vec3& q, const Vec3& p, const Vec3& n, LightSamples& samples) {
     const TowardLight<float> t(q.x, q.y, q.z, p.x, p.y, p.z, n.x, n.y, n.z);
     if (!t.listed()) return false;
     samples.push_back({Vec3(t.x, t.y, t.z), t.dist, t.nl});
@@ -58,8 +57,8 @@ inline uint32_t appendSamples(FloatLanes qx, FloatLanes qy, FloatLanes qz, const
 /// added to (r, g, b) where `visible` holds: diffuse colour times n . l plus the highlight
 /// specular * (R.V)^shininess, R = 2 (n . l) n - l, skipped below the cutoff.
 template <class F, class M>
-inline void addSampleTerm(const SurfaceTerms<F>& s, F nx, F ny, F nz, F vx, F vy, F vz, F dx,
-                          F dy, F dz, F nl, M visible, F& r, F& g, F& b) {
+inline void addSampleTerm(const SurfaceTerms<F>& s, F nx, F ny, F nz, F vx, F vy, F vz, F dx, F dy,
+                          F dz, F nl, M visible, F& r, F& g, F& b) {
     F spec{};
     const auto shiny = s.specular > 0.0f;
     if (anyLane(shiny)) {  // most surfaces of a room have no highlight
@@ -97,7 +96,8 @@ inline MaskLanes flags(const uint8_t* f, std::size_t i) {
 
 /// Rounded up to whole lanes, plus one lane of slack.
 std::size_t padded(std::size_t n) {
-    return (n + 2 * std::size_t(kLaneWidth) - 1) / std::size_t(kLaneWidth) * std::size_t(kLaneWidth);
+    return (n + 2 * std::size_t(kLaneWidth) - 1) / std::size_t(kLaneWidth) *
+           std::size_t(kLaneWidth);
 }
 
 }  // namespace
@@ -125,8 +125,8 @@ void LightSums::zero(std::size_t n) {
 
 SurfaceTerms<float> surfaceTerms(const CompiledMaterial& m) {
     const Color diffuseColor = m.diffuse * m.color;
-    return {diffuseColor.x, diffuseColor.y, diffuseColor.z, m.specular, m.specularCutoff,
-            m.shininess};
+    return {diffuseColor.x, diffuseColor.y,   diffuseColor.z,
+            m.specular,     m.specularCutoff, m.shininess};
 }
 
 LightSampler::LightSampler(const CompiledScene& scene, Lanes lanes)
@@ -143,8 +143,7 @@ void LightSampler::sample(const Vec3& p, const Vec3& n, uint32_t seed, bool area
 }
 
 void LightSampler::sampleLight(std::size_t li, const Vec3& p, const Vec3& n, uint32_t seed,
-                               bool area, LightSamples& samples,
-                               LightSpans& spans) const {
+                               bool area, LightSamples& samples, LightSpans& spans) const {
     const int shadowSamples = shadowSamples_, laned = laned_;
     const CompiledLight& light = scene_.lights()[li];
     LightSpan span{uint32_t(li), uint32_t(samples.size()), 0, 1};
@@ -210,8 +209,8 @@ Color spanShare(const CompiledScene& scene, const SurfaceTerms<float>& surface, 
     for (uint32_t i = span.first; i < span.first + span.listed; ++i) {
         if (occluded && occluded[i]) continue;
         const LightSample& s = samples[i];
-        addSampleTerm(surface, n.x, n.y, n.z, toViewer.x, toViewer.y, toViewer.z, s.dir.x,
-                      s.dir.y, s.dir.z, s.nl, true, r, g, b);
+        addSampleTerm(surface, n.x, n.y, n.z, toViewer.x, toViewer.y, toViewer.z, s.dir.x, s.dir.y,
+                      s.dir.z, s.nl, true, r, g, b);
     }
     const Color& power = scene.lights()[span.light].power;
     const float drawn = float(span.drawn);
@@ -233,9 +232,9 @@ void addCentreLight(const CompiledLight& light, const ShadingPoints& pts,
                     const uint8_t* blocked, std::size_t first, std::size_t end, LightSums& sums) {
     using L = FloatLanes;
     for (std::size_t i = first; i < end; i += kLaneWidth) {
-        const SurfaceTerms<L> s{load<L>(surface.r, i),        load<L>(surface.g, i),
-                                load<L>(surface.b, i),        load<L>(surface.specular, i),
-                                load<L>(surface.cutoff, i),   load<L>(surface.shininess, i)};
+        const SurfaceTerms<L> s{load<L>(surface.r, i),      load<L>(surface.g, i),
+                                load<L>(surface.b, i),      load<L>(surface.specular, i),
+                                load<L>(surface.cutoff, i), load<L>(surface.shininess, i)};
         const MaskLanes listed = flags(centres.listed.data(), i);
         const MaskLanes visible = blocked ? listed & ~flags(blocked, i) : listed;
         L r{}, g{}, b{};

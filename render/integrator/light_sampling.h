@@ -3,12 +3,12 @@
 // The trace kernel, deferred shadows and every engine's shadow queries go through these.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "core/scratch_arena.h"
 #include "integrator/sampling.h"
 #include "snapshot/compiled_scene.h"
-
-#include <cstdint>
-#include <vector>
 
 namespace rs {
 
@@ -98,8 +98,8 @@ public:
     /// Appends the samples of every light seen from point `p` with unit normal `n` (facing
     /// the viewer): `shadowSamples` stratified points of each sphere light when `area`, else
     /// the light's centre; `seed` decorrelates the pattern per camera sample.
-    void sample(const Vec3& p, const Vec3& n, uint32_t seed, bool area,
-                LightSamples& samples, LightSpans& spans) const;
+    void sample(const Vec3& p, const Vec3& n, uint32_t seed, bool area, LightSamples& samples,
+                LightSpans& spans) const;
 
     /// True when light `li` is sampled at its centre alone (sample()'s rule): a point light,
     /// or any light when not `area` or when the scene asks for no shadow samples.
@@ -152,6 +152,8 @@ template <class F>
 inline F shadowLength(F dist, float eps) {
     return dist - eps;
 }
-inline float shadowLength(const LightSample& s, float eps) { return shadowLength(s.dist, eps); }
+inline float shadowLength(const LightSample& s, float eps) {
+    return shadowLength(s.dist, eps);
+}
 
 }  // namespace rs

@@ -1,11 +1,6 @@
 // Tile scheduling for full renders and the per-pixel sampling they share with the session.
 #include "integrator/renderer.h"
 
-#include "core/parallel.h"
-#include "core/scratch_arena.h"
-#include "integrator/sampling.h"
-#include "integrator/trace_kernel.h"
-
 #include <tbb/blocked_range2d.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
@@ -14,6 +9,11 @@
 #include <algorithm>
 #include <chrono>
 #include <mutex>
+
+#include "core/parallel.h"
+#include "core/scratch_arena.h"
+#include "integrator/sampling.h"
+#include "integrator/trace_kernel.h"
 
 namespace rs {
 
@@ -62,8 +62,9 @@ bool supersamplePixels(const TraceKernel& kernel, const int32_t* xs, const int32
         colors.resize(origins.size());
         TraceOutput result;
         result.color = colors.data();
-        if (!kernel.trace(CameraBatch{origins.data(), dirs.data(), seeds.data(), origins.size(), true},
-                          result, counters, stale))
+        if (!kernel.trace(
+                CameraBatch{origins.data(), dirs.data(), seeds.data(), origins.size(), true},
+                result, counters, stale))
             return false;
         // Each pixel adds its samples in order k = 0, 1, ... as renderPixel does.
         for (std::size_t j = 0; j < n; ++j) {
@@ -101,30 +102,29 @@ namespace {
 /// Runs `body(x0, y0, x1, y1, counters)` over all tiles of rows [rowBegin, rowEnd) in
 /// parallel, with cancellation and progress; returns false when cancelled.
 template <class Body>
-bool forEachTile(int width, int rowBegin, int rowEnd, const RenderOptions& options,
-                 uint64_t& rays, Body&& body) {
+bool forEachTile(int width, int rowBegin, int rowEnd, const RenderOptions& options, uint64_t& rays,
+                 Body&& body) {
     const int ts = std::max(1, options.tileSize);
     const int tilesX = (width + ts - 1) / ts, tilesY = (rowEnd - rowBegin + ts - 1) / ts;
     const int total = tilesX * tilesY;
     std::atomic<int> done{0};
     std::atomic<uint64_t> rayCount{0};
     std::mutex progressMutex;
-    parallelFor(
-        tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1), [&](const auto& r) {
-            for (int ty = r.rows().begin(); ty != r.rows().end(); ++ty) {
-                for (int tx = r.cols().begin(); tx != r.cols().end(); ++tx) {
-                    TraceCounters counters;
-                    const int x0 = tx * ts, y0 = rowBegin + ty * ts;
-                    body(x0, y0, std::min(width, x0 + ts), std::min(rowEnd, y0 + ts), counters);
-                    rayCount.fetch_add(counters.total(), std::memory_order_relaxed);
-                    const int d = done.fetch_add(1) + 1;
-                    if (options.progress) {
-                        std::lock_guard lock(progressMutex);
-                        options.progress(d, total);
-                    }
+    parallelFor(tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1), [&](const auto& r) {
+        for (int ty = r.rows().begin(); ty != r.rows().end(); ++ty) {
+            for (int tx = r.cols().begin(); tx != r.cols().end(); ++tx) {
+                TraceCounters counters;
+                const int x0 = tx * ts, y0 = rowBegin + ty * ts;
+                body(x0, y0, std::min(width, x0 + ts), std::min(rowEnd, y0 + ts), counters);
+                rayCount.fetch_add(counters.total(), std::memory_order_relaxed);
+                const int d = done.fetch_add(1) + 1;
+                if (options.progress) {
+                    std::lock_guard lock(progressMutex);
+                    options.progress(d, total);
                 }
             }
-        });
+        }
+    });
     rays += rayCount.load();
     return !(options.cancel && options.cancel->load(std::memory_order_relaxed));
 }
@@ -185,7 +185,8 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
     arenaExecute(arena, [&] {
         // Pass 1: one centre sample per pixel (all the image needs without supersampling), or
         // the full pattern when supersampling everywhere. Ids come from the centre ray.
-        result.cancelled = !forEachTile(w, t0, t1, options, result.rays,
+        result.cancelled = !forEachTile(
+            w, t0, t1, options, result.rays,
             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
                 // Each worker's tile buffers, in its huge-page scratch arena (a cold render
                 // would otherwise fault them in 4 KiB at a time on its first tiles).
@@ -242,7 +243,8 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
                     if (!ids.empty())
                         for (std::size_t k = 0; k < width; ++k) ids[i + k] = infos[row + k].id;
                     if (adaptive)
-                        for (std::size_t k = 0; k < width; ++k) normals[i + k] = infos[row + k].normal;
+                        for (std::size_t k = 0; k < width; ++k)
+                            normals[i + k] = infos[row + k].normal;
                 }
                 if (options.tileDone) options.tileDone(result.image, x0, y0 - t0, x1, y1 - t0);
             });
@@ -250,36 +252,38 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
         // Pass 2: supersample only where neighbours differ; decisions read pass 1's image,
         // so they are written to a copy.
         ImageRgb refined = result.image;
-        result.cancelled = !forEachTile(w, r0, r1, options, result.rays,
-            [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
-                thread_local ScratchVector<int32_t> xs, ys;
-                thread_local ScratchVector<Color> colors;
-                if (cancelled()) return;
-                tilePixels(x0, y0, x1, y1, xs, ys, [&](int x, int y) {
-                    return needsSupersampling(result.image.pixels.data(), ids.data(),
-                                              normals.data(), w, h, x, y, t0);
-                });
-                colors.resize(xs.size());
-                if (!supersamplePixels(kernel, xs.data(), ys.data(), xs.size(), spp,
-                                       colors.data(), counters, cancelled))
-                    return;
-                for (std::size_t k = 0; k < xs.size(); ++k)
-                    refined.at(xs[k], ys[k] - t0) = colors[k];
-            });
+        result.cancelled =
+            !forEachTile(w, r0, r1, options, result.rays,
+                         [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
+                             thread_local ScratchVector<int32_t> xs, ys;
+                             thread_local ScratchVector<Color> colors;
+                             if (cancelled()) return;
+                             tilePixels(x0, y0, x1, y1, xs, ys, [&](int x, int y) {
+                                 return needsSupersampling(result.image.pixels.data(), ids.data(),
+                                                           normals.data(), w, h, x, y, t0);
+                             });
+                             colors.resize(xs.size());
+                             if (!supersamplePixels(kernel, xs.data(), ys.data(), xs.size(), spp,
+                                                    colors.data(), counters, cancelled))
+                                 return;
+                             for (std::size_t k = 0; k < xs.size(); ++k)
+                                 refined.at(xs[k], ys[k] - t0) = colors[k];
+                         });
         result.image = std::move(refined);
     });
     if (t0 != r0 || t1 != r1) {  // drop the margin rows: only the band was asked for
         const std::size_t first = index(0, r0), count = std::size_t(w) * std::size_t(r1 - r0);
         ImageRgb band = ImageRgb::uninitialized(w, r1 - r0);
-        std::copy_n(result.image.pixels.begin() + std::ptrdiff_t(first), count, band.pixels.begin());
+        std::copy_n(result.image.pixels.begin() + std::ptrdiff_t(first), count,
+                    band.pixels.begin());
         result.image = std::move(band);
         if (options.ids)
             ids = std::vector<ObjectId>(ids.begin() + std::ptrdiff_t(first),
                                         ids.begin() + std::ptrdiff_t(first + count));
     }
     if (options.ids) result.ids = std::move(ids);
-    result.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                    .count();
+    result.ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;
 }
 

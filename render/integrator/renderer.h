@@ -1,15 +1,15 @@
 // Full-frame rendering: tiles traced in parallel on oneTBB, with plain or adaptive supersampling.
 #pragma once
 
-#include "image/image.h"
-#include "integrator/sampling.h"
-#include "integrator/whitted.h"
-#include "snapshot/compiled_scene.h"
-
 #include <atomic>
 #include <cstdint>
 #include <functional>
 #include <vector>
+
+#include "image/image.h"
+#include "integrator/sampling.h"
+#include "integrator/whitted.h"
+#include "snapshot/compiled_scene.h"
 
 namespace rs {
 
@@ -17,8 +17,8 @@ class TraceKernel;
 
 /// How to run a full render.
 struct RenderOptions {
-    int threads = 0;    ///< Worker threads; 0 = all cores.
-    int tileSize = 32;  ///< Tile edge in pixels.
+    int threads = 0;                            ///< Worker threads; 0 = all cores.
+    int tileSize = 32;                          ///< Tile edge in pixels.
     const std::atomic<bool>* cancel = nullptr;  ///< Polled between ray-tree levels; may be null.
     /// Fill RenderResult::ids (picking); renders that only write an image leave it off.
     bool ids = true;
@@ -43,7 +43,7 @@ struct RenderResult {
     std::vector<ObjectId> ids;  ///< Object id seen through each pixel's centre (options.ids).
     uint64_t rays = 0;          ///< All rays traced, shadow rays included.
     double ms = 0.0;            ///< Wall time of the render, loading excluded.
-    bool cancelled = false;  ///< Tiles not traced are black, with no ids.
+    bool cancelled = false;     ///< Tiles not traced are black, with no ids.
 };
 
 /// pixelSeed(x, y, k) given the row's key hashKey(y) and the sample's key hashKey(k): a row

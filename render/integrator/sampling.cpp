@@ -39,7 +39,8 @@ struct Stratum {
     uint32_t keyX, keyY;
 };
 Stratum stratum(int k, int cols) {
-    return {float(k % cols), float(k / cols), hashKey(uint32_t(2 * k)), hashKey(uint32_t(2 * k + 1))};
+    return {float(k % cols), float(k / cols), hashKey(uint32_t(2 * k)),
+            hashKey(uint32_t(2 * k + 1))};
 }
 
 }  // namespace
@@ -77,8 +78,8 @@ void DiskStrata::point(F column, F row, U keyX, U keyY, uint32_t seed, F& x, F& 
 
 Vec3 DiskStrata::sample(int k, uint32_t seed) const {
     const std::size_t i = std::size_t(k);
-    const Stratum s = i < column_.size() ? Stratum{column_[i], row_[i], keyX_[i], keyY_[i]}
-                                         : stratum(k, cols);
+    const Stratum s =
+        i < column_.size() ? Stratum{column_[i], row_[i], keyX_[i], keyY_[i]} : stratum(k, cols);
     float x, y;
     point(s.column, s.row, s.keyX, s.keyY, seed, x, y);
     return Vec3(x, y, 0.0f);
@@ -95,6 +96,8 @@ void DiskStrata::sampleLanes(int k, uint32_t seed, FloatLanes& x, FloatLanes& y)
     point(column, row, keyX, keyY, seed, x, y);
 }
 
-Vec3 stratifiedDiskSample(int k, int n, uint32_t seed) { return DiskStrata(n).sample(k, seed); }
+Vec3 stratifiedDiskSample(int k, int n, uint32_t seed) {
+    return DiskStrata(n).sample(k, seed);
+}
 
 }  // namespace rs

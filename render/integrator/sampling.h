@@ -1,12 +1,12 @@
 // Deterministic per-pixel sampling: hashed random numbers and stratified patterns.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "core/math.h"
 #include "integrator/lanes.h"
 #include "scene/document.h"
-
-#include <cstdint>
-#include <vector>
 
 namespace rs {
 
@@ -23,22 +23,34 @@ inline U hashBits(U x) {
 
 /// A 32-bit integer hash (lowbias32); the same inputs give the same numbers on every thread,
 /// so images do not depend on the thread count or on which tiles were re-rendered.
-inline uint32_t hash32(uint32_t x) { return hashBits(x); }
+inline uint32_t hash32(uint32_t x) {
+    return hashBits(x);
+}
 
 /// hashCombine's second key, worked out ahead where it is used with many first keys.
-inline uint32_t hashKey(uint32_t b) { return hash32(b) + 0x9e3779b9U; }
+inline uint32_t hashKey(uint32_t b) {
+    return hash32(b) + 0x9e3779b9U;
+}
 /// hashCombine(a, b) given hashKey(b) (one key, or a lane of keys).
 template <class U>
-inline U hashKeyed(uint32_t a, U key) { return hashBits(a ^ key); }
+inline U hashKeyed(uint32_t a, U key) {
+    return hashBits(a ^ key);
+}
 /// Hash of several keys.
-inline uint32_t hashCombine(uint32_t a, uint32_t b) { return hashKeyed(a, hashKey(b)); }
+inline uint32_t hashCombine(uint32_t a, uint32_t b) {
+    return hashKeyed(a, hashKey(b));
+}
 
 /// hashToUnit of one hash or of each lane. h >> 8 < 2^24 converts exactly as signed, which
 /// SSE2 does in one instruction (unsigned lanes take several).
 template <class U>
-inline auto unitOf(U h) { return toFloat31(h >> 8) * (1.0f / 16777216.0f); }
+inline auto unitOf(U h) {
+    return toFloat31(h >> 8) * (1.0f / 16777216.0f);
+}
 /// Uniform float in [0, 1) from a hash.
-inline float hashToUnit(uint32_t h) { return unitOf(h); }
+inline float hashToUnit(uint32_t h) {
+    return unitOf(h);
+}
 
 /// Position of sample `k` of `n` inside a pixel, in [0, 1)^2: a regular sub-grid at cell
 /// centres when n is a perfect square, otherwise n-rooks stratified jitter seeded by `seed`.

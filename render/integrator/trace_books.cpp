@@ -3,7 +3,6 @@
 // glass was met. The session's frame is built from these; renderImage asks for the first hit
 // alone.
 #include "integrator/trace_kernel.h"
-
 #include "integrator/trace_level.h"
 
 namespace rs {
@@ -38,8 +37,8 @@ void TraceKernel::keepBooks(const Level& level, const HitBatch& hits, int depth,
             uint32_t materialIndex;
             ObjectId id;
             scene_.describe(slots[i], materialIndex, id);
-            primary[owners[i]] = PrimaryInfo{id, t[i], Vec3(nx[i], ny[i], nz[i]),
-                                             specular[materialIndex] != 0};
+            primary[owners[i]] =
+                PrimaryInfo{id, t[i], Vec3(nx[i], ny[i], nz[i]), specular[materialIndex] != 0};
         }
         return;
     }

@@ -72,7 +72,7 @@ struct TraceKernel::Workspace {
     ScratchVector<float> sox, soy, soz, sdx, sdy, sdz, stmax;
     ScratchVector<uint32_t> slight;
     ScratchVector<uint8_t> occluded;
-    std::size_t shadowCount = 0;  ///< Shadow rays written by pushShadow.
+    std::size_t shadowCount = 0;                    ///< Shadow rays written by pushShadow.
     ScratchVector<CentreSamples> centres;           ///< Per centre-sampled light.
     ScratchVector<ScratchVector<uint8_t>> blocked;  ///< Per centre-sampled light and point.
     LightSums sums, lambertSums;
@@ -147,12 +147,12 @@ struct TraceKernel::Workspace {
             for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n);
         if (slight.size() < n) slight.resize(n);
         shadowCount = 0;
-        return {sox.data(), soy.data(), soz.data(), sdx.data(),
+        return {sox.data(), soy.data(), soz.data(),   sdx.data(),
                 sdy.data(), sdz.data(), stmax.data(), slight.data()};
     }
     RayBatch shadowBatch(bool coherent) const {
-        RayBatch b{sox.data(), soy.data(), soz.data(), sdx.data(), sdy.data(), sdz.data(),
-                   stmax.data(), shadowCount};
+        RayBatch b{sox.data(), soy.data(), soz.data(),   sdx.data(),
+                   sdy.data(), sdz.data(), stmax.data(), shadowCount};
         b.light = slight.data();
         b.coherent = coherent;
         return b;
@@ -284,7 +284,8 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                 asDiffuse += reflectivity;
                 reflectivity = 0.0f;
             }
-            if (options_.refractionAsDiffuse && transparency > 0.0f && id != options_.refractionExempt) {
+            if (options_.refractionAsDiffuse && transparency > 0.0f &&
+                id != options_.refractionExempt) {
                 asDiffuse += transparency;
                 transparency = 0.0f;
             }
@@ -293,7 +294,8 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             const std::size_t j = count++;
             pointRay[j] = uint32_t(i);
             pts.surface.set(j, surfaces[materialIndex]);
-            if (AsDiffuse) pts.lambert.set(j, lamberts_[materialIndex]), pts.asDiffuse[j] = asDiffuse;
+            if (AsDiffuse)
+                pts.lambert.set(j, lamberts_[materialIndex]), pts.asDiffuse[j] = asDiffuse;
             pointMaterial[j] = materialIndex, pointSeed[j] = seeds[i], pointOwner[j] = owner;
             pointWeight[j] = weight;
         }
@@ -340,9 +342,11 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
     const bool deferred = options_.shadows == ShadowQuality::Deferred;
     const bool area = area_, traceShadows = traceShadows_;
     const std::size_t lane = std::size_t(kLaneWidth);
-    const std::size_t chunk = std::max(lane, kSampleCap / std::max<std::size_t>(1, perPoint_) / lane * lane);
+    const std::size_t chunk =
+        std::max(lane, kSampleCap / std::max<std::size_t>(1, perPoint_) / lane * lane);
     const std::size_t lightCount = scene_.lights().size();
-    if (ws.centres.size() < lightCount) ws.centres.resize(lightCount), ws.blocked.resize(lightCount);
+    if (ws.centres.size() < lightCount)
+        ws.centres.resize(lightCount), ws.blocked.resize(lightCount);
     ws.sums.zero(count);
     if (AsDiffuse) ws.lambertSums.zero(count);
     for (std::size_t first = 0; first < count; first += chunk) {
@@ -361,7 +365,8 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             }
             ws.pointSpans[group] = uint32_t(ws.spans.size());
         }
-        for (const uint32_t li : centreLights_) sampler_.sampleCentres(li, sp, first, end, ws.centres[li]);
+        for (const uint32_t li : centreLights_)
+            sampler_.sampleCentres(li, sp, first, end, ws.centres[li]);
 
         // One shadow batch: every centre-sampled light's listed rays, light by light, then
         // the sphere lights' samples in list order.
@@ -393,7 +398,8 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             areaOccluded = ws.occluded.data() + areaBase;
             if (Bookkeeping && out.rays && sampled)
                 for (std::size_t j = first; j < end; ++j)
-                    for (uint32_t k = ws.pointSpans[j - first]; k < ws.pointSpans[j - first + 1]; ++k)
+                    for (uint32_t k = ws.pointSpans[j - first]; k < ws.pointSpans[j - first + 1];
+                         ++k)
                         out.rays[pts.owner[j]] += ws.spans[k].listed;
         }
 
@@ -403,9 +409,11 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             if (sampler_.centreOnly(li, area)) {
                 const CompiledLight& light = scene_.lights()[li];
                 const uint8_t* blocked = traceShadows ? ws.blocked[li].data() : nullptr;
-                addCentreLight(light, sp, pts.surface, ws.centres[li], blocked, first, end, ws.sums);
+                addCentreLight(light, sp, pts.surface, ws.centres[li], blocked, first, end,
+                               ws.sums);
                 if (AsDiffuse)
-                    addCentreLight(light, sp, pts.lambert, ws.centres[li], blocked, first, end, ws.lambertSums);
+                    addCentreLight(light, sp, pts.lambert, ws.centres[li], blocked, first, end,
+                                   ws.lambertSums);
                 continue;
             }
             for (std::size_t j = first; j < end; ++j) {
@@ -414,11 +422,14 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                 const LightSpan& span = ws.spans[k++];
                 const Vec3 nf(sp.nx[j], sp.ny[j], sp.nz[j]), v(sp.vx[j], sp.vy[j], sp.vz[j]);
                 const uint32_t mi = pts.material[j];
-                const Color c = spanShare(scene_, surfaces_[mi], nf, v, span, ws.samples.data(), areaOccluded);
+                const Color c =
+                    spanShare(scene_, surfaces_[mi], nf, v, span, ws.samples.data(), areaOccluded);
                 ws.sums.r[j] += c.x, ws.sums.g[j] += c.y, ws.sums.b[j] += c.z;
                 if (AsDiffuse) {
-                    const Color l = spanShare(scene_, lamberts_[mi], nf, v, span, ws.samples.data(), areaOccluded);
-                    ws.lambertSums.r[j] += l.x, ws.lambertSums.g[j] += l.y, ws.lambertSums.b[j] += l.z;
+                    const Color l = spanShare(scene_, lamberts_[mi], nf, v, span, ws.samples.data(),
+                                              areaOccluded);
+                    ws.lambertSums.r[j] += l.x, ws.lambertSums.g[j] += l.y,
+                        ws.lambertSums.b[j] += l.z;
                 }
             }
         }
@@ -489,12 +500,13 @@ void TraceKernel::resolveDeferred(const ShadingRecord* records, std::size_t coun
         for (std::size_t j = 0; j < n; ++j) {
             const ShadingRecord& r = records[first + j];
             const CompiledMaterial& m = scene_.materials()[r.material];
-            const Color shadowed = shadeLights(
-                scene_, m, r.n, r.toViewer, ws.spans.data() + ws.pointSpans[j],
-                ws.pointSpans[j + 1] - ws.pointSpans[j], ws.samples.data(), occluded);
+            const Color shadowed =
+                shadeLights(scene_, m, r.n, r.toViewer, ws.spans.data() + ws.pointSpans[j],
+                            ws.pointSpans[j + 1] - ws.pointSpans[j], ws.samples.data(), occluded);
             const Color unshadowed = shadeLights(
                 scene_, m, r.n, r.toViewer, ws.centreSpans.data() + ws.centrePointSpans[j],
-                ws.centrePointSpans[j + 1] - ws.centrePointSpans[j], ws.centreSamples.data(), nullptr);
+                ws.centrePointSpans[j + 1] - ws.centrePointSpans[j], ws.centreSamples.data(),
+                nullptr);
             out[first + j] = r.weight * (shadowed - unshadowed);
         }
         first += n;
@@ -512,7 +524,8 @@ void TraceKernel::firstHits(const CameraBatch& rays, ObjectId* ids) const {
         for (std::size_t i = start; i < end; ++i) {
             ids[i] = kNoObject;
             uint32_t material;
-            if (hits.slot[i - start] != kNoSlot) scene_.describe(hits.slot[i - start], material, ids[i]);
+            if (hits.slot[i - start] != kNoSlot)
+                scene_.describe(hits.slot[i - start], material, ids[i]);
         }
     }
 }

@@ -3,14 +3,14 @@
 // of scene-format.md, written once). Full renders, every session pass and single rays use it.
 #pragma once
 
-#include "image/image.h"
-#include "integrator/light_sampling.h"
-#include "integrator/whitted.h"
-
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
+
+#include "image/image.h"
+#include "integrator/light_sampling.h"
+#include "integrator/whitted.h"
 
 namespace rs {
 
@@ -100,7 +100,8 @@ struct PerRayStorage {
     std::size_t used = 0;
     bool unordered = false;
     Items items;  ///< Grouped by ray when `appended` is not.
-    std::vector<uint32_t> first;  ///< Ray i's items are of(i)[0, count[i]): [first[i], first[i + 1]).
+    std::vector<uint32_t>
+        first;  ///< Ray i's items are of(i)[0, count[i]): [first[i], first[i + 1]).
     std::vector<uint8_t> count, overflow;
 
     /// Empty lists for n rays of at most `capacity` items each.
@@ -110,7 +111,8 @@ struct PerRayStorage {
         count.resize(n), overflow.resize(n);
         used = 0;
         unordered = false;
-        return {appended.data(), ray.data(), &used, &unordered, capacity, count.data(), overflow.data()};
+        return {appended.data(), ray.data(),   &used,          &unordered,
+                capacity,        count.data(), overflow.data()};
     }
     /// After the lists are written: each ray's items together, in the order they were
     /// appended (a stable counting sort by ray).
@@ -182,7 +184,8 @@ private:
     /// What a level adds to the outputs besides colour: each ray counted to its camera ray,
     /// its segment (below the camera level), the first hit and whether a mirror or glass was
     /// met. A loop of its own, so the shading loop is the one a colour-only trace runs.
-    void keepBooks(const Level& level, const HitBatch& hits, int depth, const TraceOutput& out) const;
+    void keepBooks(const Level& level, const HitBatch& hits, int depth,
+                   const TraceOutput& out) const;
 
     const CompiledScene& scene_;
     TraceOptions options_;

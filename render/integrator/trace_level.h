@@ -74,7 +74,8 @@ struct TraceKernel::Level {
         count += end - begin;
     }
     RayBatch batch(bool coherent) const {
-        RayBatch b{ox.data(), oy.data(), oz.data(), dx.data(), dy.data(), dz.data(), tmax.data(), size()};
+        RayBatch b{ox.data(), oy.data(), oz.data(),   dx.data(),
+                   dy.data(), dz.data(), tmax.data(), size()};
         b.coherent = coherent;
         return b;
     }

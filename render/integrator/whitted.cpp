@@ -1,9 +1,9 @@
 // Single camera rays through the trace kernel.
 #include "integrator/whitted.h"
 
-#include "integrator/trace_kernel.h"
-
 #include <algorithm>
+
+#include "integrator/trace_kernel.h"
 
 namespace rs {
 
@@ -31,11 +31,21 @@ Color WhittedIntegrator::traceCamera(const Ray& ray, uint32_t seed, TraceCounter
     out.color = &color;
     out.primary = &info;
     if (sink && sink->capacity > 0)
-        out.records = {sink->data, rayOf, &records, &unordered, std::min(sink->capacity, kSinkLimit),
-                       &recordCount, &recordOverflow};
+        out.records = {sink->data,
+                       rayOf,
+                       &records,
+                       &unordered,
+                       std::min(sink->capacity, kSinkLimit),
+                       &recordCount,
+                       &recordOverflow};
     if (segments && segments->capacity > 0)
-        out.segments = {segments->data, rayOf, &segmentsUsed, &unordered,
-                        std::min(segments->capacity, kSinkLimit), &segmentCount, &segmentOverflow};
+        out.segments = {segments->data,
+                        rayOf,
+                        &segmentsUsed,
+                        &unordered,
+                        std::min(segments->capacity, kSinkLimit),
+                        &segmentCount,
+                        &segmentOverflow};
     kernel_->trace(CameraBatch{&ray.origin, &ray.dir, &seed, 1, true}, out, counters);
     if (primary) *primary = info;
     if (sink) {

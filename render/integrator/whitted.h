@@ -1,12 +1,12 @@
 // The Whitted integrator: the illumination equation of scene-format.md, recursively.
 #pragma once
 
-#include "core/math.h"
-#include "snapshot/compiled_scene.h"
-
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+
+#include "core/math.h"
+#include "snapshot/compiled_scene.h"
 
 namespace rs {
 

@@ -12,7 +12,9 @@ bool allowed(const char* path) {
 }  // namespace
 
 // The default Exists() opens the file to see, which blocks on a FIFO.
-bool MeshFileAccess::Exists(const char* path) const { return allowed(path); }
+bool MeshFileAccess::Exists(const char* path) const {
+    return allowed(path);
+}
 
 Assimp::IOStream* MeshFileAccess::Open(const char* path, const char* mode) {
     return allowed(path) ? Assimp::DefaultIOSystem::Open(path, mode) : nullptr;

@@ -163,8 +163,8 @@ std::string checkOff(std::string_view text, std::uintmax_t fileSize, bool comple
         const std::size_t at = car.offset();
         count = car.readCount(overflowed);
         if (!overflowed) return {};
-        return std::string("OFF header declares a ") + what + " count too large to be read: " +
-               std::string(text.substr(at, 32));
+        return std::string("OFF header declares a ") + what +
+               " count too large to be read: " + std::string(text.substr(at, 32));
     };
     uint32_t vertices = 0, faces = 0;
     if (std::string why = readClaim("vertex", vertices); !why.empty()) return why;
@@ -180,7 +180,8 @@ std::string checkOff(std::string_view text, std::uintmax_t fileSize, bool comple
                                complete ? text.size() : fileSize, 1);
     std::string why =
         compareWithSize("OFF", body, {{"vertices", vertices, 2}, {"faces", faces, 2}}, nul, 1);
-    if (!why.empty()) why += "; the importer stops reading at its NUL byte at offset " + std::to_string(nul);
+    if (!why.empty())
+        why += "; the importer stops reading at its NUL byte at offset " + std::to_string(nul);
     return why;
 }
 
@@ -239,7 +240,8 @@ std::string checkPly(std::string_view head, std::uintmax_t fileSize) {
             // (a misspelt type once let a 2-billion-vertex claim run for minutes).
             const bool list = w.size() >= 2 && w[1] == "list";
             const std::uintmax_t bytes = plyScalarBytes(w.size() >= 2 ? w[list ? 2 : 1] : "");
-            claims.back().minBytes += ascii ? kMinAsciiNumberBytes : std::max<std::uintmax_t>(bytes, 1);
+            claims.back().minBytes +=
+                ascii ? kMinAsciiNumberBytes : std::max<std::uintmax_t>(bytes, 1);
         }
     }
     // An element without properties still takes a line (ASCII) or is not worth allocating for.

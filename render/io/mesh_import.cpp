@@ -2,14 +2,14 @@
 // child process (io/mesh_io.cpp), where a crash or a runaway allocation costs only that child.
 #include "io/mesh_import.h"
 
-#include "io/mesh_file_access.h"
-
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <limits>
+
+#include "io/mesh_file_access.h"
 
 namespace rs {
 

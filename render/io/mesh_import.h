@@ -1,9 +1,9 @@
 // The assimp import of one mesh file, in this process: what the import child runs.
 #pragma once
 
-#include "io/mesh_io.h"
-
 #include <string>
+
+#include "io/mesh_io.h"
 
 namespace rs {
 

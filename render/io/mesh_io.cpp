@@ -2,12 +2,6 @@
 // under a memory and time budget, the triangles back through the mesh wire format.
 #include "io/mesh_io.h"
 
-#include "io/child_process.h"
-#include "io/input_file.h"
-#include "io/mesh_header_check.h"
-#include "io/mesh_import.h"
-#include "io/mesh_wire.h"
-
 #include <unistd.h>
 
 #include <algorithm>
@@ -20,6 +14,12 @@
 #include <limits>
 #include <new>
 #include <system_error>
+
+#include "io/child_process.h"
+#include "io/input_file.h"
+#include "io/mesh_header_check.h"
+#include "io/mesh_import.h"
+#include "io/mesh_wire.h"
 
 namespace rs {
 

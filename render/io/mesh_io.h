@@ -1,14 +1,14 @@
 // Loading triangle meshes through assimp (OBJ, PLY, STL, glTF/GLB, FBX, ...).
 #pragma once
 
-#include "scene/mesh_data.h"
-
 #include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+
+#include "scene/mesh_data.h"
 
 namespace rs {
 
@@ -26,11 +26,11 @@ struct MeshLoadResult {
 /// The budget of one import's child process; what is not set comes from the file's size
 /// (defaultMeshImportMemory, defaultMeshImportTime).
 struct MeshImportOptions {
-    std::optional<std::uintmax_t> memoryBytes;          ///< Address space on top of the parent's.
+    std::optional<std::uintmax_t> memoryBytes;  ///< Address space on top of the parent's.
     /// Its CPU time, rounded up, and its wall-clock time too when set; unset, the CPU time is
     /// defaultMeshImportTime and the wall clock kMeshImportWallFactor times that.
     std::optional<std::chrono::milliseconds> wallTime;
-    const std::atomic<bool>* cancel = nullptr;          ///< True stops the import.
+    const std::atomic<bool>* cancel = nullptr;  ///< True stops the import.
 };
 
 /// 512 MiB + 64 bytes per byte of the file, at most the machine's physical memory.

@@ -1,11 +1,11 @@
 // Mesh wire format: fixed header, then raw arrays; every count checked before it is used.
 #include "io/mesh_wire.h"
 
-#include "io/child_process.h"
-
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
+
+#include "io/child_process.h"
 
 namespace rs {
 

@@ -1,9 +1,9 @@
 // The checked byte format a mesh import child sends its result back to the parent in.
 #pragma once
 
-#include "io/mesh_io.h"
-
 #include <string>
+
+#include "io/mesh_io.h"
 
 namespace rs {
 

@@ -1,11 +1,11 @@
 // FNV-1a over the canonical scene text and the mesh data it refers to.
 #include "io/render_fingerprint.h"
 
-#include "io/scene_io.h"
-
 #include <cstdint>
 #include <cstdio>
 #include <variant>
+
+#include "io/scene_io.h"
 
 namespace rs {
 

@@ -3,10 +3,10 @@
 // parts of another scene or of other settings.
 #pragma once
 
+#include <string>
+
 #include "accel/ray_engine.h"
 #include "scene/document.h"
-
-#include <string>
 
 namespace rs {
 

@@ -1,10 +1,10 @@
 // Reading and writing scene files, format version 1 (shared/design/scene-format.md).
 #pragma once
 
-#include "scene/document.h"
-
 #include <string>
 #include <vector>
+
+#include "scene/document.h"
 
 namespace rs {
 

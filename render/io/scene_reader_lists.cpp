@@ -48,9 +48,9 @@ void UniqueNames::add(SceneErrorSink& sink, const std::string& name,
                       const std::string& entryPointer) {
     const auto [it, inserted] = seen_.try_emplace(name, entryPointer);
     if (!inserted)
-        sink.atValue(appendPointer(entryPointer, "name"),
-                     std::string("duplicate ") + kind_ + " name \"" + name + "\" (also at " +
-                         it->second + ")");
+        sink.atValue(appendPointer(entryPointer, "name"), std::string("duplicate ") + kind_ +
+                                                              " name \"" + name + "\" (also at " +
+                                                              it->second + ")");
 }
 
 void readMaterials(SceneErrorSink& sink, const Json& json, SceneDocument& doc) {

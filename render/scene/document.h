@@ -1,9 +1,6 @@
 // The editable scene document: what the designer edits and what scene files hold.
 #pragma once
 
-#include "core/math.h"
-#include "scene/mesh_data.h"
-
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -11,6 +8,9 @@
 #include <utility>
 #include <variant>
 #include <vector>
+
+#include "core/math.h"
+#include "scene/mesh_data.h"
 
 namespace rs {
 
@@ -110,7 +110,7 @@ struct PlaneGeometry {
 };
 struct RectangleGeometry {
     Vec3 center{0.0f, 0.0f, 0.0f};
-    Vec3 u{1.0f, 0.0f, 0.0f};  ///< Half-extent edge vector.
+    Vec3 u{1.0f, 0.0f, 0.0f};   ///< Half-extent edge vector.
     Vec3 v{0.0f, 0.0f, -1.0f};  ///< Half-extent edge vector, orthogonal to u.
     bool operator==(const RectangleGeometry&) const = default;
 };

@@ -131,8 +131,7 @@ const std::vector<Field<Light>>& lightFields(bool sphere) {
 }
 const std::vector<Field<Camera>>& cameraFields() {
     static const std::vector<Field<Camera>> f{
-        enumField("projection", "Projection", &Camera::projection,
-                  {"perspective", "orthographic"}),
+        enumField("projection", "Projection", &Camera::projection, {"perspective", "orthographic"}),
         vecField("position", "Position", &Camera::position),
         vecField("target", "Target", &Camera::target),
         vecField("up", "Up", &Camera::up),
@@ -200,14 +199,19 @@ std::string rangeError(const ParamDescriptor& d, double v) {
 
 bool holdsFor(ParamType type, const ParamValue& v) {
     switch (type) {
-        case ParamType::Float: return std::holds_alternative<float>(v);
+        case ParamType::Float:
+            return std::holds_alternative<float>(v);
         case ParamType::Int:
-        case ParamType::Enum: return std::holds_alternative<int>(v);
-        case ParamType::Bool: return std::holds_alternative<bool>(v);
+        case ParamType::Enum:
+            return std::holds_alternative<int>(v);
+        case ParamType::Bool:
+            return std::holds_alternative<bool>(v);
         case ParamType::Vec3:
-        case ParamType::Color: return std::holds_alternative<Vec3>(v);
+        case ParamType::Color:
+            return std::holds_alternative<Vec3>(v);
         case ParamType::Text:
-        case ParamType::File: return std::holds_alternative<std::string>(v);
+        case ParamType::File:
+            return std::holds_alternative<std::string>(v);
     }
     return false;
 }
@@ -240,10 +244,9 @@ ParamKind lightKind(const Light& light) {
 }
 
 const char* kindLabel(ParamKind kind) {
-    static const char* const labels[] = {"Sphere",      "Plane",         "Rectangle",
-                                         "Box",         "Mesh",          "Transform",
-                                         "Material",    "Point light",   "Sphere light",
-                                         "Camera",      "Render settings"};
+    static const char* const labels[] = {
+        "Sphere",   "Plane",       "Rectangle",    "Box",    "Mesh",           "Transform",
+        "Material", "Point light", "Sphere light", "Camera", "Render settings"};
     return labels[std::size_t(kind)];
 }
 
@@ -255,9 +258,11 @@ std::string validateParameter(const ParamDescriptor& d, const ParamValue& value)
         return {};
     };
     switch (d.type) {
-        case ParamType::Float: return checkNumber(std::get<float>(value));
+        case ParamType::Float:
+            return checkNumber(std::get<float>(value));
         case ParamType::Int:
-        case ParamType::Enum: return checkNumber(std::get<int>(value));
+        case ParamType::Enum:
+            return checkNumber(std::get<int>(value));
         case ParamType::Vec3:
         case ParamType::Color: {
             const Vec3 v = std::get<Vec3>(value);
@@ -265,7 +270,8 @@ std::string validateParameter(const ParamDescriptor& d, const ParamValue& value)
                 if (std::string e = checkNumber(v[i]); !e.empty()) return e;
             return {};
         }
-        default: return {};
+        default:
+            return {};
     }
 }
 
@@ -273,7 +279,8 @@ std::optional<ParamValue> getParameter(const Geometry& g, const std::string& key
     return std::visit(
         [&](const auto& s) -> std::optional<ParamValue> {
             using S = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<S, SphereGeometry>) return getField(sphereFields(), s, key);
+            if constexpr (std::is_same_v<S, SphereGeometry>)
+                return getField(sphereFields(), s, key);
             if constexpr (std::is_same_v<S, PlaneGeometry>) return getField(planeFields(), s, key);
             if constexpr (std::is_same_v<S, RectangleGeometry>)
                 return getField(rectangleFields(), s, key);
@@ -289,7 +296,8 @@ std::string setParameter(Geometry& g, const std::string& key, const ParamValue& 
             using S = std::decay_t<decltype(s)>;
             S copy = s;
             std::string e;
-            if constexpr (std::is_same_v<S, SphereGeometry>) e = setField(sphereFields(), copy, key, value);
+            if constexpr (std::is_same_v<S, SphereGeometry>)
+                e = setField(sphereFields(), copy, key, value);
             if constexpr (std::is_same_v<S, PlaneGeometry>) {
                 e = setField(planeFields(), copy, key, value);
                 if (e.empty() && key == "normal") {
@@ -304,11 +312,12 @@ std::string setParameter(Geometry& g, const std::string& key, const ParamValue& 
             }
             if constexpr (std::is_same_v<S, BoxGeometry>) {
                 e = setField(boxFields(), copy, key, value);
-                if (e.empty() && (copy.min.x > copy.max.x || copy.min.y > copy.max.y ||
-                                  copy.min.z > copy.max.z))
+                if (e.empty() &&
+                    (copy.min.x > copy.max.x || copy.min.y > copy.max.y || copy.min.z > copy.max.z))
                     return "box min must not exceed max";
             }
-            if constexpr (std::is_same_v<S, MeshGeometry>) e = setField(meshFields(), copy, key, value);
+            if constexpr (std::is_same_v<S, MeshGeometry>)
+                e = setField(meshFields(), copy, key, value);
             if (e.empty()) s = std::move(copy);
             return e;
         },
@@ -346,7 +355,8 @@ std::string setParameter(Camera& c, const std::string& key, const ParamValue& va
     if (std::string e = setField(cameraFields(), copy, key, value); !e.empty()) return e;
     const Vec3 forward = copy.target - copy.position;
     if (glm::length(forward) < 1e-6f) return "camera target must differ from its position";
-    if (glm::length(glm::cross(forward, copy.up)) < 1e-8f) return "camera up must not be parallel to the view";
+    if (glm::length(glm::cross(forward, copy.up)) < 1e-8f)
+        return "camera up must not be parallel to the view";
     c = std::move(copy);
     return {};
 }

@@ -2,12 +2,12 @@
 // generates its property panels from them (style.md, "the render side describes its inputs").
 #pragma once
 
-#include "scene/document.h"
-
 #include <optional>
 #include <string>
 #include <variant>
 #include <vector>
+
+#include "scene/document.h"
 
 namespace rs {
 
@@ -32,7 +32,16 @@ struct ParamDescriptor {
 
 /// The kinds that publish parameters.
 enum class ParamKind {
-    Sphere, Plane, Rectangle, Box, Mesh, Transform, Material, PointLight, SphereLight, Camera,
+    Sphere,
+    Plane,
+    Rectangle,
+    Box,
+    Mesh,
+    Transform,
+    Material,
+    PointLight,
+    SphereLight,
+    Camera,
     Render
 };
 

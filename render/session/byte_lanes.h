@@ -20,6 +20,8 @@ constexpr uint64_t nonZeroBytes(uint64_t m) {
 
 /// The sum of the bytes of `v`, each 0 or 1 (a multiply, where std::popcount is a library
 /// call on the x86-64 baseline this builds for).
-constexpr uint32_t sumOfBytes(uint64_t v) { return uint32_t((v * kEachByte) >> 56); }
+constexpr uint32_t sumOfBytes(uint64_t v) {
+    return uint32_t((v * kEachByte) >> 56);
+}
 
 }  // namespace rs::lanes

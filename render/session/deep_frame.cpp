@@ -1,10 +1,10 @@
 // Deep frame allocation, the edits' marks, state counts and block summaries.
 #include "session/deep_frame.h"
 
-#include "session/byte_lanes.h"
-
 #include <algorithm>
 #include <cstring>
+
+#include "session/byte_lanes.h"
 
 namespace rs {
 
@@ -85,7 +85,8 @@ void DeepFrame::applyBlockMarks(std::size_t b, const std::vector<uint8_t>& mask)
             was[3] += sumOfBytes(lo & hi);
             s8 &= ~all;
             // Marked: markedStaleFlags; the others lose the overlay flag.
-            const uint64_t clear = kTracedLastUpdate * kEachByte | (all & kDeferredValid * kEachByte);
+            const uint64_t clear =
+                kTracedLastUpdate * kEachByte | (all & kDeferredValid * kEachByte);
             f8 = (f8 & ~clear) | (all & kTracedLastUpdate * kEachByte);
             std::memcpy(st, &s8, 8);
             std::memcpy(f, &f8, 8);
@@ -159,7 +160,8 @@ bool DeepFrame::summariesMatchPixels() const {
             if (state[i] > kFinal) return false;
             ++counts[std::size_t(tileOf(x, y))][state[i]];
             live[std::size_t(tileOf(x, y))] += segmentCount[i];
-            if (!tileSampled[std::size_t(tileOf(x, y))] && (sampleCount[i] != 0 || sampleSum[i] != Color(0.0f)))
+            if (!tileSampled[std::size_t(tileOf(x, y))] &&
+                (sampleCount[i] != 0 || sampleSum[i] != Color(0.0f)))
                 return false;
         }
     return counts == tileStates && live == tileLiveSegments;
@@ -181,7 +183,8 @@ void DeepFrame::uniteTileSummary(int t) {
     TileSummary sum;
     for (int by = by0; by < by1; ++by) {
         for (int bx = bx0; bx < bx1; ++bx) {
-            const TileSummary& b = blockSummary[std::size_t(by) * std::size_t(blocksX()) + std::size_t(bx)];
+            const TileSummary& b =
+                blockSummary[std::size_t(by) * std::size_t(blocksX()) + std::size_t(bx)];
             sum.hitBox.expand(b.hitBox);
             sum.segmentStarts.expand(b.segmentStarts);
             sum.segmentEnds.expand(b.segmentEnds);
@@ -211,12 +214,15 @@ void DeepFrame::summarizeBlock(int px, int py) {
             for (uint32_t k = 0; k < segmentCount[i]; ++k) {
                 const TreeSegment& s = pool[segmentStart[i] + k];
                 sum.segmentStarts.expand(s.a);
-                if (s.escapes) sum.anyEscape = true;
-                else sum.segmentEnds.expand(s.b);
+                if (s.escapes)
+                    sum.anyEscape = true;
+                else
+                    sum.segmentEnds.expand(s.b);
             }
         }
     }
-    blockSummary[std::size_t(by / kBlock) * std::size_t(blocksX()) + std::size_t(bx / kBlock)] = sum;
+    blockSummary[std::size_t(by / kBlock) * std::size_t(blocksX()) + std::size_t(bx / kBlock)] =
+        sum;
 }
 
 }  // namespace rs

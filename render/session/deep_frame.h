@@ -1,14 +1,14 @@
 // The session's frame: HDR colour plus per-pixel id, depth, normal, cost, state and records.
 #pragma once
 
-#include "image/image.h"
-#include "integrator/whitted.h"
-#include "scene/document.h"
-
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
+
+#include "image/image.h"
+#include "integrator/whitted.h"
+#include "scene/document.h"
 
 namespace rs {
 
@@ -22,8 +22,8 @@ enum PixelState : uint8_t {
 
 /// Per-pixel flags.
 enum PixelFlag : uint8_t {
-    kTouchedSpecular = 1,  ///< Its ray tree met a reflective or refractive surface.
-    kDeferredValid = 2,    ///< Traced with only shadows deferred: records complete the pixel.
+    kTouchedSpecular = 1,   ///< Its ray tree met a reflective or refractive surface.
+    kDeferredValid = 2,     ///< Traced with only shadows deferred: records complete the pixel.
     kTracedLastUpdate = 4,  ///< Re-traced by the latest edit (debug overlay).
     kTreeUnknown = 8,       ///< Its secondary segments were not all kept: always re-trace.
 };
@@ -36,12 +36,12 @@ constexpr uint8_t markedStaleFlags(uint8_t f) {
 
 /// What dirty marking needs to know about a block of pixels without looking at them.
 struct TileSummary {
-    Aabb hitBox;                ///< Camera-ray hit points of its pixels (with their radii).
-    Aabb segmentStarts;         ///< Start points of its pixels' secondary segments.
-    Aabb segmentEnds;           ///< End points of the bounded ones (secondary hit points).
-    bool anySpecular = false;   ///< Some pixel's ray tree met a mirror or glass.
-    bool anyEscape = false;     ///< Some secondary ray left the scene (unbounded).
-    bool anyUnknown = false;    ///< Some pixel's tree was not kept.
+    Aabb hitBox;               ///< Camera-ray hit points of its pixels (with their radii).
+    Aabb segmentStarts;        ///< Start points of its pixels' secondary segments.
+    Aabb segmentEnds;          ///< End points of the bounded ones (secondary hit points).
+    bool anySpecular = false;  ///< Some pixel's ray tree met a mirror or glass.
+    bool anyEscape = false;    ///< Some secondary ray left the scene (unbounded).
+    bool anyUnknown = false;   ///< Some pixel's tree was not kept.
 };
 
 struct TileResult;
@@ -70,16 +70,16 @@ struct DeepFrame {
     int width = 0;
     int height = 0;
     int tileSize = 32;
-    LargeVector<Color> color;       ///< What is shown (linear HDR).
-    LargeVector<Color> base;        ///< Centre sample when supersampling; adaptive decisions read it.
-    LargeVector<Color> sampleSum;   ///< Running sum of supersamples (progressive refinement).
+    LargeVector<Color> color;  ///< What is shown (linear HDR).
+    LargeVector<Color> base;   ///< Centre sample when supersampling; adaptive decisions read it.
+    LargeVector<Color> sampleSum;  ///< Running sum of supersamples (progressive refinement).
     LargeVector<uint16_t> sampleCount;
-    LargeVector<ObjectId> id;       ///< Object seen through the pixel centre.
-    LargeVector<float> depth;       ///< Distance to that hit (infinity: background).
-    LargeVector<Vec3> normal;       ///< Its unit normal.
-    LargeVector<uint32_t> cost;     ///< Rays traced for the pixel's latest value.
-    LargeVector<uint8_t> state;     ///< PixelState.
-    LargeVector<uint8_t> flags;     ///< PixelFlag bits.
+    LargeVector<ObjectId> id;    ///< Object seen through the pixel centre.
+    LargeVector<float> depth;    ///< Distance to that hit (infinity: background).
+    LargeVector<Vec3> normal;    ///< Its unit normal.
+    LargeVector<uint32_t> cost;  ///< Rays traced for the pixel's latest value.
+    LargeVector<uint8_t> state;  ///< PixelState.
+    LargeVector<uint8_t> flags;  ///< PixelFlag bits.
     /// Bounding sphere (centre, radius) of the pixel's camera-ray hit points; radius < 0 when
     /// nothing was hit. Shadow-aware dirty regions test segments from it to each light.
     LargeVector<glm::vec4> hitBound;
@@ -110,7 +110,9 @@ struct DeepFrame {
     void resize(int w, int h);
     /// resize() without the clean-up on failure.
     void allocate(int w, int h);
-    std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
+    std::size_t index(int x, int y) const {
+        return std::size_t(y) * std::size_t(width) + std::size_t(x);
+    }
     std::size_t pixelCount() const { return color.size(); }
     int tilesX() const { return (width + tileSize - 1) / tileSize; }
     int tilesY() const { return (height + tileSize - 1) / tileSize; }

@@ -1,13 +1,13 @@
 // Dirty-region marking: footprints, specular pixels, retinted objects, shadow-ray crossings.
 #include "session/dirty_region.h"
 
-#include "core/parallel.h"
-#include "session/byte_lanes.h"
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstring>
+
+#include "core/parallel.h"
+#include "session/byte_lanes.h"
 
 namespace rs {
 
@@ -65,7 +65,9 @@ bool segmentHitsBox(const Vec3& a, const Vec3& b, const Aabb& box) {
     return Probe(a, b - a, 1.0f).hits(box);
 }
 
-Aabb grown(const Aabb& b, float r) { return Aabb{b.min - Vec3(r), b.max + Vec3(r)}; }
+Aabb grown(const Aabb& b, float r) {
+    return Aabb{b.min - Vec3(r), b.max + Vec3(r)};
+}
 
 /// Can a shadow ray from anywhere in `points` to light `l` cross `region`? Segments from a
 /// box to a sphere stay within (box half-diagonal + light radius) of the centre-to-centre
@@ -80,10 +82,10 @@ bool shadowsMayCross(const Aabb& points, const CompiledLight& l, const Aabb& reg
 /// a point outside it cannot have a shadow ray to that light crossing the region. No
 /// divisions or roots per test, so it pre-filters the exact segment test cheaply.
 struct ShadowCone {
-    Vec3 apex;        ///< Light centre.
-    Vec3 axis;        ///< Unit, toward the sphere.
-    float radius;     ///< Grown sphere radius (without the pixel's own hit radius).
-    float dist;       ///< Light to sphere centre.
+    Vec3 apex;     ///< Light centre.
+    Vec3 axis;     ///< Unit, toward the sphere.
+    float radius;  ///< Grown sphere radius (without the pixel's own hit radius).
+    float dist;    ///< Light to sphere centre.
     /// True when a segment from `p` (within `slack` of it) to the light may cross the region.
     bool mayContain(const Vec3& p, float slack) const {
         const float r = radius + slack;
@@ -130,7 +132,7 @@ struct MarkContext {
     std::vector<Aabb> regions;       ///< The edit's regions, overlapping ones merged.
     std::vector<ShadowCone> cones;   ///< Per (region, light), region-major.
     std::vector<Aabb> grownRegions;  ///< Per (region, light): grown by the light's radius.
-    bool segments = true;  ///< Test secondary segments against the regions themselves.
+    bool segments = true;            ///< Test secondary segments against the regions themselves.
     const CameraModel* camera = nullptr;
     float lightSlack = 0.0f;  ///< Rounding allowance of the light-facing test (scene scale).
 };
@@ -223,11 +225,13 @@ TileTests tileTests(const MarkContext& c, const PixelRect& r, const TileSummary&
         const Aabb& region = c.regions[r];
         if (c.shadows && !tests.primaryShadow)
             for (std::size_t li = 0; li < c.lights.size(); ++li)
-                if (coneMayContain(r, li, t.hitBox) && shadowsMayCross(t.hitBox, c.lights[li], region))
+                if (coneMayContain(r, li, t.hitBox) &&
+                    shadowsMayCross(t.hitBox, c.lights[li], region))
                     tests.primaryShadow = true;
         if (!t.anySpecular || tests.tree) continue;
         if (t.anyUnknown ||
-            (c.segments && (t.anyEscape || segmentsMayCross(t.segmentStarts, t.segmentEnds, region))))
+            (c.segments &&
+             (t.anyEscape || segmentsMayCross(t.segmentStarts, t.segmentEnds, region))))
             tests.tree = true;
         if (c.shadows && !tests.tree)
             for (std::size_t li = 0; li < c.lights.size(); ++li)
@@ -277,7 +281,8 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
             for (std::size_t r = 0; r < c.regions.size(); ++r) {
                 if (!c.cones[r * c.lights.size() + li].mayContain(p, hb.w)) continue;
                 const Aabb& g = c.grownRegions[r * c.lights.size() + li];
-                if (Probe(p, c.lights[li].position - p, 1.0f).hits(hb.w > 0.0f ? grown(g, hb.w) : g))
+                if (Probe(p, c.lights[li].position - p, 1.0f)
+                        .hits(hb.w > 0.0f ? grown(g, hb.w) : g))
                     return true;
             }
         }
@@ -397,7 +402,8 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     }
     c.regions = mergeOverlapping(edit.regions);
     if (scope != MarkScope::ShadowsOnly)
-        for (const Aabb& box : edit.regions) c.footprints.push_back(screenFootprint(after.camera(), box));
+        for (const Aabb& box : edit.regions)
+            c.footprints.push_back(screenFootprint(after.camera(), box));
     for (const Aabb& box : c.regions) {
         for (const CompiledLight& l : c.lights) {
             c.cones.push_back(makeCone(l, box));
@@ -429,13 +435,15 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
         for (int by = ty * perTile; by < std::min(blocksY, (ty + 1) * perTile); ++by) {
             for (int bx = tx * perTile; bx < std::min(blocksX, (tx + 1) * perTile); ++bx) {
                 const int b = by * blocksX + bx;
-                const PixelRect r{bx * B, by * B, std::min(w, (bx + 1) * B), std::min(h, (by + 1) * B)};
+                const PixelRect r{bx * B, by * B, std::min(w, (bx + 1) * B),
+                                  std::min(h, (by + 1) * B)};
                 const TileTests tests = tileTests(c, r, frame.blockSummary[std::size_t(b)]);
                 ++tested;
                 if (!tests.any()) continue;
                 if (tests.footprint && insideFootprint(c, r)) {
                     // Every pixel passes its first test: no need to ask each one.
-                    for (int y = r.y0; y < r.y1; ++y) markRow(core.data() + frame.index(r.x0, y), r.x1 - r.x0);
+                    for (int y = r.y0; y < r.y1; ++y)
+                        markRow(core.data() + frame.index(r.x0, y), r.x1 - r.x0);
                     blockMarked[std::size_t(b)] = kWhole;
                     continue;
                 }
@@ -473,7 +481,8 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
         const int y1 = std::min(h, (by + 1) * B), x1 = std::min(w, (bx + 1) * B);
         if (blockMarked[std::size_t(b)] == kWhole) {
             // Every pixel is marked itself, so its grown mark is too.
-            for (int y = by * B; y < y1; ++y) markRow(mask.pixels.data() + frame.index(bx * B, y), x1 - bx * B);
+            for (int y = by * B; y < y1; ++y)
+                markRow(mask.pixels.data() + frame.index(bx * B, y), x1 - bx * B);
             count += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
             return;
         }

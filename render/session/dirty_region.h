@@ -1,12 +1,12 @@
 // Which pixels an edit can change (thesis 3.2), conservatively, so skipping the rest is exact.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "session/deep_frame.h"
 #include "session/scene_update.h"
 #include "snapshot/compiled_scene.h"
-
-#include <cstdint>
-#include <vector>
 
 namespace rs {
 
@@ -47,7 +47,7 @@ struct MarkStats {
 /// blocks the previous one wrote instead of the whole frame (a frame-sized clear per drag
 /// step was most of what marking cost when the edit reached a few blocks).
 struct DirtyMask {
-    int width = 0, height = 0;    ///< The frame the marks are for.
+    int width = 0, height = 0;  ///< The frame the marks are for.
     /// One byte a pixel, row-major like the frame: 1 where the edit may change the pixel.
     /// Zero outside the blocks of `blocks`.
     std::vector<uint8_t> pixels;

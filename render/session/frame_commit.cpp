@@ -26,8 +26,12 @@ void prefetchForWrite(const T* v, std::size_t n) {
 struct BoxOfPoints {
 #if defined(__SSE2__)
     __m128 lo = _mm_set1_ps(kInfinity), hi = _mm_set1_ps(-kInfinity);
-    void add(__m128 p) { lo = _mm_min_ps(p, lo), hi = _mm_max_ps(p, hi); }
-    void add(const Vec3& p) { add(lanes(p)); }
+    void add(__m128 p) {
+        lo = _mm_min_ps(p, lo), hi = _mm_max_ps(p, hi);
+    }
+    void add(const Vec3& p) {
+        add(lanes(p));
+    }
     /// The centre of a bound of radius 0, unless its radius is < 0.
     void addBound(const glm::vec4& b) {
         const __m128 v = _mm_loadu_ps(&b.x);
@@ -40,11 +44,15 @@ struct BoxOfPoints {
     }
 #else
     Aabb b;
-    void add(const Vec3& p) { b.expand(p); }
+    void add(const Vec3& p) {
+        b.expand(p);
+    }
     void addBound(const glm::vec4& v) {
         if (v.w >= 0.0f) b.expand(Vec3(v));
     }
-    Aabb box() const { return b; }
+    Aabb box() const {
+        return b;
+    }
 #endif
 };
 
@@ -388,8 +396,7 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         std::fill_n(state.begin() + to, count, t.tracedState);
         segments.replaceRun(i0, n, traced, k0);
         touched.addRun(int(x0), int(y), int(n));
-        if (whole)
-            touched.includeRun(int(x0), int(y), out.bound, out.flags, traced, k0, n);
+        if (whole) touched.includeRun(int(x0), int(y), out.bound, out.flags, traced, k0, n);
         k0 += n;
     }
     if (wholeTile && traced.size() > 0) {

@@ -22,9 +22,12 @@ InteractionPolicy Governor::policyForLevel(const InteractionPolicy& base, int le
 }
 
 const char* Governor::levelName(int level) {
-    static const char* const kNames[kLevels] = {"as set",           "deferred shadows",
-                                                "half resolution",  "diffuse mirrors and glass",
-                                                "quarter resolution", "box proxy"};
+    static const char* const kNames[kLevels] = {"as set",
+                                                "deferred shadows",
+                                                "half resolution",
+                                                "diffuse mirrors and glass",
+                                                "quarter resolution",
+                                                "box proxy"};
     return level >= 0 && level < kLevels ? kNames[level] : "off";
 }
 

@@ -1,10 +1,10 @@
 // Automatic interaction quality: the least-reduced policy level that meets a frame-time target.
 #pragma once
 
-#include "session/interaction_policy.h"
-
 #include <array>
 #include <cstddef>
+
+#include "session/interaction_policy.h"
 
 namespace rs {
 

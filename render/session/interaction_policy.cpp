@@ -1,10 +1,9 @@
 // Interaction policy: trace options while moving, and its JSON form.
 #include "session/interaction_policy.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <array>
+#include <nlohmann/json.hpp>
 
 namespace rs {
 
@@ -67,9 +66,12 @@ InteractionPolicy InteractionPolicy::none() {
 
 int InteractionPolicy::pixelStep() const {
     switch (resolution) {
-        case MovingResolution::Half: return 2;
-        case MovingResolution::Quarter: return 4;
-        default: return 1;
+        case MovingResolution::Half:
+            return 2;
+        case MovingResolution::Quarter:
+            return 4;
+        default:
+            return 1;
     }
 }
 
@@ -81,10 +83,18 @@ TraceOptions InteractionPolicy::movingTraceOptions(const RenderSettings& setting
     o.refractionAsDiffuse = refraction != RefractionMode::Full;
     if (refraction == RefractionMode::DiffuseExceptSelected) o.refractionExempt = moving;
     switch (shadows) {
-        case MovingShadows::Full: o.shadows = ShadowQuality::Full; break;
-        case MovingShadows::HardOnly: o.shadows = ShadowQuality::HardOnly; break;
-        case MovingShadows::Off: o.shadows = ShadowQuality::Off; break;
-        case MovingShadows::Deferred: o.shadows = ShadowQuality::Deferred; break;
+        case MovingShadows::Full:
+            o.shadows = ShadowQuality::Full;
+            break;
+        case MovingShadows::HardOnly:
+            o.shadows = ShadowQuality::HardOnly;
+            break;
+        case MovingShadows::Off:
+            o.shadows = ShadowQuality::Off;
+            break;
+        case MovingShadows::Deferred:
+            o.shadows = ShadowQuality::Deferred;
+            break;
     }
     return o;
 }
@@ -125,15 +135,24 @@ bool policyFromJson(const std::string& text, InteractionPolicy& out, std::string
             return true;
         };
         bool ok = true;
-        if (key == "resolution") ok = parseEnum(value, "resolution", kResolutions, p.resolution, error);
-        else if (key == "interleaved") ok = needBool(p.interleaved);
-        else if (key == "box_proxy") ok = needBool(p.boxProxy);
-        else if (key == "refraction") ok = parseEnum(value, "refraction", kRefractions, p.refraction, error);
-        else if (key == "reflection") ok = parseEnum(value, "reflection", kReflections, p.reflection, error);
-        else if (key == "shadows") ok = parseEnum(value, "shadows", kShadows, p.shadows, error);
-        else if (key == "supersample_while_moving") ok = needBool(p.supersampleWhileMoving);
-        else if (key == "dirty_regions") ok = needBool(p.dirtyRegions);
-        else if (key == "whole_frames_while_moving") ok = needBool(p.wholeFramesWhileMoving);
+        if (key == "resolution")
+            ok = parseEnum(value, "resolution", kResolutions, p.resolution, error);
+        else if (key == "interleaved")
+            ok = needBool(p.interleaved);
+        else if (key == "box_proxy")
+            ok = needBool(p.boxProxy);
+        else if (key == "refraction")
+            ok = parseEnum(value, "refraction", kRefractions, p.refraction, error);
+        else if (key == "reflection")
+            ok = parseEnum(value, "reflection", kReflections, p.reflection, error);
+        else if (key == "shadows")
+            ok = parseEnum(value, "shadows", kShadows, p.shadows, error);
+        else if (key == "supersample_while_moving")
+            ok = needBool(p.supersampleWhileMoving);
+        else if (key == "dirty_regions")
+            ok = needBool(p.dirtyRegions);
+        else if (key == "whole_frames_while_moving")
+            ok = needBool(p.wholeFramesWhileMoving);
         else if (key == "max_depth_while_moving") {
             if (!value.is_number_integer() || value.get<int>() < -1) {
                 error = "policy key 'max_depth_while_moving' must be an integer >= -1";

@@ -1,10 +1,10 @@
 // What the session may turn down while the user drags, one setting per technique of the thesis.
 #pragma once
 
+#include <string>
+
 #include "integrator/whitted.h"
 #include "scene/document.h"
-
-#include <string>
 
 namespace rs {
 
@@ -29,7 +29,7 @@ struct InteractionPolicy {
     int maxDepthWhileMoving = -1;  ///< -1: the scene's max_depth.
     MovingShadows shadows = MovingShadows::Deferred;
     bool supersampleWhileMoving = false;
-    bool dirtyRegions = true;        ///< Re-trace only what an edit can change.
+    bool dirtyRegions = true;  ///< Re-trace only what an edit can change.
     /// While the user drags or orbits, a governed pass runs to its end before the next edit
     /// (unless it is long over its time) and the display shows only whole frames, never a
     /// picture of two edits; off, every move cuts the pass and each tile shows as it comes.

@@ -1,13 +1,8 @@
 // RenderSession API and scheduler: edits, generations, pass planning, waiting.
 #include "session/render_session.h"
 
-#include "core/parallel.h"
-
-#include "session/dirty_region.h"
-#include "session/session_plan.h"
-
-#include <tbb/info.h>
 #include <tbb/blocked_range.h>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
@@ -18,6 +13,10 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+
+#include "core/parallel.h"
+#include "session/dirty_region.h"
+#include "session/session_plan.h"
 
 namespace rs {
 
@@ -120,9 +119,13 @@ void RenderSession::setDisplayWaits(bool on) {
     displayWaits_ = on;
 }
 
-void RenderSession::setEngine(EngineKind engine) { engine_.store(engine); }
+void RenderSession::setEngine(EngineKind engine) {
+    engine_.store(engine);
+}
 
-EngineKind RenderSession::engine() const { return engine_.load(); }
+EngineKind RenderSession::engine() const {
+    return engine_.load();
+}
 
 InteractionPolicy RenderSession::policy() const {
     std::lock_guard lock(mutex_);
@@ -272,13 +275,13 @@ std::size_t RenderSession::markEditLocked(const SceneEdit& traced) {
     }
     // While dragging with shadows off or deferred, the moving object's shadow is not on
     // screen: its pixels are marked once, on release, instead of on every step.
-    const bool deferShadows = interacting_ && !edit.everything &&
-                              (policy_.shadows == MovingShadows::Off ||
-                               policy_.shadows == MovingShadows::Deferred);
+    const bool deferShadows =
+        interacting_ && !edit.everything &&
+        (policy_.shadows == MovingShadows::Off || policy_.shadows == MovingShadows::Deferred);
     MarkStats markStats;
-    const std::size_t marked = markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_,
-                                               deferShadows ? MarkScope::WithoutShadows : MarkScope::All,
-                                               &markStats);
+    const std::size_t marked =
+        markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_,
+                        deferShadows ? MarkScope::WithoutShadows : MarkScope::All, &markStats);
     stats_.lastMarkBlocksTested = markStats.blocksTested;
     stats_.lastMarkBlocksGrown = markStats.blocksGrown;
     if (deferShadows) {
@@ -372,7 +375,8 @@ bool RenderSession::fullQualityWhileMoving() const {
     const InteractionPolicy& p = policy_;
     return p.resolution == MovingResolution::Full && !p.interleaved && !p.boxProxy &&
            p.refraction == RefractionMode::Full && p.reflection == ReflectionMode::Full &&
-           (p.maxDepthWhileMoving < 0 || (snapshot_ && p.maxDepthWhileMoving >= snapshot_->settings().maxDepth)) &&
+           (p.maxDepthWhileMoving < 0 ||
+            (snapshot_ && p.maxDepthWhileMoving >= snapshot_->settings().maxDepth)) &&
            p.shadows == MovingShadows::Full && p.governorTargetMs <= 0.0;
 }
 
@@ -447,12 +451,14 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         if (!planLocked(plan)) continue;
         stats_.lastPassTiles = plan.tiles.size();
         const double planMs =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planStart).count();
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planStart)
+                .count();
         if ((plan.kind == PassKind::Interactive || plan.kind == PassKind::Base) &&
             frame_.anyBelow(kInteractive)) {
             // This pass re-traces stale pixels: the frame is torn until one leaves none.
             const uint64_t whole = wholeMark_.load(std::memory_order_relaxed);
-            if (displayWaits_ && policy_.wholeFramesWhileMoving && interacting_ && tears_.load() == whole && wholeShown_ < whole) {
+            if (displayWaits_ && policy_.wholeFramesWhileMoving && interacting_ &&
+                tears_.load() == whole && wholeShown_ < whole) {
                 wake_.wait_for(lock, kDisplayWait,
                                [&] { return stop_ || wholeShown_ >= whole || !interacting_; });
                 if (stop_) return;
@@ -473,8 +479,7 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         // Between passes the scheduler reads the frame under mutex_ alone; every tile of the
         // pass has been announced to the observer by now.
         if (!frame_.anyBelow(kInteractive))
-            wholeMark_.store(tears_.load(std::memory_order_relaxed),
-                             std::memory_order_release);
+            wholeMark_.store(tears_.load(std::memory_order_relaxed), std::memory_order_release);
         if (info.cancelled) {
             stats_.lastCancelLatencyMs =
                 std::chrono::duration<double, std::milli>(now - editTime_).count();
@@ -494,8 +499,8 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         stats_.lastPass = info;
         if (plan.kind == PassKind::Interactive) stats_.lastInteractivePass = info;
         ++stats_.passes;
-        const bool complete = !info.cancelled && !pendingDoc_ && !releasePending_ && !pendingResize_ &&
-                              !frame_.anyBelow(kFinal);
+        const bool complete = !info.cancelled && !pendingDoc_ && !releasePending_ &&
+                              !pendingResize_ && !frame_.anyBelow(kFinal);
         const uint64_t gen = generation_.load();
         notifyObserver(lock, [&](SessionObserver& o) {
             o.passDone(info);
@@ -520,8 +525,8 @@ void RenderSession::execute(Plan& plan, PassInfo& info) {
     });
     info.kind = plan.kind;
     info.generation = plan.generation;
-    info.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                  .count();
+    info.ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     info.tracedPixels = counters.pixels.load();
     info.rays = counters.rays.load();
     info.totalPixels = std::size_t(plan.width) * std::size_t(plan.height);

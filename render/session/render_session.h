@@ -1,6 +1,19 @@
 // The interactive render session: owns the deep frame and keeps it current while the user edits.
 #pragma once
 
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <shared_mutex>
+#include <thread>
+#include <vector>
+
 #include "core/thread_priority.h"
 #include "scene/document.h"
 #include "session/deep_frame.h"
@@ -12,19 +25,6 @@
 #include "session/session_observer.h"
 #include "snapshot/compiled_scene.h"
 
-#include <atomic>
-#include <chrono>
-#include <tbb/task_arena.h>
-
-#include <condition_variable>
-#include <functional>
-#include <memory>
-#include <mutex>
-#include <optional>
-#include <shared_mutex>
-#include <thread>
-#include <vector>
-
 namespace rs {
 
 struct PassCounters;
@@ -35,23 +35,23 @@ struct SessionStats {
     PassInfo lastInteractivePass;
     double lastCancelLatencyMs = 0.0;  ///< Edit to all workers off stale work.
     uint64_t passes = 0;
-    std::size_t lastDirtyPixels = 0;   ///< Pixels the latest edit marked.
-    bool lastEditRefitted = false;     ///< The latest edit refitted the BVH.
-    double lastUpdateMs = 0.0;         ///< Diff, snapshot and dirty marking of the latest edit.
-    double lastMarkMs = 0.0;           ///< Of which marking (and applying the marks).
-    uint64_t postedUpdates = 0;        ///< update() calls.
-    uint64_t appliedUpdates = 0;       ///< Documents applied (posted ones coalesce).
+    std::size_t lastDirtyPixels = 0;  ///< Pixels the latest edit marked.
+    bool lastEditRefitted = false;    ///< The latest edit refitted the BVH.
+    double lastUpdateMs = 0.0;        ///< Diff, snapshot and dirty marking of the latest edit.
+    double lastMarkMs = 0.0;          ///< Of which marking (and applying the marks).
+    uint64_t postedUpdates = 0;       ///< update() calls.
+    uint64_t appliedUpdates = 0;      ///< Documents applied (posted ones coalesce).
     /// How much of the frame the latest edit's marking looked at: blocks tested against their
     /// summaries, and blocks visited to grow the marks (both follow the edit, not the frame).
     std::size_t lastMarkBlocksTested = 0;
     std::size_t lastMarkBlocksGrown = 0;
-    std::size_t lastPassTiles = 0;     ///< Tiles the latest pass was planned over.
+    std::size_t lastPassTiles = 0;  ///< Tiles the latest pass was planned over.
 };
 
 /// Diffs two documents and builds the snapshot of the second (updateScene's signature).
-using SceneUpdater = std::function<SceneUpdate(const SceneDocument& before,
-                                               const std::shared_ptr<const CompiledScene>& beforeSnapshot,
-                                               const SceneDocument& after, EngineKind engine)>;
+using SceneUpdater = std::function<SceneUpdate(
+    const SceneDocument& before, const std::shared_ptr<const CompiledScene>& beforeSnapshot,
+    const SceneDocument& after, EngineKind engine)>;
 
 /// Schedules tiles on a oneTBB arena from a scheduler thread. Every edit bumps a generation;
 /// workers drop stale tiles within one row, and a tile of an older generation is never written.
@@ -178,9 +178,9 @@ private:
     /// The generation being traced: tiles of another stop and are not written.
     std::atomic<uint64_t> generation_{0};
     std::atomic<uint64_t> postedGeneration_{0};  ///< The last update()'s (>= generation_).
-    std::atomic<uint64_t> tears_{0};  ///< See wholeMark().
+    std::atomic<uint64_t> tears_{0};             ///< See wholeMark().
     std::atomic<uint64_t> wholeMark_{0};
-    uint64_t wholeShown_ = 0;     ///< wholeFrameShown's latest mark.
+    uint64_t wholeShown_ = 0;  ///< wholeFrameShown's latest mark.
     bool displayWaits_ = false;
 
     /// The document applied last; only the scheduler thread writes it (under mutex_) and

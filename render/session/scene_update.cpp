@@ -49,7 +49,9 @@ bool sameMaterialData(Material a, const Material& b) {
     return a == b;
 }
 
-bool isPlane(const Object& o) { return std::holds_alternative<PlaneGeometry>(o.geometry); }
+bool isPlane(const Object& o) {
+    return std::holds_alternative<PlaneGeometry>(o.geometry);
+}
 
 /// A mesh whose triangles or normals differ (smooth normals toggled, another file or reloaded
 /// data): a refit would keep the old mesh BVH, so the object must be compiled afresh.
@@ -67,12 +69,13 @@ SceneUpdate updateScene(const SceneDocument& before,
     SceneUpdate update;
     SceneEdit& edit = update.edit;
     if (!beforeSnapshot || beforeSnapshot->engineKind() != engine) {
-        update.snapshot = std::make_shared<const CompiledScene>(after, beforeSnapshot.get(), engine);
+        update.snapshot =
+            std::make_shared<const CompiledScene>(after, beforeSnapshot.get(), engine);
         edit.everything = edit.resized = true;
         return update;
     }
-    edit.resized = before.render.width != after.render.width ||
-                   before.render.height != after.render.height;
+    edit.resized =
+        before.render.width != after.render.width || before.render.height != after.render.height;
     if (!(before.camera == after.camera) || !sameTracedSettings(before.render, after.render))
         edit.everything = true;
     edit.lights = changedLights(before.lights, after.lights);
@@ -106,12 +109,16 @@ SceneUpdate updateScene(const SceneDocument& before,
         }
         const Object& prev = *it->second;
         old.erase(it);
-        const bool shapeChanged = !(prev.geometry == o.geometry) || !(prev.transform == o.transform);
+        const bool shapeChanged =
+            !(prev.geometry == o.geometry) || !(prev.transform == o.transform);
         const bool kindChanged = prev.geometry.index() != o.geometry.index();
-        const bool materialChanged = prev.material != o.material || changedMaterials.count(o.material);
+        const bool materialChanged =
+            prev.material != o.material || changedMaterials.count(o.material);
         if (isPlane(o) || isPlane(prev)) {
-            if (shapeChanged || kindChanged || prev.visible != o.visible) edit.everything = true;
-            else if (materialChanged && o.visible) edit.retinted.push_back(o.id);
+            if (shapeChanged || kindChanged || prev.visible != o.visible)
+                edit.everything = true;
+            else if (materialChanged && o.visible)
+                edit.retinted.push_back(o.id);
             structural |= kindChanged || prev.visible != o.visible;
             continue;
         }
@@ -135,9 +142,11 @@ SceneUpdate updateScene(const SceneDocument& before,
     }
 
     if (edit.everything || structural || materialListChanged || !edit.lights.empty()) {
-        update.snapshot = std::make_shared<const CompiledScene>(after, beforeSnapshot.get(), engine);
+        update.snapshot =
+            std::make_shared<const CompiledScene>(after, beforeSnapshot.get(), engine);
     } else if (!moved.empty() || !edit.retinted.empty()) {
-        update.snapshot = std::make_shared<const CompiledScene>(beforeSnapshot->refitted(after, moved));
+        update.snapshot =
+            std::make_shared<const CompiledScene>(beforeSnapshot->refitted(after, moved));
         edit.refitted = true;
     } else {
         update.snapshot = beforeSnapshot;

@@ -1,11 +1,11 @@
 // From one document to the next: what changed, and the snapshot for the new document.
 #pragma once
 
-#include "scene/document.h"
-#include "snapshot/compiled_scene.h"
-
 #include <memory>
 #include <vector>
+
+#include "scene/document.h"
+#include "snapshot/compiled_scene.h"
 
 namespace rs {
 
@@ -17,18 +17,20 @@ struct LightSphere {
 
 /// What an edit changed, in the terms dirty regions need.
 struct SceneEdit {
-    bool everything = false;   ///< Camera, settings, lights, planes...: re-trace every pixel.
-    bool displayOnly = false;  ///< Only tone mapping or exposure: nothing to re-trace.
-    bool resized = false;      ///< Image size changed.
+    bool everything = false;         ///< Camera, settings, lights, planes...: re-trace every pixel.
+    bool displayOnly = false;        ///< Only tone mapping or exposure: nothing to re-trace.
+    bool resized = false;            ///< Image size changed.
     std::vector<Aabb> regions;       ///< Old and new world bounds of changed bounded objects.
     std::vector<ObjectId> retinted;  ///< Objects whose material (or its definition) changed.
     /// Old and new spheres of changed lights (moved, recoloured, added, removed); a pixel
     /// none of them can light at any of its shading points keeps its colour.
     std::vector<LightSphere> lights;
-    ObjectId focus = kNoObject;      ///< An object the edit is about, for tile priority.
-    bool refitted = false;           ///< The snapshot was refitted, not rebuilt.
+    ObjectId focus = kNoObject;  ///< An object the edit is about, for tile priority.
+    bool refitted = false;       ///< The snapshot was refitted, not rebuilt.
     /// Anything to re-trace: marking can skip the edit otherwise.
-    bool traced() const { return everything || !regions.empty() || !retinted.empty() || !lights.empty(); }
+    bool traced() const {
+        return everything || !regions.empty() || !retinted.empty() || !lights.empty();
+    }
     bool any() const { return displayOnly || traced(); }
 };
 

@@ -115,7 +115,8 @@ bool baseTile(const TileInput& in, TileResult& out) {
             const std::size_t i0 = in.index(r.x0, y);
             const std::size_t k = out.traced.addCentreRun(in.camera, in.columns, r.x0, y, n, i0);
             uint8_t* extra = out.traced.extra.data() + k;
-            for (std::size_t j = 0; j < n; ++j) extra[j] = uint8_t(flags[i0 + j] & kTracedLastUpdate);
+            for (std::size_t j = 0; j < n; ++j)
+                extra[j] = uint8_t(flags[i0 + j] & kTracedLastUpdate);
         }
         out.tracedState = in.doneState();
         return out.traced.trace(in.kernel, false, true, in.counters, in.stale);

@@ -13,8 +13,8 @@ CameraModel::CameraModel(const Camera& camera, int width, int height)
     right_ = glm::normalize(glm::cross(forward_, camera.up));
     up_ = glm::cross(right_, forward_);
     float aspect = float(width) / float(height);
-    halfHeight_ = orthographic_ ? 0.5f * camera.orthoHeight
-                                : std::tan(glm::radians(camera.fovY) * 0.5f);
+    halfHeight_ =
+        orthographic_ ? 0.5f * camera.orthoHeight : std::tan(glm::radians(camera.fovY) * 0.5f);
     halfWidth_ = halfHeight_ * aspect;
     invWidth_ = 1.0f / float(width);
     invHeight_ = 1.0f / float(height);

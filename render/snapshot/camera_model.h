@@ -21,7 +21,9 @@ public:
     /// The parts of generateRay that depend on the image x alone and on the image y alone:
     /// a tile works each out once per column and once per row, with the bits of
     /// generateRay (its terms are added in the same order).
-    Vec3 columnTerm(float px) const { return right_ * ((2.0f * px * invWidth_ - 1.0f) * halfWidth_); }
+    Vec3 columnTerm(float px) const {
+        return right_ * ((2.0f * px * invWidth_ - 1.0f) * halfWidth_);
+    }
     Vec3 rowTerm(float py) const { return up_ * ((1.0f - 2.0f * py * invHeight_) * halfHeight_); }
     Vec3 originOf(const Vec3& column, const Vec3& row) const {
         return orthographic_ ? origin_ + column + row : origin_;
@@ -53,7 +55,8 @@ public:
     float invHeight() const { return invHeight_; }
 
 private:
-    Vec3 origin_{0.0f}, forward_{0.0f, 0.0f, -1.0f}, right_{1.0f, 0.0f, 0.0f}, up_{0.0f, 1.0f, 0.0f};
+    Vec3 origin_{0.0f}, forward_{0.0f, 0.0f, -1.0f}, right_{1.0f, 0.0f, 0.0f},
+        up_{0.0f, 1.0f, 0.0f};
     float halfWidth_ = 1.0f, halfHeight_ = 1.0f;
     float invWidth_ = 1.0f, invHeight_ = 1.0f;
     int width_ = 1, height_ = 1;

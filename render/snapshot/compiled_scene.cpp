@@ -11,8 +11,9 @@ CompiledMaterial compileMaterial(const Material& m) {
     float cutoff = 0.0f;
     if (m.specular > 0.0f && m.shininess > 0.0f)
         cutoff = std::min(1.0f, std::pow(1e-7f / m.specular, 1.0f / m.shininess));
-    return {m.color,        m.diffuse, m.specular, m.shininess, m.reflectivity,
-            m.transparency, m.ior,     1.0f - m.reflectivity - m.transparency, cutoff};
+    return {m.color,        m.diffuse,      m.specular, m.shininess,
+            m.reflectivity, m.transparency, m.ior,      1.0f - m.reflectivity - m.transparency,
+            cutoff};
 }
 
 /// True when the linear part is a rotation times a uniform scale (spheres stay spheres).
@@ -70,8 +71,8 @@ bool compileBounded(const Object& o, uint32_t material, std::shared_ptr<const Me
         }
     } else if (const auto* r = std::get_if<RectangleGeometry>(&o.geometry)) {
         // An affine map keeps a parallelogram a parallelogram: store it in world space.
-        const RectangleShape world = RectangleShape::make(Vec3(m * glm::vec4(r->center, 1.0f)),
-                                                          m3 * r->u, m3 * r->v);
+        const RectangleShape world =
+            RectangleShape::make(Vec3(m * glm::vec4(r->center, 1.0f)), m3 * r->u, m3 * r->v);
         prim.shape = world;
         prim.worldBounds = bounds(world);
     } else if (const auto* b = std::get_if<BoxGeometry>(&o.geometry)) {
@@ -107,7 +108,8 @@ std::shared_ptr<const std::vector<PlanePrimitive>> compilePlanes(const SceneDocu
     for (const Object& o : doc.objects)
         if (const auto* plane = std::get_if<PlaneGeometry>(&o.geometry); plane && o.visible)
             planes->push_back({{plane->point, glm::normalize(plane->normal)},
-                               materialIndex(doc, o.material), o.id});
+                               materialIndex(doc, o.material),
+                               o.id});
     return planes;
 }
 

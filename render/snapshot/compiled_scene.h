@@ -1,16 +1,16 @@
 // The immutable, render-ready snapshot of a document: world-space shapes, BVH, lights, materials.
 #pragma once
 
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
 #include "accel/primitive.h"
 #include "accel/ray_engine.h"
 #include "geometry/shapes.h"
 #include "scene/document.h"
 #include "snapshot/camera_model.h"
-
-#include <memory>
-#include <string>
-#include <variant>
-#include <vector>
 
 namespace rs {
 

@@ -78,7 +78,8 @@ int main(int argc, char** argv) {
                     for (int x = 0; x < W; ++x) {
                         const float u = (2.0f * (float(x) + 0.5f) / float(W) - 1.0f) * hw;
                         const float w = (1.0f - 2.0f * (float(y) + 0.5f) / float(H)) * hh;
-                        float dx = fx + rx * u + ux * w, dy = fy + ry * u + uy * w, dz = fz + rz * u + uz * w;
+                        float dx = fx + rx * u + ux * w, dy = fy + ry * u + uy * w,
+                              dz = fz + rz * u + uz * w;
                         const float dl = std::sqrt(dx * dx + dy * dy + dz * dz);
                         RTCRayHit rh;
                         rh.ray.org_x = px, rh.ray.org_y = py, rh.ray.org_z = pz;
@@ -97,7 +98,8 @@ int main(int argc, char** argv) {
             });
         });
         const double ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
         unsigned total = 0;
         for (unsigned h : hits) total += h;
         std::printf("%.3f %u\n", ms, total);

@@ -36,7 +36,8 @@ inline CliRun cli(const std::string& args, int timeoutS = 120, const std::string
     FILE* pipe = popen(cmd.c_str(), "r");
     CliRun run{-1, {}, {}};
     std::array<char, 4096> buf;
-    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) run.out.append(buf.data(), n);
+    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe))
+        run.out.append(buf.data(), n);
     const int status = pclose(pipe);
     run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     run.err = readAll(errFile);

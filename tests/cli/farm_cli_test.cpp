@@ -1,14 +1,13 @@
 // raystudio-cli render --tile, merge and farm: parts merge into the very file a one-machine
 // render writes; bad parts, bad tiles and bad job options are refused with exit 2.
-#include "cli_run.h"
-
-#include "image/image_io.h"
-
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <filesystem>
 #include <string>
+
+#include "cli_run.h"
+#include "image/image_io.h"
 
 namespace {
 
@@ -17,7 +16,8 @@ namespace fs = std::filesystem;
 const std::string kScenes = RAYSTUDIO_SCENES_DIR;
 /// The soft-shadows scene has a sphere light; small, supersampled (adaptively: decisions at
 /// part borders read neighbours in other parts).
-const std::string kSoft = "'" + kScenes + "/soft-shadows.scene.json' --width 64 --height 37 --supersampling 3";
+const std::string kSoft =
+    "'" + kScenes + "/soft-shadows.scene.json' --width 64 --height 37 --supersampling 3";
 
 /// The pixels of an image file, as the project reads them (linear float, bit for bit).
 std::string pixelBytes(const std::string& path) {
@@ -67,7 +67,8 @@ TEST_F(FarmCli, MergedParts_AreTheFileAOneMachineRenderWrites) {
             const std::string merged = path(tag + "merged" + ext);
             const CliRun m = cli("merge" + parts + " -o '" + merged + "'");
             ASSERT_EQ(m.exitCode, 0) << m.err;
-            EXPECT_NE(m.out.find("merged " + std::to_string(count) + " parts (64x37)"), std::string::npos);
+            EXPECT_NE(m.out.find("merged " + std::to_string(count) + " parts (64x37)"),
+                      std::string::npos);
             // Every pixel's bits; PNG files are compared whole (an EXR header holds its date).
             const std::string& whole = ext == ".exr" ? wholeExr : wholePng;
             EXPECT_TRUE(pixelBytes(merged) == pixelBytes(whole)) << count << " parts, " << ext;
@@ -91,7 +92,9 @@ TEST_F(FarmCli, Merge_RefusesMissingDoubledAndForeignPartsWithExit2) {
     renderParts(kSoft, 3, "deeper", "--max-depth 5");
     r = cli("merge " + p0 + " '" + path("deeper1.exr") + "' " + p2 + out);
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.err.find("deeper1.exr' belongs to another scene or other settings"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("deeper1.exr' belongs to another scene or other settings"),
+              std::string::npos)
+        << r.err;
     renderParts("'" + kScenes + "/reference-room.scene.json' --width 64 --height 37", 3, "room");
     r = cli("merge " + p0 + " '" + path("room1.exr") + "' " + p2 + out);
     EXPECT_EQ(r.exitCode, 2);
@@ -132,9 +135,11 @@ TEST_F(FarmCli, FarmSubmitDryRun_PrintsTheArrayAndTheMergeScript) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (const std::string& line :
          {std::string("#SBATCH --array=0-3"), std::string("#SBATCH --partition=gpu-long"),
-          std::string("#SBATCH --time=1-02:00:00"), std::string("--tile \"$SLURM_ARRAY_TASK_ID/4\""),
+          std::string("#SBATCH --time=1-02:00:00"),
+          std::string("--tile \"$SLURM_ARRAY_TASK_ID/4\""),
           "#SBATCH --output=" + out + ".parts/logs/render-%A_%a.log",
-          std::string("'--supersampling' '3'"), std::string(" merge \"${parts[@]}\" -o '" + out + "'"),
+          std::string("'--supersampling' '3'"),
+          std::string(" merge \"${parts[@]}\" -o '" + out + "'"),
           std::string("--dependency=afterok:RENDER_JOB")})
         EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
     EXPECT_FALSE(fs::exists(out + ".parts")) << "a dry run writes nothing";
@@ -157,9 +162,11 @@ TEST_F(FarmCli, FarmSubmit_RefusesBadOptionsBeforeAnythingIsQueued) {
         EXPECT_EQ(r.exitCode, 2) << c.args;
         EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
     }
-    CliRun r = cli("farm submit '" + kScenes + "/none.scene.json' -o '" + path("o.exr") + "' --parts 2");
+    CliRun r =
+        cli("farm submit '" + kScenes + "/none.scene.json' -o '" + path("o.exr") + "' --parts 2");
     EXPECT_EQ(r.exitCode, 2) << r.err;
-    r = cli("farm submit " + kSoft + " -o '" + path("o.exr") + "' --parts 2", 60, "env PATH=/nonexistent");
+    r = cli("farm submit " + kSoft + " -o '" + path("o.exr") + "' --parts 2", 60,
+            "env PATH=/nonexistent");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("sbatch is not on PATH"), std::string::npos) << r.err;
     r = cli("farm status 12x");

@@ -1,12 +1,12 @@
 // raystudio-cli on a scene whose mesh makes assimp abort: the import child turns it into an
 // error on stderr naming the mesh, and the command exits 2 instead of dying with the importer.
-#include "cli_run.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include "cli_run.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -14,8 +14,8 @@ namespace fs = std::filesystem;
 class MeshImportCli : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("raystudio-mesh-import-cli-" + std::to_string(getpid()));
+        dir_ =
+            fs::temp_directory_path() / ("raystudio-mesh-import-cli-" + std::to_string(getpid()));
         fs::create_directories(dir_);
         // The fuzz input that aborts Debian's assimp 5.2, without its first (format) byte.
         const std::string input = readAll(std::string(RAYSTUDIO_SCENES_DIR) +

@@ -5,8 +5,6 @@
 // sanitizer report from the child (our code in it is instrumented) reaches the error
 // message, and is a finding. libFuzzer sees the coverage of this process only (the guards,
 // the header check, the wire decoding).
-#include "io/mesh_io.h"
-
 #include <unistd.h>
 
 #include <array>
@@ -17,6 +15,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <string>
+
+#include "io/mesh_io.h"
 
 namespace {
 constexpr std::array<const char*, 4> kExtensions = {".obj", ".off", ".ply", ".stl"};

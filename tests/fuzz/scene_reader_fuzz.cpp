@@ -1,11 +1,11 @@
 // libFuzzer target for the scene reader: any text parses to a document or to errors, never a
 // crash; a document that parses survives save and reparse unchanged (parse -> save -> reparse).
-#include "io/scene_io.h"
-
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+
+#include "io/scene_io.h"
 
 namespace {
 /// Relative mesh paths resolve against scenes/, as in its example scenes (meshes/torus.obj).

@@ -3,11 +3,6 @@
 // shows the job ids and where the merged image appears, or the scheduler's refusal. sbatch
 // here is a script that records its arguments and answers like sbatch --parsable; the real
 // scheduler is exercised by tests/cluster/slurm_farm_test.sh.
-#include "gui_test_support.h"
-
-#include "cluster_submit_dialog.h"
-#include "user_confirmation.h"
-
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -17,6 +12,10 @@
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include "cluster_submit_dialog.h"
+#include "gui_test_support.h"
+#include "user_confirmation.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -80,9 +79,10 @@ void ClusterSubmitTest::installSbatch(bool fail) {
     QFile script(bin + "/sbatch");
     QVERIFY(script.open(QIODevice::WriteOnly | QIODevice::Truncate));
     const QString log = dir_.filePath("sbatch.log");
-    script.write(fail ? QByteArray("#!/bin/sh\necho 'sbatch: error: invalid partition specified: nope' >&2\nexit 1\n")
-                      : ("#!/bin/sh\necho \"$@\" >> '" + log.toUtf8() +
-                         "'\nn=$(wc -l < '" + log.toUtf8() + "')\necho $((4241 + n))\n"));
+    script.write(fail ? QByteArray("#!/bin/sh\necho 'sbatch: error: invalid partition specified: "
+                                   "nope' >&2\nexit 1\n")
+                      : ("#!/bin/sh\necho \"$@\" >> '" + log.toUtf8() + "'\nn=$(wc -l < '" +
+                         log.toUtf8() + "')\necho $((4241 + n))\n"));
     script.close();
     script.setPermissions(QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
     qputenv("PATH", (bin + ":" RAYSTUDIO_CLI_DIR ":").toUtf8() + savedPath_);
@@ -106,7 +106,8 @@ void ClusterSubmitTest::menuEntry_OnlyWhereSbatchIsOnPath() {
     QVERIFY(menuTexts(w).contains("Submit to &Cluster..."));
 }
 
-void ClusterSubmitTest::submit_RunsFarmSubmitWithTheFields_AndShowsJobIdsAndWhereTheResultAppears() {
+void ClusterSubmitTest::
+    submit_RunsFarmSubmitWithTheFields_AndShowsJobIdsAndWhereTheResultAppears() {
     installSbatch();
     std::unique_ptr<MainWindow> w;
     QVERIFY(openRoomWindow(w));
@@ -128,16 +129,18 @@ void ClusterSubmitTest::submit_RunsFarmSubmitWithTheFields_AndShowsJobIdsAndWher
     QVERIFY(finished.wait(60000));
     QCOMPARE(finished.first().first().toBool(), true);
     const QString result = dialog->resultText();
-    QVERIFY2(result.contains("render job 4242: 3 parts") && result.contains("merge job 4243: writes " + out),
+    QVERIFY2(result.contains("render job 4242: 3 parts") &&
+                 result.contains("merge job 4243: writes " + out),
              qPrintable(result));
     const QString log = sbatchLog();
     QVERIFY2(log.contains("--parsable " + out + ".parts/render.sbatch"), qPrintable(log));
-    QVERIFY2(log.contains("--dependency=afterok:4242 " + out + ".parts/merge.sbatch"), qPrintable(log));
+    QVERIFY2(log.contains("--dependency=afterok:4242 " + out + ".parts/merge.sbatch"),
+             qPrintable(log));
     QFile render(out + ".parts/render.sbatch");
     QVERIFY(render.open(QIODevice::ReadOnly));
     const QString text = QString::fromUtf8(render.readAll());
-    for (const char* line : {"#SBATCH --array=0-2", "#SBATCH --partition=debug", "#SBATCH --time=10:00",
-                             "'--width' '160' '--height' '90'"})
+    for (const char* line : {"#SBATCH --array=0-2", "#SBATCH --partition=debug",
+                             "#SBATCH --time=10:00", "'--width' '160' '--height' '90'"})
         QVERIFY2(text.contains(line), qPrintable(line + QString("\n") + text));
     QVERIFY(text.contains(scene));
     w->editor()->undoStack()->setClean();

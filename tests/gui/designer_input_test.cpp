@@ -1,11 +1,6 @@
 // Keyboard and mouse input of the designer with real events: shortcuts from any focus, the
 // shortcut list, drags that outlive a frame resize or a dolly, and closing during a render.
 // Runs offscreen and, for the X11 key bindings (Ctrl+E is end-of-line there), under Xvfb.
-#include "gui_test_support.h"
-
-#include "property_panel.h"
-#include "user_confirmation.h"
-
 #include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
@@ -17,8 +12,11 @@
 #include <QTimer>
 #include <QWheelEvent>
 #include <QtTest>
-
 #include <map>
+
+#include "gui_test_support.h"
+#include "property_panel.h"
+#include "user_confirmation.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -94,7 +92,8 @@ void DesignerInputTest::saveAs_HasAShortcutEvenWhereThePlatformDefinesNone() {
     QVERIFY(saveAs);
     const QList<QKeySequence> standard = QKeySequence::keyBindings(QKeySequence::SaveAs);
     if (standard.isEmpty())
-        QCOMPARE(saveAs->shortcuts(), QList<QKeySequence>{QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)});
+        QCOMPARE(saveAs->shortcuts(),
+                 QList<QKeySequence>{QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)});
     else
         QCOMPARE(saveAs->shortcuts(), standard);
     QAction* quit = actionNamed(*window_, QStringLiteral("Quit"));
@@ -156,7 +155,8 @@ void DesignerInputTest::keyboardShortcutsDialog_ListsEveryMenuShortcut() {
     open->trigger();
     QDialog* dialog = nullptr;
     for (QDialog* d : window_->findChildren<QDialog*>())
-        if (d->isVisible() && d->findChild<QTableWidget*>(QStringLiteral("shortcutsTable"))) dialog = d;
+        if (d->isVisible() && d->findChild<QTableWidget*>(QStringLiteral("shortcutsTable")))
+            dialog = d;
     QVERIFY(dialog);
     auto* table = dialog->findChild<QTableWidget*>(QStringLiteral("shortcutsTable"));
     std::map<QString, QString> listed;
@@ -175,7 +175,8 @@ void DesignerInputTest::keyboardShortcutsDialog_ListsEveryMenuShortcut() {
         QVERIFY2(found, qPrintable(a->iconText() + " (" + keys + ") is not listed"));
     }
     QCOMPARE(table->rowCount(), withKeys);
-    const QList<QKeySequence> saveAsKeys = actionNamed(*window_, QStringLiteral("Save As"))->shortcuts();
+    const QList<QKeySequence> saveAsKeys =
+        actionNamed(*window_, QStringLiteral("Save As"))->shortcuts();
     QVERIFY(!saveAsKeys.isEmpty());
     const QString saveAs = saveAsKeys.first().toString(QKeySequence::NativeText);
     QCOMPARE(listed[QStringLiteral("File > Save As")], saveAs);
@@ -219,8 +220,8 @@ void DesignerInputTest::wheelDuringObjectDrag_KeepsTheDolly() {
     QTest::mousePress(v, Qt::LeftButton, {}, start);
     for (int i = 1; i <= 3; ++i) QTest::mouseMove(v, start + QPoint(4 * i, 0));
     const QPoint at = start + QPoint(12, 0);
-    QWheelEvent wheel(at, v->mapToGlobal(at), QPoint(), QPoint(0, 240), Qt::LeftButton, Qt::NoModifier,
-                      Qt::NoScrollPhase, false);
+    QWheelEvent wheel(at, v->mapToGlobal(at), QPoint(), QPoint(0, 240), Qt::LeftButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
     QApplication::sendEvent(v, &wheel);
     const Camera dollied = v->viewCamera();
     QVERIFY(!(dollied == cameraBefore));
@@ -228,7 +229,7 @@ void DesignerInputTest::wheelDuringObjectDrag_KeepsTheDolly() {
     QTest::mouseRelease(v, Qt::LeftButton, {}, start + QPoint(32, 0));
 
     const SceneDocument& after = window_->editor()->document();
-    QVERIFY(v->viewCamera() == dollied);  // The drag steps after the wheel kept it.
+    QVERIFY(v->viewCamera() == dollied);   // The drag steps after the wheel kept it.
     QVERIFY(after.camera == sceneCamera);  // A dolly moves the view, never the document.
     QVERIFY(after.findObject(blue)->transform.translate.x > ballBefore.x + 0.05f);
 }

@@ -1,19 +1,17 @@
 // Nothing hangs, nothing terminates, in the designer: Render Image asks before a render over
 // the cost budget, and an allocation that fails (in the viewport's session or a Render Image
 // job) is reported while the document stays as it was.
-#include "gui_test_support.h"
-
-#include "error_reporter.h"
-#include "user_confirmation.h"
+#include <sys/resource.h>
 
 #include <QProgressDialog>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
-
-#include <sys/resource.h>
-
 #include <fstream>
+
+#include "error_reporter.h"
+#include "gui_test_support.h"
+#include "user_confirmation.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -96,7 +94,8 @@ void DesignerLimitsTest::outOfMemory_IsReported_AndDocumentKept() {
     // The big window (and its backing store) first, traced at 1/4 while no limit holds.
     window_->viewport()->setPreviewDivider(4);
     window_->viewport()->setFixedSize(6000, 4000);
-    QVERIFY(QTest::qWaitFor([&] { return window_->viewport()->size() == QSize(6000, 4000); }, 5000));
+    QVERIFY(
+        QTest::qWaitFor([&] { return window_->viewport()->size() == QSize(6000, 4000); }, 5000));
     QTest::qWait(50);
     rlimit old{};
     QCOMPARE(getrlimit(RLIMIT_AS, &old), 0);
@@ -115,7 +114,8 @@ void DesignerLimitsTest::outOfMemory_IsReported_AndDocumentKept() {
         60000);
     setrlimit(RLIMIT_AS, &old);
     int sessionWidth = 0;
-    window_->session()->session().withFrame([&](const DeepFrame& f, const auto&) { sessionWidth = f.width; });
+    window_->session()->session().withFrame(
+        [&](const DeepFrame& f, const auto&) { sessionWidth = f.width; });
     QVERIFY2(reported,
              qPrintable(errors_.join('\n') + " | " + window_->statusBar()->currentMessage() +
                         QStringLiteral(" | traced %1x%2, session frame width %3")

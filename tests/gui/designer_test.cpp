@@ -1,29 +1,28 @@
 // The designer under QT_QPA_PLATFORM=offscreen (raster viewport): open, pick, drag, undo,
 // property edits, save/reopen, preferences and error handling.
-#include "gui_test_support.h"
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QEventLoop>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressDialog>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QToolBar>
+#include <QtTest>
 
 #include "error_reporter.h"
+#include "gui_test_support.h"
 #include "io/scene_io.h"
 #include "outliner_model.h"
 #include "outliner_view.h"
 #include "preferences.h"
 #include "property_panel.h"
 #include "session/governor.h"
-
-#include <QAction>
-#include <QCheckBox>
-#include <QComboBox>
-#include <QToolBar>
-#include <QApplication>
-#include <QEventLoop>
-#include <QTimer>
-#include <QMessageBox>
-#include <QProgressDialog>
-#include <QSpinBox>
-#include <QStatusBar>
-#include <QLabel>
-#include <QTemporaryDir>
-#include <QtTest>
 
 using namespace rs;
 using namespace rs::ui;
@@ -62,7 +61,8 @@ private:
 
 void DesignerTest::init() {
     errors_.clear();
-    setErrorHandler([this](const QString& title, const QString& text) { errors_ << title + ": " + text; });
+    setErrorHandler(
+        [this](const QString& title, const QString& text) { errors_ << title + ": " + text; });
     QVERIFY(openRoomWindow(window_));
 }
 
@@ -89,17 +89,20 @@ void DesignerTest::clickOnSphere_SelectsItInOutliner_AndOutlinerSelectsInViewpor
     const auto frame = window_->viewport()->frame();
     const auto [x, y] = pixelOf(*frame, blue);
     QCOMPARE(frame->idAt(x, y), blue);
-    QTest::mouseClick(window_->viewport(), Qt::LeftButton, {}, window_->viewport()->widgetPointOf(x, y));
+    QTest::mouseClick(window_->viewport(), Qt::LeftButton, {},
+                      window_->viewport()->widgetPointOf(x, y));
     QCOMPARE(window_->editor()->selection(), blue);
     OutlinerModel* model = window_->outliner()->outlinerModel();
     QCOMPARE(model->idOf(window_->outliner()->currentIndex()), blue);
 
     // The raster view draws the outline around the selection.
-    const QImage shown = window_->viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
+    const QImage shown =
+        window_->viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
     bool outline = false;
     for (int j = 0; j < shown.height() && !outline; ++j)
         for (int i = 0; i < shown.width() && !outline; ++i)
-            outline = shown.pixelColor(i, j) == QColor(kOutlineRgb[0], kOutlineRgb[1], kOutlineRgb[2]);
+            outline =
+                shown.pixelColor(i, j) == QColor(kOutlineRgb[0], kOutlineRgb[1], kOutlineRgb[2]);
     QVERIFY(outline);
 
     const ObjectId glass = idOf(*window_, "glass ball");
@@ -147,7 +150,8 @@ void DesignerTest::dragSphere_MovesItInDocument_AndUndoRestores() {
 void DesignerTest::updateRate_FallsToZeroInTheStatusBarOnceTheUserStops() {
     QLabel* rate = nullptr;
     for (QLabel* l : window_->statusBar()->findChildren<QLabel*>())
-        if (l->toolTip() == QStringLiteral("Document updates sent to the renderer per second")) rate = l;
+        if (l->toolTip() == QStringLiteral("Document updates sent to the renderer per second"))
+            rate = l;
     QVERIFY(rate);
     double highest = 0.0;
     connect(window_->session(), &SessionController::updateRateChanged, this,
@@ -218,8 +222,10 @@ void DesignerTest::propertyEdit_ReRendersFrame_AndSharedMaterialIsShown() {
     window_->editor()->setSelection(blue);
     const auto [x, y] = pixelOf(*window_->viewport()->frame(), blue);
     const Color beforeColor = window_->viewport()->frame()->color[std::size_t(y) * 160 + x];
-    QVERIFY(window_->propertyPanel()->applyEdit(QStringLiteral("material"), "color", Vec3(1.0f, 0.0f, 0.0f)));
-    QCOMPARE(window_->editor()->document().findMaterial("blue plastic")->color, Vec3(1.0f, 0.0f, 0.0f));
+    QVERIFY(window_->propertyPanel()->applyEdit(QStringLiteral("material"), "color",
+                                                Vec3(1.0f, 0.0f, 0.0f)));
+    QCOMPARE(window_->editor()->document().findMaterial("blue plastic")->color,
+             Vec3(1.0f, 0.0f, 0.0f));
     QVERIFY(settle(*window_));
     const Color afterColor = window_->viewport()->frame()->color[std::size_t(y) * 160 + x];
     QVERIFY(afterColor.x > beforeColor.x + 0.05f);
@@ -241,7 +247,8 @@ void DesignerTest::outOfRangeProperty_IsRejectedWithMessage() {
     // Glass in one edit: transparency up, and the sphere keeps its place: same geometry and
     // transform in the document, and the frame shows it at the same pixels.
     const Object before = *window_->editor()->document().findObject(blue);
-    const DisplayFrame frameBefore = *window_->viewport()->frame();  // a copy: the view updates its own
+    const DisplayFrame frameBefore =
+        *window_->viewport()->frame();  // a copy: the view updates its own
     QVERIFY(window_->propertyPanel()->applyEdit(QStringLiteral("material"), "transparency", 0.9f));
     QCOMPARE(window_->editor()->document().findMaterial("blue plastic")->transparency, 0.9f);
     QVERIFY(settle(*window_));
@@ -262,7 +269,13 @@ void DesignerTest::outOfRangeProperty_IsRejectedWithMessage() {
     const Color c0 = frameBefore.color[std::size_t(y) * 160 + x];
     const Color c1 = frameAfter->color[std::size_t(y) * 160 + x];
     QVERIFY2(c0.z > c0.x && glm::length(c1 - c0) > 0.05f,
-             qPrintable(QStringLiteral("%1 %2 %3 -> %4 %5 %6").arg(c0.x).arg(c0.y).arg(c0.z).arg(c1.x).arg(c1.y).arg(c1.z)));
+             qPrintable(QStringLiteral("%1 %2 %3 -> %4 %5 %6")
+                            .arg(c0.x)
+                            .arg(c0.y)
+                            .arg(c0.z)
+                            .arg(c1.x)
+                            .arg(c1.y)
+                            .arg(c1.z)));
 }
 
 void DesignerTest::saveAndReopen_GiveTheSameScene() {
@@ -351,8 +364,9 @@ void DesignerTest::toolbarAndMenus_HaveIcons_AndTheWindowItsIcon() {
         QVERIFY2(!a->icon().pixmap(24, 24).isNull(), qPrintable(a->text()));
     }
     QCOMPARE(buttons, 10);
-    for (const QString& text : {QStringLiteral("&New"), QStringLiteral("&Open..."), QStringLiteral("&Save"),
-                                QStringLiteral("&Delete"), QStringLiteral("&Render Image...")}) {
+    for (const QString& text :
+         {QStringLiteral("&New"), QStringLiteral("&Open..."), QStringLiteral("&Save"),
+          QStringLiteral("&Delete"), QStringLiteral("&Render Image...")}) {
         QAction* found = nullptr;
         for (QAction* a : window_->findChildren<QAction*>())
             if (a->text() == text) found = a;
@@ -367,8 +381,9 @@ void DesignerTest::badSceneFile_ShowsErrorAndKeepsDocument() {
     const QString path = dir.filePath(QStringLiteral("bad.scene.json"));
     QFile f(path);
     QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write("{\n  \"format\": \"raystudio-scene\", \"version\": 1,\n"
-            "  \"objects\": [ { \"name\": \"s\", \"type\": \"sphere\", \"radius\": 0 } ]\n}\n");
+    f.write(
+        "{\n  \"format\": \"raystudio-scene\", \"version\": 1,\n"
+        "  \"objects\": [ { \"name\": \"s\", \"type\": \"sphere\", \"radius\": 0 } ]\n}\n");
     f.close();
     const SceneDocument before = window_->editor()->document();
     const QString fileBefore = window_->editor()->filePath();
@@ -413,7 +428,8 @@ void DesignerTest::badMeshImport_ErrorShowsWithTheProgressDialogGone() {
     QTRY_VERIFY_WITH_TIMEOUT(visibleDialogs >= 0, 20000);
     QCOMPARE(visibleDialogs, 0);
     QCOMPARE(errors_.size(), 1);
-    QVERIFY2(errors_.first().contains(QStringLiteral("no-such-mesh.obj")), qPrintable(errors_.first()));
+    QVERIFY2(errors_.first().contains(QStringLiteral("no-such-mesh.obj")),
+             qPrintable(errors_.first()));
     QCOMPARE(window_->editor()->document().objects.size(), objects);  // Nothing added.
 }
 
@@ -484,7 +500,8 @@ void DesignerTest::debugViews_ProduceImages() {
     QVERIFY(rgb(ids, bx, by) != rgb(ids, gx, gy));
     // Normals: the floor faces +y (green full, red and blue half), the back wall +z.
     const QImage normals = viewportImage(*frame, ViewMode::Normals, {});
-    QVERIFY(std::abs(rgb(normals, fx, fy).red() - 127) <= 1 && rgb(normals, fx, fy).green() >= 254 &&
+    QVERIFY(std::abs(rgb(normals, fx, fy).red() - 127) <= 1 &&
+            rgb(normals, fx, fy).green() >= 254 &&
             std::abs(rgb(normals, fx, fy).blue() - 127) <= 1);
     QVERIFY(std::abs(rgb(normals, wx, wy).red() - 127) <= 1 && rgb(normals, wx, wy).blue() >= 254);
     // Depth: near is bright, far is dark; the floor in front is nearer than the back wall.
@@ -498,7 +515,8 @@ void DesignerTest::debugViews_ProduceImages() {
     // Re-traced pixels: after retinting the blue ball, its pixels are marked re-traced (red
     // tint) and the left wall, which cannot see it, is not.
     window_->editor()->setSelection(blue);
-    QVERIFY(window_->propertyPanel()->applyEdit(QStringLiteral("material"), "color", Vec3(0.2f, 0.9f, 0.2f)));
+    QVERIFY(window_->propertyPanel()->applyEdit(QStringLiteral("material"), "color",
+                                                Vec3(0.2f, 0.9f, 0.2f)));
     QVERIFY(settle(*window_));
     const QImage retraced = viewportImage(*window_->viewport()->frame(), ViewMode::Retraced, {});
     QVERIFY(rgb(retraced, bx, by).red() >= 127);

@@ -1,7 +1,7 @@
 // The display path under QT_QPA_PLATFORM=offscreen (raster viewport): the frame handed over
 // tile by tile ends equal to the session's, and exposure edits reach the viewport and export.
-#include <QTemporaryDir>
 #include <QScreen>
+#include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
 #include <cstring>
@@ -11,8 +11,8 @@
 #include "gui_test_support.h"
 #include "image/tonemap.h"
 #include "raster_frame_view.h"
-#include "viewport_pacing.h"
 #include "scene_edits.h"
+#include "viewport_pacing.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -215,8 +215,8 @@ void DisplayTest::rasterView_RepaintsOnlyChangedRectangles_ScreenEqualsTheFullIm
     // Frame pixels on screen that differ from shading the whole frame with `selected`.
     auto stalePixels = [&](ObjectId selected) {
         QTest::qWait(50);  // The last repaint and the backing store's flush.
-        const QImage expected = viewportImage(full, ViewMode::Color, {selected})
-                                    .convertToFormat(QImage::Format_RGB888);
+        const QImage expected =
+            viewportImage(full, ViewMode::Color, {selected}).convertToFormat(QImage::Format_RGB888);
         const QImage screen =
             w.screen()->grabWindow(w.winId()).toImage().convertToFormat(QImage::Format_RGB888);
         int bad = 0, compared = 0;
@@ -378,9 +378,8 @@ void DisplayTest::exposureEdit_ChangesShownImageAndExport_UndoRestoresThem() {
     // The session's pixels shaded with the document's exposure.
     DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
     full.exposure = w.editor()->document().render.exposure;
-    QCOMPARE(
-        brighter,
-        viewportImage(full, ViewMode::Color, {}).convertToFormat(QImage::Format_RGB888));
+    QCOMPARE(brighter,
+             viewportImage(full, ViewMode::Color, {}).convertToFormat(QImage::Format_RGB888));
     const QImage exportedBrighter = exported(QStringLiteral("brighter.png"));
     QVERIFY(exportedBrighter != exportedBefore);
     QVERIFY(maxDifference(exportedBefore, before) <= 1);  // The file writer rounds its own way.

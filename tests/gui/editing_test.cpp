@@ -1,17 +1,15 @@
 // Editing like a 3D tool, with real events: a view camera apart from the scene camera,
 // G / R / S gestures with axis locks and typed values, and lights as pickable glyphs.
-#include "gui_test_support.h"
-
-#include "outliner_model.h"
-#include "outliner_view.h"
-#include "transform_edits.h"
-
 #include <QAction>
 #include <QApplication>
 #include <QWheelEvent>
 #include <QtTest>
-
 #include <cmath>
+
+#include "gui_test_support.h"
+#include "outliner_model.h"
+#include "outliner_view.h"
+#include "transform_edits.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -25,9 +23,13 @@ QAction* actionNamed(const QWidget& window, const QString& text) {
     return nullptr;
 }
 
-bool near(const Vec3& a, const Vec3& b, float tol = 1e-4f) { return glm::length(a - b) <= tol; }
+bool near(const Vec3& a, const Vec3& b, float tol = 1e-4f) {
+    return glm::length(a - b) <= tol;
+}
 
-QString str(const Vec3& v) { return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z); }
+QString str(const Vec3& v) {
+    return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z);
+}
 
 /// True when `p` lies inside every plane of `doc` (the room's walls face inwards).
 bool insideWalls(const SceneDocument& doc, const Vec3& p, QString* which) {
@@ -132,7 +134,9 @@ void EditingTest::orbit_TurnsAboutTheSelectionsCentre() {
     clickObject("blue ball");
     const Vec3 centre = *entityCentre(doc(), idOf(*window_, "blue ball"));
     Viewport* v = viewport();
-    const auto distanceTo = [&](const Vec3& p) { return glm::length(v->viewCamera().position - p); };
+    const auto distanceTo = [&](const Vec3& p) {
+        return glm::length(v->viewCamera().position - p);
+    };
     const float before = distanceTo(centre);
     const QPoint c = v->rect().center();
     // A turn small enough that no wall comes between the ball and the view (a larger one is
@@ -373,8 +377,7 @@ void EditingTest::lightSelectedInOutliner_IsHighlighted() {
                                  .convertToFormat(QImage::Format_RGB888);
         const QPoint c = viewport()->lightGlyphs().front().centre.toPoint();
         for (int y = c.y() - 10; y <= c.y() + 10; ++y)
-            for (int x = c.x() - 10; x <= c.x() + 10; ++x)
-            {
+            for (int x = c.x() - 10; x <= c.x() + 10; ++x) {
                 // Near the outline colour: OpenGL's antialiased pen blends its edges.
                 const QColor c = shown.pixelColor(x, y);
                 if (std::abs(c.red() - kOutlineRgb[0]) <= 24 &&

@@ -265,8 +265,8 @@ void GizmoTest::boxSelect_SelectsTheBallsWhoseCentresAreInside() {
     int balls = 0;
     for (const Object& o : doc().objects) {
         const auto p = view.project(*entityCentre(doc(), o.id));
-        const bool inside = !std::holds_alternative<PlaneGeometry>(o.geometry) && p &&
-                            all.contains(p->toPoint());
+        const bool inside =
+            !std::holds_alternative<PlaneGeometry>(o.geometry) && p && all.contains(p->toPoint());
         balls += inside;
         QVERIFY2(editor()->isSelected(o.id) == inside, o.name.c_str());
     }

@@ -1,19 +1,17 @@
 // A real window under Xvfb (xcb, Mesa GL): the OpenGL viewport must show the session's frame
 // as the CPU tone mapping gives it, and draw the selection outline, the light glyphs and the
 // transform gizmo.
-#include "gui_test_support.h"
-
-#include "display_choice.h"
-#include "gl_frame_view.h"
-#include "passepartout.h"
-#include "preferences.h"
-#include "scene_edits.h"
-
 #include <QGuiApplication>
 #include <QSurfaceFormat>
 #include <QtTest>
-
 #include <cmath>
+
+#include "display_choice.h"
+#include "gl_frame_view.h"
+#include "gui_test_support.h"
+#include "passepartout.h"
+#include "preferences.h"
+#include "scene_edits.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -85,7 +83,8 @@ void GlViewportTest::openGLViewport_ShowsTheToneMappedFrame() {
 
     const auto frame = w.viewport()->frame();
     const QImage expected = toneMappedImage(*frame);
-    const QImage shown = w.viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
+    const QImage shown =
+        w.viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
     QVERIFY(!shown.isNull());
     int worst = 0, bad = 0;
     for (int y = 0; y < frame->height; ++y)
@@ -98,8 +97,10 @@ void GlViewportTest::openGLViewport_ShowsTheToneMappedFrame() {
             worst = std::max(worst, d);
             bad += d > 3;
         }
-    QVERIFY2(bad == 0, qPrintable(QStringLiteral("%1 pixels differ by more than 3 levels (worst %2)")
-                                      .arg(bad).arg(worst)));
+    QVERIFY2(bad == 0,
+             qPrintable(QStringLiteral("%1 pixels differ by more than 3 levels (worst %2)")
+                            .arg(bad)
+                            .arg(worst)));
     // The light glyph is drawn over the OpenGL frame too (a native window hides widgets over
     // it): the room's white ceiling light shows as a white disc.
     const auto glyphs = w.viewport()->lightGlyphs();
@@ -112,7 +113,8 @@ void GlViewportTest::openGLViewport_ShowsTheToneMappedFrame() {
     const ObjectId blue = idOf(w, "blue ball");
     w.editor()->setSelection(blue);
     QTest::qWait(50);
-    const QImage outlined = w.viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
+    const QImage outlined =
+        w.viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
     int outlinePixels = 0;
     for (int y = 0; y < frame->height; ++y)
         for (int x = 0; x < frame->width; ++x)
@@ -170,7 +172,8 @@ void GlViewportTest::openGLViewport_ThroughTheSceneCamera_DimsOnlyOutsideTheOutp
     QTest::qWait(50);
     const auto frame = w.viewport()->frame();
     const QImage expected = toneMappedImage(*frame);
-    const QImage shown = w.viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
+    const QImage shown =
+        w.viewport()->frameView()->grabImage().convertToFormat(QImage::Format_RGB888);
     auto ratio = [&](int y0, int y1) {
         double a = 0.0, b = 0.0;
         for (int y = y0; y < y1; ++y)
@@ -219,7 +222,8 @@ void GlViewportTest::openGLViewport_DrawsTheGizmo_AndOutlinesEverySelectedObject
             red += c.red() > c.green() + 80 && c.red() > c.blue() + 80;
             changed += c != without.pixelColor(p);
         }
-    QVERIFY2(red >= 3 && changed >= 3, qPrintable(QStringLiteral("%1 red, %2 changed").arg(red).arg(changed)));
+    QVERIFY2(red >= 3 && changed >= 3,
+             qPrintable(QStringLiteral("%1 red, %2 changed").arg(red).arg(changed)));
     // Some ring is drawn too: the gizmo's rotate handle.
     const QPointF ring = *gizmo->grabPoint({TransformKind::Rotate, 1, false});
     int ringChanged = 0;

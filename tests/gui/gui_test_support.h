@@ -1,20 +1,19 @@
 // Helpers shared by the GUI tests: isolated settings, waiting for a final frame, finding ids.
 #pragma once
 
+#include <QCoreApplication>
+#include <QStandardPaths>
+#include <QString>
+#include <QTest>
+#include <chrono>
+#include <memory>
+
 #include "display_frame.h"
 #include "main_window.h"
 #include "scene_editor.h"
 #include "session_controller.h"
 #include "view_projection.h"
 #include "viewport.h"
-
-#include <QCoreApplication>
-#include <QStandardPaths>
-#include <QString>
-#include <QTest>
-
-#include <chrono>
-#include <memory>
 
 namespace rs::ui::test {
 
@@ -45,8 +44,8 @@ inline bool settleAtViewportSize(MainWindow& w, const QSize& widget) {
     const bool laidOut = QTest::qWaitFor(
         [&] {
             return v->size() == widget &&
-                   v->tracedSize() == tracedFrameSize(widget * v->devicePixelRatioF(),
-                                                      v->previewDivider());
+                   v->tracedSize() ==
+                       tracedFrameSize(widget * v->devicePixelRatioF(), v->previewDivider());
         },
         5000);
     return laidOut && settle(w);

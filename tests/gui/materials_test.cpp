@@ -2,14 +2,6 @@
 // under the view centre (or on the floor below), a large imported mesh is scaled to the view,
 // the material list's edits are undo steps, HDR colours reach the frame, and the colour
 // dialog previews live (Cancel restores, OK is one undo step).
-#include "gui_test_support.h"
-
-#include "material_list.h"
-#include "placement.h"
-#include "property_panel.h"
-#include "snapshot/compiled_scene.h"
-#include "transform_edits.h"
-
 #include <QAction>
 #include <QApplication>
 #include <QColorDialog>
@@ -29,9 +21,15 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QtTest>
-
 #include <cmath>
 #include <functional>
+
+#include "gui_test_support.h"
+#include "material_list.h"
+#include "placement.h"
+#include "property_panel.h"
+#include "snapshot/compiled_scene.h"
+#include "transform_edits.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -39,7 +37,9 @@ using namespace rs::ui::test;
 
 namespace {
 
-QString str(const Vec3& v) { return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z); }
+QString str(const Vec3& v) {
+    return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z);
+}
 
 /// Mean linear colour of the pixels showing `id`.
 Vec3 meanColourOf(const DisplayFrame& f, ObjectId id) {
@@ -59,7 +59,10 @@ bool writeCube(const QString& path, float size) {
     QByteArray text;
     for (int i = 0; i < 8; ++i)
         text += QStringLiteral("v %1 %2 %3\n")
-                    .arg(i & 1 ? h : -h).arg(i & 2 ? h : -h).arg(i & 4 ? h : -h).toLatin1();
+                    .arg(i & 1 ? h : -h)
+                    .arg(i & 2 ? h : -h)
+                    .arg(i & 4 ? h : -h)
+                    .toLatin1();
     text += "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
     return f.write(text) == text.size();
 }
@@ -131,7 +134,8 @@ void MaterialsTest::clickObject(const std::string& name) {
     const ObjectId id = idOf(*window_, name);
     const auto [x, y] = pixelOf(*window_->viewport()->frame(), id);
     QVERIFY2(x >= 0, name.c_str());
-    QTest::mouseClick(window_->viewport(), Qt::LeftButton, {}, window_->viewport()->widgetPointOf(x, y));
+    QTest::mouseClick(window_->viewport(), Qt::LeftButton, {},
+                      window_->viewport()->widgetPointOf(x, y));
     QCOMPARE(window_->editor()->selection(), id);
 }
 
@@ -234,8 +238,9 @@ void MaterialsTest::largeMeshImport_IsScaledToFitTheView_AndTheFactorIsEditable(
     const float factor = doc().findObject(id)->transform.scale.x;
     QVERIFY2(factor > 0.0f && factor < 0.1f, qPrintable(QString::number(factor)));
     QVERIFY(doc().findObject(id)->transform.scale == Vec3(factor));
-    QVERIFY2(window_->statusBar()->currentMessage().contains(QString::number(double(factor), 'g', 3)),
-             qPrintable(window_->statusBar()->currentMessage()));
+    QVERIFY2(
+        window_->statusBar()->currentMessage().contains(QString::number(double(factor), 'g', 3)),
+        qPrintable(window_->statusBar()->currentMessage()));
     // It fits the view: every corner of its bounds projects inside the image, and the view
     // camera stands outside it.
     const Aabb b = worldBounds(doc(), id);
@@ -328,8 +333,10 @@ void MaterialsTest::renameMaterial_InPlace_RenamesItsUsers_AndRefusesTakenOrEmpt
         auto* editor = list->list()->findChild<QLineEdit*>();
         QVERIFY(editor);
         editor->selectAll();
-        if (!text.isEmpty()) QTest::keyClicks(editor, text);
-        else QTest::keyClick(editor, Qt::Key_Delete);
+        if (!text.isEmpty())
+            QTest::keyClicks(editor, text);
+        else
+            QTest::keyClick(editor, Qt::Key_Delete);
         QTest::keyClick(editor, Qt::Key_Return);
     };
     rename(QStringLiteral("cobalt"));
@@ -360,7 +367,8 @@ void MaterialsTest::deleteMaterial_UsedIsRefusedWithTheReason_UnusedIsOneUndoSte
     const std::size_t before = doc().materials.size();
     QVERIFY(list->setCurrent("mirror"));
     QVERIFY(!del->isEnabled());
-    QVERIFY2(list->message().contains(QStringLiteral("\"mirror ball\"")), qPrintable(list->message()));
+    QVERIFY2(list->message().contains(QStringLiteral("\"mirror ball\"")),
+             qPrintable(list->message()));
     QVERIFY(del->toolTip().contains(QStringLiteral("is used by")));
     QTest::mouseClick(del, Qt::LeftButton);
     list->deleteMaterial();  // Refused even when called directly.
@@ -391,7 +399,8 @@ void MaterialsTest::assignToSelection_IsOneUndoStep_AndReachesTheFrame() {
     QCOMPARE(undoCount(), 1);
     QVERIFY(settle(*window_));
     const Vec3 red = meanColourOf(*window_->viewport()->frame(), id);
-    QVERIFY2(red.x > 2.0f * red.z && !(chalk.x > 2.0f * chalk.z), qPrintable(str(chalk) + str(red)));
+    QVERIFY2(red.x > 2.0f * red.z && !(chalk.x > 2.0f * chalk.z),
+             qPrintable(str(chalk) + str(red)));
     window_->editor()->undoStack()->undo();
     QCOMPARE(doc().findObject(id)->material, std::string("chalk"));
 }

@@ -1,12 +1,6 @@
 // Nothing lost: a designer killed with SIGKILL after an edit offers exactly that edit at the
 // next start, a clean exit leaves no autosave, and a kill during a save never leaves a scene
 // file that does not parse. The killed designers are this binary re-run in a child mode.
-#include "autosave.h"
-#include "io/scene_io.h"
-#include "main_window.h"
-#include "scene_editor.h"
-#include "scene_file_writer.h"
-
 #include <QApplication>
 #include <QDir>
 #include <QFileInfo>
@@ -14,10 +8,15 @@
 #include <QRandomGenerator>
 #include <QTemporaryDir>
 #include <QtTest>
-
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+
+#include "autosave.h"
+#include "io/scene_io.h"
+#include "main_window.h"
+#include "scene_editor.h"
+#include "scene_file_writer.h"
 
 using namespace rs;
 using namespace rs::ui;

@@ -2,20 +2,10 @@
 // the designer stays editable while a render runs, renders queue and all finish, Cancel in
 // the status bar stops one at once, the Render window fills in tile by tile, and closing
 // asks before it cancels.
-#include "gui_test_support.h"
-
-#include "error_reporter.h"
-#include "image/image_io.h"
-#include "integrator/renderer.h"
-#include "render_queue.h"
-#include "render_status.h"
-#include "render_window.h"
-#include "user_confirmation.h"
-
-#include <QElapsedTimer>
-#include <QFileInfo>
 #include <QAbstractButton>
 #include <QApplication>
+#include <QElapsedTimer>
+#include <QFileInfo>
 #include <QImage>
 #include <QMessageBox>
 #include <QPushButton>
@@ -24,6 +14,15 @@
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QtTest>
+
+#include "error_reporter.h"
+#include "gui_test_support.h"
+#include "image/image_io.h"
+#include "integrator/renderer.h"
+#include "render_queue.h"
+#include "render_status.h"
+#include "render_window.h"
+#include "user_confirmation.h"
 
 using namespace rs;
 using namespace rs::ui;

@@ -3,22 +3,20 @@
 // those threads to the widgets (GuiMailbox). Run in the release build as a behaviour test
 // and, in packaging/setup.sh test, in the ThreadSanitizer build, where any data race between
 // the GUI thread, the session's scheduler, its workers and the job fails it.
-#include "gui_test_support.h"
-
-#include "error_reporter.h"
-#include "gui_mailbox.h"
-#include "integrator/renderer.h"
-#include "snapshot/compiled_scene.h"
-
 #include <QFile>
 #include <QTemporaryDir>
 #include <QThread>
 #include <QtTest>
-
 #include <algorithm>
 #include <atomic>
 #include <thread>
 #include <vector>
+
+#include "error_reporter.h"
+#include "gui_mailbox.h"
+#include "gui_test_support.h"
+#include "integrator/renderer.h"
+#include "snapshot/compiled_scene.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -62,7 +60,8 @@ void SessionThreadsTest::mailbox_RunsCallsInPostedOrderOnTheGuiThread_AndDropsTh
 
 void SessionThreadsTest::editsWhilePassesRun_EndInTheFullRenderOfTheLastDocument() {
     QStringList errors;
-    setErrorHandler([&](const QString& title, const QString& text) { errors << title + ": " + text; });
+    setErrorHandler(
+        [&](const QString& title, const QString& text) { errors << title + ": " + text; });
     std::unique_ptr<MainWindow> window;
     QVERIFY(openRoomWindow(window));
     Viewport* v = window->viewport();
@@ -108,20 +107,20 @@ void SessionThreadsTest::editsWhilePassesRun_EndInTheFullRenderOfTheLastDocument
     // The session's frame is the full render of the snapshot it shows (view camera and all),
     // and that snapshot carries the last document's material.
     bool compared = false;
-    window->session()->session().withFrame(
-        [&](const DeepFrame& f, const std::shared_ptr<const CompiledScene>& scene) {
-            QVERIFY(scene);
-            QVERIFY(scene->materials().at(1).color == Color(0.2f, 0.7f, 0.3f));  // Slot 0: the default.
-            const RenderResult full = renderImage(*scene);
-            QCOMPARE(full.image.pixels.size(), f.color.size());
-            float worst = 0.0f;
-            for (std::size_t i = 0; i < f.color.size(); ++i) {
-                const Color d = glm::abs(full.image.pixels[i] - f.color[i]);
-                worst = std::max({worst, d.x, d.y, d.z});
-            }
-            QVERIFY2(worst <= 1e-5f, qPrintable(QStringLiteral("max difference %1").arg(worst)));
-            compared = true;
-        });
+    window->session()->session().withFrame([&](const DeepFrame& f,
+                                               const std::shared_ptr<const CompiledScene>& scene) {
+        QVERIFY(scene);
+        QVERIFY(scene->materials().at(1).color == Color(0.2f, 0.7f, 0.3f));  // Slot 0: the default.
+        const RenderResult full = renderImage(*scene);
+        QCOMPARE(full.image.pixels.size(), f.color.size());
+        float worst = 0.0f;
+        for (std::size_t i = 0; i < f.color.size(); ++i) {
+            const Color d = glm::abs(full.image.pixels[i] - f.color[i]);
+            worst = std::max({worst, d.x, d.y, d.z});
+        }
+        QVERIFY2(worst <= 1e-5f, qPrintable(QStringLiteral("max difference %1").arg(worst)));
+        compared = true;
+    });
     QVERIFY(compared);
     QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
 

@@ -1,4 +1,11 @@
 // The designer's Qt-free-ish logic without a window: names for duplicates, the default scene.
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "default_scene.h"
 #include "display_choice.h"
 #include "display_frame.h"
@@ -7,14 +14,6 @@
 #include "scene_edits.h"
 #include "snapshot/compiled_scene.h"
 #include "transform_edits.h"
-
-#include <glm/gtc/matrix_transform.hpp>
-
-#include <QDir>
-#include <QFile>
-#include <QFileInfo>
-#include <QTemporaryDir>
-#include <QtTest>
 
 using namespace rs;
 using namespace rs::ui;
@@ -117,7 +116,8 @@ void UiLogicTest::fitScale_ScalesOnlyMeshesThatDoNotFitTheView() {
     QVERIFY2(std::abs(share - kFitViewShare) < 0.02f, qPrintable(QString::number(share)));
     QVERIFY(fitScale(cube(0.001f), view, 10.0f) > 100.0f);
     // A factor the Scale field could not show is clamped to its range.
-    QCOMPARE(fitScale(cube(1e9f), view, 10.0f), float(findParameter(ParamKind::Transform, "scale")->min));
+    QCOMPARE(fitScale(cube(1e9f), view, 10.0f),
+             float(findParameter(ParamKind::Transform, "scale")->min));
 }
 
 void UiLogicTest::duplicate_CountsOnFromTheCopysNumber() {
@@ -152,7 +152,8 @@ void UiLogicTest::defaultScene_BuildTree_FoundFromAnyExecutableFolder() {
     // No installed copy beside a temporary folder: the source tree the build came from.
     QTemporaryDir dir;
     const QString expected =
-        QFileInfo(QStringLiteral(RAYSTUDIO_SCENES_DIR "/reference-room.scene.json")).canonicalFilePath();
+        QFileInfo(QStringLiteral(RAYSTUDIO_SCENES_DIR "/reference-room.scene.json"))
+            .canonicalFilePath();
     QVERIFY(!expected.isEmpty());
     QCOMPARE(defaultScenePath(dir.path()), expected);
     QCOMPARE(defaultScenePath(QCoreApplication::applicationDirPath()), expected);
@@ -162,9 +163,12 @@ void UiLogicTest::defaultScene_Installed_PrefersShareNextToTheExecutable() {
     QTemporaryDir prefix;
     QVERIFY(QDir(prefix.path()).mkpath(QStringLiteral("bin")));
     QVERIFY(QDir(prefix.path()).mkpath(QStringLiteral("share/raystudio/scenes")));
-    const QString installed = prefix.filePath(QStringLiteral("share/raystudio/scenes/reference-room.scene.json"));
-    QVERIFY(QFile::copy(QStringLiteral(RAYSTUDIO_SCENES_DIR "/reference-room.scene.json"), installed));
-    QCOMPARE(defaultScenePath(prefix.filePath(QStringLiteral("bin"))), QFileInfo(installed).canonicalFilePath());
+    const QString installed =
+        prefix.filePath(QStringLiteral("share/raystudio/scenes/reference-room.scene.json"));
+    QVERIFY(
+        QFile::copy(QStringLiteral(RAYSTUDIO_SCENES_DIR "/reference-room.scene.json"), installed));
+    QCOMPARE(defaultScenePath(prefix.filePath(QStringLiteral("bin"))),
+             QFileInfo(installed).canonicalFilePath());
 }
 
 void UiLogicTest::displayAutomatic_PicksSoftwareOnSoftwareGL_OpenGLOnAGpu() {
@@ -175,10 +179,9 @@ void UiLogicTest::displayAutomatic_PicksSoftwareOnSoftwareGL_OpenGLOnAGpu() {
         QVERIFY2(softwareRenderer(QString::fromLatin1(software)), software);
         QVERIFY(!useOpenGL(DisplayKind::Automatic, QString::fromLatin1(software)));
     }
-    for (const char* gpu : {"NVIDIA GeForce RTX 3060/PCIe/SSE2",
-                            "Mesa Intel(R) UHD Graphics 620 (KBL GT2)",
-                            "AMD Radeon RX 6600 (navi23, LLVM 15.0.6, DRM 3.49, 6.1.0-13-amd64)",
-                            "Apple M1"}) {
+    for (const char* gpu :
+         {"NVIDIA GeForce RTX 3060/PCIe/SSE2", "Mesa Intel(R) UHD Graphics 620 (KBL GT2)",
+          "AMD Radeon RX 6600 (navi23, LLVM 15.0.6, DRM 3.49, 6.1.0-13-amd64)", "Apple M1"}) {
         QVERIFY2(!softwareRenderer(QString::fromLatin1(gpu)), gpu);
         QVERIFY2(useOpenGL(DisplayKind::Automatic, QString::fromLatin1(gpu)), gpu);
     }
@@ -200,7 +203,9 @@ void UiLogicTest::displayAutomatic_PicksSoftwareOnSoftwareGL_OpenGLOnAGpu() {
 
 namespace {
 
-bool near(const Vec3& a, const Vec3& b) { return glm::length(a - b) < 1e-4f; }
+bool near(const Vec3& a, const Vec3& b) {
+    return glm::length(a - b) < 1e-4f;
+}
 
 }  // namespace
 

@@ -1,16 +1,15 @@
 // The viewport traces the viewport (issue 10), offscreen: the session's frame follows the
 // widget's size times the preview scale, picking follows the new mapping, the output frame is
 // fitted into the view and dimmed around when looking through the scene camera.
-#include "gui_test_support.h"
+#include <QComboBox>
+#include <QElapsedTimer>
+#include <QtTest>
 
+#include "gui_test_support.h"
 #include "integrator/renderer.h"
 #include "passepartout.h"
 #include "preferences.h"
 #include "snapshot/compiled_scene.h"
-
-#include <QComboBox>
-#include <QElapsedTimer>
-#include <QtTest>
 
 using namespace rs;
 using namespace rs::ui;
@@ -122,7 +121,8 @@ void ViewportSizeTest::picking_AfterAResizeAndAtHalfScale_SelectsTheObjectUnderT
     Viewport* v = window_->viewport();
     // Wider than the output (16:9): the frame shows more of the room at the sides, and the
     // ball is where the scene camera projects it in the widget, not in a letterboxed image.
-    for (const auto& [size, divider] : {std::pair{QSize(480, 180), 1}, std::pair{QSize(560, 200), 2}}) {
+    for (const auto& [size, divider] :
+         {std::pair{QSize(480, 180), 1}, std::pair{QSize(560, 200), 2}}) {
         QVERIFY(traceViewport(*window_, size, divider));
         const QPoint at = blueBallOnScreen(size);
         QVERIFY(v->rect().contains(at));
@@ -158,7 +158,8 @@ void ViewportSizeTest::narrowViewport_FitsTheOutputFrame_AndDimsAroundIt() {
     const RenderResult render = renderImage(CompiledScene(doc), options);
     int same = 0;
     for (int y = 0; y < 180; ++y)
-        for (int x = 0; x < 320; ++x) same += frame->idAt(x, y + 70) == render.ids[std::size_t(y) * 320 + x];
+        for (int x = 0; x < 320; ++x)
+            same += frame->idAt(x, y + 70) == render.ids[std::size_t(y) * 320 + x];
     QVERIFY2(same > 320 * 180 * 99 / 100, qPrintable(QString::number(same)));
 
     // Outside the output frame the picture is dimmed; inside it is not.

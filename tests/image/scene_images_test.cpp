@@ -2,15 +2,15 @@
 //
 // References are linear HDR EXR files in tests/reference/. After an intended change to the
 // look of a scene, regenerate them with RAYSTUDIO_UPDATE_REFERENCES=1 and look at the diff.
-#include "image/image_io.h"
-#include "integrator/renderer.h"
-#include "io/scene_io.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+
+#include "image/image_io.h"
+#include "integrator/renderer.h"
+#include "io/scene_io.h"
 
 namespace rs {
 namespace {

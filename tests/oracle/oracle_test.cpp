@@ -14,10 +14,6 @@
 // - at most `edgePixels` pixels differ from POV-Ray's own pixel by more than `pixel`: the
 //   pixels that need the neighbourhood, counted and bounded per scene.
 // OracleTolerance below shows that these bounds fail for a wrong term.
-#include "image/image_io.h"
-#include "integrator/renderer.h"
-#include "io/scene_io.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,6 +21,10 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include "image/image_io.h"
+#include "integrator/renderer.h"
+#include "io/scene_io.h"
 
 namespace rs {
 namespace {
@@ -63,7 +63,8 @@ const std::vector<OracleCase>& cases() {
         {"glass", feature("glass"), 4e-4, 0.07f, 12, -1,
          "Schlick split, refraction through ball and slab, total internal reflection: rays "
          "refracted up to 6 times magnify the offset, so an edge seen through glass may move "
-         "by more than a pixel (measured: 6 pixels beyond 0.07, worst 0.059 off POV-Ray's 3x3 range)"},
+         "by more than a pixel (measured: 6 pixels beyond 0.07, worst 0.059 off POV-Ray's 3x3 "
+         "range)"},
         {"hard_shadow", feature("hard-shadow"), 3e-4, 0.01f, 10, -1,
          "shadow terminators move by the surface offset (about 2 % of edge pixels)"},
         {"soft_shadow", feature("soft-shadow"), 5e-3, 0.04f, 10, 256,
@@ -82,7 +83,8 @@ const std::vector<OracleCase>& cases() {
          "and a mirror (measured: 12 pixels beyond 0.17, worst 0.152)"},
         {"mesh_scene", bundled("mesh"), 4e-4, 0.07f, 30, -1,
          "smooth-normal torus: POV-Ray and we pick different sides of a shadow terminator on "
-         "single pixels where shading and geometric normals disagree (measured: 20 pixels beyond 0.07, worst 0.059)"},
+         "single pixels where shading and geometric normals disagree (measured: 20 pixels beyond "
+         "0.07, worst 0.059)"},
         {"soft_shadows", bundled("soft-shadows"), 5e-3, 0.04f, 20, 256,
          "as soft_shadow; the bundled scene's 16 samples raised to 256 for both"},
     };
@@ -129,7 +131,9 @@ Comparison compare(const ImageRgb& ours, const ImageRgb& pov, float bound) {
     return c;
 }
 
-std::string shellQuoted(const fs::path& p) { return "'" + p.string() + "'"; }
+std::string shellQuoted(const fs::path& p) {
+    return "'" + p.string() + "'";
+}
 
 /// POV-Ray's render of `scenePath`'s twin, or an error message.
 bool renderPovray(const OracleCase& c, ImageRgb& image, std::string& error) {
@@ -146,8 +150,8 @@ bool renderPovray(const OracleCase& c, ImageRgb& image, std::string& error) {
         fs::remove(exr);
         const std::string render = "'" RAYSTUDIO_POVRAY "' +W" + std::to_string(kWidth) + " +H" +
                                    std::to_string(kHeight) + " -D -A +WT1 +FE +O" +
-                                   shellQuoted(exr) + " " + shellQuoted(pov) + " >" + shellQuoted(log) +
-                                   " 2>&1";
+                                   shellQuoted(exr) + " " + shellQuoted(pov) + " >" +
+                                   shellQuoted(log) + " 2>&1";
         if (std::system(render.c_str()) != 0) error = "povray failed: " + render;
     }
     if (!error.empty()) {
@@ -178,7 +182,9 @@ const OracleCase& findCase(const std::string& name) {
     throw std::runtime_error("no oracle case " + name);
 }
 
-void PrintTo(const OracleCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const OracleCase& c, std::ostream* os) {
+    *os << c.name;
+}
 
 class Oracle : public ::testing::TestWithParam<OracleCase> {};
 
@@ -206,9 +212,8 @@ TEST_P(Oracle, MatchesPovray) {
             << where << "; worst pixel (" << d.worstX << ", " << d.worstY << ")";
         EXPECT_LE(d.beyondDirect, c.edgePixels) << where;
         std::cout << "[oracle] " << c.name << " " << engineName(engine) << ": mean " << d.mean
-                  << ", worst envelope " << d.worstEnvelope << ", worst direct "
-                  << d.worstDirect << ", pixels beyond " << c.pixel << ": " << d.beyondDirect
-                  << "\n";
+                  << ", worst envelope " << d.worstEnvelope << ", worst direct " << d.worstDirect
+                  << ", pixels beyond " << c.pixel << ": " << d.beyondDirect << "\n";
     }
 }
 

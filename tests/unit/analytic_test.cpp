@@ -1,13 +1,13 @@
 // Closed forms against the renderer: where a term of the illumination equation has an exact
 // value (scene-format.md), the picture must show it. Different colours sit behind every branch,
 // so a term given the wrong weight, or sent down the wrong branch, changes the value.
-#include "integrator/renderer.h"
-#include "integrator/whitted.h"
-#include "test_scenes.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "integrator/renderer.h"
+#include "integrator/whitted.h"
+#include "test_scenes.h"
 
 namespace rs {
 namespace {
@@ -17,7 +17,8 @@ using test::addPlane;
 using test::addPointLight;
 using test::addSphere;
 
-void expectColorNear(const Color& actual, const Color& expected, float tol, const std::string& what) {
+void expectColorNear(const Color& actual, const Color& expected, float tol,
+                     const std::string& what) {
     EXPECT_NEAR(actual.x, expected.x, tol) << what;
     EXPECT_NEAR(actual.y, expected.y, tol) << what;
     EXPECT_NEAR(actual.z, expected.z, tol) << what;

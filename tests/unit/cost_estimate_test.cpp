@@ -1,11 +1,12 @@
 // The render cost budget: the estimate's factors, the glass tree bound and the budget message.
 #include "integrator/cost_estimate.h"
-#include "io/scene_io.h"
-#include "test_scenes.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "io/scene_io.h"
+#include "test_scenes.h"
 
 namespace rs {
 namespace {

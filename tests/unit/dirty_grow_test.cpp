@@ -1,11 +1,11 @@
 // Growing an edit's marks by a pixel (markDirtyPixels' second step), eight pixels a word,
 // against the definition: a pixel is marked when it or one of its 8 neighbours is.
-#include "session/dirty_region.h"
-
 #include <gtest/gtest.h>
 
 #include <random>
 #include <vector>
+
+#include "session/dirty_region.h"
 
 namespace rs {
 namespace {
@@ -22,7 +22,8 @@ uint8_t grownByDefinition(const std::vector<uint8_t>& core, int w, int h, int x,
 // are and are not whole blocks (a block cut by the right or bottom edge goes pixel by pixel).
 TEST(DirtyGrow, BlockMarks_EachPixelMarkedWhenItOrANeighbourIs) {
     std::mt19937 rng(7);
-    for (const auto& [w, h] : {std::pair{64, 48}, std::pair{45, 37}, std::pair{9, 8}, std::pair{8, 9}}) {
+    for (const auto& [w, h] :
+         {std::pair{64, 48}, std::pair{45, 37}, std::pair{9, 8}, std::pair{8, 9}}) {
         for (const int oneIn : {2, 11, 40}) {
             std::vector<uint8_t> core(std::size_t(w) * std::size_t(h));
             for (uint8_t& m : core) m = rng() % unsigned(oneIn) == 0;
@@ -52,7 +53,8 @@ TEST(DirtyGrow, BlockMarks_WriteOnlyTheirBlock) {
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const bool inside = x >= 8 && x < 16 && y >= 8 && y < 16;
-            EXPECT_EQ(out[std::size_t(y) * std::size_t(w) + std::size_t(x)], inside ? 1 : 0xAA) << x << "," << y;
+            EXPECT_EQ(out[std::size_t(y) * std::size_t(w) + std::size_t(x)], inside ? 1 : 0xAA)
+                << x << "," << y;
         }
 }
 

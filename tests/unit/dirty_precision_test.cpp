@@ -4,16 +4,16 @@
 //   cannot show this when the pixel happens to be re-traced for another reason.
 // - Precision: the marked set is at most a stated factor larger than the changed one (so
 //   marking every pixel fails), with the factor per edit kind below, measured on this scene.
-#include "integrator/renderer.h"
-#include "session/dirty_region.h"
-#include "session/render_session.h"
-#include "session/scene_update.h"
-#include "edit_scenes.h"
-
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <thread>
+
+#include "edit_scenes.h"
+#include "integrator/renderer.h"
+#include "session/dirty_region.h"
+#include "session/render_session.h"
+#include "session/scene_update.h"
 
 namespace rs {
 namespace {
@@ -71,20 +71,42 @@ const std::vector<EditKind>& editKinds() {
     // smooth normals 128 -> 1109 (8.66x), retint and reassign 241 -> 1134 (4.71x), point light
     // 6347 -> 6875 (1.08x), sphere light 6106 -> 6833 (1.12x).
     static const std::vector<EditKind> kinds = {
-        {"move sphere", [](SceneDocument& d) { object(d, "diffuse ball").transform.translate += Vec3(0.3f, 0.1f, 0); }, 4.0},
-        {"move box", [](SceneDocument& d) { object(d, "box").transform.translate += Vec3(0.2f, 0, 0.1f); }, 4.5},
+        {"move sphere",
+         [](SceneDocument& d) {
+             object(d, "diffuse ball").transform.translate += Vec3(0.3f, 0.1f, 0);
+         },
+         4.0},
+        {"move box",
+         [](SceneDocument& d) { object(d, "box").transform.translate += Vec3(0.2f, 0, 0.1f); },
+         4.5},
         {"rotate box", [](SceneDocument& d) { object(d, "box").transform.rotate.y += 25.0f; }, 6.0},
-        {"scale sphere", [](SceneDocument& d) { object(d, "diffuse ball").transform.scale = Vec3(1.0f, 1.3f, 1.0f); }, 4.5},
-        {"sphere radius", [](SceneDocument& d) {
-             std::get<SphereGeometry>(object(d, "diffuse ball").geometry).radius = 0.95f; }, 4.0},
-        {"rectangle size", [](SceneDocument& d) {
-             std::get<RectangleGeometry>(object(d, "card").geometry).u = Vec3(0.7f, 0, 0.42f); }, 6.0},
-        {"move glass ball", [](SceneDocument& d) { object(d, "glass ball").transform.translate += Vec3(-0.2f, 0, 0); }, 4.0},
-        {"smooth normals off", [](SceneDocument& d) {
-             std::get<MeshGeometry>(object(d, "gem").geometry).smoothNormals = false; }, 10.0},
+        {"scale sphere",
+         [](SceneDocument& d) {
+             object(d, "diffuse ball").transform.scale = Vec3(1.0f, 1.3f, 1.0f);
+         },
+         4.5},
+        {"sphere radius",
+         [](SceneDocument& d) {
+             std::get<SphereGeometry>(object(d, "diffuse ball").geometry).radius = 0.95f;
+         },
+         4.0},
+        {"rectangle size",
+         [](SceneDocument& d) {
+             std::get<RectangleGeometry>(object(d, "card").geometry).u = Vec3(0.7f, 0, 0.42f);
+         },
+         6.0},
+        {"move glass ball",
+         [](SceneDocument& d) { object(d, "glass ball").transform.translate += Vec3(-0.2f, 0, 0); },
+         4.0},
+        {"smooth normals off",
+         [](SceneDocument& d) {
+             std::get<MeshGeometry>(object(d, "gem").geometry).smoothNormals = false;
+         },
+         10.0},
         {"retint", [](SceneDocument& d) { d.materials[4].color = Color(0.8f, 0.3f, 0.3f); }, 5.5},
         {"reassign material", [](SceneDocument& d) { object(d, "box").material = "mirror"; }, 5.5},
-        {"move point light", [](SceneDocument& d) { d.lights[0].position += Vec3(0.5f, 0, 0.3f); }, 1.5},
+        {"move point light", [](SceneDocument& d) { d.lights[0].position += Vec3(0.5f, 0, 0.3f); },
+         1.5},
         {"dim sphere light", [](SceneDocument& d) { d.lights[1].intensity *= 0.7f; }, 1.5},
     };
     return kinds;
@@ -99,19 +121,20 @@ TEST_P(DirtyPrecision, MarksEveryChangedPixel_AndNotManyMore) {
     kind.apply(after);
     for (const EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
         const Counts c = measure(before, after, engine);
-        const std::string what = kind.name + " (" + engineName(engine) + "): " +
-                                 std::to_string(c.changed) + " changed, " +
+        const std::string what = kind.name + " (" + engineName(engine) +
+                                 "): " + std::to_string(c.changed) + " changed, " +
                                  std::to_string(c.marked) + " marked";
         EXPECT_GT(c.changed, 0u) << what << ": the edit must change the picture";
         EXPECT_EQ(c.missed, 0u) << what << ": changed pixels left unmarked";
         EXPECT_LE(double(c.marked), kind.factor * double(c.changed)) << what;
         EXPECT_LT(c.marked, std::size_t(96 * 72)) << what << ": marks the whole frame";
-        std::cout << "[dirty] " << what << " (" << double(c.marked) / double(c.changed)
-                  << "x)\n";
+        std::cout << "[dirty] " << what << " (" << double(c.marked) / double(c.changed) << "x)\n";
     }
 }
 
-void PrintTo(const EditKind& k, std::ostream* os) { *os << k.name; }
+void PrintTo(const EditKind& k, std::ostream* os) {
+    *os << k.name;
+}
 
 INSTANTIATE_TEST_SUITE_P(Edits, DirtyPrecision, ::testing::ValuesIn(editKinds()),
                          [](const auto& info) {
@@ -155,14 +178,17 @@ TEST(DirtyPrecision, LargeFootprint_InnerBlocksMarkedWholeWithoutTestingTheirPix
         markDirtyPixels(edit, *snapshot, frame, mask, MarkScope::WithoutShadows, &stats);
     });
     for (int y = foot.y0; y < foot.y1; ++y)
-        for (int x = foot.x0; x < foot.x1; ++x) ASSERT_TRUE(mask.pixels[std::size_t(y) * 160 + std::size_t(x)]) << x << "," << y;
+        for (int x = foot.x0; x < foot.x1; ++x)
+            ASSERT_TRUE(mask.pixels[std::size_t(y) * 160 + std::size_t(x)]) << x << "," << y;
     // The 8x8 blocks wholly inside the footprint are neither tested nor grown pixel by pixel:
     // only those its edges cross (and those the mirror and glass balls' trees send to it).
-    const std::size_t inner = std::size_t(foot.x1 / 8 - (foot.x0 + 7) / 8) * std::size_t(foot.y1 / 8 - (foot.y0 + 7) / 8);
+    const std::size_t inner =
+        std::size_t(foot.x1 / 8 - (foot.x0 + 7) / 8) * std::size_t(foot.y1 / 8 - (foot.y0 + 7) / 8);
     ASSERT_GE(inner, 16u);
     EXPECT_LE(stats.pixelsTested + 64 * inner, 64 * stats.blocksTested);
     EXPECT_EQ(stats.pixelsGrown + 64 * inner, 64 * stats.blocksGrown);
-    EXPECT_LT(stats.pixelsTested, std::size_t(foot.area()) / 2) << stats.pixelsTested << " of " << foot.area();
+    EXPECT_LT(stats.pixelsTested, std::size_t(foot.area()) / 2)
+        << stats.pixelsTested << " of " << foot.area();
 }
 
 // The session keeps its mask from one marking to the next, so that a marking clears only the
@@ -171,7 +197,8 @@ TEST(DirtyPrecision, LargeFootprint_InnerBlocksMarkedWholeWithoutTestingTheirPix
 // must give exactly what a fresh mask on a fresh thread (fresh scratch) gives; so must a
 // mask last used for a frame of the same pixel count but other sides.
 TEST(DirtyMask, KeptFromTheLastMarking_MarksWhatAFreshMaskMarks) {
-    auto marksOf = [](const SceneEdit& edit, const CompiledScene& snapshot, const DeepFrame& frame) {
+    auto marksOf = [](const SceneEdit& edit, const CompiledScene& snapshot,
+                      const DeepFrame& frame) {
         DirtyMask fresh;
         std::thread([&] { markDirtyPixels(edit, snapshot, frame, fresh); }).join();
         return fresh;
@@ -205,8 +232,10 @@ TEST(DirtyMask, KeptFromTheLastMarking_MarksWhatAFreshMaskMarks) {
             for (int y = 0; y < frame.height; ++y)
                 for (int x = 0; x < frame.width; ++x) {
                     const std::size_t i = frame.index(x, y);
-                    const std::size_t b = std::size_t(y / 8) * std::size_t(frame.blocksX()) + std::size_t(x / 8);
-                    if (afterLarge.pixels[i] && !want.pixels[i]) ++(want.touched[b] ? inside : outside);
+                    const std::size_t b =
+                        std::size_t(y / 8) * std::size_t(frame.blocksX()) + std::size_t(x / 8);
+                    if (afterLarge.pixels[i] && !want.pixels[i])
+                        ++(want.touched[b] ? inside : outside);
                 }
             ASSERT_GT(outside, 0u);
             ASSERT_GT(inside, 0u);

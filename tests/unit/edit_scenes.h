@@ -9,8 +9,8 @@ namespace rs::test {
 /// normals change its shading.
 inline std::shared_ptr<const MeshData> octahedron() {
     auto mesh = std::make_shared<MeshData>();
-    mesh->positions = {Vec3(0.4f, 0, 0), Vec3(-0.4f, 0, 0), Vec3(0, 0.4f, 0),
-                       Vec3(0, -0.4f, 0), Vec3(0, 0, 0.4f), Vec3(0, 0, -0.4f)};
+    mesh->positions = {Vec3(0.4f, 0, 0),  Vec3(-0.4f, 0, 0), Vec3(0, 0.4f, 0),
+                       Vec3(0, -0.4f, 0), Vec3(0, 0, 0.4f),  Vec3(0, 0, -0.4f)};
     for (const Vec3& p : mesh->positions) mesh->normals.push_back(glm::normalize(p));
     mesh->indices = {0, 2, 4, 4, 2, 1, 1, 2, 5, 5, 2, 0, 4, 3, 0, 1, 3, 4, 5, 3, 1, 0, 3, 5};
     return mesh;
@@ -33,7 +33,8 @@ inline SceneDocument editRoom(int width = 64, int height = 48) {
     Object card;
     card.name = "card";
     card.material = "card";
-    card.geometry = RectangleGeometry{Vec3(2.0f, -1.0f, -6.0f), Vec3(0.5f, 0, 0.3f), Vec3(0, 0.5f, 0)};
+    card.geometry =
+        RectangleGeometry{Vec3(2.0f, -1.0f, -6.0f), Vec3(0.5f, 0, 0.3f), Vec3(0, 0.5f, 0)};
     doc.addObject(card);
     Object mesh;
     mesh.name = "gem";

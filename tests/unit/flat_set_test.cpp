@@ -1,14 +1,14 @@
 // The flat set answers with the bits of the scalar shape tests, in both its machine codes,
 // for every batch length; and camera-tile culling only narrows, never changes, answers.
-#include "accel/bvh_engine.h"
 #include "accel/flat_set.h"
-#include "snapshot/compiled_scene.h"
 
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <random>
 
+#include "accel/bvh_engine.h"
+#include "snapshot/compiled_scene.h"
 #include "test_scenes.h"
 
 namespace rs {
@@ -59,7 +59,8 @@ void addOthers(SceneDocument& doc) {
     Object rect;
     rect.name = "rect";
     rect.material = "m";
-    rect.geometry = RectangleGeometry{Vec3(1.0f, 0.5f, -2.0f), Vec3(0.8f, 0, 0), Vec3(0, 0.6f, 0.3f)};
+    rect.geometry =
+        RectangleGeometry{Vec3(1.0f, 0.5f, -2.0f), Vec3(0.8f, 0, 0), Vec3(0, 0.6f, 0.3f)};
     doc.addObject(rect);
     Object egg;
     egg.name = "egg";
@@ -70,7 +71,9 @@ void addOthers(SceneDocument& doc) {
     doc.addObject(egg);
 }
 
-bool worldSphere(const Primitive& p) { return !p.hasFrame && std::holds_alternative<SphereShape>(p.shape); }
+bool worldSphere(const Primitive& p) {
+    return !p.hasFrame && std::holds_alternative<SphereShape>(p.shape);
+}
 
 /// The scalar answer the flat set must reproduce: planes in order with intersect(PlaneShape),
 /// then world spheres in order with intersect(SphereShape), then the other primitives in
@@ -84,7 +87,8 @@ EngineHit scalarClosest(const CompiledScene& scene, const Ray& ray, float tmax) 
             best = {sh.t, sh.n, kPlaneSlot | uint32_t(j)};
     const auto& prims = scene.primitives();
     for (std::size_t s = 0; s < prims.size(); ++s)
-        if (worldSphere(prims[s]) && intersect(std::get<SphereShape>(prims[s].shape), ray, 0.0f, best.t, sh))
+        if (worldSphere(prims[s]) &&
+            intersect(std::get<SphereShape>(prims[s].shape), ray, 0.0f, best.t, sh))
             best = {sh.t, sh.n, uint32_t(s)};
     for (std::size_t s = 0; s < prims.size(); ++s)
         if (!worldSphere(prims[s]) && intersectPrimitive(prims[s], ray, 0.0f, best.t, sh))
@@ -111,9 +115,11 @@ struct Rays {
         dx.push_back(r.dir.x), dy.push_back(r.dir.y), dz.push_back(r.dir.z);
         tmax.push_back(t);
     }
-    Ray at(std::size_t i) const { return Ray::make(Vec3(ox[i], oy[i], oz[i]), Vec3(dx[i], dy[i], dz[i])); }
+    Ray at(std::size_t i) const {
+        return Ray::make(Vec3(ox[i], oy[i], oz[i]), Vec3(dx[i], dy[i], dz[i]));
+    }
     RayBatch batch(std::size_t first, std::size_t count) const {
-        return {ox.data() + first, oy.data() + first, oz.data() + first, dx.data() + first,
+        return {ox.data() + first, oy.data() + first, oz.data() + first,   dx.data() + first,
                 dy.data() + first, dz.data() + first, tmax.data() + first, count};
     }
 };
@@ -126,7 +132,9 @@ Rays someRays(const CompiledScene& scene, std::mt19937& rng, int n) {
         const Ray view = scene.camera().generateRay(u01(rng) * float(scene.camera().width()),
                                                     u01(rng) * float(scene.camera().height()));
         switch (k % 3) {
-            case 0: rays.add(view, kInfinity); break;
+            case 0:
+                rays.add(view, kInfinity);
+                break;
             case 1: {
                 SurfaceHit hit;
                 if (!scene.intersect(view, kInfinity, hit)) break;
@@ -166,9 +174,12 @@ void expectScalarAnswers(const CompiledScene& scene, const FlatSet& flat, const 
             const EngineHit e = scalarClosest(scene, rays.at(i), rays.tmax[i]);
             ASSERT_EQ(slot[i], e.slot) << "ray " << i;
             ASSERT_EQ(std::bit_cast<uint32_t>(t[i]), std::bit_cast<uint32_t>(e.t)) << "ray " << i;
-            ASSERT_EQ(std::bit_cast<uint32_t>(nx[i]), std::bit_cast<uint32_t>(e.n.x)) << "ray " << i;
-            ASSERT_EQ(std::bit_cast<uint32_t>(ny[i]), std::bit_cast<uint32_t>(e.n.y)) << "ray " << i;
-            ASSERT_EQ(std::bit_cast<uint32_t>(nz[i]), std::bit_cast<uint32_t>(e.n.z)) << "ray " << i;
+            ASSERT_EQ(std::bit_cast<uint32_t>(nx[i]), std::bit_cast<uint32_t>(e.n.x))
+                << "ray " << i;
+            ASSERT_EQ(std::bit_cast<uint32_t>(ny[i]), std::bit_cast<uint32_t>(e.n.y))
+                << "ray " << i;
+            ASSERT_EQ(std::bit_cast<uint32_t>(nz[i]), std::bit_cast<uint32_t>(e.n.z))
+                << "ray " << i;
             ASSERT_EQ(occluded[i] != 0, scalarAny(scene, rays.at(i), rays.tmax[i])) << "ray " << i;
             hits += e.slot != kNoSlot && !(e.slot & kPlaneSlot);
             blocked += occluded[i] != 0;
@@ -217,7 +228,8 @@ TEST(FlatSet, RaysGrazingASphereGetTheScalarAnswer) {
         Rays rays;
         for (int k = 0; k < 40; ++k) {
             const Vec3 normal = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0, 0, 1e-3f));
-            const Vec3 tangent = glm::normalize(glm::cross(normal, Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f, 0, 0)));
+            const Vec3 tangent = glm::normalize(
+                glm::cross(normal, Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f, 0, 0)));
             const Vec3 touch = centre + radius * (1.0f + 1e-4f * u(rng)) * normal;
             const Vec3 from = touch - (0.5f + 2.0f * std::abs(u(rng))) * tangent;
             rays.add(Ray::make(from, tangent), k % 2 ? kInfinity : 3.0f);
@@ -243,17 +255,20 @@ TEST(FlatSet, CoherentGroupsGrazingOneOfManySpheresGetTheScalarAnswer) {
         const CompiledScene scene(doc, nullptr, EngineKind::Builtin);
         const FlatSet flat(scene.planes(), &scene.primitives());
         std::vector<SphereShape> balls;
-        for (const Primitive& p : scene.primitives()) balls.push_back(std::get<SphereShape>(p.shape));
+        for (const Primitive& p : scene.primitives())
+            balls.push_back(std::get<SphereShape>(p.shape));
         Rays rays;
         for (int group = 0; group < 6; ++group) {
             const SphereShape& ball = balls[std::size_t(group) % balls.size()];
             Vec3 normal = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0, 0, 1e-3f));
-            Vec3 tangent = glm::normalize(glm::cross(normal, Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f, 0, 0)));
+            Vec3 tangent = glm::normalize(
+                glm::cross(normal, Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f, 0, 0)));
             float spread = 1e-3f;
             if (group % 2 == 0) {
                 // Along an axis, side by side: the box is then as thin as the segments, and
                 // touches the ball as closely as they do.
-                const int axis = int(std::abs(u(rng)) * 2.99f), off = (axis + 1 + group / 2 % 2) % 3;
+                const int axis = int(std::abs(u(rng)) * 2.99f),
+                          off = (axis + 1 + group / 2 % 2) % 3;
                 tangent = normal = Vec3(0.0f);
                 tangent[axis] = u(rng) < 0.0f ? -1.0f : 1.0f;
                 normal[off] = u(rng) < 0.0f ? -1.0f : 1.0f;
@@ -263,9 +278,11 @@ TEST(FlatSet, CoherentGroupsGrazingOneOfManySpheresGetTheScalarAnswer) {
             const float back = 0.3f + std::abs(u(rng));
             for (int k = 0; k < 8; ++k) {
                 const float inside = 1.0f + 2e-5f * float(k - 4) + 1e-6f * u(rng);
-                const Vec3 touch = ball.center + ball.radius * inside * normal + spread * float(k) * side;
+                const Vec3 touch =
+                    ball.center + ball.radius * inside * normal + spread * float(k) * side;
                 const Vec3 dir = glm::normalize(tangent + 0.1f * spread * u(rng) * side);
-                const float length = k % 4 == 0 ? kInfinity : back * (1.0f + 0.5f * float(k % 4 - 2));
+                const float length =
+                    k % 4 == 0 ? kInfinity : back * (1.0f + 0.5f * float(k % 4 - 2));
                 rays.add(Ray::make(touch - back * dir, dir), length);
             }
         }
@@ -333,9 +350,13 @@ TEST(FlatSet, OnlyAFewObjectsAndNoMeshAreFlat) {
     std::mt19937 rng(3);
     SceneDocument doc = randomRoom(rng, int(FlatSet::kMaxShapes) - 3, 0.0f);
     addOthers(doc);
-    EXPECT_TRUE(dynamic_cast<const BvhEngine&>(CompiledScene(doc, nullptr, EngineKind::Builtin).engine()).testsFlat());
+    EXPECT_TRUE(
+        dynamic_cast<const BvhEngine&>(CompiledScene(doc, nullptr, EngineKind::Builtin).engine())
+            .testsFlat());
     addSphere(doc, "one more", Vec3(0.0f), 0.1f, "m");
-    EXPECT_FALSE(dynamic_cast<const BvhEngine&>(CompiledScene(doc, nullptr, EngineKind::Builtin).engine()).testsFlat());
+    EXPECT_FALSE(
+        dynamic_cast<const BvhEngine&>(CompiledScene(doc, nullptr, EngineKind::Builtin).engine())
+            .testsFlat());
     SceneDocument withMesh = randomRoom(rng, 2, 0.0f);
     auto mesh = std::make_shared<MeshData>();
     mesh->positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};

@@ -5,13 +5,13 @@
 // records stay where they are) with the pool bounded by its compaction; undersampled blocks
 // filling their spans, with the state counts of pixels in every state, and the summaries of
 // blocks spans cover whole built from the block rays; an edit's marks applied to one block.
-#include "session/deep_frame.h"
-#include "session/tile_output.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <set>
+
+#include "session/deep_frame.h"
+#include "session/tile_output.h"
 
 namespace rs {
 namespace {
@@ -91,10 +91,11 @@ void expectPixel(const DeepFrame& f, std::size_t i, int salt, bool base) {
     EXPECT_EQ(f.normal[i], m.info.normal);
     EXPECT_EQ(f.cost[i], m.rays);
     EXPECT_EQ(f.state[i], kBase);
-    EXPECT_EQ(f.flags[i], uint8_t(kTracedLastUpdate | (m.info.touchedSpecular ? kTouchedSpecular : 0)));
-    const glm::vec4 bound = m.info.id == kNoObject
-                                ? glm::vec4(0.0f, 0.0f, 0.0f, -1.0f)
-                                : glm::vec4(float(i % kWidth), float(i / kWidth), -m.info.depth, 0.0f);
+    EXPECT_EQ(f.flags[i],
+              uint8_t(kTracedLastUpdate | (m.info.touchedSpecular ? kTouchedSpecular : 0)));
+    const glm::vec4 bound = m.info.id == kNoObject ? glm::vec4(0.0f, 0.0f, 0.0f, -1.0f)
+                                                   : glm::vec4(float(i % kWidth), float(i / kWidth),
+                                                               -m.info.depth, 0.0f);
     EXPECT_EQ(f.hitBound[i], bound);
     ASSERT_EQ(int(f.segmentCount[i]), m.segments);
     const auto& pool = f.tileSegments[0];
@@ -269,12 +270,14 @@ TEST(FrameCommit, UndersampledBlocks_FillTheirSpans_CountsFollowMixedStates) {
     t.rect = {0, 0, 32, 32};
     RayList& b = t.blocks;
     // 4x4 spans at (4, 0), (8, 8) and (28, 28); a 2x4 span at (0, 16).
-    const std::vector<std::array<int, 4>> spans = {{4, 0, 4, 4}, {8, 8, 4, 4}, {28, 28, 4, 4}, {0, 16, 2, 4}};
+    const std::vector<std::array<int, 4>> spans = {
+        {4, 0, 4, 4}, {8, 8, 4, 4}, {28, 28, 4, 4}, {0, 16, 2, 4}};
     for (const auto& sp : spans) {
         Ray ray;
         ray.origin = Vec3(float(sp[0]), float(sp[1]), 0.0f);
         ray.dir = Vec3(0.0f, 0.0f, -1.0f);
-        b.add(ray, 0, std::size_t(sp[1]) * kWidth + std::size_t(sp[0]), uint8_t(sp[2] | (sp[3] << 4)));
+        b.add(ray, 0, std::size_t(sp[1]) * kWidth + std::size_t(sp[0]),
+              uint8_t(sp[2] | (sp[3] << 4)));
     }
     b.color.resize(b.size()), b.info.resize(b.size()), b.rays.resize(b.size());
     for (std::size_t k = 0; k < b.size(); ++k) {
@@ -308,8 +311,10 @@ TEST(FrameCommit, UndersampledBlocks_FillTheirSpans_CountsFollowMixedStates) {
                 EXPECT_EQ(f.normal[i], b.info[k].normal);
                 EXPECT_EQ(f.cost[i], b.rays[k]);
                 EXPECT_EQ(f.state[i], kInteractive);
-                EXPECT_EQ(f.flags[i], uint8_t(kTracedLastUpdate | (k == 1 ? kTouchedSpecular | kTreeUnknown : 0)));
-                EXPECT_EQ(f.hitBound[i], glm::vec4(float(sp[0]), float(sp[1]), -b.info[k].depth, 0.0f));
+                EXPECT_EQ(f.flags[i], uint8_t(kTracedLastUpdate |
+                                              (k == 1 ? kTouchedSpecular | kTreeUnknown : 0)));
+                EXPECT_EQ(f.hitBound[i],
+                          glm::vec4(float(sp[0]), float(sp[1]), -b.info[k].depth, 0.0f));
                 EXPECT_EQ(f.segmentCount[i], 0);
             }
     }
@@ -405,7 +410,7 @@ TEST(FrameCommit, ApplyBlockMarks_MarkedPixelsGoStale_OthersLoseTheOverlay_Count
     const DeepFrame before = f;
     std::vector<uint8_t> mask(f.pixelCount(), 0);
     for (std::size_t i = 0; i < mask.size(); i += 5) mask[i] = 1;  // also outside the block
-    const std::size_t block = 1 * std::size_t(f.blocksX()) + 2;  // pixels x 16..23, y 8..15
+    const std::size_t block = 1 * std::size_t(f.blocksX()) + 2;    // pixels x 16..23, y 8..15
     f.applyBlockMarks(block, mask);
     std::array<uint32_t, 4> want = before.tileStates[0];
     for (int y = 0; y < kHeight; ++y)
@@ -418,7 +423,8 @@ TEST(FrameCommit, ApplyBlockMarks_MarkedPixelsGoStale_OthersLoseTheOverlay_Count
                 EXPECT_EQ(f.flags[i], before.flags[i]);
             } else if (mask[i]) {
                 EXPECT_EQ(f.state[i], kStale);
-                EXPECT_EQ(f.flags[i], uint8_t((before.flags[i] & ~kDeferredValid) | kTracedLastUpdate));
+                EXPECT_EQ(f.flags[i],
+                          uint8_t((before.flags[i] & ~kDeferredValid) | kTracedLastUpdate));
                 --want[before.state[i]];
                 ++want[kStale];
             } else {
@@ -448,7 +454,8 @@ TEST(FrameCommit, ApplyBlockMarks_AnyMarkValueAndCutBlocks_AsPixelByPixel) {
             mask[i] = next() % 3 == 0 ? 0 : uint8_t(1u << (next() % 8));  // 1, 2, ..., 128
         }
     const DeepFrame before = f;
-    for (std::size_t b = 0; b < std::size_t(f.blocksX() * f.blocksY()); ++b) f.applyBlockMarks(b, mask);
+    for (std::size_t b = 0; b < std::size_t(f.blocksX() * f.blocksY()); ++b)
+        f.applyBlockMarks(b, mask);
     std::size_t marked = 0;
     for (std::size_t i = 0; i < f.pixelCount(); ++i) {
         SCOPED_TRACE("pixel " + std::to_string(i));
@@ -464,7 +471,8 @@ TEST(FrameCommit, ApplyBlockMarks_AnyMarkValueAndCutBlocks_AsPixelByPixel) {
     ASSERT_GT(marked, f.pixelCount() / 2);
     std::vector<std::array<uint32_t, 4>> counts(f.tileStates.size(), std::array<uint32_t, 4>{});
     for (int y = 0; y < f.height; ++y)
-        for (int x = 0; x < f.width; ++x) ++counts[std::size_t(f.tileOf(x, y))][f.state[f.index(x, y)]];
+        for (int x = 0; x < f.width; ++x)
+            ++counts[std::size_t(f.tileOf(x, y))][f.state[f.index(x, y)]];
     EXPECT_EQ(f.tileStates, counts);  // the tile counts follow the states
 }
 

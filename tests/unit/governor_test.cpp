@@ -1,7 +1,7 @@
 // The interaction policy's file form and the governor's choice of levels.
-#include "session_test_support.h"
-
 #include <gtest/gtest.h>
+
+#include "session_test_support.h"
 
 namespace rs {
 namespace {

@@ -1,20 +1,20 @@
 // Parts of a final image (render --tile I/N, merge): band geometry, part files, the merge's
 // refusals, and that parts of every bundled scene merge bit-identically to a whole render.
-#include "image/image_io.h"
-#include "image/part_file.h"
-#include "image/part_merge.h"
 #include "integrator/image_part.h"
-#include "integrator/renderer.h"
-#include "io/render_fingerprint.h"
-#include "io/scene_io.h"
-#include "snapshot/compiled_scene.h"
 
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <cstring>
 #include <filesystem>
+
+#include "image/image_io.h"
+#include "image/part_file.h"
+#include "image/part_merge.h"
+#include "integrator/renderer.h"
+#include "io/render_fingerprint.h"
+#include "io/scene_io.h"
+#include "snapshot/compiled_scene.h"
 
 namespace rs {
 namespace {
@@ -81,7 +81,9 @@ SceneDocument partScene(const std::string& name, bool adaptive) {
     return doc;
 }
 
-bool sameBits(const Color& a, const Color& b) { return std::memcmp(&a, &b, sizeof(Color)) == 0; }
+bool sameBits(const Color& a, const Color& b) {
+    return std::memcmp(&a, &b, sizeof(Color)) == 0;
+}
 
 class PartFiles : public ::testing::Test {
 protected:
@@ -113,7 +115,8 @@ protected:
         header.tonemap = doc.render.tonemap;
         header.exposure = doc.render.exposure;
         const std::string path = (dir_ / (tag + "part-" + std::to_string(part.index) + "-of-" +
-                                          std::to_string(part.count) + ".exr")).string();
+                                          std::to_string(part.count) + ".exr"))
+                                     .string();
         std::string error;
         EXPECT_TRUE(writePart(path, header, r.image, r.ids, error)) << error;
         return path;
@@ -134,7 +137,8 @@ TEST_F(PartFiles, PartsOfEveryBundledScene_MergeBitIdenticallyToAWholeRender) {
             const RenderResult full = renderImage(scene, whole);
             for (int count : {1, 2, 3, 7}) {
                 std::vector<std::string> paths;
-                for (int i = count - 1; i >= 0; --i) paths.push_back(renderPart(doc, scene, {i, count}));
+                for (int i = count - 1; i >= 0; --i)
+                    paths.push_back(renderPart(doc, scene, {i, count}));
                 MergedImage merged;
                 std::string error;
                 ASSERT_TRUE(mergeParts(paths, merged, error)) << error;
@@ -186,7 +190,8 @@ TEST_F(PartFiles, Merge_RefusesMissingDoubledAndForeignParts) {
     const std::string foreign = renderPart(other, CompiledScene(other), {1, 3}, "other-");
     EXPECT_FALSE(mergeParts({p0, foreign, p2}, merged, error));
     EXPECT_NE(error.find("'" + foreign + "' belongs to another scene or other settings"),
-              std::string::npos) << error;
+              std::string::npos)
+        << error;
 
     SceneDocument otherScene = partScene("soft-shadows.scene.json", false);
     const std::string alien = renderPart(otherScene, CompiledScene(otherScene), {1, 3}, "scene-");

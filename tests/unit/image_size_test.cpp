@@ -1,7 +1,7 @@
 // Image size limits: each side and the area, in the API and in scene files.
-#include "io/scene_io.h"
-
 #include <gtest/gtest.h>
+
+#include "io/scene_io.h"
 
 namespace rs {
 namespace {

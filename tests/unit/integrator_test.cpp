@@ -1,8 +1,8 @@
 // The Whitted integrator against the illumination equation of scene-format.md, term by term.
+#include <gtest/gtest.h>
+
 #include "integrator/whitted.h"
 #include "test_scenes.h"
-
-#include <gtest/gtest.h>
 
 namespace rs {
 namespace {
@@ -183,8 +183,8 @@ TEST(Whitted, InsideGlassBeyondCriticalAngle_SendsAllEnergyToReflection) {
     TraceCounters counters;
     // From (0, 0.9, 0) along +x the ray meets the sphere where cos(incidence) = 0.436, i.e.
     // 64 degrees, beyond the critical 41.8 degrees for ior 1.5.
-    const Color tir = integrator.traceCamera(Ray::make(Vec3(0, 0.9f, 0), Vec3(1, 0, 0)), 1u,
-                                             counters);
+    const Color tir =
+        integrator.traceCamera(Ray::make(Vec3(0, 0.9f, 0), Vec3(1, 0, 0)), 1u, counters);
     expectColorNear(tir, Color(0.0f));
     // From the centre the ray leaves at normal incidence: transmitted share 1 - R0.
     const Color out = integrator.traceCamera(Ray::make(Vec3(0), Vec3(1, 0, 0)), 1u, counters);

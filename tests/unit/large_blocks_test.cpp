@@ -1,12 +1,12 @@
 // Frame-sized blocks: aligned to a huge page, advised for huge pages, usable end to end.
 #include "core/large_blocks.h"
-#include "image/image.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <string>
 
+#include "image/image.h"
 #include "vm_flags.h"
 
 namespace rs {

@@ -1,23 +1,24 @@
 // Light sampling four samples at a time gives the bits of one at a time: the disk strata and
 // the sampler's lists, on random shading points, seeds and sphere lights.
-#include "integrator/light_sampling.h"
-#include "integrator/trace_kernel.h"
-#include "integrator/sampling.h"
-#include "snapshot/compiled_scene.h"
-
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
 #include <random>
 
+#include "integrator/light_sampling.h"
+#include "integrator/sampling.h"
+#include "integrator/trace_kernel.h"
 #include "pixel_rays.h"
+#include "snapshot/compiled_scene.h"
 #include "test_scenes.h"
 
 namespace rs {
 namespace {
 
-uint32_t bitsOf(float v) { return std::bit_cast<uint32_t>(v); }
+uint32_t bitsOf(float v) {
+    return std::bit_cast<uint32_t>(v);
+}
 
 TEST(DiskStrataLanes, EveryLaneHasTheBitsOfTheSingleSample) {
     std::mt19937 rng(11);
@@ -55,7 +56,8 @@ TEST(SinCosQuarterLanes, EveryLaneHasTheBitsOfTheScalarAndIsNearTheLibrary) {
     std::mt19937 rng(23);
     std::uniform_real_distribution<float> u(-kPi / 4.0f, kPi / 4.0f);
     for (int trial = 0; trial < 20000; ++trial) {
-        const FloatLanes a{u(rng), u(rng), trial == 0 ? 0.0f : u(rng), trial == 0 ? kPi / 4.0f : u(rng)};
+        const FloatLanes a{u(rng), u(rng), trial == 0 ? 0.0f : u(rng),
+                           trial == 0 ? kPi / 4.0f : u(rng)};
         FloatLanes s, c;
         sinCosQuarter(a, s, c);
         for (int k = 0; k < kLaneWidth; ++k) {
@@ -64,7 +66,8 @@ TEST(SinCosQuarterLanes, EveryLaneHasTheBitsOfTheScalarAndIsNearTheLibrary) {
             ASSERT_EQ(bitsOf(s[k]), bitsOf(sk)) << "lane " << k << " a " << a[k];
             ASSERT_EQ(bitsOf(c[k]), bitsOf(ck)) << "lane " << k << " a " << a[k];
             const float ls = std::sin(a[k]), lc = std::cos(a[k]);
-            ASSERT_LE(std::abs(sk - ls), 2.0f * std::abs(std::nextafter(ls, 2.0f) - ls) + 1e-30f) << a[k];
+            ASSERT_LE(std::abs(sk - ls), 2.0f * std::abs(std::nextafter(ls, 2.0f) - ls) + 1e-30f)
+                << a[k];
             ASSERT_LE(std::abs(ck - lc), 2.0f * std::abs(std::nextafter(lc, 2.0f) - lc)) << a[k];
         }
     }
@@ -86,7 +89,8 @@ TEST(DiskStrataLanes, SamplesAreTheConcentricMappingWithinRounding) {
                 const float sy = 2.0f * (float(k / strata.cols) + jy) / float(strata.rows) - 1.0f;
                 const bool wide = std::abs(sx) > std::abs(sy);
                 const float r = wide ? sx : sy;
-                const float phi = wide ? kPi / 4.0f * (sy / sx) : kPi / 2.0f - kPi / 4.0f * (sx / sy);
+                const float phi =
+                    wide ? kPi / 4.0f * (sy / sx) : kPi / 2.0f - kPi / 4.0f * (sx / sy);
                 const Vec3 d = strata.sample(k, seed);
                 ASSERT_NEAR(d.x, r * std::cos(phi), 1e-6f) << "n " << n << " k " << k;
                 ASSERT_NEAR(d.y, r * std::sin(phi), 1e-6f) << "n " << n << " k " << k;
@@ -191,8 +195,10 @@ TEST(LightSamplerLanes, CentreLightsOfFourPointsHaveTheBitsOfOnePointAtATime) {
         for (std::size_t j = 0; j < n; ++j) {
             Vec3 p(u(rng), u(rng), u(rng));
             if (j % 17 == 5) p = scene.lights()[0].position;  // at the light: not listed
-            const Vec3 normal = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0.0f, 1e-3f, 0.0f));
-            const Vec3 view = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f, 0.0f, 0.0f));
+            const Vec3 normal =
+                glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0.0f, 1e-3f, 0.0f));
+            const Vec3 view =
+                glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f, 0.0f, 0.0f));
             points.set(j, p, normal, view);
             terms.push_back(randomSurface(rng));
             surface.set(j, terms.back());
@@ -225,8 +231,9 @@ TEST(LightSamplerLanes, CentreLightsOfFourPointsHaveTheBitsOfOnePointAtATime) {
                     ASSERT_EQ(bitsOf(centres.dist[j]), bitsOf(samples[0].dist));
                     ASSERT_EQ(bitsOf(centres.nl[j]), bitsOf(samples[0].nl));
                     const uint8_t occluded = blocked[j];
-                    const Color share = spanShare(scene, terms[j], normal, view, spans[0],
-                                                  samples.data(), withShadows ? &occluded : nullptr);
+                    const Color share =
+                        spanShare(scene, terms[j], normal, view, spans[0], samples.data(),
+                                  withShadows ? &occluded : nullptr);
                     if (share.x > terms[j].r * samples[0].nl * scene.lights()[li].power.x * 1.0001f)
                         ++highlights;
                     expected[j] += share;
@@ -298,17 +305,19 @@ TEST(TraceKernelLanes, ABatchOfCameraRaysHasTheBitsOfEachRayAlone) {
             TraceOutput out;
             out.color = batch.data();
             out.rays = batchRays.data();
-            ASSERT_TRUE(kernel.trace(pixels.batch(),
-                                     out, counters));
+            ASSERT_TRUE(kernel.trace(pixels.batch(), out, counters));
             std::size_t lit = 0;
             for (std::size_t i = 0; i < n; ++i) {
                 TraceOutput one;
                 one.color = &alone[i];
                 one.rays = &aloneRays[i];
                 kernel.trace(pixels.one(i), one, counters);
-                ASSERT_EQ(bitsOf(batch[i].x), bitsOf(alone[i].x)) << "pixel " << i << " options " << o;
-                ASSERT_EQ(bitsOf(batch[i].y), bitsOf(alone[i].y)) << "pixel " << i << " options " << o;
-                ASSERT_EQ(bitsOf(batch[i].z), bitsOf(alone[i].z)) << "pixel " << i << " options " << o;
+                ASSERT_EQ(bitsOf(batch[i].x), bitsOf(alone[i].x))
+                    << "pixel " << i << " options " << o;
+                ASSERT_EQ(bitsOf(batch[i].y), bitsOf(alone[i].y))
+                    << "pixel " << i << " options " << o;
+                ASSERT_EQ(bitsOf(batch[i].z), bitsOf(alone[i].z))
+                    << "pixel " << i << " options " << o;
                 ASSERT_EQ(batchRays[i], aloneRays[i]) << "pixel " << i << " options " << o;
                 lit += batch[i].x > 0.2f;
             }

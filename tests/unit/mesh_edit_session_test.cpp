@@ -1,11 +1,11 @@
 // Mesh geometry edits through the interactive session: the viewport must show the new mesh,
 // not a refit of the old one.
+#include <gtest/gtest.h>
+
 #include "integrator/renderer.h"
 #include "io/mesh_io.h"
 #include "session/render_session.h"
 #include "test_scenes.h"
-
-#include <gtest/gtest.h>
 
 namespace rs {
 namespace {

@@ -1,10 +1,5 @@
 // Mesh imports in a child process: a crashing importer, the triangles that come back, the
 // budgets, and the wire format that carries them.
-#include "io/child_process.h"
-#include "io/mesh_import.h"
-#include "io/mesh_io.h"
-#include "io/mesh_wire.h"
-
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -15,6 +10,11 @@
 #include <functional>
 #include <iterator>
 #include <string>
+
+#include "io/child_process.h"
+#include "io/mesh_import.h"
+#include "io/mesh_io.h"
+#include "io/mesh_wire.h"
 
 namespace rs {
 namespace {

@@ -1,11 +1,8 @@
 // Mesh loading through assimp: formats, node transforms, degenerate triangles and bad files.
 #include "io/mesh_io.h"
 
-#include "io/input_file.h"
-
-#include <gtest/gtest.h>
-
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -18,6 +15,8 @@
 #include <fstream>
 #include <future>
 #include <string>
+
+#include "io/input_file.h"
 
 namespace rs {
 namespace {
@@ -53,14 +52,12 @@ TEST_P(MeshFormat, LoadsWithTriangleCountAndBounds) {
 
 INSTANTIATE_TEST_SUITE_P(
     Formats, MeshFormat,
-    testing::Values(FormatCase{"cube.obj", 12, Vec3(0), Vec3(1)},
-                    FormatCase{"tetra.ply", 4, Vec3(0), Vec3(1)},
-                    FormatCase{"tetra.off", 4, Vec3(0), Vec3(1)},
-                    FormatCase{"tetra.stl", 4, Vec3(0), Vec3(1)},
-                    // The node translates the unit quad by +10 in x: transforms are applied.
-                    FormatCase{"quad_translated.gltf", 2, Vec3(10, 0, 0), Vec3(11, 1, 0)},
-                    FormatCase{"cube.glb", 12, Vec3(0), Vec3(1)},
-                    FormatCase{"cube.fbx", 12, Vec3(0), Vec3(1)}),
+    testing::Values(
+        FormatCase{"cube.obj", 12, Vec3(0), Vec3(1)}, FormatCase{"tetra.ply", 4, Vec3(0), Vec3(1)},
+        FormatCase{"tetra.off", 4, Vec3(0), Vec3(1)}, FormatCase{"tetra.stl", 4, Vec3(0), Vec3(1)},
+        // The node translates the unit quad by +10 in x: transforms are applied.
+        FormatCase{"quad_translated.gltf", 2, Vec3(10, 0, 0), Vec3(11, 1, 0)},
+        FormatCase{"cube.glb", 12, Vec3(0), Vec3(1)}, FormatCase{"cube.fbx", 12, Vec3(0), Vec3(1)}),
     [](const testing::TestParamInfo<FormatCase>& info) {
         std::string name = info.param.file;
         for (char& ch : name)
@@ -219,7 +216,8 @@ TEST_F(MeshFiles, OffLieWithGarbageAfterACount_IsRefusedQuickly) {
     expectRefusedQuickly(write("lie.off", garbage), "OFF header declares 1350000000 vertices");
     // Garbage glued to the vertex count is where the importer reads the face count: 0 faces,
     // which it refuses before allocating anything, so the check leaves it to the importer.
-    MeshLoadResult glued = loadMesh(write("lie2.off", "OFF\n1350000000abc 1 0\n0 0 0\n3 0 0 0\n"), true);
+    MeshLoadResult glued =
+        loadMesh(write("lie2.off", "OFF\n1350000000abc 1 0\n0 0 0\n3 0 0 0\n"), true);
     EXPECT_FALSE(glued.ok());
     EXPECT_NE(glued.error.find("no valid faces"), std::string::npos) << glued.error;
 }
@@ -237,7 +235,8 @@ TEST_F(MeshFiles, OffWithoutItsKeywordClaimingMoreThanTheFileHolds_IsRefusedQuic
     expectRefusedQuickly(write("glued.off", "NOFF1350000000 1 0\n0 0 0\n3 0 0 0\n"),
                          "OFF header declares 1350000000 vertices");
     // Other formats are not read as OFF: an OBJ's numbers are no counts.
-    MeshLoadResult obj = loadMesh(write("t.obj", "# 900000000 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), true);
+    MeshLoadResult obj =
+        loadMesh(write("t.obj", "# 900000000 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), true);
     EXPECT_TRUE(obj.ok()) << obj.error;
 }
 
@@ -253,14 +252,17 @@ TEST_F(MeshFiles, OffHeaderReadAsTheImporterReadsIt) {
                          "OFF header declares 1350000000 vertices");
     // A NUL ends the importer's text: the lines after it do not count.
     std::string nul("OFF\n4 4 0\n\0", 11);
-    nul += std::string(4000, ' ') + "\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+    nul += std::string(4000, ' ') +
+           "\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
     expectRefusedQuickly(write("nul.off", nul), "NUL byte at offset 10");
     // A file another name's importer takes is not checked as OFF unless it starts as one.
-    MeshLoadResult obj = loadMesh(write("off.obj", "# OFF 900000000 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), true);
+    MeshLoadResult obj =
+        loadMesh(write("off.obj", "# OFF 900000000 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), true);
     EXPECT_TRUE(obj.ok()) << obj.error;
     // What the importer refuses by itself ("OFF: Header is invalid") is left to it: the
     // check does not invent counts from a later token.
-    MeshLoadResult bang = loadMesh(write("bang.off", "! not a keyword\n0675000000 1 0\n0 0 0\n3 0 0 0\n"), true);
+    MeshLoadResult bang =
+        loadMesh(write("bang.off", "! not a keyword\n0675000000 1 0\n0 0 0\n3 0 0 0\n"), true);
     EXPECT_FALSE(bang.ok());
     EXPECT_EQ(bang.error.find("OFF header declares"), std::string::npos) << bang.error;
     // The importer takes a line for each vertex and face, a byte and a line end at the least

@@ -2,12 +2,12 @@
 // for tests that trace a whole image through the kernel as one batch.
 #pragma once
 
+#include <vector>
+
 #include "integrator/sampling.h"
 #include "integrator/trace_kernel.h"
 #include "scene/document.h"
 #include "snapshot/compiled_scene.h"
-
-#include <vector>
 
 namespace rs::test {
 

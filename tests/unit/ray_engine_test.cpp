@@ -1,12 +1,13 @@
 // The two ray engines answer alike: the same closest object at the same distance and the same
 // any-hit answers, on random rays over random scenes of every shape kind.
 #include "accel/ray_engine.h"
-#include "snapshot/compiled_scene.h"
-#include "test_scenes.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
+
+#include "snapshot/compiled_scene.h"
+#include "test_scenes.h"
 
 namespace rs {
 namespace {
@@ -45,7 +46,8 @@ SceneDocument randomScene(std::mt19937& rng) {
                 if (i % 2) o.transform.rotate = Vec3(30.0f * u(rng), 45.0f * u(rng), 0.0f);
                 break;
             case 2:
-                o.geometry = RectangleGeometry{Vec3(0.0f), Vec3(0.4f, 0.0f, 0.1f), Vec3(0.0f, 0.3f, 0.2f)};
+                o.geometry =
+                    RectangleGeometry{Vec3(0.0f), Vec3(0.4f, 0.0f, 0.1f), Vec3(0.0f, 0.3f, 0.2f)};
                 break;
             default: {
                 MeshGeometry g;
@@ -116,20 +118,23 @@ TEST(RayEngines, SameClosestAndAnyHitsOnRandomRays_EveryShapeKind) {
             const float side = r % 2 ? 1.0f : -1.0f;
             Vec3 d2 = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f));
             if (glm::dot(d2, n) * side < 0.0f) d2 = -d2;
-            compare(embree, builtin, Ray::make(p + side * n * builtin.epsilon(), d2), kInfinity, agree);
+            compare(embree, builtin, Ray::make(p + side * n * builtin.epsilon(), d2), kInfinity,
+                    agree);
         }
     }
-    std::printf("%d rays, %d hits, %d occluded; closest differs on %d, any-hit on %d; "
-                "largest relative t difference %.3g\n",
-                agree.rays, agree.hits, agree.occluded, agree.closestDiffer, agree.anyDiffer,
-                agree.largestTDiff);
+    std::printf(
+        "%d rays, %d hits, %d occluded; closest differs on %d, any-hit on %d; "
+        "largest relative t difference %.3g\n",
+        agree.rays, agree.hits, agree.occluded, agree.closestDiffer, agree.anyDiffer,
+        agree.largestTDiff);
     EXPECT_GE(agree.rays, 100000);
     // Both answers are common, so agreeing means something.
     EXPECT_GT(agree.hits, agree.rays / 4);
     EXPECT_LT(agree.hits, agree.rays - agree.rays / 20);
     // Embree's triangle test is watertight and ours is Moeller-Trumbore: rays through a shared
     // edge may pick the neighbour; that is all the disagreement allowed.
-    EXPECT_LE(agree.closestDiffer, agree.rays / 10000) << agree.closestDiffer << " of " << agree.rays;
+    EXPECT_LE(agree.closestDiffer, agree.rays / 10000)
+        << agree.closestDiffer << " of " << agree.rays;
     EXPECT_LE(agree.anyDiffer, agree.rays / 10000) << agree.anyDiffer << " of " << agree.rays;
     // And on the same surface the distance is issue 9's contract on every ray, grazing ones
     // included (Embree's own t, without EmbreeEngine's plane distance, is 3.4e-5 off there).
@@ -150,11 +155,13 @@ TEST(RayEngines, BatchAnswersEqualSingleRayAnswers) {
             dx[i] = d.x, dy[i] = d.y, dz[i] = d.z;
             if (i % 4 == 0) tmax[i] = 3.0f;
         }
-        const RayBatch batch{ox.data(), oy.data(), oz.data(), dx.data(), dy.data(), dz.data(), tmax.data(), n};
+        const RayBatch batch{ox.data(), oy.data(), oz.data(),   dx.data(),
+                             dy.data(), dz.data(), tmax.data(), n};
         std::vector<float> t(n), nx(n), ny(n), nz(n);
         std::vector<uint32_t> slot(n);
         std::vector<uint8_t> occluded(n);
-        scene.engine().closestHit(batch, HitBatch{t.data(), nx.data(), ny.data(), nz.data(), slot.data()});
+        scene.engine().closestHit(batch,
+                                  HitBatch{t.data(), nx.data(), ny.data(), nz.data(), slot.data()});
         scene.engine().anyHit(batch, occluded.data());
         for (std::size_t i = 0; i < n; ++i) {
             EngineHit h;
@@ -195,7 +202,8 @@ TEST(RayEngines, MovingAMeshRecommitsAndAnswersLikeARebuild) {
     const CompiledScene rebuilt(doc, nullptr, EngineKind::Embree);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     for (int r = 0; r < 20000; ++r) {
-        const Ray ray = Ray::make(Vec3(0.0f, 0.0f, 0.0f), glm::normalize(Vec3(u(rng), u(rng), -1.0f)));
+        const Ray ray =
+            Ray::make(Vec3(0.0f, 0.0f, 0.0f), glm::normalize(Vec3(u(rng), u(rng), -1.0f)));
         EngineHit a, b;
         const bool fa = refit.engine().closestHit(ray, kInfinity, a);
         const bool fb = rebuilt.engine().closestHit(ray, kInfinity, b);

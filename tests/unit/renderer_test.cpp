@@ -1,6 +1,5 @@
 // Full renders: thread-count determinism, sampling patterns, adaptive supersampling, cancel.
 #include "integrator/renderer.h"
-#include "test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +7,8 @@
 #include <chrono>
 #include <set>
 #include <thread>
+
+#include "test_scenes.h"
 
 namespace rs {
 namespace {
@@ -100,11 +101,14 @@ TEST(Renderer, AdaptiveSupersampling_MatchesFullSupersamplingOnEdgesOnly) {
     int supersampled = 0, kept = 0;
     for (std::size_t i = 0; i < full.image.pixels.size(); ++i) {
         const Color a = adaptive.image.pixels[i];
-        if (a == full.image.pixels[i] && a != single.image.pixels[i]) ++supersampled;
-        else if (a == single.image.pixels[i]) ++kept;
-        else ADD_FAILURE() << "pixel " << i << " is neither the 1-sample nor the 4-sample value";
+        if (a == full.image.pixels[i] && a != single.image.pixels[i])
+            ++supersampled;
+        else if (a == single.image.pixels[i])
+            ++kept;
+        else
+            ADD_FAILURE() << "pixel " << i << " is neither the 1-sample nor the 4-sample value";
     }
-    EXPECT_GT(supersampled, 50);  // Silhouettes were refined...
+    EXPECT_GT(supersampled, 50);                         // Silhouettes were refined...
     EXPECT_GT(kept, int(full.image.pixels.size()) / 2);  // ...flat areas were not.
     EXPECT_LT(adaptive.rays, full.rays);
 }
@@ -314,13 +318,15 @@ TEST(Renderer, GlassPairAtDepth1000_MinWeightBoundsTheTree) {
     // The default min_weight (1/255) keeps at most 255 rays per level per camera ray; in
     // practice the trees die out within a few dozen levels.
     for (EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
-        const RenderResult deep = renderImage(CompiledScene(glassPair(1000, 1.0f / 255.0f), nullptr, engine));
+        const RenderResult deep =
+            renderImage(CompiledScene(glassPair(1000, 1.0f / 255.0f), nullptr, engine));
         EXPECT_FALSE(deep.cancelled);
         const uint64_t pixels = 64 * 36;
         EXPECT_LT(deep.rays, pixels * 20000) << engineName(engine);
         // And min_weight changes the picture only by what it cut: at depth 8 the cut rays
         // weigh less than 1/255 each.
-        const RenderResult cut = renderImage(CompiledScene(glassPair(8, 1.0f / 255.0f), nullptr, engine));
+        const RenderResult cut =
+            renderImage(CompiledScene(glassPair(8, 1.0f / 255.0f), nullptr, engine));
         const RenderResult all = renderImage(CompiledScene(glassPair(8, 0.0f), nullptr, engine));
         EXPECT_LT(cut.rays, all.rays);
         float worst = 0.0f;
@@ -347,7 +353,8 @@ TEST(Renderer, CancelStopsInsideADeepRayTree) {
     });
     const auto start = std::chrono::steady_clock::now();
     const RenderResult r = renderImage(CompiledScene(glassPair(80, 0.0f)), options);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     canceller.join();
     EXPECT_TRUE(r.cancelled);
     EXPECT_EQ(r.image.pixels.size(), std::size_t(64 * 36));

@@ -213,12 +213,13 @@ TEST(SceneRoundTrip, RandomDocuments_SaveAndLoadToTheSameDocument) {
 TEST(SceneRoundTrip, MeshPathSpellings_SaveAndLoadToTheSameDocument) {
     // Found by the scene reader's fuzzer: "meshes//cube.obj" saved as "meshes/cube.obj" and
     // the reloaded document compared unequal, though it is the same mesh file.
-    const std::string spellings[] = {"meshes/cube.obj", "meshes//cube.obj", "./meshes/cube.obj",
-                                     "meshes/./cube.obj", "meshes/../meshes/cube.obj",
-                                     kData + "/meshes/cube.obj"};
+    const std::string spellings[] = {"meshes/cube.obj",           "meshes//cube.obj",
+                                     "./meshes/cube.obj",         "meshes/./cube.obj",
+                                     "meshes/../meshes/cube.obj", kData + "/meshes/cube.obj"};
     for (const std::string& file : spellings) {
         const std::string text = R"({ "format": "raystudio-scene", "version": 1,
-            "objects": [ { "name": "m", "type": "mesh", "file": ")" + file + R"(" } ] })";
+            "objects": [ { "name": "m", "type": "mesh", "file": ")" +
+                                 file + R"(" } ] })";
         SceneLoadResult first = parseScene(text, kData);
         ASSERT_TRUE(first.ok()) << file << ": " << first.errorText();
         const std::string saved = serializeScene(first.document, kData);
@@ -230,9 +231,11 @@ TEST(SceneRoundTrip, MeshPathSpellings_SaveAndLoadToTheSameDocument) {
     }
     // A different file, or the same file with other normals, is a different mesh.
     SceneLoadResult cube = parseScene(R"({ "format": "raystudio-scene", "version": 1,
-        "objects": [ { "name": "m", "type": "mesh", "file": "meshes/cube.obj" } ] })", kData);
+        "objects": [ { "name": "m", "type": "mesh", "file": "meshes/cube.obj" } ] })",
+                                      kData);
     SceneLoadResult tetra = parseScene(R"({ "format": "raystudio-scene", "version": 1,
-        "objects": [ { "name": "m", "type": "mesh", "file": "meshes/tetra.ply" } ] })", kData);
+        "objects": [ { "name": "m", "type": "mesh", "file": "meshes/tetra.ply" } ] })",
+                                       kData);
     ASSERT_TRUE(cube.ok() && tetra.ok()) << cube.errorText() << tetra.errorText();
     EXPECT_FALSE(cube.document.sameContent(tetra.document));
     SceneDocument flat = cube.document;

@@ -1,8 +1,6 @@
 // Per-thread scratch arenas: blocks come from a huge-page-advised arena of the calling thread,
 // the trace kernel's workspace lives there, and frees from anywhere and thread exits are safe.
 #include "core/scratch_arena.h"
-#include "integrator/trace_kernel.h"
-#include "snapshot/compiled_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +9,9 @@
 #include <thread>
 #include <vector>
 
+#include "integrator/trace_kernel.h"
 #include "pixel_rays.h"
+#include "snapshot/compiled_scene.h"
 #include "test_scenes.h"
 #include "vm_flags.h"
 

@@ -2,20 +2,18 @@
 // the area limit, or a bad_alloc under an address-space limit) reports the error through its
 // observer, keeps its document and renders again after the next edit; so does one whose
 // update() cannot allocate the new snapshot.
-#include "session/render_session.h"
-#include "test_scenes.h"
-
 #include <gtest/gtest.h>
-
-#include <atomic>
-
 #include <sys/resource.h>
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <mutex>
+
+#include "session/render_session.h"
+#include "test_scenes.h"
 
 namespace rs {
 namespace {

@@ -4,13 +4,13 @@
 // from-scratch render in colour, and a from-scratch session's frame in object id, depth and
 // normal, with both engines, on a scene of boxes, rectangles, a smooth mesh, scaled spheres
 // and a sphere light.
-#include "edit_scenes.h"
-#include "integrator/renderer.h"
-#include "session/render_session.h"
-
 #include <gtest/gtest.h>
 
 #include <random>
+
+#include "edit_scenes.h"
+#include "integrator/renderer.h"
+#include "session/render_session.h"
 
 namespace rs {
 namespace {
@@ -68,7 +68,8 @@ void expectMatchesFromScratch(const RenderSession& session, const SceneDocument&
         ids += edited.id[i] != scratch.id[i];
         fullIds += edited.id[i] != full.ids[i];
         if (std::isinf(edited.depth[i]) || std::isinf(scratch.depth[i])) {
-            worstDepth = std::max(worstDepth, edited.depth[i] == scratch.depth[i] ? 0.0f : kInfinity);
+            worstDepth =
+                std::max(worstDepth, edited.depth[i] == scratch.depth[i] ? 0.0f : kInfinity);
         } else {
             worstDepth = std::max(worstDepth, std::abs(edited.depth[i] - scratch.depth[i]) /
                                                   std::max(1.0f, scratch.depth[i]));
@@ -120,7 +121,8 @@ void randomEdit(SceneDocument& doc, std::mt19937& rng, std::string& kind) {
         case 3:
             kind = "smooth normals";
             for (Object& any : doc.objects)
-                if (auto* m = std::get_if<MeshGeometry>(&any.geometry)) m->smoothNormals = !m->smoothNormals;
+                if (auto* m = std::get_if<MeshGeometry>(&any.geometry))
+                    m->smoothNormals = !m->smoothNormals;
             break;
         case 4:
             kind = "exposure and tone map";
@@ -130,11 +132,21 @@ void randomEdit(SceneDocument& doc, std::mt19937& rng, std::string& kind) {
         case 5:
             kind = "render settings";
             switch (rng() % 5) {
-                case 0: doc.render.maxDepth = 1 + int(rng() % 4); break;
-                case 1: doc.render.shadowSamples = int(rng() % 5); break;
-                case 2: doc.render.background = Color(0.2f + 0.2f * u(rng), 0.3f, 0.4f); break;
-                case 3: doc.render.ambient = Color(0.05f + 0.04f * u(rng)); break;
-                default: doc.render.minWeight = rng() % 2 ? 0.0f : 0.02f; break;
+                case 0:
+                    doc.render.maxDepth = 1 + int(rng() % 4);
+                    break;
+                case 1:
+                    doc.render.shadowSamples = int(rng() % 5);
+                    break;
+                case 2:
+                    doc.render.background = Color(0.2f + 0.2f * u(rng), 0.3f, 0.4f);
+                    break;
+                case 3:
+                    doc.render.ambient = Color(0.05f + 0.04f * u(rng));
+                    break;
+                default:
+                    doc.render.minWeight = rng() % 2 ? 0.0f : 0.02f;
+                    break;
             }
             break;
         case 6: {

@@ -1,12 +1,12 @@
 // Per-tile summaries: an edit's marking and the next pass visit only the tiles its dirty
 // region covers (counted through the session's statistics), the tile state counts and
 // summaries keep describing the pixels, and the refined frame still equals a full render.
-#include "session/dirty_region.h"
-#include "session_test_support.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
+
+#include "session/dirty_region.h"
+#include "session_test_support.h"
 
 namespace rs {
 namespace {

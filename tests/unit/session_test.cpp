@@ -1,9 +1,9 @@
 // The interactive session's invariant: after any edits and refinement, frame == full render.
-#include "session_test_support.h"
-
 #include <gtest/gtest.h>
 
 #include <random>
+
+#include "session_test_support.h"
 
 namespace rs {
 namespace {
@@ -24,11 +24,14 @@ Object* randomObject(SceneDocument& doc, std::mt19937& rng) {
 void randomEdit(SceneDocument& doc, std::mt19937& rng) {
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     switch (rng() % 10) {
-        case 0: case 1: case 2:  // Move (the common case: refit + dirty regions).
+        case 0:
+        case 1:
+        case 2:  // Move (the common case: refit + dirty regions).
             if (Object* o = randomObject(doc, rng))
                 o->transform.translate += Vec3(0.4f * u(rng), 0.3f * u(rng), 0.4f * u(rng));
             break;
-        case 3:  // Rotate or scale (uniformly or not): frames change, spheres may leave world space.
+        case 3:  // Rotate or scale (uniformly or not): frames change, spheres may leave world
+                 // space.
             if (Object* o = randomObject(doc, rng)) {
                 if (rng() % 2)
                     o->transform.rotate += Vec3(20.0f * u(rng), 30.0f * u(rng), 0.0f);
@@ -38,25 +41,30 @@ void randomEdit(SceneDocument& doc, std::mt19937& rng) {
             }
             break;
         case 4:  // Material edit.
-            doc.materials[rng() % doc.materials.size()].color = Color(0.5f + 0.4f * u(rng), 0.5f, 0.6f);
+            doc.materials[rng() % doc.materials.size()].color =
+                Color(0.5f + 0.4f * u(rng), 0.5f, 0.6f);
             break;
         case 5:  // Object switches material (diffuse <-> mirror <-> glass).
-            if (Object* o = randomObject(doc, rng)) o->material = doc.materials[rng() % doc.materials.size()].name;
+            if (Object* o = randomObject(doc, rng))
+                o->material = doc.materials[rng() % doc.materials.size()].name;
             break;
         case 6:  // Light edits: move, brightness, add, remove.
             switch (rng() % 4) {
                 case 0:
-                    doc.lights[rng() % doc.lights.size()].position += Vec3(0.3f * u(rng), 0.0f, 0.3f * u(rng));
+                    doc.lights[rng() % doc.lights.size()].position +=
+                        Vec3(0.3f * u(rng), 0.0f, 0.3f * u(rng));
                     break;
                 case 1:
-                    doc.lights[rng() % doc.lights.size()].intensity *= 1.0f + 0.5f * u(rng) * u(rng);
+                    doc.lights[rng() % doc.lights.size()].intensity *=
+                        1.0f + 0.5f * u(rng) * u(rng);
                     break;
                 case 2:
                     test::addPointLight(doc, "fill " + std::to_string(doc.nextId),
                                         Vec3(2.0f * u(rng), 1.0f + u(rng), -3.0f + u(rng)), 0.3f);
                     break;
                 default:
-                    if (doc.lights.size() > 1) doc.lights.erase(doc.lights.begin() + long(rng() % doc.lights.size()));
+                    if (doc.lights.size() > 1)
+                        doc.lights.erase(doc.lights.begin() + long(rng() % doc.lights.size()));
                     break;
             }
             break;
@@ -64,8 +72,9 @@ void randomEdit(SceneDocument& doc, std::mt19937& rng) {
             if (rng() % 2 && doc.objects.size() > 3) {
                 doc.objects.erase(doc.objects.begin() + long(2 + rng() % (doc.objects.size() - 2)));
             } else {
-                test::addSphere(doc, "added " + std::to_string(doc.nextId), Vec3(u(rng), -1.5f, -4.5f + u(rng)),
-                                0.3f, doc.materials[rng() % doc.materials.size()].name);
+                test::addSphere(doc, "added " + std::to_string(doc.nextId),
+                                Vec3(u(rng), -1.5f, -4.5f + u(rng)), 0.3f,
+                                doc.materials[rng() % doc.materials.size()].name);
             }
             break;
         case 8:  // Visibility toggle.
@@ -100,7 +109,8 @@ void runRandomEdits(const InteractionPolicy& policy, uint32_t seed, bool adaptiv
         }
         if (drag) session.endInteraction();
         ASSERT_TRUE(session.waitUntilComplete(60s));
-        EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f) << "seed " << seed << " round " << round;
+        EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f)
+            << "seed " << seed << " round " << round;
     }
 }
 
@@ -146,7 +156,8 @@ TEST(RenderSession, RandomEdits_HardShadowsAndGovernor_FrameEqualsFullRender) {
 
 TEST(RenderSession, RandomEdits_BoxesRectanglesMeshes_FrameEqualsFullRender) {
     // Rotated boxes and meshes are traced in their own frame and refit as instances.
-    for (uint32_t seed : {21u, 22u}) runRandomEdits(InteractionPolicy{}, seed, true, mixedRoom(false));
+    for (uint32_t seed : {21u, 22u})
+        runRandomEdits(InteractionPolicy{}, seed, true, mixedRoom(false));
     InteractionPolicy shortcuts;
     shortcuts.governorTargetMs = 0.0;
     shortcuts.boxProxy = true;
@@ -338,8 +349,10 @@ TEST(RenderSession, LightEdits_RetraceOnlyPixelsTheLightCanReach) {
         for (Light& candidate : doc.lights)
             if (candidate.id == under) l = &candidate;
         ASSERT_NE(l, nullptr);
-        if (k == 0) l->position.x += 0.4f;
-        else l->intensity = 0.8f;
+        if (k == 0)
+            l->position.x += 0.4f;
+        else
+            l->intensity = 0.8f;
         ASSERT_TRUE(session.waitForUpdate(session.update(doc), 30s));
         const std::size_t marked = session.stats().lastDirtyPixels;
         EXPECT_GT(marked, 0u);

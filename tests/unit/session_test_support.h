@@ -2,13 +2,13 @@
 // rooms the session tests edit.
 #pragma once
 
-#include "integrator/renderer.h"
-#include "session/render_session.h"
-#include "test_scenes.h"
-
 #include <gtest/gtest.h>
 
 #include <chrono>
+
+#include "integrator/renderer.h"
+#include "session/render_session.h"
+#include "test_scenes.h"
 
 namespace rs::test {
 
@@ -51,7 +51,8 @@ inline SceneDocument mixedRoom(bool orthographic) {
     Object panel;
     panel.name = "panel";
     panel.material = "mirror";
-    panel.geometry = RectangleGeometry{Vec3(2.0f, -1.0f, -6.0f), Vec3(0.6f, 0, 0.3f), Vec3(0, 0.6f, 0)};
+    panel.geometry =
+        RectangleGeometry{Vec3(2.0f, -1.0f, -6.0f), Vec3(0.6f, 0, 0.3f), Vec3(0, 0.6f, 0)};
     doc.addObject(panel);
     Object mesh;
     mesh.name = "mesh";
@@ -83,6 +84,5 @@ inline SceneDocument testRoom() {
     doc.render.shadowSamples = 4;
     return doc;
 }
-
 
 }  // namespace rs::test

@@ -1,13 +1,13 @@
 // Documents posted to the session: update() returns before the snapshot build, rapid
 // updates coalesce, and a failed build is reported while the session keeps its frame.
-#include "session_test_support.h"
-
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <condition_variable>
 #include <future>
 #include <mutex>
+
+#include "session_test_support.h"
 
 namespace rs {
 namespace {
@@ -162,7 +162,6 @@ TEST(RenderSession, AFailedSnapshotBuild_IsReportedToTheObserver_AndTheNextUpdat
     EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
     EXPECT_EQ(log.messages().size(), 1u);
 }
-
 
 }  // namespace
 }  // namespace rs

@@ -1,10 +1,10 @@
 // Small scenes built in code for the integrator and renderer tests.
 #pragma once
 
+#include <memory>
+
 #include "scene/document.h"
 #include "scene/mesh_data.h"
-
-#include <memory>
 
 namespace rs::test {
 

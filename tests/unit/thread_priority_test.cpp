@@ -2,12 +2,11 @@
 #include "core/thread_priority.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <tbb/blocked_range.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
-
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -121,8 +120,8 @@ TEST(BackgroundArena, RestoringIsPossibleExactlyWhenTheProbeSaysSo) {
     t.join();
     if (!lowered) GTEST_SKIP() << "the test runs at too high a nice value";
     EXPECT_EQ(restored, rs::canRestorePriority());
-    EXPECT_EQ(rs::availableLowerMode(), restored ? rs::LowerMode::kWhileInside
-                                                 : rs::LowerMode::kForGood);
+    EXPECT_EQ(rs::availableLowerMode(),
+              restored ? rs::LowerMode::kWhileInside : rs::LowerMode::kForGood);
 }
 
 namespace {

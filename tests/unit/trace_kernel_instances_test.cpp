@@ -2,28 +2,29 @@
 // for (bookkeeping outputs or not, mirror and glass shown as Lambert or not). Asking for more
 // outputs must never change a pixel: the colour-only instance and the instance that also
 // counts rays, keeps segments and records and the first hits give the same bits.
-#include "integrator/trace_kernel.h"
-#include "integrator/sampling.h"
-#include "snapshot/compiled_scene.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <bit>
 #include <vector>
 
+#include "integrator/sampling.h"
+#include "integrator/trace_kernel.h"
 #include "pixel_rays.h"
+#include "snapshot/compiled_scene.h"
 #include "test_scenes.h"
 
 namespace rs {
 namespace {
 
-uint32_t bitsOf(float v) { return std::bit_cast<uint32_t>(v); }
+uint32_t bitsOf(float v) {
+    return std::bit_cast<uint32_t>(v);
+}
 
 TEST(TraceKernelInstances, AskingForBookkeepingOutputsLeavesEveryPixelsBits) {
-    // The small room without its back wall (rays that miss meet a coloured background), a glass ball with no
-    // local share (no shading point of its own unless shown as Lambert), a mirror, a point
-    // light and a sampled sphere light.
+    // The small room without its back wall (rays that miss meet a coloured background), a glass
+    // ball with no local share (no shading point of its own unless shown as Lambert), a mirror, a
+    // point light and a sampled sphere light.
     SceneDocument doc = test::smallRoom(40, 30);
     doc.render.background = Color(0.2f, 0.3f, 0.5f);
     doc.render.shadowSamples = 4;
@@ -65,9 +66,12 @@ TEST(TraceKernelInstances, AskingForBookkeepingOutputsLeavesEveryPixelsBits) {
             uint64_t counted = 0;
             std::size_t missed = 0, recorded = 0;
             for (std::size_t i = 0; i < n; ++i) {
-                ASSERT_EQ(bitsOf(plain[i].x), bitsOf(kept[i].x)) << "pixel " << i << " options " << o;
-                ASSERT_EQ(bitsOf(plain[i].y), bitsOf(kept[i].y)) << "pixel " << i << " options " << o;
-                ASSERT_EQ(bitsOf(plain[i].z), bitsOf(kept[i].z)) << "pixel " << i << " options " << o;
+                ASSERT_EQ(bitsOf(plain[i].x), bitsOf(kept[i].x))
+                    << "pixel " << i << " options " << o;
+                ASSERT_EQ(bitsOf(plain[i].y), bitsOf(kept[i].y))
+                    << "pixel " << i << " options " << o;
+                ASSERT_EQ(bitsOf(plain[i].z), bitsOf(kept[i].z))
+                    << "pixel " << i << " options " << o;
                 ASSERT_EQ(primary[i].id, ids[i]) << "pixel " << i << " options " << o;
                 counted += rayCounts[i];
                 missed += ids[i] == kNoObject;

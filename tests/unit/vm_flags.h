@@ -27,8 +27,8 @@ inline std::string vmFlagsOf(const void* p) {
         std::uintptr_t lo = 0, hi = 0;
         char dash = 0;
         std::istringstream head(line);
-        if (head >> std::hex >> lo >> dash >> hi && dash == '-' && line.find(' ') != std::string::npos &&
-            line.find(':') > line.find(' ')) {
+        if (head >> std::hex >> lo >> dash >> hi && dash == '-' &&
+            line.find(' ') != std::string::npos && line.find(':') > line.find(' ')) {
             inside = lo <= at && at < hi;
             continue;
         }
