@@ -1,5 +1,5 @@
 // Closed forms against the renderer: where a term of the illumination equation has an exact
-// value (scene-format.md), the picture must show it. Different colours sit behind every branch,
+// value (scenes/FORMAT.md), the picture must show it. Different colours sit behind every branch,
 // so a term given the wrong weight, or sent down the wrong branch, changes the value.
 #include <gtest/gtest.h>
 
@@ -110,25 +110,55 @@ struct SplitScene {
     }
 };
 
+/// Schlick's Fresnel reflectance written out here, never through the product's schlick():
+/// R0 = ((n1 - n2) / (n1 + n2))^2 and F = R0 + (1 - R0) (1 - cos)^5, with `cosIncident` the
+/// cosine on the side the ray comes from (scenes/FORMAT.md: "evaluated with the cosine on the
+/// incident side", the ratio inverted inside a glass body).
+double fresnelSchlick(double cosIncident, double n1, double n2) {
+    const double r0 = ((n1 - n2) / (n1 + n2)) * ((n1 - n2) / (n1 + n2));
+    return r0 + (1.0 - r0) * std::pow(1.0 - cosIncident, 5.0);
+}
+
+double cosDegrees(double degrees) {
+    return std::cos(degrees * 3.14159265358979323846 / 180.0);
+}
+
+// The approximation itself between its end points, where a wrong exponent shows: at 60
+// degrees (1 - cos)^5 = 1/32 but (1 - cos)^4 = 1/16, F = 0.07 against 0.1.
+TEST(Analytic, Schlick_BetweenItsEndPoints_IsTheFifthPowerClosedForm) {
+    EXPECT_NEAR(fresnelSchlick(0.5, 1.0, 1.5), 0.04 + 0.96 / 32.0, 1e-12);  // the helper itself
+    for (float ior : {1.33f, 1.5f, 2.4f})
+        for (double degrees : {0.0, 15.0, 30.0, 45.0, 60.0, 70.0, 80.0, 89.0}) {
+            const double c = cosDegrees(degrees);
+            // From air into the body and, with the ratio inverted, from inside it out.
+            EXPECT_NEAR(schlick(float(c), ior), fresnelSchlick(c, 1.0, ior), 2e-6)
+                << "ior " << ior << " at " << degrees << " degrees";
+            EXPECT_NEAR(fresnelSchlick(c, ior, 1.0), fresnelSchlick(c, 1.0, ior), 1e-12);
+        }
+}
+
 TEST(Analytic, Schlick_SplitsReflectedAndRefractedColoursByF) {
     const SplitScene s(0.0f, 1.0f);
-    for (float degrees : {0.0f, 30.0f, 60.0f, 80.0f}) {
-        const float f = schlick(std::cos(glm::radians(degrees)), 1.5f);
+    for (double degrees : {0.0, 15.0, 30.0, 45.0, 60.0, 70.0, 80.0}) {
+        const float f = float(fresnelSchlick(cosDegrees(degrees), 1.0, 1.5));
         const Color expected = f * s.reflected + (1.0f - f) * s.refracted;
-        expectColorNear(s.trace(degrees), expected, 1e-5f,
+        expectColorNear(s.trace(float(degrees)), expected, 1e-5f,
                         "at " + std::to_string(degrees) + " degrees, F = " + std::to_string(f));
     }
-    // The numbers themselves, so a wrong R0 in schlick() cannot cancel out: R0 = 0.04.
+    // The numbers themselves: R0 = 0.04 at normal incidence, 0.04 + 0.96 / 32 = 0.07 at 60.
     expectColorNear(s.trace(0.0f), 0.04f * s.reflected + 0.96f * s.refracted, 1e-5f, "R0");
+    expectColorNear(s.trace(60.0f), 0.07f * s.reflected + 0.93f * s.refracted, 1e-5f, "60 degrees");
 }
 
 TEST(Analytic, MirrorPlusGlass_WeightsEachBranchAsTheEquation) {
     // kr = 0.25, kt = 0.6, kd = 0: 0.25 * reflected + 0.6 * (F * reflected + (1 - F) * refracted).
     const SplitScene s(0.25f, 0.6f);
-    const float f = schlick(std::cos(glm::radians(45.0f)), 1.5f);
-    expectColorNear(s.trace(45.0f),
-                    0.25f * s.reflected + 0.6f * (f * s.reflected + (1.0f - f) * s.refracted),
-                    1e-5f, "kr 0.25, kt 0.6 at 45 degrees");
+    for (double degrees : {45.0, 65.0}) {
+        const float f = float(fresnelSchlick(cosDegrees(degrees), 1.0, 1.5));
+        expectColorNear(s.trace(float(degrees)),
+                        0.25f * s.reflected + 0.6f * (f * s.reflected + (1.0f - f) * s.refracted),
+                        1e-5f, "kr 0.25, kt 0.6 at " + std::to_string(degrees) + " degrees");
+    }
 }
 
 /// A camera inside a glass slab looks up at its top face at `degrees` from the normal: the
@@ -154,19 +184,23 @@ Color insideSlab(float degrees) {
 
 TEST(Analytic, TotalInternalReflection_AtTheCriticalAngleSwitchesAllToReflection) {
     const Color sky(0.1f, 0.2f, 0.9f), red(0.9f, 0.15f, 0.05f);
-    const float critical = glm::degrees(std::asin(1.0f / 1.5f));  // 41.81 degrees
-    const float eps = 0.05f;
-    // Just below: the ray leaves; F is Schlick's with the cosine on the inside.
-    const float fBelow = schlick(std::cos(glm::radians(critical - eps)), 1.5f);
-    expectColorNear(insideSlab(critical - eps), fBelow * red + (1.0f - fBelow) * sky, 1e-4f,
-                    "critical - eps");
-    EXPECT_LT(fBelow, 0.05f);
+    // Leaving glass (n1 = 1.5) into air (n2 = 1): the ratio inverted, the cosine inside.
+    auto leaving = [&](double degrees) {
+        const float f = float(fresnelSchlick(cosDegrees(degrees), 1.5, 1.0));
+        return f * red + (1.0f - f) * sky;
+    };
+    const double critical = std::asin(1.0 / 1.5) * 180.0 / 3.14159265358979323846;  // 41.81
+    const double eps = 0.05;
+    // Below it the ray leaves, F of the inside cosine: at 0 degrees R0 = 0.04.
+    expectColorNear(insideSlab(0.0f), 0.04f * red + 0.96f * sky, 1e-4f, "0 degrees");
+    for (double degrees : {10.0, 20.0, 30.0, 35.0, 40.0, critical - eps})
+        expectColorNear(insideSlab(float(degrees)), leaving(degrees), 1e-4f,
+                        std::to_string(degrees) + " degrees inside");
+    EXPECT_LT(fresnelSchlick(cosDegrees(critical - eps), 1.5, 1.0), 0.05);
     // Just above: no refracted ray; the whole refractive part goes to the reflected one.
-    expectColorNear(insideSlab(critical + eps), red, 1e-5f, "critical + eps");
-    // Far from it on either side the same two answers.
-    const float fSteep = schlick(std::cos(glm::radians(20.0f)), 1.5f);
-    expectColorNear(insideSlab(20.0f), fSteep * red + (1.0f - fSteep) * sky, 1e-4f, "20 degrees");
-    expectColorNear(insideSlab(60.0f), red, 1e-5f, "60 degrees");
+    for (double degrees : {critical + eps, 45.0, 60.0, 80.0})
+        expectColorNear(insideSlab(float(degrees)), red, 1e-5f,
+                        std::to_string(degrees) + " degrees inside, past the critical angle");
 }
 
 // A sphere light of radius R at height H above the floor, a straight occluder edge at height h
