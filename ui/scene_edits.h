@@ -39,7 +39,7 @@ std::string makeMaterialUnique(SceneDocument& doc, ObjectId id);
 /// Finds a material by name for editing.
 Material* findMaterial(SceneDocument& doc, const std::string& name);
 
-// The material list (scene-format.md: names are non-empty and unique among the materials).
+// The material list (scenes/FORMAT.md: names are non-empty and unique among the materials).
 /// Why `name` cannot be the name of material `current` (empty `current`: a new one); empty
 /// when it can.
 std::string materialNameError(const SceneDocument& doc, const std::string& current,

@@ -1,4 +1,4 @@
-// The light terms of the illumination equation (scene-format.md), written once: where a
+// The light terms of the illumination equation (scenes/FORMAT.md), written once: where a
 // shading point samples each light, and what those samples add given which are shadowed.
 // The trace kernel, deferred shadows and every engine's shadow queries go through these.
 #pragma once

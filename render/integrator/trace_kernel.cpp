@@ -305,7 +305,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
         // Reflection is traced once and weighted by the mirror part plus the glass part's
         // Fresnel (or all of the glass part on total internal reflection). A child whose
-        // accumulated weight falls below min_weight is not traced (scene-format.md).
+        // accumulated weight falls below min_weight is not traced (scenes/FORMAT.md).
         float reflectWeight = reflectivity;
         if (transparency > 0.0f) {
             const float eta = pts.inside[i] ? m.ior : 1.0f / m.ior;

@@ -1,6 +1,6 @@
 // The one trace path: camera rays in batches, then each level of reflection and refraction
 // rays, intersected by the snapshot's ray engine and shaded here (the illumination equation
-// of scene-format.md, written once). Full renders, every session pass and single rays use it.
+// of scenes/FORMAT.md, written once). Full renders, every session pass and single rays use it.
 #pragma once
 
 #include <cstddef>

@@ -1,4 +1,4 @@
-// The Whitted integrator: the illumination equation of scene-format.md, recursively.
+// The Whitted integrator: the illumination equation of scenes/FORMAT.md, recursively.
 #pragma once
 
 #include <algorithm>

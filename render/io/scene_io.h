@@ -1,4 +1,4 @@
-// Reading and writing scene files, format version 1 (shared/design/scene-format.md).
+// Reading and writing scene files, format version 1 (scenes/FORMAT.md).
 #pragma once
 
 #include <string>

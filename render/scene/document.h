@@ -24,7 +24,7 @@ using Extras = std::vector<std::pair<std::string, std::string>>;
 enum class Projection { Perspective, Orthographic };
 enum class ToneMap { Clamp, Linear, Reinhard, Aces };
 
-/// The scene camera (scene-format.md, "camera").
+/// The scene camera (scenes/FORMAT.md, "camera").
 struct Camera {
     Projection projection = Projection::Perspective;
     Vec3 position{0.0f, 0.0f, 0.0f};
@@ -50,13 +50,13 @@ inline constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;
 /// message that refuses it (naming the limit).
 std::string imageSizeError(int width, int height);
 
-/// Render settings (scene-format.md, "render").
+/// Render settings (scenes/FORMAT.md, "render").
 struct RenderSettings {
     int width = 1280;
     int height = 720;
     int maxDepth = 3;
     /// Reflected or refracted rays whose accumulated weight is below this are not traced
-    /// (scene-format.md `min_weight`, POV-Ray's adc_bailout); 0 traces to maxDepth always.
+    /// (scenes/FORMAT.md `min_weight`, POV-Ray's adc_bailout); 0 traces to maxDepth always.
     float minWeight = 1.0f / 255.0f;
     int shadowSamples = 1;
     int supersampling = 1;

@@ -346,7 +346,7 @@ void MaterialsTest::renameMaterial_InPlace_RenamesItsUsers_AndRefusesTakenOrEmpt
     QCOMPARE(undoCount(), 1);
     QCOMPARE(list->current(), std::string("cobalt"));
 
-    // Names are unique among the materials and non-empty (scene-format.md).
+    // Names are unique among the materials and non-empty (scenes/FORMAT.md).
     rename(QStringLiteral("glass"));
     QTRY_VERIFY(list->message().contains(QStringLiteral("already named")));
     QVERIFY(doc().findMaterial("cobalt"));

@@ -11,7 +11,7 @@ Render the twin as the oracle test does:
 This file is the one place where a RayStudio scene becomes a POV-Ray scene: the oracle tests
 (tests/oracle/) and the benchmark twins (tests/bench/make-bench-scenes.py) both use it.
 
-How the illumination equation of /work/shared/design/scene-format.md maps to POV-Ray:
+How the illumination equation of scenes/FORMAT.md maps to POV-Ray:
 
   ours:  local  = I_a * color * kd + sum_l vis/S * I_l * C_l * (kd * color * N.L + ks * (R.V)^n)
          result = (1 - kr - kt) * local + kr * trace(refl) + kt * (F * trace(refl) + (1-F) * trace(refr))

@@ -1,4 +1,4 @@
-// The Whitted integrator against the illumination equation of scene-format.md, term by term.
+// The Whitted integrator against the illumination equation of scenes/FORMAT.md, term by term.
 #include <gtest/gtest.h>
 
 #include "integrator/whitted.h"

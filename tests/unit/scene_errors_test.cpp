@@ -1,4 +1,4 @@
-// Scene reader errors: every rule of scene-format.md fails the load with pointer, line, column.
+// Scene reader errors: every rule of scenes/FORMAT.md fails the load with pointer, line, column.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
