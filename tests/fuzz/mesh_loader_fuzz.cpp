@@ -65,8 +65,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (result.error.empty()) broken("a failed load without a message");
         // Only a child that crashed or failed can have printed a sanitizer's report, and only
         // its own stderr is read: a refusal may quote the file's bytes, and the fuzzer learns
-        // the words searched for (CI, session 15: an OFF count followed by "runtime error",
-        // echoed by the header check, read as a finding). The child hitting its memory budget
+        // the words searched for (a CI fuzz run once took an OFF count followed by "runtime
+        // error", echoed by the header check, for a finding). The child hitting its memory budget
         // is the budget at work, not a finding: a header that lies in a way the header check
         // does not read (assimp allocating for it) ends there, as in a release build, where
         // the allocation fails and the load is refused.

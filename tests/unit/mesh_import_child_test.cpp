@@ -65,8 +65,9 @@ TEST(MeshImportChild, AssimpAbortingOnAFile_IsAnErrorNamingItAndThisProcessGoesO
     EXPECT_TRUE(loadMesh(std::string(RAYSTUDIO_TEST_DATA) + "/meshes/cube.obj", true).ok());
 }
 
-// The fuzzer's input whose refusal quoted "runtime error" from the file (session 15): a
-// refusal before any child runs carries no child messages, whatever its error quotes.
+// The fuzzer's input whose refusal quoted "runtime error" from the file, which a CI fuzz run
+// took for a sanitizer's report: a refusal before any child runs carries no child messages,
+// whatever its error quotes.
 TEST(MeshImportChild, ARefusalQuotingTheFile_CarriesNoChildMessages) {
     const std::string path = corpusFile("harness-echoed-runtime-error", "echoed-runtime-error.off");
     ASSERT_NE(path, "");
