@@ -69,6 +69,12 @@ std::string where(const Block& b) {
     return "FORMAT.md:" + std::to_string(b.line) + " (```" + b.language + ")";
 }
 
+/// Loads a valid example as if the reader read FORMAT.md itself: the example's text on its
+/// own lines, so an error's line:column points into the document.
+SceneLoadResult loadInPlace(const Block& b) {
+    return parseScene(std::string(std::size_t(b.line), '\n') + b.text, kScenesDir, "FORMAT.md");
+}
+
 class FormatDoc : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -88,7 +94,7 @@ protected:
     /// The document an example holds; fails the test (and returns an empty one) if it
     /// does not load.
     SceneDocument load(const Block& b) const {
-        SceneLoadResult r = parseScene(b.text, kScenesDir, where(b));
+        SceneLoadResult r = loadInPlace(b);
         EXPECT_TRUE(r.ok()) << where(b) << " does not load:\n" << r.errorText();
         return r.document;
     }
@@ -115,7 +121,7 @@ TEST_F(FormatDoc, HasExamplesOfBothKindsAndNoUnknownFences) {
 
 TEST_F(FormatDoc, EveryExampleLoads) {
     for (const Block& b : valid_) {
-        SceneLoadResult r = parseScene(b.text, kScenesDir, where(b));
+        SceneLoadResult r = loadInPlace(b);
         EXPECT_TRUE(r.ok()) << where(b) << " does not load:\n" << r.errorText();
     }
 }
