@@ -232,6 +232,7 @@ RenderResult renderImage(const CompiledScene& scene, const RenderOptions& option
                     if (done && !ids.empty()) {
                         tileIds.resize(n);
                         kernel.firstHits(centres, tileIds.data());
+                        counters.rays += n;  // the id pass traces its centre rays too
                         infos.resize(n);
                         for (std::size_t k = 0; k < n; ++k) infos[k].id = tileIds[k];
                     }

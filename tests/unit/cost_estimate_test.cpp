@@ -1,4 +1,5 @@
 // The render cost budget: the estimate's factors, the glass tree bound and the budget message.
+// Whether the estimate bounds the rays a render really traces: cost_bound_test.cpp.
 #include "integrator/cost_estimate.h"
 
 #include <gtest/gtest.h>
