@@ -25,9 +25,17 @@ int decimalsFor(double step) {
     return std::clamp(int(std::ceil(-std::log10(step))) + 2, 2, 5);
 }
 
+/// The editor's bounds: the descriptor's soft range, which a value beyond it (held by a file,
+/// inside the format's range) widens so that it is shown and kept, never clamped.
+std::pair<double, double> offeredRange(const ParamDescriptor& d, double value) {
+    return {std::min(d.softMin, value), std::max(d.softMax, value)};
+}
+
 QDoubleSpinBox* makeSpin(const ParamDescriptor& d, QWidget* parent) {
     auto* spin = new QDoubleSpinBox(parent);
-    spin->setRange(d.min, d.max);
+    spin->setRange(d.softMin, d.softMax);
+    if (!d.specialValueText.empty())
+        spin->setSpecialValueText(QString::fromStdString(d.specialValueText));
     spin->setSingleStep(d.step);
     spin->setDecimals(decimalsFor(d.step));
     spin->setKeyboardTracking(false);
@@ -62,11 +70,11 @@ ParamEditor floatEditor(const ParamDescriptor& d, QWidget* parent,
     QWidget* w = row(parent, layout);
     auto* spin = makeSpin(d, w);
     QSlider* slider = nullptr;
-    if (d.max - d.min <= 1000.0) {
+    if (d.softMax - d.softMin <= 1000.0) {
         slider = new QSlider(Qt::Horizontal, w);
         slider->setRange(0, kSliderSteps);
         layout->addWidget(slider, 2);
-        const double lo = d.min, span = d.max - d.min;
+        const double lo = d.softMin, span = d.softMax - d.softMin;
         QObject::connect(slider, &QSlider::valueChanged, spin, [=](int v) {
             const double value = lo + span * v / kSliderSteps;
             const QSignalBlocker block(spin);
@@ -80,10 +88,13 @@ ParamEditor floatEditor(const ParamDescriptor& d, QWidget* parent,
     auto set = [=](const ParamValue& v) {
         const double x = std::get<float>(v);
         const QSignalBlocker b1(spin);
+        const auto [lo, hi] = offeredRange(d, x);
+        spin->setRange(lo, hi);
         spin->setValue(x);
         if (slider) {
             const QSignalBlocker b2(slider);
-            slider->setValue(int(std::lround((x - d.min) / (d.max - d.min) * kSliderSteps)));
+            const double t = std::clamp((x - d.softMin) / (d.softMax - d.softMin), 0.0, 1.0);
+            slider->setValue(int(std::lround(t * kSliderSteps)));
         }
     };
     return {w, set};
@@ -103,11 +114,14 @@ ParamEditor vecEditor(const ParamDescriptor& d, QWidget* parent,
     };
     for (auto* s : spins)
         QObject::connect(s, &QDoubleSpinBox::valueChanged, w, [=](double) { onChange(current()); });
-    auto set = [spins](const ParamValue& v) {
+    auto set = [spins, d](const ParamValue& v) {
         const Vec3 x = std::get<Vec3>(v);
         for (int i = 0; i < 3; ++i) {
-            const QSignalBlocker b(spins[std::size_t(i)]);
-            spins[std::size_t(i)]->setValue(x[i]);
+            QDoubleSpinBox* s = spins[std::size_t(i)];
+            const QSignalBlocker b(s);
+            const auto [lo, hi] = offeredRange(d, x[i]);
+            s->setRange(lo, hi);
+            s->setValue(x[i]);
         }
     };
     return {w, set};
@@ -135,7 +149,7 @@ ParamEditor colorEditor(const ParamDescriptor& d, QWidget* parent,
     button->setObjectName(QStringLiteral("colorButton"));
     auto* value = new QDoubleSpinBox(w);
     value->setObjectName(QStringLiteral("colorValue"));
-    value->setRange(0.0, d.max);
+    value->setRange(0.0, d.softMax);
     value->setSingleStep(0.1);
     value->setDecimals(3);
     value->setKeyboardTracking(false);
@@ -168,16 +182,14 @@ ParamEditor colorEditor(const ParamDescriptor& d, QWidget* parent,
         *colour = std::get<Vec3>(v);
         paintSwatch(button, *colour);
         const QSignalBlocker block(value);
+        value->setRange(0.0, std::max(d.softMax, double(valueOf(*colour))));
         value->setValue(valueOf(*colour));
     };
     return {w, set};
 }
 
-}  // namespace
-
-ParamEditor makeParamEditor(const ParamDescriptor& d, QWidget* parent,
-                            std::function<void(const ParamValue&)> onChange,
-                            ParamPreview onPreview) {
+ParamEditor editorFor(const ParamDescriptor& d, QWidget* parent,
+                      std::function<void(const ParamValue&)> onChange, ParamPreview onPreview) {
     switch (d.type) {
         case ParamType::Float:
             return floatEditor(d, parent, std::move(onChange));
@@ -187,13 +199,18 @@ ParamEditor makeParamEditor(const ParamDescriptor& d, QWidget* parent,
             return colorEditor(d, parent, std::move(onChange), std::move(onPreview));
         case ParamType::Int: {
             auto* spin = new QSpinBox(parent);
-            spin->setRange(int(d.min), int(d.max));
+            spin->setRange(int(d.softMin), int(d.softMax));
+            if (!d.specialValueText.empty())
+                spin->setSpecialValueText(QString::fromStdString(d.specialValueText));
             spin->setKeyboardTracking(false);
             QObject::connect(spin, &QSpinBox::valueChanged, spin,
                              [onChange](int v) { onChange(v); });
-            return {spin, [spin](const ParamValue& v) {
+            return {spin, [spin, d](const ParamValue& v) {
                         const QSignalBlocker b(spin);
-                        spin->setValue(std::get<int>(v));
+                        const int x = std::get<int>(v);
+                        const auto [lo, hi] = offeredRange(d, x);
+                        spin->setRange(int(lo), int(hi));
+                        spin->setValue(x);
                     }};
         }
         case ParamType::Bool: {
@@ -206,7 +223,8 @@ ParamEditor makeParamEditor(const ParamDescriptor& d, QWidget* parent,
         }
         case ParamType::Enum: {
             auto* combo = new QComboBox(parent);
-            for (const auto& n : d.enumNames) combo->addItem(QString::fromStdString(n));
+            for (int i = 0; i < int(d.enumNames.size()); ++i)
+                combo->addItem(QString::fromStdString(d.enumLabel(i)));
             QObject::connect(combo, &QComboBox::currentIndexChanged, combo,
                              [onChange](int v) { onChange(v); });
             return {combo, [combo](const ParamValue& v) {
@@ -227,6 +245,20 @@ ParamEditor makeParamEditor(const ParamDescriptor& d, QWidget* parent,
         }
     }
     return {};
+}
+
+}  // namespace
+
+ParamEditor makeParamEditor(const ParamDescriptor& d, QWidget* parent,
+                            std::function<void(const ParamValue&)> onChange,
+                            ParamPreview onPreview) {
+    ParamEditor e = editorFor(d, parent, std::move(onChange), std::move(onPreview));
+    if (e.widget) {
+        // Tests and the Preferences dialog find an editor by its key.
+        e.widget->setObjectName(QString::fromStdString(d.key));
+        if (!d.toolTip.empty()) e.widget->setToolTip(QString::fromStdString(d.toolTip));
+    }
+    return e;
 }
 
 }  // namespace rs::ui

@@ -89,7 +89,7 @@ float fitScale(const Aabb& bounds, const Camera& view, float distance) {
     // Within what the Transform's Scale field accepts, so the factor stays editable there.
     const ParamDescriptor* range = findParameter(ParamKind::Transform, "scale");
     const float factor = twoSignificantDigits(kFitViewShare / share);
-    return range ? std::clamp(factor, float(range->min), float(range->max)) : factor;
+    return range ? std::clamp(factor, float(range->softMin), float(range->softMax)) : factor;
 }
 
 }  // namespace rs::ui

@@ -1,7 +1,6 @@
-// Preferences storage and the dialog, one control per InteractionPolicy member.
+// Preferences storage and the dialog: the policy's controls come from its descriptors.
 #include "preferences.h"
 
-#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
@@ -12,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parameter_widgets.h"
 #include "view_projection.h"
 
 namespace rs::ui {
@@ -65,13 +65,6 @@ QComboBox* enumCombo(QWidget* parent, const char* name, QStringList items, E val
     c->setObjectName(QString::fromLatin1(name));
     c->addItems(items);
     c->setCurrentIndex(int(value));
-    return c;
-}
-
-QCheckBox* check(QWidget* parent, const char* name, const QString& text, bool value) {
-    auto* c = new QCheckBox(text, parent);
-    c->setObjectName(QString::fromLatin1(name));
-    c->setChecked(value);
     return c;
 }
 
@@ -133,91 +126,16 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     governorNote->setWordWrap(true);
     form->addRow(governorNote);
 
-    auto* resolution =
-        enumCombo(this, "resolution", {tr("Full"), tr("Half"), tr("Quarter")}, p.resolution);
-    connect(resolution, &QComboBox::currentIndexChanged, this, [=, this](int i) {
-        prefs_.policy.resolution = MovingResolution(i);
-        notify();
-    });
-    form->addRow(tr("Resolution while moving"), resolution);
-
-    auto* interleaved = check(this, "interleaved", tr("2-pass interleaved frames"), p.interleaved);
-    connect(interleaved, &QCheckBox::toggled, this, [=, this](bool on) {
-        prefs_.policy.interleaved = on;
-        notify();
-    });
-    form->addRow(tr("Interleaving"), interleaved);
-
-    auto* proxy = check(this, "boxProxy", tr("Trace the moving object as its box"), p.boxProxy);
-    connect(proxy, &QCheckBox::toggled, this, [=, this](bool on) {
-        prefs_.policy.boxProxy = on;
-        notify();
-    });
-    form->addRow(tr("Box proxy"), proxy);
-
-    auto* refraction =
-        enumCombo(this, "refraction", {tr("Full"), tr("Diffuse"), tr("Diffuse except selected")},
-                  p.refraction);
-    connect(refraction, &QComboBox::currentIndexChanged, this, [=, this](int i) {
-        prefs_.policy.refraction = RefractionMode(i);
-        notify();
-    });
-    form->addRow(tr("Refraction while moving"), refraction);
-
-    auto* reflection = enumCombo(this, "reflection", {tr("Full"), tr("Diffuse")}, p.reflection);
-    connect(reflection, &QComboBox::currentIndexChanged, this, [=, this](int i) {
-        prefs_.policy.reflection = ReflectionMode(i);
-        notify();
-    });
-    form->addRow(tr("Reflection while moving"), reflection);
-
-    auto* depth = new QSpinBox(this);
-    depth->setObjectName(QStringLiteral("maxDepth"));
-    depth->setRange(-1, 64);
-    depth->setSpecialValueText(tr("Scene's max depth"));
-    depth->setValue(p.maxDepthWhileMoving);
-    connect(depth, &QSpinBox::valueChanged, this, [=, this](int v) {
-        prefs_.policy.maxDepthWhileMoving = v;
-        notify();
-    });
-    form->addRow(tr("Depth while moving"), depth);
-
-    auto* shadows = enumCombo(
-        this, "shadows",
-        {tr("Full"), tr("Hard only"), tr("Off"), tr("Deferred (added after release)")}, p.shadows);
-    connect(shadows, &QComboBox::currentIndexChanged, this, [=, this](int i) {
-        prefs_.policy.shadows = MovingShadows(i);
-        notify();
-    });
-    form->addRow(tr("Shadows while moving"), shadows);
-
-    auto* supersample =
-        check(this, "supersample", tr("Supersample while moving"), p.supersampleWhileMoving);
-    connect(supersample, &QCheckBox::toggled, this, [=, this](bool on) {
-        prefs_.policy.supersampleWhileMoving = on;
-        notify();
-    });
-    form->addRow(tr("Supersampling"), supersample);
-
-    auto* dirty =
-        check(this, "dirtyRegions", tr("Re-trace only what an edit can change"), p.dirtyRegions);
-    connect(dirty, &QCheckBox::toggled, this, [=, this](bool on) {
-        prefs_.policy.dirtyRegions = on;
-        notify();
-    });
-    form->addRow(tr("Dirty regions"), dirty);
-
-    auto* whole = check(this, "wholeFrames", tr("Show only whole frames while moving"),
-                        p.wholeFramesWhileMoving);
-    whole->setToolTip(
-        tr("Each pass runs to its end and the view keeps the last complete picture until the "
-           "next one is done. Off: every mouse move restarts the pass and tiles show as they "
-           "come, fresher but mixed from several moves."));
-    connect(whole, &QCheckBox::toggled, this, [=, this](bool on) {
-        prefs_.policy.wholeFramesWhileMoving = on;
-        notify();
-    });
-    form->addRow(tr("Whole frames"), whole);
+    // One editor per policy setting, generated from the descriptors the session publishes
+    // (render/session/interaction_policy.h): their keys, labels, ranges and defaults.
+    for (const ParamDescriptor& d : policyParameters()) {
+        const std::string key = d.key;
+        ParamEditor editor = makeParamEditor(d, this, [=, this](const ParamValue& v) {
+            if (setPolicyParameter(prefs_.policy, key, v).empty()) notify();
+        });
+        if (auto v = getPolicyParameter(p, key)) editor.setValue(*v);
+        form->addRow(QString::fromStdString(d.label), editor.widget);
+    }
 
     auto* threads = new QSpinBox(this);
     threads->setObjectName(QStringLiteral("threads"));

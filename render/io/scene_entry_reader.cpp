@@ -7,14 +7,6 @@
 
 namespace rs {
 
-namespace {
-// Bounds in messages read "> 0", not "> 0.0".
-std::string formatNumber(double v) {
-    if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
-    return dumpJson(Json(v));
-}
-}  // namespace
-
 std::string describeJson(const Json& j) {
     std::string text = dumpJson(j);
     if (text.size() > 40) text = text.substr(0, 37) + "...";
@@ -37,18 +29,6 @@ void SceneErrorSink::atValue(const std::string& pointer, std::string message) {
 
 void SceneErrorSink::atKey(const std::string& pointer, std::string message) {
     add(pointer, locator_.keyPosition(pointer), std::move(message));
-}
-
-bool NumberRange::contains(double v) const {
-    bool aboveMin = minOpen ? v > min : v >= min;
-    bool belowMax = maxOpen ? v < max : v <= max;
-    return aboveMin && belowMax;
-}
-
-std::string NumberRange::describe() const {
-    if (std::isinf(max)) return (minOpen ? "> " : ">= ") + formatNumber(min);
-    return std::string("in ") + (minOpen ? "(" : "[") + formatNumber(min) + ", " +
-           formatNumber(max) + (maxOpen ? ")" : "]");
 }
 
 const Json* EntryReader::get(const char* key) {
@@ -180,6 +160,59 @@ bool EntryReader::vector(const char* key, Vec3& out, VectorRule rule, Need need)
     }
     out = v;
     return true;
+}
+
+EntryReader::Read EntryReader::parameter(const ParamDescriptor& d, ParamValue& out) {
+    const char* key = d.key.c_str();
+    const Json* j = get(key);
+    if (!j) return d.required ? (missing(key), Read::Invalid) : Read::Absent;
+    bool ok = false;
+    switch (d.type) {
+        case ParamType::Float: {
+            float f = 0.0f;
+            if ((ok = number(key, f, d.range))) out = f;
+            break;
+        }
+        case ParamType::Int: {
+            int i = 0;
+            if ((ok = integer(key, i, int(d.range.min), int(d.range.max)))) out = i;
+            break;
+        }
+        case ParamType::Bool: {
+            bool b = false;
+            if ((ok = boolean(key, b))) out = b;
+            break;
+        }
+        case ParamType::Vec3:
+        case ParamType::Color: {
+            Vec3 v(0.0f);
+            if ((ok = vector(key, v, d.vectorRule))) out = v;
+            break;
+        }
+        case ParamType::Enum: {
+            std::string text;
+            if (!string(key, text)) break;
+            const auto& names = d.enumNames;
+            const auto found = std::find(names.begin(), names.end(), text);
+            if (found != names.end()) {
+                out = int(found - names.begin());
+                ok = true;
+                break;
+            }
+            std::string expected;
+            for (const auto& n : names) expected += (expected.empty() ? "\"" : ", \"") + n + '"';
+            sink_.atValue(pointerTo(key),
+                          d.key + " must be one of " + expected + ", got \"" + text + "\"");
+            break;
+        }
+        case ParamType::Text:
+        case ParamType::File: {
+            std::string text;
+            if ((ok = string(key, text))) out = text;
+            break;
+        }
+    }
+    return ok ? Read::Ok : Read::Invalid;
 }
 
 bool EntryReader::name(std::string& out) {

@@ -12,6 +12,8 @@
 #include "io/json_location.h"
 #include "io/scene_io.h"
 #include "io/scene_json.h"
+#include "scene/parameters.h"
+#include "scene/value_range.h"
 
 namespace rs {
 
@@ -41,28 +43,7 @@ private:
     std::vector<SceneError>& errors_;
 };
 
-/// An interval a number must lie in, with open or closed ends.
-struct NumberRange {
-    double min = -std::numeric_limits<double>::infinity();
-    double max = std::numeric_limits<double>::infinity();
-    bool minOpen = false;
-    bool maxOpen = false;
-
-    static NumberRange any() { return {}; }
-    static NumberRange positive() { return {0.0, std::numeric_limits<double>::infinity(), true}; }
-    static NumberRange nonNegative() { return {0.0, std::numeric_limits<double>::infinity()}; }
-    static NumberRange fraction() { return {0.0, 1.0}; }
-    /// [0, 1): a fraction that must stay below one (min_weight: 1 would stop every ray).
-    static NumberRange fractionBelowOne() { return {0.0, 1.0, false, true}; }
-    static NumberRange open(double lo, double hi) { return {lo, hi, true, true}; }
-    bool contains(double v) const;
-    /// "> 0", ">= 0", "in [0, 1]", "in (0, 180)".
-    std::string describe() const;
-};
-
 enum class Need { Optional, Required };
-/// What an [x, y, z] value must satisfy beyond three finite numbers.
-enum class VectorRule { Any, NonNegative, NonZero, NonZeroComponents };
 
 /// Reads the members of one JSON object. Remembers which keys were asked about so that
 /// finish() can report the rest as unknown (a typo must not silently lose a setting).
@@ -88,6 +69,11 @@ public:
     bool boolean(const char* key, bool& out);
     bool string(const char* key, std::string& out, Need need = Need::Optional);
     bool vector(const char* key, Vec3& out, VectorRule rule, Need need = Need::Optional);
+    /// What reading one described field gave.
+    enum class Read { Absent, Ok, Invalid };
+    /// Reads the field `d` describes (scene/parameters.h): its type, range and vector rule,
+    /// required or not; an enum by its spellings. `out` is set only when Ok.
+    Read parameter(const ParamDescriptor& d, ParamValue& out);
     /// The required, non-empty `name`.
     bool name(std::string& out);
 

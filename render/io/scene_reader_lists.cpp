@@ -1,46 +1,33 @@
 // Reading the materials and lights of a scene file, and the uniqueness of names in a list.
 #include "io/scene_reader_sections.h"
+#include "scene/field_rules.h"
 
 namespace rs {
 
 namespace {
-// Rounding of two decimal fractions (0.3 + 0.7) must not turn a valid sum into an error.
-constexpr float kSumTolerance = 1e-6f;
-
 void readMaterial(EntryReader& r, Material& m) {
     r.name(m.name);
-    r.vector("color", m.color, VectorRule::NonNegative);
-    r.number("diffuse", m.diffuse, NumberRange::fraction());
-    r.number("specular", m.specular, NumberRange::fraction());
-    r.number("shininess", m.shininess, NumberRange::nonNegative());
-    bool weights = r.number("reflectivity", m.reflectivity, NumberRange::fraction());
-    weights = r.number("transparency", m.transparency, NumberRange::fraction()) && weights;
-    r.number("ior", m.ior, NumberRange::positive());
-    if (weights && m.reflectivity + m.transparency > 1.0f + kSumTolerance) {
-        const char* key = r.has("transparency") ? "transparency" : "reflectivity";
-        r.sink().atValue(r.pointerTo(key),
-                         "reflectivity + transparency must be <= 1, got " +
-                             describeJson(Json(jsonNumberForFloat(m.reflectivity))) + " + " +
-                             describeJson(Json(jsonNumberForFloat(m.transparency))));
+    const auto invalid = readFields(r, ParamKind::Material, m);
+    if (noneInvalid(invalid, {"reflectivity", "transparency"})) {
+        if (auto e = materialWeightsError(m)) {
+            // Placed where the file raises the sum: transparency when it gives one.
+            const char* key = r.has("transparency") ? "transparency" : "reflectivity";
+            r.sink().atValue(r.pointerTo(key), e.message);
+        }
     }
 }
 
 void readLight(EntryReader& r, Light& light) {
     r.name(light.name);
-    bool typed =
-        r.enumeration("type", light.type,
-                      {{"point", LightType::Point}, {"sphere", LightType::Sphere}}, Need::Required);
-    // Geometry keys without a default in the format are required: position, sphere radius.
-    r.vector("position", light.position, VectorRule::Any, Need::Required);
-    r.vector("color", light.color, VectorRule::NonNegative);
-    r.number("intensity", light.intensity, NumberRange::positive());
-    if (!typed) {
+    // The type decides which fields the light has; read it first.
+    ParamValue type;
+    const auto read = r.parameter(*findParameter(ParamKind::PointLight, "type"), type);
+    if (read == EntryReader::Read::Ok) setField(light, "type", type);
+    readFields(r, lightKind(light), light, {"type"});
+    if (read != EntryReader::Read::Ok)
         r.get("radius");  // the type error says it all; no "unknown key" noise as well
-    } else if (light.type == LightType::Sphere) {
-        r.number("radius", light.radius, NumberRange::positive(), Need::Required);
-    } else {
+    else if (light.type == LightType::Point)
         r.forbid("radius", "a point light has no radius (a sphere light has)");
-    }
 }
 }  // namespace
 

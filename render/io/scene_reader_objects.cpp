@@ -6,19 +6,11 @@
 
 #include "io/mesh_io.h"
 #include "io/scene_reader_sections.h"
+#include "scene/field_rules.h"
 
 namespace rs {
 
 namespace {
-// Relative: u and v of a rectangle rotated in the designer are orthogonal only to rounding.
-constexpr double kOrthogonalTolerance = 1e-4;
-// A normal this close to unit length is kept bit for bit, so save/load is exact.
-constexpr double kUnitTolerance = 1e-6;
-
-glm::dvec3 toDouble(const Vec3& v) {
-    return glm::dvec3(v.x, v.y, v.z);
-}
-
 /// Meshes loaded during one parse, so objects sharing a file share its triangles.
 using MeshCache = std::map<std::pair<std::string, bool>, std::shared_ptr<const MeshData>>;
 
@@ -29,61 +21,39 @@ struct ObjectContext {
     MeshCache& meshes;
 };
 
-// Geometry keys without a default in the format are required: sphere center and radius,
-// plane point and normal, rectangle center, u and v, box min and max, mesh file.
+// Geometry keys without a default in the format are required (the descriptors say which);
+// the rules that relate them come from scene/field_rules.h.
 void readSphere(EntryReader& r, SphereGeometry& g) {
-    r.vector("center", g.center, VectorRule::Any, Need::Required);
-    r.number("radius", g.radius, NumberRange::positive(), Need::Required);
+    readFields(r, ParamKind::Sphere, g);
 }
 
 void readPlane(EntryReader& r, PlaneGeometry& g) {
-    r.vector("point", g.point, VectorRule::Any, Need::Required);
-    if (r.vector("normal", g.normal, VectorRule::NonZero, Need::Required)) {
-        glm::dvec3 n = toDouble(g.normal);
-        double length = glm::length(n);
-        if (std::abs(length - 1.0) > kUnitTolerance) {
-            n /= length;
-            g.normal =
-                Vec3(static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z));
-        }
-    }
+    const auto invalid = readFields(r, ParamKind::Plane, g);
+    if (noneInvalid(invalid, {"normal"}) && g.normal != Vec3(0.0f))
+        g.normal = planeNormal(g.normal);
     for (const char* key : {"translate", "rotate", "scale"})
         r.forbid(key, std::string("a plane takes no transform (") + key +
                           "); place it with point and normal");
 }
 
 void readRectangle(EntryReader& r, RectangleGeometry& g) {
-    r.vector("center", g.center, VectorRule::Any, Need::Required);
-    bool edges = r.vector("u", g.u, VectorRule::NonZero, Need::Required);
-    edges = r.vector("v", g.v, VectorRule::NonZero, Need::Required) && edges;
-    if (!edges) return;
-    glm::dvec3 u = toDouble(g.u), v = toDouble(g.v);
-    double cosine = glm::dot(u, v) / (glm::length(u) * glm::length(v));
-    if (std::abs(cosine) > kOrthogonalTolerance) {
-        double degrees = std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / 3.14159265358979;
-        r.sink().atValue(r.pointerTo("v"), "u and v must be orthogonal, they are " +
-                                               describeJson(Json(std::round(degrees * 100) / 100)) +
-                                               " degrees apart");
-    }
+    const auto invalid = readFields(r, ParamKind::Rectangle, g);
+    if (!noneInvalid(invalid, {"u", "v"})) return;
+    if (auto e = rectangleEdgesError(g)) r.sink().atValue(r.pointerTo(e.key), e.message);
 }
 
 void readBox(EntryReader& r, BoxGeometry& g) {
-    bool corners = r.vector("min", g.min, VectorRule::Any, Need::Required);
-    corners = r.vector("max", g.max, VectorRule::Any, Need::Required) && corners;
-    if (!corners) return;
-    static const char* const axes[] = {"x", "y", "z"};
-    for (int a = 0; a < 3; ++a) {
-        if (g.min[a] < g.max[a]) continue;
-        r.sink().atValue(appendPointer(r.pointerTo("max"), static_cast<std::size_t>(a)),
-                         std::string("box max must be greater than min in every component (") +
-                             axes[a] + ": min " + describeJson(Json(jsonNumberForFloat(g.min[a]))) +
-                             ", max " + describeJson(Json(jsonNumberForFloat(g.max[a]))) + ")");
-        return;
-    }
+    const auto invalid = readFields(r, ParamKind::Box, g);
+    if (!noneInvalid(invalid, {"min", "max"})) return;
+    int axis = 0;
+    if (auto e = boxCornersError(g, &axis))
+        r.sink().atValue(appendPointer(r.pointerTo(e.key), static_cast<std::size_t>(axis)),
+                         e.message);
 }
 
 void readMesh(EntryReader& r, ObjectContext& ctx, MeshGeometry& g) {
-    r.boolean("smooth_normals", g.smoothNormals);
+    // The file is read last: loading it needs smooth_normals.
+    readFields(r, ParamKind::Mesh, g, {"file"});
     if (!r.string("file", g.file, Need::Required)) return;
     const std::string at = r.pointerTo("file");
     if (g.file.empty()) {
@@ -111,8 +81,8 @@ void readMesh(EntryReader& r, ObjectContext& ctx, MeshGeometry& g) {
 }
 
 void readTransform(EntryReader& r, Transform& t) {
-    r.vector("translate", t.translate, VectorRule::Any);
-    r.vector("rotate", t.rotate, VectorRule::Any);
+    // Scale may also be one number (uniform), which the writer keeps as written.
+    readFields(r, ParamKind::Transform, t, {"scale"});
     const Json* scale = r.get("scale");
     if (scale && scale->is_number()) {
         float s = 1.0f;

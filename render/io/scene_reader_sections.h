@@ -1,11 +1,16 @@
 // The per-section readers of a scene file (camera, render, materials, lights, objects).
 #pragma once
 
+#include <algorithm>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <unordered_map>
+#include <vector>
 
 #include "io/scene_entry_reader.h"
 #include "scene/document.h"
+#include "scene/parameters.h"
 
 namespace rs {
 
@@ -21,6 +26,34 @@ void readLights(SceneErrorSink& sink, const Json& json, SceneDocument& doc);
 /// `baseDir`. Materials must already be read: objects refer to them by name.
 void readObjects(SceneErrorSink& sink, const Json& json, const std::string& baseDir,
                  SceneDocument& doc);
+
+/// Reads every field the descriptors of `kind` name, except `skip`, into `target`: the
+/// descriptors are the format's schema, so a field added there is read here too. Returns
+/// the keys that were present but invalid (each already reported).
+template <class T>
+std::vector<std::string> readFields(EntryReader& r, ParamKind kind, T& target,
+                                    std::initializer_list<std::string_view> skip = {}) {
+    std::vector<std::string> invalid;
+    for (const ParamDescriptor& d : parameters(kind)) {
+        if (std::find(skip.begin(), skip.end(), d.key) != skip.end()) continue;
+        ParamValue value;
+        const EntryReader::Read read = r.parameter(d, value);
+        if (read == EntryReader::Read::Invalid) invalid.push_back(d.key);
+        if (read != EntryReader::Read::Ok) continue;
+        // The reader has checked what the descriptor says; a refusal here is a bug.
+        if (std::string e = setField(target, d.key, value); !e.empty())
+            r.sink().atValue(r.pointerTo(d.key), e);
+    }
+    return invalid;
+}
+
+/// True when none of `keys` is in `invalid`.
+inline bool noneInvalid(const std::vector<std::string>& invalid,
+                        std::initializer_list<std::string_view> keys) {
+    for (std::string_view k : keys)
+        if (std::find(invalid.begin(), invalid.end(), k) != invalid.end()) return false;
+    return true;
+}
 
 /// Checks that `json` (at `pointer`) is an array; reports and returns false otherwise.
 bool expectArray(SceneErrorSink& sink, const Json& json, const std::string& pointer);

@@ -1,12 +1,16 @@
 // Writing scene files: key order, omitted defaults, extras, mesh paths and atomic saving.
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <random>
+#include <string_view>
 #include <system_error>
 
 #include "io/scene_io.h"
 #include "io/scene_json.h"
+#include "scene/parameters.h"
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <unistd.h>
@@ -34,13 +38,44 @@ void putExtras(Json& j, const Extras& extras) {
     }
 }
 
+Json parameterJson(const ParamDescriptor& d, const ParamValue& v) {
+    switch (d.type) {
+        case ParamType::Float:
+            return number(std::get<float>(v));
+        case ParamType::Int:
+            return Json(std::get<int>(v));
+        case ParamType::Bool:
+            return Json(std::get<bool>(v));
+        case ParamType::Vec3:
+        case ParamType::Color:
+            return vector(std::get<Vec3>(v));
+        case ParamType::Enum:
+            return Json(d.enumNames.at(std::size_t(std::get<int>(v))));
+        case ParamType::Text:
+        case ParamType::File:
+            return Json(std::get<std::string>(v));
+    }
+    return Json();
+}
+
+/// Writes every field the descriptors of `kind` name, except `skip`, in their order: a
+/// required or always-written field always, any other only when it differs from its default.
+template <class T>
+void putFields(Json& j, ParamKind kind, const T& target,
+               std::initializer_list<std::string_view> skip = {}) {
+    for (const ParamDescriptor& d : parameters(kind)) {
+        if (std::find(skip.begin(), skip.end(), d.key) != skip.end()) continue;
+        const std::optional<ParamValue> v = getField(target, d.key);
+        if (v && (d.required || d.alwaysWritten || *v != d.defaultValue))
+            j[d.key] = parameterJson(d, *v);
+    }
+}
+
 Json cameraJson(const Camera& c) {
     const Camera d;
     Json j = Json::object();
-    if (c.projection == Projection::Orthographic) j["projection"] = "orthographic";
-    j["position"] = vector(c.position);
-    j["target"] = vector(c.target);
-    j["up"] = vector(c.up);
+    putFields(j, ParamKind::Camera, c, {"fov_y", "ortho_height"});
+    // The lens of the projection in use is always stated; the other one when it was changed.
     if (c.projection == Projection::Perspective || c.fovY != d.fovY) j["fov_y"] = number(c.fovY);
     if (c.projection == Projection::Orthographic || c.orthoHeight != d.orthoHeight)
         j["ortho_height"] = number(c.orthoHeight);
@@ -49,50 +84,25 @@ Json cameraJson(const Camera& c) {
 }
 
 Json renderJson(const RenderSettings& r) {
-    static const char* const tonemaps[] = {"clamp", "linear", "reinhard", "aces"};
-    const RenderSettings d;
     Json j = Json::object();
-    j["width"] = r.width;
-    j["height"] = r.height;
-    if (r.maxDepth != d.maxDepth) j["max_depth"] = r.maxDepth;
-    if (r.minWeight != d.minWeight) j["min_weight"] = number(r.minWeight);
-    if (r.shadowSamples != d.shadowSamples) j["shadow_samples"] = r.shadowSamples;
-    if (r.supersampling != d.supersampling) j["supersampling"] = r.supersampling;
-    if (r.adaptiveSupersampling != d.adaptiveSupersampling)
-        j["adaptive_supersampling"] = r.adaptiveSupersampling;
-    if (r.tonemap != d.tonemap) j["tonemap"] = tonemaps[static_cast<int>(r.tonemap)];
-    if (r.exposure != d.exposure) j["exposure"] = number(r.exposure);
-    if (r.background != d.background) j["background"] = vector(r.background);
-    if (r.ambient != d.ambient) j["ambient"] = vector(r.ambient);
+    putFields(j, ParamKind::Render, r);
     putExtras(j, r.extras);
     return j;
 }
 
 Json materialJson(const Material& m) {
-    const Material d;
     Json j = Json::object();
     j["name"] = m.name;
-    j["color"] = vector(m.color);
-    if (m.diffuse != d.diffuse) j["diffuse"] = number(m.diffuse);
-    if (m.specular != d.specular) j["specular"] = number(m.specular);
-    if (m.shininess != d.shininess) j["shininess"] = number(m.shininess);
-    if (m.reflectivity != d.reflectivity) j["reflectivity"] = number(m.reflectivity);
-    if (m.transparency != d.transparency) j["transparency"] = number(m.transparency);
-    if (m.ior != d.ior) j["ior"] = number(m.ior);
+    putFields(j, ParamKind::Material, m);
     putExtras(j, m.extras);
     return j;
 }
 
 Json lightJson(const Light& l) {
-    const Light d;
     Json j = Json::object();
     j["name"] = l.name;
-    j["type"] = l.type == LightType::Sphere ? "sphere" : "point";
-    j["position"] = vector(l.position);
-    // A point light's radius has no meaning and the format forbids the key.
-    if (l.type == LightType::Sphere) j["radius"] = number(l.radius);
-    if (l.color != d.color) j["color"] = vector(l.color);
-    if (l.intensity != d.intensity) j["intensity"] = number(l.intensity);
+    // A point light's fields have no radius: the format forbids the key there.
+    putFields(j, lightKind(l), l);
     putExtras(j, l.extras);
     return j;
 }
@@ -116,28 +126,21 @@ std::string meshFileFor(const MeshGeometry& g, const std::string& baseDir) {
 }
 
 void putGeometry(Json& j, const Geometry& geometry, const std::string& baseDir) {
-    if (const auto* s = std::get_if<SphereGeometry>(&geometry)) {
-        j["center"] = vector(s->center);
-        j["radius"] = number(s->radius);
-    } else if (const auto* p = std::get_if<PlaneGeometry>(&geometry)) {
-        j["point"] = vector(p->point);
-        j["normal"] = vector(p->normal);
-    } else if (const auto* r = std::get_if<RectangleGeometry>(&geometry)) {
-        j["center"] = vector(r->center);
-        j["u"] = vector(r->u);
-        j["v"] = vector(r->v);
-    } else if (const auto* b = std::get_if<BoxGeometry>(&geometry)) {
-        j["min"] = vector(b->min);
-        j["max"] = vector(b->max);
-    } else if (const auto* m = std::get_if<MeshGeometry>(&geometry)) {
-        j["file"] = meshFileFor(*m, baseDir);
-        if (!m->smoothNormals) j["smooth_normals"] = false;
-    }
+    std::visit(
+        [&](const auto& g) {
+            using G = std::decay_t<decltype(g)>;
+            if constexpr (std::is_same_v<G, MeshGeometry>) {
+                j["file"] = meshFileFor(g, baseDir);
+                putFields(j, ParamKind::Mesh, g, {"file"});
+            } else {
+                putFields(j, geometryKind(geometry), g);
+            }
+        },
+        geometry);
 }
 
 void putTransform(Json& j, const Transform& t) {
-    if (t.translate != Vec3(0.0f)) j["translate"] = vector(t.translate);
-    if (t.rotate != Vec3(0.0f)) j["rotate"] = vector(t.rotate);
+    putFields(j, ParamKind::Transform, t, {"scale"});
     if (t.scale == Vec3(1.0f)) return;
     bool uniform = t.scale.x == t.scale.y && t.scale.y == t.scale.z;
     j["scale"] = t.scaleWrittenAsNumber && uniform ? number(t.scale.x) : vector(t.scale);

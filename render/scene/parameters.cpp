@@ -1,200 +1,189 @@
 // Parameter tables: one field list per kind binds each descriptor to its document member.
+// The ranges here are the scene format's (scenes/FORMAT.md); the soft ranges are what an
+// editor offers by default.
 #include "scene/parameters.h"
 
 #include <cmath>
-#include <functional>
 #include <sstream>
+
+#include "scene/field_rules.h"
+#include "scene/field_table.h"
 
 namespace rs {
 
 namespace {
 
+using fields::Field;
 constexpr double kBig = 1e6;
 
-/// A descriptor plus how to read and write it on a T.
+/// Marks a field the format requires (it has no default, so it is always written).
 template <class T>
-struct Field {
-    ParamDescriptor desc;
-    std::function<ParamValue(const T&)> get;
-    std::function<void(T&, const ParamValue&)> set;
-};
-
-template <class T>
-Field<T> floatField(const char* key, const char* label, float T::*m, double lo, double hi,
-                    double step) {
-    return {{key, label, ParamType::Float, lo, hi, step, T{}.*m, {}},
-            [m](const T& t) { return ParamValue(t.*m); },
-            [m](T& t, const ParamValue& v) { t.*m = std::get<float>(v); }};
+Field<T> required(Field<T> f) {
+    f.desc.required = true;
+    f.desc.alwaysWritten = true;
+    return f;
 }
-
+/// Marks a field the writer states even at its default.
 template <class T>
-Field<T> intField(const char* key, const char* label, int T::*m, int lo, int hi) {
-    return {{key, label, ParamType::Int, double(lo), double(hi), 1.0, T{}.*m, {}},
-            [m](const T& t) { return ParamValue(t.*m); },
-            [m](T& t, const ParamValue& v) { t.*m = std::get<int>(v); }};
-}
-
-template <class T>
-Field<T> boolField(const char* key, const char* label, bool T::*m) {
-    return {{key, label, ParamType::Bool, 0, 1, 1, T{}.*m, {}},
-            [m](const T& t) { return ParamValue(t.*m); },
-            [m](T& t, const ParamValue& v) { t.*m = std::get<bool>(v); }};
-}
-
-template <class T>
-Field<T> vecField(const char* key, const char* label, Vec3 T::*m, ParamType type = ParamType::Vec3,
-                  double lo = -kBig, double hi = kBig, double step = 0.1) {
-    return {{key, label, type, lo, hi, step, T{}.*m, {}},
-            [m](const T& t) { return ParamValue(t.*m); },
-            [m](T& t, const ParamValue& v) { t.*m = std::get<Vec3>(v); }};
-}
-
-template <class T>
-Field<T> colorField(const char* key, const char* label, Vec3 T::*m) {
-    return vecField(key, label, m, ParamType::Color, 0.0, 100.0, 0.05);
-}
-
-template <class T, class E>
-Field<T> enumField(const char* key, const char* label, E T::*m, std::vector<std::string> names) {
-    return {{key, label, ParamType::Enum, 0, double(names.size() - 1), 1, int(T{}.*m), names},
-            [m](const T& t) { return ParamValue(int(t.*m)); },
-            [m](T& t, const ParamValue& v) { t.*m = E(std::get<int>(v)); }};
-}
-
-template <class T>
-Field<T> textField(const char* key, const char* label, std::string T::*m, ParamType type) {
-    return {{key, label, type, 0, 0, 0, T{}.*m, {}},
-            [m](const T& t) { return ParamValue(t.*m); },
-            [m](T& t, const ParamValue& v) { t.*m = std::get<std::string>(v); }};
+Field<T> stated(Field<T> f) {
+    f.desc.alwaysWritten = true;
+    return f;
 }
 
 const std::vector<Field<SphereGeometry>>& sphereFields() {
-    static const std::vector<Field<SphereGeometry>> f{
-        vecField("center", "Centre", &SphereGeometry::center),
-        floatField("radius", "Radius", &SphereGeometry::radius, 1e-4, kBig, 0.05)};
+    using G = SphereGeometry;
+    static const std::vector<Field<G>> f{
+        required(fields::vector("center", "Centre", &G::center)),
+        required(fields::number("radius", "Radius", &G::radius, NumberRange::positive(), 1e-4, kBig,
+                                0.05))};
     return f;
 }
 const std::vector<Field<PlaneGeometry>>& planeFields() {
-    static const std::vector<Field<PlaneGeometry>> f{
-        vecField("point", "Point", &PlaneGeometry::point),
-        vecField("normal", "Normal", &PlaneGeometry::normal, ParamType::Vec3, -1.0, 1.0, 0.05)};
+    using G = PlaneGeometry;
+    static const std::vector<Field<G>> f{
+        required(fields::vector("point", "Point", &G::point)),
+        required(
+            fields::vector("normal", "Normal", &G::normal, VectorRule::NonZero, -1.0, 1.0, 0.05))};
     return f;
 }
 const std::vector<Field<RectangleGeometry>>& rectangleFields() {
-    static const std::vector<Field<RectangleGeometry>> f{
-        vecField("center", "Centre", &RectangleGeometry::center),
-        vecField("u", "Half edge U", &RectangleGeometry::u),
-        vecField("v", "Half edge V", &RectangleGeometry::v)};
+    using G = RectangleGeometry;
+    static const std::vector<Field<G>> f{
+        required(fields::vector("center", "Centre", &G::center)),
+        required(fields::vector("u", "Half edge U", &G::u, VectorRule::NonZero)),
+        required(fields::vector("v", "Half edge V", &G::v, VectorRule::NonZero))};
     return f;
 }
 const std::vector<Field<BoxGeometry>>& boxFields() {
-    static const std::vector<Field<BoxGeometry>> f{vecField("min", "Min", &BoxGeometry::min),
-                                                   vecField("max", "Max", &BoxGeometry::max)};
+    using G = BoxGeometry;
+    static const std::vector<Field<G>> f{required(fields::vector("min", "Min", &G::min)),
+                                         required(fields::vector("max", "Max", &G::max))};
     return f;
 }
 const std::vector<Field<MeshGeometry>>& meshFields() {
-    static const std::vector<Field<MeshGeometry>> f{
-        textField("file", "File", &MeshGeometry::file, ParamType::File),
-        boolField("smooth_normals", "Smooth normals", &MeshGeometry::smoothNormals)};
+    using G = MeshGeometry;
+    static const std::vector<Field<G>> f{
+        required(fields::text("file", "File", &G::file, ParamType::File)),
+        fields::boolean("smooth_normals", "Smooth normals", &G::smoothNormals)};
     return f;
 }
 const std::vector<Field<Transform>>& transformFields() {
-    static const std::vector<Field<Transform>> f{
-        vecField("translate", "Translate", &Transform::translate),
-        vecField("rotate", "Rotate (deg)", &Transform::rotate, ParamType::Vec3, -360, 360, 5),
-        vecField("scale", "Scale", &Transform::scale, ParamType::Vec3, 1e-4, kBig, 0.05)};
+    using T = Transform;
+    static const std::vector<Field<T>> f{
+        fields::vector("translate", "Translate", &T::translate),
+        fields::vector("rotate", "Rotate (deg)", &T::rotate, VectorRule::Any, -360, 360, 5),
+        fields::vector("scale", "Scale", &T::scale, VectorRule::NonZeroComponents, 1e-4, kBig,
+                       0.05)};
     return f;
 }
 const std::vector<Field<Material>>& materialFields() {
-    static const std::vector<Field<Material>> f{
-        colorField("color", "Colour", &Material::color),
-        floatField("diffuse", "Diffuse", &Material::diffuse, 0, 1, 0.05),
-        floatField("specular", "Specular", &Material::specular, 0, 1, 0.05),
-        floatField("shininess", "Shininess", &Material::shininess, 0, 10000, 1),
-        floatField("reflectivity", "Reflectivity", &Material::reflectivity, 0, 1, 0.05),
-        floatField("transparency", "Transparency", &Material::transparency, 0, 1, 0.05),
-        floatField("ior", "Index of refraction", &Material::ior, 0.01, 10, 0.01)};
+    using M = Material;
+    const NumberRange fraction = NumberRange::fraction();
+    static const std::vector<Field<M>> f{
+        stated(fields::color("color", "Colour", &M::color)),
+        fields::number("diffuse", "Diffuse", &M::diffuse, fraction, 0, 1, 0.05),
+        fields::number("specular", "Specular", &M::specular, fraction, 0, 1, 0.05),
+        fields::number("shininess", "Shininess", &M::shininess, NumberRange::nonNegative(), 0,
+                       10000, 1),
+        fields::number("reflectivity", "Reflectivity", &M::reflectivity, fraction, 0, 1, 0.05),
+        fields::number("transparency", "Transparency", &M::transparency, fraction, 0, 1, 0.05),
+        fields::number("ior", "Index of refraction", &M::ior, NumberRange::positive(), 0.01, 10,
+                       0.01)};
     return f;
 }
 const std::vector<Field<Light>>& lightFields(bool sphere) {
     static const std::vector<Field<Light>> point{
-        enumField("type", "Type", &Light::type, {"point", "sphere"}),
-        vecField("position", "Position", &Light::position),
-        colorField("color", "Colour", &Light::color),
-        floatField("intensity", "Intensity", &Light::intensity, 1e-4, kBig, 0.1)};
+        required(
+            fields::choice("type", "Type", &Light::type, {"point", "sphere"}, {"Point", "Sphere"})),
+        required(fields::vector("position", "Position", &Light::position)),
+        fields::color("color", "Colour", &Light::color),
+        fields::number("intensity", "Intensity", &Light::intensity, NumberRange::positive(), 1e-4,
+                       kBig, 0.1)};
     static const std::vector<Field<Light>> sphereLight = [] {
         auto f = point;
-        f.insert(f.begin() + 2, floatField("radius", "Radius", &Light::radius, 1e-4, kBig, 0.05));
+        f.insert(f.begin() + 2,
+                 required(fields::number("radius", "Radius", &Light::radius,
+                                         NumberRange::positive(), 1e-4, kBig, 0.05)));
         return f;
     }();
     return sphere ? sphereLight : point;
 }
 const std::vector<Field<Camera>>& cameraFields() {
-    static const std::vector<Field<Camera>> f{
-        enumField("projection", "Projection", &Camera::projection, {"perspective", "orthographic"}),
-        vecField("position", "Position", &Camera::position),
-        vecField("target", "Target", &Camera::target),
-        vecField("up", "Up", &Camera::up),
-        floatField("fov_y", "Field of view (deg)", &Camera::fovY, 0.1, 179.9, 1),
-        floatField("ortho_height", "Ortho height", &Camera::orthoHeight, 1e-4, kBig, 0.1)};
+    using C = Camera;
+    static const std::vector<Field<C>> f{
+        fields::choice("projection", "Projection", &C::projection, {"perspective", "orthographic"},
+                       {"Perspective", "Orthographic"}),
+        stated(fields::vector("position", "Position", &C::position)),
+        stated(fields::vector("target", "Target", &C::target)),
+        stated(fields::vector("up", "Up", &C::up, VectorRule::NonZero)),
+        fields::number("fov_y", "Field of view (deg)", &C::fovY, NumberRange::open(0, 180), 0.1,
+                       179.9, 1),
+        fields::number("ortho_height", "Ortho height", &C::orthoHeight, NumberRange::positive(),
+                       1e-4, kBig, 0.1)};
     return f;
 }
 const std::vector<Field<RenderSettings>>& renderFields() {
-    static const std::vector<Field<RenderSettings>> f{
-        intField("width", "Width", &RenderSettings::width, 1, 16384),
-        intField("height", "Height", &RenderSettings::height, 1, 16384),
-        intField("max_depth", "Max depth", &RenderSettings::maxDepth, 0, 64),
-        // [0, 1) in the format: the largest float below 1 closes the descriptor's range.
-        floatField("min_weight", "Min ray weight", &RenderSettings::minWeight, 0.0,
-                   double(std::nextafter(1.0f, 0.0f)), 0.001),
-        intField("shadow_samples", "Shadow samples", &RenderSettings::shadowSamples, 0, 256),
-        intField("supersampling", "Supersampling", &RenderSettings::supersampling, 1, 256),
-        boolField("adaptive_supersampling", "Adaptive supersampling",
-                  &RenderSettings::adaptiveSupersampling),
-        enumField("tonemap", "Tone mapping", &RenderSettings::tonemap,
-                  {"clamp", "linear", "reinhard", "aces"}),
-        floatField("exposure", "Exposure (stops)", &RenderSettings::exposure, -20, 20, 0.1),
-        colorField("background", "Background", &RenderSettings::background),
-        colorField("ambient", "Ambient", &RenderSettings::ambient)};
+    using R = RenderSettings;
+    static const std::vector<Field<R>> f{
+        stated(fields::integer("width", "Width", &R::width, 1, kMaxImageSide, kMaxImageSide)),
+        stated(fields::integer("height", "Height", &R::height, 1, kMaxImageSide, kMaxImageSide)),
+        // The format accepts recursion to kMaxDepthLimit; an editor offers what is useful.
+        fields::integer("max_depth", "Max depth", &R::maxDepth, 0, kMaxDepthLimit, 64),
+        // [0, 1): the largest float below 1 closes what an editor offers.
+        fields::number("min_weight", "Min ray weight", &R::minWeight,
+                       NumberRange::fractionBelowOne(), 0.0, double(std::nextafter(1.0f, 0.0f)),
+                       0.001),
+        fields::integer("shadow_samples", "Shadow samples", &R::shadowSamples, 0, kMaxSampleCount,
+                        256),
+        fields::integer("supersampling", "Supersampling", &R::supersampling, 1, kMaxSampleCount,
+                        256),
+        fields::boolean("adaptive_supersampling", "Adaptive supersampling",
+                        &R::adaptiveSupersampling),
+        fields::choice("tonemap", "Tone mapping", &R::tonemap,
+                       {"clamp", "linear", "reinhard", "aces"},
+                       {"Clamp", "Linear", "Reinhard", "ACES"}),
+        fields::number("exposure", "Exposure (stops)", &R::exposure, NumberRange::any(), -20, 20,
+                       0.1),
+        fields::color("background", "Background", &R::background),
+        fields::color("ambient", "Ambient", &R::ambient)};
     return f;
 }
 
-template <class T>
-std::vector<ParamDescriptor> descriptorsOf(const std::vector<Field<T>>& fields) {
-    std::vector<ParamDescriptor> out;
-    for (const auto& f : fields) out.push_back(f.desc);
-    return out;
+const std::vector<Field<SphereGeometry>>& fieldsFor(const SphereGeometry&) {
+    return sphereFields();
 }
-
-template <class T>
-std::optional<ParamValue> getField(const std::vector<Field<T>>& fields, const T& t,
-                                   const std::string& key) {
-    for (const auto& f : fields)
-        if (f.desc.key == key) return f.get(t);
-    return std::nullopt;
+const std::vector<Field<PlaneGeometry>>& fieldsFor(const PlaneGeometry&) {
+    return planeFields();
 }
-
-template <class T>
-std::string setField(const std::vector<Field<T>>& fields, T& t, const std::string& key,
-                     const ParamValue& value) {
-    for (const auto& f : fields) {
-        if (f.desc.key != key) continue;
-        if (std::string e = validateParameter(f.desc, value); !e.empty()) return e;
-        f.set(t, value);
-        return {};
-    }
-    return "unknown parameter '" + key + "'";
+const std::vector<Field<RectangleGeometry>>& fieldsFor(const RectangleGeometry&) {
+    return rectangleFields();
+}
+const std::vector<Field<BoxGeometry>>& fieldsFor(const BoxGeometry&) {
+    return boxFields();
+}
+const std::vector<Field<MeshGeometry>>& fieldsFor(const MeshGeometry&) {
+    return meshFields();
+}
+const std::vector<Field<Transform>>& fieldsFor(const Transform&) {
+    return transformFields();
+}
+const std::vector<Field<Material>>& fieldsFor(const Material&) {
+    return materialFields();
+}
+const std::vector<Field<Light>>& fieldsFor(const Light& l) {
+    return lightFields(l.type == LightType::Sphere);
+}
+const std::vector<Field<Camera>>& fieldsFor(const Camera&) {
+    return cameraFields();
+}
+const std::vector<Field<RenderSettings>>& fieldsFor(const RenderSettings&) {
+    return renderFields();
 }
 
 std::string numberText(double v) {
     std::ostringstream s;
     s << v;
     return s.str();
-}
-
-std::string rangeError(const ParamDescriptor& d, double v) {
-    return d.key + " must be in [" + numberText(d.min) + ", " + numberText(d.max) + "], got " +
-           numberText(v);
 }
 
 bool holdsFor(ParamType type, const ParamValue& v) {
@@ -216,9 +205,27 @@ bool holdsFor(ParamType type, const ParamValue& v) {
     return false;
 }
 
+std::string checkVector(const ParamDescriptor& d, const Vec3& v) {
+    for (int i = 0; i < 3; ++i) {
+        if (d.vectorRule == VectorRule::NonZeroComponents && v[i] == 0.0f)
+            return d.key + " components must be non-zero";
+        if (d.vectorRule == VectorRule::NonNegative && v[i] < 0.0f)
+            return d.key + " components must be >= 0, got " + numberText(v[i]);
+    }
+    if (d.vectorRule == VectorRule::NonZero && v == Vec3(0.0f))
+        return d.key + " must be a non-zero vector";
+    return {};
+}
+
 }  // namespace
 
+const std::string& ParamDescriptor::enumLabel(int i) const {
+    const auto& from = enumLabels.empty() ? enumNames : enumLabels;
+    return from.at(std::size_t(i));
+}
+
 const std::vector<ParamDescriptor>& parameters(ParamKind kind) {
+    using fields::descriptorsOf;
     static const std::vector<std::vector<ParamDescriptor>> all{
         descriptorsOf(sphereFields()),    descriptorsOf(planeFields()),
         descriptorsOf(rectangleFields()), descriptorsOf(boxFields()),
@@ -250,11 +257,16 @@ const char* kindLabel(ParamKind kind) {
     return labels[std::size_t(kind)];
 }
 
+const std::string& toneMapName(ToneMap tonemap) {
+    return findParameter(ParamKind::Render, "tonemap")->enumNames.at(std::size_t(tonemap));
+}
+
 std::string validateParameter(const ParamDescriptor& d, const ParamValue& value) {
     if (!holdsFor(d.type, value)) return d.key + ": wrong value type";
     auto checkNumber = [&](double v) -> std::string {
         if (!std::isfinite(v)) return d.key + " must be finite";
-        if (v < d.min || v > d.max) return rangeError(d, v);
+        if (!d.range.contains(v))
+            return d.key + " must be " + d.range.describe() + ", got " + numberText(v);
         return {};
     };
     switch (d.type) {
@@ -268,26 +280,45 @@ std::string validateParameter(const ParamDescriptor& d, const ParamValue& value)
             const Vec3 v = std::get<Vec3>(value);
             for (int i = 0; i < 3; ++i)
                 if (std::string e = checkNumber(v[i]); !e.empty()) return e;
-            return {};
+            return checkVector(d, v);
         }
         default:
             return {};
     }
 }
 
+template <class T>
+std::string setField(T& target, const std::string& key, const ParamValue& value) {
+    return fields::set(fieldsFor(target), target, key, value);
+}
+template std::string setField(SphereGeometry&, const std::string&, const ParamValue&);
+template std::string setField(PlaneGeometry&, const std::string&, const ParamValue&);
+template std::string setField(RectangleGeometry&, const std::string&, const ParamValue&);
+template std::string setField(BoxGeometry&, const std::string&, const ParamValue&);
+template std::string setField(MeshGeometry&, const std::string&, const ParamValue&);
+template std::string setField(Transform&, const std::string&, const ParamValue&);
+template std::string setField(Material&, const std::string&, const ParamValue&);
+template std::string setField(Light&, const std::string&, const ParamValue&);
+template std::string setField(Camera&, const std::string&, const ParamValue&);
+template std::string setField(RenderSettings&, const std::string&, const ParamValue&);
+
+template <class T>
+std::optional<ParamValue> getField(const T& target, const std::string& key) {
+    return fields::get(fieldsFor(target), target, key);
+}
+template std::optional<ParamValue> getField(const SphereGeometry&, const std::string&);
+template std::optional<ParamValue> getField(const PlaneGeometry&, const std::string&);
+template std::optional<ParamValue> getField(const RectangleGeometry&, const std::string&);
+template std::optional<ParamValue> getField(const BoxGeometry&, const std::string&);
+template std::optional<ParamValue> getField(const MeshGeometry&, const std::string&);
+template std::optional<ParamValue> getField(const Transform&, const std::string&);
+template std::optional<ParamValue> getField(const Material&, const std::string&);
+template std::optional<ParamValue> getField(const Light&, const std::string&);
+template std::optional<ParamValue> getField(const Camera&, const std::string&);
+template std::optional<ParamValue> getField(const RenderSettings&, const std::string&);
+
 std::optional<ParamValue> getParameter(const Geometry& g, const std::string& key) {
-    return std::visit(
-        [&](const auto& s) -> std::optional<ParamValue> {
-            using S = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<S, SphereGeometry>)
-                return getField(sphereFields(), s, key);
-            if constexpr (std::is_same_v<S, PlaneGeometry>) return getField(planeFields(), s, key);
-            if constexpr (std::is_same_v<S, RectangleGeometry>)
-                return getField(rectangleFields(), s, key);
-            if constexpr (std::is_same_v<S, BoxGeometry>) return getField(boxFields(), s, key);
-            if constexpr (std::is_same_v<S, MeshGeometry>) return getField(meshFields(), s, key);
-        },
-        g);
+    return std::visit([&](const auto& s) { return fields::get(fieldsFor(s), s, key); }, g);
 }
 
 std::string setParameter(Geometry& g, const std::string& key, const ParamValue& value) {
@@ -295,76 +326,61 @@ std::string setParameter(Geometry& g, const std::string& key, const ParamValue& 
         [&](auto& s) -> std::string {
             using S = std::decay_t<decltype(s)>;
             S copy = s;
-            std::string e;
-            if constexpr (std::is_same_v<S, SphereGeometry>)
-                e = setField(sphereFields(), copy, key, value);
-            if constexpr (std::is_same_v<S, PlaneGeometry>) {
-                e = setField(planeFields(), copy, key, value);
-                if (e.empty() && key == "normal") {
-                    if (glm::length(copy.normal) < 1e-6f) return "normal must not be zero";
-                    copy.normal = glm::normalize(copy.normal);
-                }
-            }
+            if (std::string e = setField(copy, key, value); !e.empty()) return e;
+            if constexpr (std::is_same_v<S, PlaneGeometry>) copy.normal = planeNormal(copy.normal);
             if constexpr (std::is_same_v<S, RectangleGeometry>) {
-                e = setField(rectangleFields(), copy, key, value);
-                if (e.empty() && glm::length(glm::cross(copy.u, copy.v)) < 1e-8f)
-                    return "u and v must span a rectangle";
+                if (auto e = rectangleEdgesError(copy)) return e.message;
             }
             if constexpr (std::is_same_v<S, BoxGeometry>) {
-                e = setField(boxFields(), copy, key, value);
-                if (e.empty() &&
-                    (copy.min.x > copy.max.x || copy.min.y > copy.max.y || copy.min.z > copy.max.z))
-                    return "box min must not exceed max";
+                if (auto e = boxCornersError(copy)) return e.message;
             }
-            if constexpr (std::is_same_v<S, MeshGeometry>)
-                e = setField(meshFields(), copy, key, value);
-            if (e.empty()) s = std::move(copy);
-            return e;
+            s = std::move(copy);
+            return {};
         },
         g);
 }
 
 std::optional<ParamValue> getParameter(const Transform& t, const std::string& key) {
-    return getField(transformFields(), t, key);
+    return fields::get(transformFields(), t, key);
 }
 std::string setParameter(Transform& t, const std::string& key, const ParamValue& value) {
-    return setField(transformFields(), t, key, value);
+    return setField(t, key, value);
 }
 std::optional<ParamValue> getParameter(const Material& m, const std::string& key) {
-    return getField(materialFields(), m, key);
+    return fields::get(materialFields(), m, key);
 }
 std::string setParameter(Material& m, const std::string& key, const ParamValue& value) {
     Material copy = m;
-    if (std::string e = setField(materialFields(), copy, key, value); !e.empty()) return e;
-    if (copy.reflectivity + copy.transparency > 1.0f + 1e-6f)
-        return "reflectivity + transparency must not exceed 1";
+    if (std::string e = setField(copy, key, value); !e.empty()) return e;
+    if (auto e = materialWeightsError(copy)) return e.message;
     m = std::move(copy);
     return {};
 }
 std::optional<ParamValue> getParameter(const Light& l, const std::string& key) {
-    return getField(lightFields(l.type == LightType::Sphere), l, key);
+    return fields::get(fieldsFor(l), l, key);
 }
 std::string setParameter(Light& l, const std::string& key, const ParamValue& value) {
-    return setField(lightFields(l.type == LightType::Sphere), l, key, value);
+    return setField(l, key, value);
 }
 std::optional<ParamValue> getParameter(const Camera& c, const std::string& key) {
-    return getField(cameraFields(), c, key);
+    return fields::get(cameraFields(), c, key);
 }
 std::string setParameter(Camera& c, const std::string& key, const ParamValue& value) {
     Camera copy = c;
-    if (std::string e = setField(cameraFields(), copy, key, value); !e.empty()) return e;
-    const Vec3 forward = copy.target - copy.position;
-    if (glm::length(forward) < 1e-6f) return "camera target must differ from its position";
-    if (glm::length(glm::cross(forward, copy.up)) < 1e-8f)
-        return "camera up must not be parallel to the view";
+    if (std::string e = setField(copy, key, value); !e.empty()) return e;
+    if (auto e = cameraLookError(copy)) return e.message;
     c = std::move(copy);
     return {};
 }
 std::optional<ParamValue> getParameter(const RenderSettings& r, const std::string& key) {
-    return getField(renderFields(), r, key);
+    return fields::get(renderFields(), r, key);
 }
 std::string setParameter(RenderSettings& r, const std::string& key, const ParamValue& value) {
-    return setField(renderFields(), r, key, value);
+    RenderSettings copy = r;
+    if (std::string e = setField(copy, key, value); !e.empty()) return e;
+    if (std::string e = imageSizeError(copy.width, copy.height); !e.empty()) return e;
+    r = std::move(copy);
+    return {};
 }
 
 }  // namespace rs

@@ -2,55 +2,102 @@
 #include "session/interaction_policy.h"
 
 #include <algorithm>
-#include <array>
 #include <nlohmann/json.hpp>
+
+#include "scene/field_table.h"
 
 namespace rs {
 
 namespace {
 
-template <class E, std::size_t N>
-using Names = std::array<std::pair<E, const char*>, N>;
+using fields::Field;
+using P = InteractionPolicy;
 
-constexpr Names<MovingResolution, 3> kResolutions{{{MovingResolution::Full, "full"},
-                                                   {MovingResolution::Half, "half"},
-                                                   {MovingResolution::Quarter, "quarter"}}};
-constexpr Names<RefractionMode, 3> kRefractions{
-    {{RefractionMode::Full, "full"},
-     {RefractionMode::Diffuse, "diffuse"},
-     {RefractionMode::DiffuseExceptSelected, "diffuse_except_selected"}}};
-constexpr Names<ReflectionMode, 2> kReflections{
-    {{ReflectionMode::Full, "full"}, {ReflectionMode::Diffuse, "diffuse"}}};
-constexpr Names<MovingShadows, 4> kShadows{{{MovingShadows::Full, "full"},
-                                            {MovingShadows::HardOnly, "hard_only"},
-                                            {MovingShadows::Off, "off"},
-                                            {MovingShadows::Deferred, "deferred"}}};
-
-template <class E, std::size_t N>
-const char* nameOf(const Names<E, N>& names, E value) {
-    for (const auto& [e, n] : names)
-        if (e == value) return n;
-    return names[0].second;
+template <class T>
+Field<T> explained(Field<T> f, const char* toolTip) {
+    f.desc.toolTip = toolTip;
+    return f;
 }
 
-template <class E, std::size_t N>
-bool parseEnum(const nlohmann::json& j, const char* key, const Names<E, N>& names, E& out,
-               std::string& error) {
-    if (!j.is_string()) {
-        error = std::string("policy key '") + key + "' must be a string";
-        return false;
-    }
-    for (const auto& [e, n] : names) {
-        if (j.get<std::string>() == n) {
-            out = e;
-            return true;
+const std::vector<Field<P>>& policyFields() {
+    static const std::vector<Field<P>> f{
+        fields::choice("resolution", "Resolution while moving", &P::resolution,
+                       {"full", "half", "quarter"}, {"Full", "Half", "Quarter"}),
+        explained(fields::boolean("interleaved", "Interleaving", &P::interleaved),
+                  "2-pass interleaved frames: each frame traces every other pixel"),
+        explained(fields::boolean("box_proxy", "Box proxy", &P::boxProxy),
+                  "Trace the moving object as its bounding box"),
+        fields::choice("refraction", "Refraction while moving", &P::refraction,
+                       {"full", "diffuse", "diffuse_except_selected"},
+                       {"Full", "Diffuse", "Diffuse except selected"}),
+        fields::choice("reflection", "Reflection while moving", &P::reflection, {"full", "diffuse"},
+                       {"Full", "Diffuse"}),
+        fields::with(fields::integer("max_depth_while_moving", "Depth while moving",
+                                     &P::maxDepthWhileMoving, -1, kMaxDepthLimit, 64),
+                     [](ParamDescriptor& d) {
+                         d.specialValueText = "Scene's max depth";
+                         d.toolTip = "-1: the scene's max_depth";
+                     }),
+        fields::choice("shadows", "Shadows while moving", &P::shadows,
+                       {"full", "hard_only", "off", "deferred"},
+                       {"Full", "Hard only", "Off", "Deferred (added after release)"}),
+        explained(fields::boolean("supersample_while_moving", "Supersampling",
+                                  &P::supersampleWhileMoving),
+                  "Supersample while moving"),
+        explained(fields::boolean("dirty_regions", "Dirty regions", &P::dirtyRegions),
+                  "Re-trace only what an edit can change"),
+        explained(
+            fields::boolean("whole_frames_while_moving", "Whole frames",
+                            &P::wholeFramesWhileMoving),
+            "Each pass runs to its end and the view keeps the last complete picture until the "
+            "next one is done. Off: every mouse move restarts the pass and tiles show as they "
+            "come, fresher but mixed from several moves.")};
+    return f;
+}
+
+constexpr const char* kGovernorKey = "governor_target_ms";
+
+/// A JSON value as the descriptor's type, or the reason it is not one.
+std::string fromJson(const ParamDescriptor& d, const nlohmann::json& j, ParamValue& out) {
+    const std::string at = "policy key '" + d.key + "'";
+    switch (d.type) {
+        case ParamType::Bool:
+            if (!j.is_boolean()) return at + " must be true or false";
+            out = j.get<bool>();
+            return {};
+        case ParamType::Int:
+            if (!j.is_number_integer() || !d.range.contains(double(j.get<long long>())))
+                return at + " must be an integer " + d.range.describe();
+            out = int(j.get<long long>());
+            return {};
+        case ParamType::Enum: {
+            if (!j.is_string()) return at + " must be a string";
+            const auto& names = d.enumNames;
+            const auto found = std::find(names.begin(), names.end(), j.get<std::string>());
+            if (found != names.end()) {
+                out = int(found - names.begin());
+                return {};
+            }
+            std::string e = at + " has unknown value '" + j.get<std::string>() + "' (one of:";
+            for (const auto& n : names) e += " " + n;
+            return e + ")";
         }
+        default:
+            return at + " has a type policies do not use";
     }
-    error = std::string("policy key '") + key + "' has unknown value '" + j.get<std::string>() +
-            "' (one of:";
-    for (const auto& [e, n] : names) error += std::string(" ") + n;
-    error += ")";
-    return false;
+}
+
+nlohmann::ordered_json toJson(const ParamDescriptor& d, const ParamValue& v) {
+    switch (d.type) {
+        case ParamType::Bool:
+            return std::get<bool>(v);
+        case ParamType::Int:
+            return std::get<int>(v);
+        case ParamType::Enum:
+            return d.enumNames.at(std::size_t(std::get<int>(v)));
+        default:
+            return nullptr;
+    }
 }
 
 }  // namespace
@@ -99,19 +146,24 @@ TraceOptions InteractionPolicy::movingTraceOptions(const RenderSettings& setting
     return o;
 }
 
+const std::vector<ParamDescriptor>& policyParameters() {
+    static const std::vector<ParamDescriptor> d = fields::descriptorsOf(policyFields());
+    return d;
+}
+
+std::optional<ParamValue> getPolicyParameter(const InteractionPolicy& p, const std::string& key) {
+    return fields::get(policyFields(), p, key);
+}
+
+std::string setPolicyParameter(InteractionPolicy& p, const std::string& key,
+                               const ParamValue& value) {
+    return fields::set(policyFields(), p, key, value);
+}
+
 std::string policyToJson(const InteractionPolicy& p) {
     nlohmann::ordered_json j;
-    j["resolution"] = nameOf(kResolutions, p.resolution);
-    j["interleaved"] = p.interleaved;
-    j["box_proxy"] = p.boxProxy;
-    j["refraction"] = nameOf(kRefractions, p.refraction);
-    j["reflection"] = nameOf(kReflections, p.reflection);
-    j["max_depth_while_moving"] = p.maxDepthWhileMoving;
-    j["shadows"] = nameOf(kShadows, p.shadows);
-    j["supersample_while_moving"] = p.supersampleWhileMoving;
-    j["dirty_regions"] = p.dirtyRegions;
-    j["whole_frames_while_moving"] = p.wholeFramesWhileMoving;
-    j["governor_target_ms"] = p.governorTargetMs;
+    for (const auto& f : policyFields()) j[f.desc.key] = toJson(f.desc, f.get(p));
+    j[kGovernorKey] = p.governorTargetMs;
     return j.dump(2);
 }
 
@@ -122,54 +174,30 @@ bool policyFromJson(const std::string& text, InteractionPolicy& out, std::string
         return false;
     }
     InteractionPolicy p = out;
-    // Not a structured binding: clang before 16 refuses to capture one in needBool below.
     for (const auto& item : j.items()) {
         const std::string& key = item.key();
         const nlohmann::json& value = item.value();
-        auto needBool = [&](bool& field) {
-            if (!value.is_boolean()) {
-                error = "policy key '" + key + "' must be true or false";
-                return false;
-            }
-            field = value.get<bool>();
-            return true;
-        };
-        bool ok = true;
-        if (key == "resolution")
-            ok = parseEnum(value, "resolution", kResolutions, p.resolution, error);
-        else if (key == "interleaved")
-            ok = needBool(p.interleaved);
-        else if (key == "box_proxy")
-            ok = needBool(p.boxProxy);
-        else if (key == "refraction")
-            ok = parseEnum(value, "refraction", kRefractions, p.refraction, error);
-        else if (key == "reflection")
-            ok = parseEnum(value, "reflection", kReflections, p.reflection, error);
-        else if (key == "shadows")
-            ok = parseEnum(value, "shadows", kShadows, p.shadows, error);
-        else if (key == "supersample_while_moving")
-            ok = needBool(p.supersampleWhileMoving);
-        else if (key == "dirty_regions")
-            ok = needBool(p.dirtyRegions);
-        else if (key == "whole_frames_while_moving")
-            ok = needBool(p.wholeFramesWhileMoving);
-        else if (key == "max_depth_while_moving") {
-            if (!value.is_number_integer() || value.get<int>() < -1) {
-                error = "policy key 'max_depth_while_moving' must be an integer >= -1";
-                return false;
-            }
-            p.maxDepthWhileMoving = value.get<int>();
-        } else if (key == "governor_target_ms") {
-            if (!value.is_number() || value.get<double>() < 0.0) {
-                error = "policy key 'governor_target_ms' must be a number >= 0";
+        if (key == kGovernorKey) {
+            if (!value.is_number() || !(value.get<double>() >= 0.0)) {
+                error = std::string("policy key '") + kGovernorKey + "' must be a number >= 0";
                 return false;
             }
             p.governorTargetMs = value.get<double>();
-        } else {
+            continue;
+        }
+        const auto& all = policyFields();
+        const auto field =
+            std::find_if(all.begin(), all.end(), [&](const auto& f) { return f.desc.key == key; });
+        if (field == all.end()) {
             error = "unknown policy key '" + key + "'";
             return false;
         }
-        if (!ok) return false;
+        ParamValue v;
+        if (std::string e = fromJson(field->desc, value, v); !e.empty()) {
+            error = e;
+            return false;
+        }
+        field->set(p, v);
     }
     out = p;
     return true;

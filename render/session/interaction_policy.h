@@ -5,6 +5,7 @@
 
 #include "integrator/whitted.h"
 #include "scene/document.h"
+#include "scene/parameters.h"
 
 namespace rs {
 
@@ -51,6 +52,16 @@ struct InteractionPolicy {
     /// Trace options for interactive frames, given the scene's settings and the moving object.
     TraceOptions movingTraceOptions(const RenderSettings& settings, ObjectId moving) const;
 };
+
+/// The descriptors of the policy's settings, in the order Preferences shows them: the one
+/// place their JSON keys, labels, ranges and defaults are written (the governor's target,
+/// a time in milliseconds that Preferences offers as frames per second, stands apart).
+const std::vector<ParamDescriptor>& policyParameters();
+/// The value of a policy setting by key, or nullopt.
+std::optional<ParamValue> getPolicyParameter(const InteractionPolicy& p, const std::string& key);
+/// Validates and assigns a policy setting; empty on success, else the reason.
+std::string setPolicyParameter(InteractionPolicy& p, const std::string& key,
+                               const ParamValue& value);
 
 /// JSON text of a policy (Preferences and `raystudio-cli drag --policy FILE` use it).
 std::string policyToJson(const InteractionPolicy& policy);

@@ -298,7 +298,7 @@ void DesignerTest::preferences_ChangeSessionPolicy() {
     auto* shadows = dialog->findChild<QComboBox*>(QStringLiteral("shadows"));
     auto* resolution = dialog->findChild<QComboBox*>(QStringLiteral("resolution"));
     QVERIFY(shadows && resolution);
-    auto* whole = dialog->findChild<QCheckBox*>(QStringLiteral("wholeFrames"));
+    auto* whole = dialog->findChild<QCheckBox*>(QStringLiteral("whole_frames_while_moving"));
     QVERIFY(whole && whole->isChecked());  // Whole frames while moving, by default.
     shadows->setCurrentIndex(int(MovingShadows::Off));
     resolution->setCurrentIndex(int(MovingResolution::Quarter));

@@ -117,7 +117,7 @@ void UiLogicTest::fitScale_ScalesOnlyMeshesThatDoNotFitTheView() {
     QVERIFY(fitScale(cube(0.001f), view, 10.0f) > 100.0f);
     // A factor the Scale field could not show is clamped to its range.
     QCOMPARE(fitScale(cube(1e9f), view, 10.0f),
-             float(findParameter(ParamKind::Transform, "scale")->min));
+             float(findParameter(ParamKind::Transform, "scale")->softMin));
 }
 
 void UiLogicTest::duplicate_CountsOnFromTheCopysNumber() {
