@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -83,6 +84,8 @@ protected:
         blocks_ = fencedBlocks(text);
         for (std::size_t i = 0; i < blocks_.size(); ++i) {
             if (blocks_[i].language == "json") valid_.push_back(blocks_[i]);
+            if (blocks_[i].language == "json-saved")
+                saved_.push_back({i > 0 ? blocks_[i - 1] : Block{}, blocks_[i]});
             if (blocks_[i].language != "json-invalid") continue;
             Invalid bad{blocks_[i], {}};
             if (i + 1 < blocks_.size() && blocks_[i + 1].language == "stderr")
@@ -103,13 +106,20 @@ protected:
         Block example;
         std::string expected;  ///< The `stderr` block after it; empty when there is none.
     };
+    /// A `json-saved` block: what the program writes for the `json` block before it.
+    struct Saved {
+        Block example;
+        Block written;
+    };
     std::vector<Block> blocks_, valid_;
     std::vector<Invalid> invalid_;
+    std::vector<Saved> saved_;
 };
 
 TEST_F(FormatDoc, HasExamplesOfBothKindsAndNoUnknownFences) {
     // A misspelt fence (```jsn) would silently take an example out of this test.
-    const std::set<std::string> known = {"json", "json-invalid", "stderr", "text", "sh"};
+    const std::set<std::string> known = {"json",       "json-invalid", "stderr",
+                                         "json-saved", "text",         "sh"};
     for (const Block& b : blocks_)
         EXPECT_TRUE(known.count(b.language)) << where(b) << ": unknown fence language";
     EXPECT_GE(valid_.size(), 8u);
@@ -117,6 +127,10 @@ TEST_F(FormatDoc, HasExamplesOfBothKindsAndNoUnknownFences) {
     for (const Invalid& bad : invalid_)
         EXPECT_FALSE(bad.expected.empty())
             << where(bad.example) << " is not followed by a ```stderr block of its errors";
+    EXPECT_GE(saved_.size(), 1u);
+    for (const Saved& s : saved_)
+        EXPECT_EQ(s.example.language, "json")
+            << where(s.written) << " does not follow the ```json example it was saved from";
 }
 
 TEST_F(FormatDoc, EveryExampleLoads) {
@@ -271,10 +285,30 @@ TEST_F(FormatDoc, ExamplesComeBackTheSameAfterSaveAndLoad) {
             if (in.contains("scale") && in["scale"].is_number() && in["scale"] != 1) {
                 EXPECT_EQ(out.value("scale", nlohmann::json()), in["scale"]) << where(b);
             }
-            if (in.contains("file")) {
-                EXPECT_EQ(out.value("file", ""), in["file"]) << where(b);
+            if (in.contains("file")) {  // below the scenes' folder: relative, spelt plainly
+                const std::filesystem::path file = in["file"].get<std::string>();
+                EXPECT_EQ(out.value("file", ""), file.lexically_normal().generic_string())
+                    << where(b);
             }
         }
+    }
+}
+
+TEST_F(FormatDoc, TheWriterWritesWhatTheDocumentShows) {
+    // Compared as JSON with key order (ordered_json): which keys are written, in which order,
+    // with which values; the spacing of the page is its own.
+    using Ordered = nlohmann::ordered_json;
+    for (const Saved& s : saved_) {
+        const SceneDocument doc = load(s.example);
+        const std::string text = serializeScene(doc, kScenesDir);
+        const Ordered shown = Ordered::parse(s.written.text, nullptr, false);
+        ASSERT_FALSE(shown.is_discarded()) << where(s.written) << " is not JSON";
+        EXPECT_EQ(Ordered::parse(text), shown) << where(s.written) << "; the program writes\n"
+                                               << text;
+        // What is shown as written is itself a scene that loads into the same document.
+        SceneLoadResult again = loadInPlace(s.written);
+        EXPECT_TRUE(again.ok()) << again.errorText();
+        EXPECT_TRUE(again.document.sameContent(doc)) << where(s.written);
     }
 }
 
