@@ -1,6 +1,8 @@
 // A real window under Xvfb (xcb, Mesa GL): the OpenGL viewport must show the session's frame
 // as the CPU tone mapping gives it, and draw the selection outline, the light glyphs and the
 // transform gizmo.
+#include <QtCore/qfloat16.h>
+
 #include <QGuiApplication>
 #include <QSurfaceFormat>
 #include <QtTest>
@@ -9,6 +11,7 @@
 #include "display_choice.h"
 #include "gl_frame_view.h"
 #include "gui_test_support.h"
+#include "image/tonemap.h"
 #include "passepartout.h"
 #include "preferences.h"
 #include "scene_edits.h"
@@ -22,6 +25,7 @@ class GlViewportTest : public QObject {
 private Q_SLOTS:
     void initTestCase();
     void openGLViewport_ShowsTheToneMappedFrame();
+    void openGLShader_EveryOperatorAndExposure_AsTheCpuToneMap();
     void openGLViewport_AfterEditsUploadedByRectangles_ShowsTheSessionFrame();
     void openGLViewport_ThroughTheSceneCamera_DimsOnlyOutsideTheOutputFrame();
     void openGLViewport_DrawsTheGizmo_AndOutlinesEverySelectedObject();
@@ -123,6 +127,99 @@ void GlViewportTest::openGLViewport_ShowsTheToneMappedFrame() {
                                  QColor(kOutlineRgb[0], kOutlineRgb[1], kOutlineRgb[2]);
     QVERIFY(outlinePixels > 10);
     w.editor()->undoStack()->setClean();
+}
+
+/// The shader's tone mapping (resources/shaders/frame.frag) against the CPU's
+/// (render/image/tonemap.cpp) for every operator at three exposures, on greys from black to
+/// far over white, colours whose channels straddle white (Reinhard maps their luminance, the
+/// others each channel), and a value in sRGB's linear toe. Each input fills a block of a frame
+/// the GL view shows at one frame pixel a widget pixel.
+///
+/// Tolerance: the view uploads the frame as half floats (11 significant bits: a relative error
+/// up to 2^-12), so the CPU maps the same half-rounded input; what remains is the
+/// framebuffer's rounding to 8 bits (half a level) and the GPU's float arithmetic (exp2, pow,
+/// a division; Mesa's llvmpipe keeps them within a few ulps, far below a level). So the shown
+/// level must be within 0.5 + 0.1 of 255 * srgb(toneMap(input)), and, counted in levels, within
+/// one of the CPU's 8-bit code (toDisplay8) of the unrounded input. A branch computed
+/// differently (another curve, another white point, other luminance weights, exposure applied
+/// as e^stops) moves the levels of several inputs by more than that.
+void GlViewportTest::openGLShader_EveryOperatorAndExposure_AsTheCpuToneMap() {
+    const std::vector<Color> inputs = {Color(0.0f),
+                                       Color(0.002f),
+                                       Color(0.18f),
+                                       Color(1.0f),
+                                       Color(4.0f),
+                                       Color(20.0f),
+                                       Color(4.0f, 0.5f, 0.1f),
+                                       Color(0.05f, 0.3f, 2.0f),
+                                       Color(20.0f, 1.0f, 0.18f),
+                                       Color(0.6f, 0.18f, 0.9f)};
+    constexpr int kBlock = 12;
+    const int width = int(inputs.size()) * kBlock, height = kBlock;
+    QWidget host;
+    host.setWindowTitle(QStringLiteral("tone map"));
+    auto* view = new GlFrameView(&host);
+    view->widget()->setGeometry(0, 0, width, height);
+    host.resize(width, height);
+    host.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&host));
+    QVERIFY(QTest::qWaitForWindowExposed(view));
+
+    std::vector<std::shared_ptr<DisplayFrame>> frames;  // kept: each upload is a new frame
+    int checked = 0;
+    double worst = 0.0;  // levels between the shown value and the unrounded CPU value
+    for (ToneMap op : {ToneMap::Clamp, ToneMap::Linear, ToneMap::Reinhard, ToneMap::Aces})
+        for (float exposure : {-2.0f, 0.0f, 1.5f}) {
+            auto frame = std::make_shared<DisplayFrame>();
+            frame->width = width;
+            frame->height = height;
+            frame->tonemap = op;
+            frame->exposure = exposure;
+            frame->serial = frames.size() + 1;
+            frame->color.resize(std::size_t(width) * height);
+            frame->id.assign(std::size_t(width) * height, kNoObject);
+            for (int y = 0; y < height; ++y)
+                for (int x = 0; x < width; ++x)
+                    frame->color[std::size_t(y) * width + x] = inputs[std::size_t(x / kBlock)];
+            frames.push_back(frame);
+            QSignalSpy swapped(view, &QOpenGLWindow::frameSwapped);
+            view->showFrame(frame, ViewMode::Color, {});
+            QVERIFY(swapped.wait(5000));  // painted: the grab reads the framebuffer
+            const QImage shown = view->grabImage().convertToFormat(QImage::Format_RGB888);
+            QCOMPARE(shown.size(), QSize(width, height));
+            for (std::size_t i = 0; i < inputs.size(); ++i) {
+                const QColor got = shown.pixelColor(int(i) * kBlock + kBlock / 2, kBlock / 2);
+                const int level[3] = {got.red(), got.green(), got.blue()};
+                Color half;  // what the texture holds
+                for (int c = 0; c < 3; ++c) half[c] = float(qfloat16(inputs[i][c]));
+                const Color mapped = toneMap(half, op, exposure);
+                uint8_t cpu[3];
+                toDisplay8(inputs[i], op, exposure, cpu);
+                for (int c = 0; c < 3; ++c) {
+                    const double exact = 255.0 * double(srgbEncode(mapped[c]));
+                    const QString where =
+                        QStringLiteral(
+                            "operator %1, exposure %2, input (%3, %4, %5), channel %6: "
+                            "shown %7, CPU %8 (%9, 8-bit %10)")
+                            .arg(int(op))
+                            .arg(exposure)
+                            .arg(inputs[i].x)
+                            .arg(inputs[i].y)
+                            .arg(inputs[i].z)
+                            .arg(c)
+                            .arg(level[c])
+                            .arg(exact, 0, 'f', 3)
+                            .arg(double(mapped[c]), 0, 'f', 5)
+                            .arg(int(cpu[c]));
+                    worst = std::max(worst, std::abs(level[c] - exact));
+                    QVERIFY2(std::abs(level[c] - exact) <= 0.6, qPrintable(where));
+                    QVERIFY2(std::abs(level[c] - int(cpu[c])) <= 1, qPrintable(where));
+                    ++checked;
+                }
+            }
+        }
+    QCOMPARE(checked, 4 * 3 * 10 * 3);
+    qInfo("tone map: shown within %.3f levels of the CPU's unrounded values", worst);
 }
 
 void GlViewportTest::openGLViewport_AfterEditsUploadedByRectangles_ShowsTheSessionFrame() {
