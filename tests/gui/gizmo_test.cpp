@@ -35,6 +35,38 @@ void drag(QWidget* w, const QPointF& from, const QPointF& to, Qt::KeyboardModifi
     QTest::mouseRelease(w, Qt::LeftButton, mods, to.toPoint());
 }
 
+double length(const QPointF& p) {
+    return std::hypot(p.x(), p.y());
+}
+
+/// The unit widget direction in which `axis` leaves `pivot` on screen.
+QPointF screenDirection(const ViewProjection& view, const Vec3& pivot, const Vec3& axis) {
+    const QPointF d = *view.project(pivot + axis) - *view.project(pivot);
+    return d / length(d);
+}
+
+/// How far along unit `axis` a drag from widget point `from` to `to`, both on the line the axis
+/// through `pivot` makes on screen, carries the point it grabbed. Seen in perspective, the
+/// point pivot + s * axis lies at t(s) = a s / (1 + b s) along that line from the pivot's
+/// image (a projective map of the line); where s = 1 and s = 2 appear give a and b, and
+/// s(t) = t / (a - b t) inverts it. Only the view's projection is used, not the gizmo's code.
+double alongAxis(const ViewProjection& view, const Vec3& pivot, const Vec3& axis,
+                 const QPointF& from, const QPointF& to) {
+    const QPointF p0 = *view.project(pivot);
+    const QPointF e = screenDirection(view, pivot, axis);
+    const auto t = [&](const QPointF& p) { return QPointF::dotProduct(p - p0, e); };
+    const double t1 = t(*view.project(pivot + axis)), t2 = t(*view.project(pivot + 2.0f * axis));
+    const double b = (2.0 * t1 - t2) / (2.0 * (t2 - t1)), a = t1 * (1.0 + b);
+    const auto s = [&](const QPointF& p) { return t(p) / (a - b * t(p)); };
+    return s(to) - s(from);
+}
+
+/// Where the view ray through widget point `p` meets the horizontal plane at height `y`.
+Vec3 onHorizontalPlane(const ViewProjection& view, const QPointF& p, float y) {
+    const Ray r = view.rayThrough(p);
+    return r.at((y - r.origin.y) / r.dir.y);
+}
+
 }  // namespace
 
 class GizmoTest : public QObject {
@@ -149,43 +181,67 @@ void GizmoTest::zRing_DraggedWithCtrl_RotatesAboutZ_In15DegreeSteps() {
     QCOMPARE(editor()->undoStack()->count(), 1);
 }
 
+// A drag along an arrow carries the point grabbed under the cursor: the distance moved is
+// what the drag's pixels span along the axis at that depth (alongAxis), within 2 % (the press
+// lands on a whole pixel, up to half a pixel off the axis' line).
 void GizmoTest::xArrow_MovesAlongX_AndInLocalAxesAlongTheObjectsOwnX() {
     click("blue ball");
     const ObjectId id = idOf(*window_, "blue ball");
     Vec3 before = object("blue ball").transform.translate;
-    QPointF at = grab({TransformKind::Move, 0, false});
+    Vec3 centre = *entityCentre(doc(), id);
+    const ViewProjection view = viewport()->projection();
+    QPointF at = QPointF(grab({TransformKind::Move, 0, false}).toPoint());
     QVERIFY(!at.isNull());
-    drag(viewport(), at, at + QPointF(40, 0));
+    QPointF to = at + 40.0 * screenDirection(view, centre, Vec3(1, 0, 0));
+    drag(viewport(), at, to);
     Vec3 delta = object("blue ball").transform.translate - before;
-    QVERIFY2(delta.x > 0.2f && delta.y == 0.0f && delta.z == 0.0f, qPrintable(str(delta)));
+    double expected = alongAxis(view, centre, Vec3(1, 0, 0), at, to);
+    QVERIFY2(expected > 0.1 && std::abs(delta.x - expected) <= 0.02 * expected && delta.y == 0.0f &&
+                 delta.z == 0.0f,
+             qPrintable(str(delta) + QStringLiteral(", expected x %1").arg(expected)));
 
     // Turned 45 degrees about Z, in local axes the X arrow follows the ball's own X.
     QTest::keyClicks(viewport(), QStringLiteral("rz45"));
     QTest::keyClick(viewport(), Qt::Key_Return);
     viewport()->setLocalOrientation(true);
     before = object("blue ball").transform.translate;
-    at = grab({TransformKind::Move, 0, false});
-    QVERIFY(!at.isNull());
-    const QPointF tip = *viewport()->projection().project(before + gizmoAxes(doc(), id, true)[0]);
-    const QPointF c = *viewport()->projection().project(before);
-    drag(viewport(), at, at + (tip - c) * 0.5);
-    delta = object("blue ball").transform.translate - before;
+    centre = *entityCentre(doc(), id);
     const Vec3 ownX = glm::normalize(Vec3(1, 1, 0));
-    QVERIFY2(glm::length(delta) > 0.2f && glm::length(glm::cross(delta, ownX)) < 1e-3f,
-             qPrintable(str(delta)));
+    at = QPointF(grab({TransformKind::Move, 0, false}).toPoint());
+    QVERIFY(!at.isNull());
+    to = at + 35.0 * screenDirection(view, centre, ownX);
+    drag(viewport(), at, to);
+    delta = object("blue ball").transform.translate - before;
+    expected = alongAxis(view, centre, ownX, at, to);
+    QVERIFY2(
+        expected > 0.1 && std::abs(glm::dot(delta, ownX) - expected) <= 0.02 * expected &&
+            glm::length(glm::cross(delta, ownX)) < 1e-3f,
+        qPrintable(str(delta) + QStringLiteral(", expected %1 along (1, 1, 0)").arg(expected)));
     QCOMPARE(editor()->undoStack()->count(), 3);
 }
 
+// A drag on the XZ square moves in the floor's plane and keeps the point grabbed there under
+// the cursor: where the view rays through the press and the release meet the plane.
 void GizmoTest::planeSquare_MovesInItsPlaneOnly() {
     click("blue ball");
     const Vec3 before = object("blue ball").transform.translate;
+    const Vec3 centre = *entityCentre(doc(), idOf(*window_, "blue ball"));
+    const ViewProjection view = viewport()->projection();
     // The square between X and Z (normal Y): the floor's plane.
-    const QPointF at = grab({TransformKind::Move, 1, true});
+    const QPointF at = QPointF(grab({TransformKind::Move, 1, true}).toPoint());
     QVERIFY(!at.isNull());
-    drag(viewport(), at, at + QPointF(30, 20));
+    const QPointF to = at + QPointF(30, 20);
+    drag(viewport(), at, to);
     const Vec3 delta = object("blue ball").transform.translate - before;
-    QVERIFY2(std::abs(delta.y) < 1e-4f && std::abs(delta.x) > 0.1f && std::abs(delta.z) > 0.1f,
-             qPrintable(str(delta)));
+    const Vec3 grabbed = onHorizontalPlane(view, at, centre.y);
+    const Vec3 expected = onHorizontalPlane(view, to, centre.y) - grabbed;
+    QVERIFY2(std::abs(delta.y) < 1e-4f && glm::length(expected) > 0.1f &&
+                 glm::length(delta - expected) <= 0.02f * glm::length(expected),
+             qPrintable(str(delta) + QStringLiteral(", expected ") + str(expected)));
+    // The grabbed point, moved, is under the release point again.
+    const QPointF landed = *view.project(grabbed + delta);
+    QVERIFY2(length(landed - to) < 1.0,
+             qPrintable(QStringLiteral("%1, %2").arg(landed.x()).arg(landed.y())));
 }
 
 void GizmoTest::ctrlAndShiftClick_SelectSeveral_GMovesAll_OneUndoStep() {
@@ -220,14 +276,22 @@ void GizmoTest::gizmoArrow_MovesTheWholeGroup() {
     click("blue ball");
     click("glass ball", Qt::ControlModifier);
     const SceneDocument before = doc();
-    const QPointF at = grab({TransformKind::Move, 0, false});
+    // The gizmo sits at the mean of the selected centres.
+    const Vec3 pivot = 0.5f * (*entityCentre(doc(), idOf(*window_, "blue ball")) +
+                               *entityCentre(doc(), idOf(*window_, "glass ball")));
+    const ViewProjection view = viewport()->projection();
+    const QPointF at = QPointF(grab({TransformKind::Move, 0, false}).toPoint());
     QVERIFY(!at.isNull());
-    drag(viewport(), at, at + QPointF(40, 0));
+    const QPointF to = at + 40.0 * screenDirection(view, pivot, Vec3(1, 0, 0));
+    drag(viewport(), at, to);
+    const double expected = alongAxis(view, pivot, Vec3(1, 0, 0), at, to);
     const Vec3 a = object("blue ball").transform.translate -
                    before.findObject(idOf(*window_, "blue ball"))->transform.translate;
     const Vec3 b = object("glass ball").transform.translate -
                    before.findObject(idOf(*window_, "glass ball"))->transform.translate;
-    QVERIFY2(a.x > 0.2f && glm::length(a - b) < 1e-5f, qPrintable(str(a) + str(b)));
+    QVERIFY2(expected > 0.1 && std::abs(a.x - expected) <= 0.02 * expected && a.y == 0.0f &&
+                 a.z == 0.0f && glm::length(a - b) < 1e-5f,
+             qPrintable(str(a) + str(b) + QStringLiteral(", expected x %1").arg(expected)));
     QCOMPARE(editor()->undoStack()->count(), 1);
     editor()->undoStack()->undo();
     QVERIFY(doc().sameContent(before));
@@ -421,9 +485,14 @@ void GizmoTest::orbitAboutAFarWall_KeepsTheViewInsideTheRoom() {
             QVERIFY2(glm::dot(cam.position - plane->point, plane->normal) > 0.0f,
                      qPrintable(QString::fromStdString("behind the " + o.name + " at ") +
                                 str(cam.position)));
-    // It did turn, about 40 degrees.
+    // It turned as far as the drag says: 100 pixels across at 0.4 degrees a pixel is a yaw of
+    // 40 degrees about the vertical, the pitch left as it was (the wall only moves the camera
+    // along its line of sight, never turns it).
     const Vec3 forward = glm::normalize(cam.target - cam.position);
-    QVERIFY(glm::degrees(std::acos(glm::dot(forward, forwardBefore))) > 30.0f);
+    const auto heading = [](const Vec3& f) { return glm::degrees(std::atan2(f.x, -f.z)); };
+    const float yaw = std::remainder(heading(forward) - heading(forwardBefore), 360.0f);
+    QVERIFY2(std::abs(std::abs(yaw) - 40.0f) < 0.5f, qPrintable(QString::number(yaw)));
+    QVERIFY2(std::abs(forward.y - forwardBefore.y) < 1e-3f, qPrintable(str(forward)));
     QCOMPARE(editor()->undoStack()->count(), 0);
 }
 
