@@ -3,6 +3,8 @@
 #include <QScreen>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <future>
@@ -97,6 +99,33 @@ static int maxDifference(const QImage& a, const QImage& b) {
             worst =
                 std::max(worst, std::abs(int(a.constScanLine(y)[x]) - int(b.constScanLine(y)[x])));
     return worst;
+}
+
+/// The 8-bit level of display-linear `d`, sRGB's curve written out here (IEC 61966-2-1), not
+/// the product's srgbEncode.
+static int srgbLevel(double d) {
+    d = std::clamp(d, 0.0, 1.0);
+    const double e = d <= 0.0031308 ? 12.92 * d : 1.055 * std::pow(d, 1.0 / 2.4) - 0.055;
+    return int(std::lround(255.0 * e));
+}
+
+/// Pixels of `shown` more than one level from `expected(hdr)` (levels of R, G, B) of the
+/// frame's colour at the same pixel: the image is the frame's size. One level, since the
+/// product rounds float arithmetic where `expected` rounds doubles.
+template <class Expected>
+static int pixelsOffTheClosedForm(const QImage& shown, const DisplayFrame& frame,
+                                  Expected expected) {
+    if (shown.size() != QSize(frame.width, frame.height)) return frame.width * frame.height;
+    int off = 0;
+    for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x) {
+            const std::array<int, 3> want = expected(frame.color[std::size_t(y) * frame.width + x]);
+            const uchar* got = shown.constScanLine(y) + 3 * x;
+            bool bad = false;
+            for (int c = 0; c < 3; ++c) bad = bad || std::abs(int(got[c]) - want[c]) > 1;
+            off += bad;
+        }
+    return off;
 }
 
 template <class T>
@@ -375,6 +404,15 @@ void DisplayTest::exposureEdit_ChangesShownImageAndExport_UndoRestoresThem() {
     QTRY_COMPARE(w.viewport()->frame()->exposure, exposure + 1.0f);
     const QImage brighter = shownImage();
     QVERIFY(brighter != before);
+    // Each pixel is the clamp operator of its radiance times 2^exposure, in sRGB.
+    const double gain = std::exp2(double(exposure) + 1.0);
+    QCOMPARE(pixelsOffTheClosedForm(brighter, *w.viewport()->frame(),
+                                    [&](const Color& hdr) {
+                                        return std::array<int, 3>{srgbLevel(gain * hdr.x),
+                                                                  srgbLevel(gain * hdr.y),
+                                                                  srgbLevel(gain * hdr.z)};
+                                    }),
+             0);
     // The session's pixels shaded with the document's exposure.
     DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
     full.exposure = w.editor()->document().render.exposure;
@@ -400,6 +438,18 @@ void DisplayTest::toneMapEdit_ChangesShownImage_UndoRestoresIt() {
     w.editor()->edit(QStringLiteral("Tone map"), std::move(doc));
     QTRY_COMPARE(w.viewport()->frame()->tonemap, ToneMap::Reinhard);
     QVERIFY(shownImage() != before);
+    // Each pixel is Reinhard's L / (1 + L) of its Rec. 709 luminance L, the colour scaled by
+    // the same factor, in sRGB (the room's exposure is 0).
+    QCOMPARE(w.editor()->document().render.exposure, 0.0f);
+    QCOMPARE(pixelsOffTheClosedForm(
+                 shownImage(), *w.viewport()->frame(),
+                 [](const Color& hdr) {
+                     const double lum = 0.2126 * hdr.x + 0.7152 * hdr.y + 0.0722 * hdr.z;
+                     const double k = lum > 0.0 ? 1.0 / (1.0 + lum) : 0.0;
+                     return std::array<int, 3>{srgbLevel(k * hdr.x), srgbLevel(k * hdr.y),
+                                               srgbLevel(k * hdr.z)};
+                 }),
+             0);
     w.editor()->undoStack()->undo();
     QTRY_COMPARE(w.viewport()->frame()->tonemap, ToneMap::Clamp);
     QCOMPARE(shownImage(), before);
