@@ -10,6 +10,8 @@
 #include <QWidget>
 #include <algorithm>
 
+#include "scene/parameters.h"
+
 static void initRayStudioResources() {
     Q_INIT_RESOURCE(raystudio);
 }
@@ -21,6 +23,26 @@ QString shaderSource(const char* path) {
     QFile f(QString::fromLatin1(path));
     if (!f.open(QIODevice::ReadOnly)) return {};
     return QString::fromUtf8(f.readAll());
+}
+
+/// "#define TONEMAP_CLAMP 0" ... for every operator the schema names, so the shader's codes
+/// are the ToneMap values the frame carries, written in one place (scene/parameters.cpp).
+QString toneMapDefines() {
+    QString out;
+    const auto& names = findParameter(ParamKind::Render, "tonemap")->enumNames;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        out += QStringLiteral("#define TONEMAP_%1 %2\n")
+                   .arg(QString::fromStdString(names[i]).toUpper())
+                   .arg(i);
+    return out;
+}
+
+/// The fragment shader with the defines inserted after its #version line.
+QString fragmentSource() {
+    QString text = shaderSource(":/shaders/frame.frag");
+    const qsizetype eol = text.indexOf(QLatin1Char('\n'));
+    if (eol < 0) return text;
+    return text.insert(eol + 1, toneMapDefines());
 }
 }  // namespace
 
@@ -56,8 +78,7 @@ void GlFrameView::initializeGL() {
     initializeOpenGLFunctions();
     const bool ok = program_.addShaderFromSourceCode(QOpenGLShader::Vertex,
                                                      shaderSource(":/shaders/frame.vert")) &&
-                    program_.addShaderFromSourceCode(QOpenGLShader::Fragment,
-                                                     shaderSource(":/shaders/frame.frag")) &&
+                    program_.addShaderFromSourceCode(QOpenGLShader::Fragment, fragmentSource()) &&
                     program_.link();
     if (!ok) {
         qWarning("RayStudio: frame shader failed: %s", qPrintable(program_.log()));

@@ -6,7 +6,7 @@ out vec4 fragColor;
 uniform sampler2D colorTex;
 uniform usampler2D idTex;
 uniform int displayReady;   // 1: colorTex already holds display values
-uniform int tonemap;        // 0 clamp, 1 linear, 2 reinhard, 3 aces (render/image/tonemap.cpp)
+uniform int tonemap;        // a ToneMap value; TONEMAP_* are defined by the program that loads this
 uniform float exposure;
 uniform uint selected[32];  // kMaxOutlined (ui/display_frame.h)
 uniform int selectedCount;
@@ -25,13 +25,13 @@ float aces(float x) {
 vec3 toneMap(vec3 hdr) {
     float gain = exp2(exposure);
     vec3 x = vec3(sanitize(hdr.r * gain), sanitize(hdr.g * gain), sanitize(hdr.b * gain));
-    if (tonemap == 1) return clamp(x / 4.0, 0.0, 1.0);
-    if (tonemap == 2) {
+    if (tonemap == TONEMAP_LINEAR) return clamp(x / 4.0, 0.0, 1.0);
+    if (tonemap == TONEMAP_REINHARD) {
         float lum = dot(x, vec3(0.2126, 0.7152, 0.0722));
         if (lum <= 0.0) return vec3(0.0);
         return clamp(x * ((lum / (1.0 + lum)) / lum), 0.0, 1.0);
     }
-    if (tonemap == 3) return vec3(aces(x.r), aces(x.g), aces(x.b));
+    if (tonemap == TONEMAP_ACES) return vec3(aces(x.r), aces(x.g), aces(x.b));
     return clamp(x, 0.0, 1.0);
 }
 float srgb(float c) {
