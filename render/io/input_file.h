@@ -6,7 +6,7 @@
 
 namespace rs {
 
-/// Largest scene file read (README, "Scenes"): far beyond any hand-made or saved scene.
+/// Largest scene file read (scenes/FORMAT.md, "Limits"): far beyond any hand-made or saved scene.
 inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t(256) << 20;
 /// Largest mesh file read: 2 GiB, about 60 M triangles of binary PLY or STL.
 inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t(2) << 30;
