@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 namespace rs {
 
 TEST(Document, AddObject_AssignsFreshIdsThatAreNeverReused) {
@@ -38,6 +42,34 @@ TEST(Document, TransformMatrix_ScalesBeforeTranslating) {
     t.scale = Vec3(2.0f);
     Vec3 p = Vec3(t.matrix() * glm::vec4(1, 1, 1, 1));
     EXPECT_EQ(p, Vec3(3, 4, 5));
+}
+
+TEST(Document, FindObject_FindsEveryIdInAnyOrder_AndNothingForAnAbsentId) {
+    SceneDocument doc;
+    std::vector<ObjectId> ids;
+    for (int i = 0; i < 1000; ++i) {
+        Object o;
+        o.name = "o";
+        o.name += std::to_string(i);
+        ids.push_back(doc.addObject(o));
+        if (i % 3 == 0) doc.addLight(Light{});  // ids interleave between the two lists
+    }
+    std::erase_if(doc.objects, [](const Object& o) { return o.id % 7 == 0; });  // deletions
+    for (ObjectId id : ids) {
+        const Object* o = doc.findObject(id);
+        if (id % 7 == 0) {
+            EXPECT_EQ(o, nullptr) << id;
+        } else {
+            ASSERT_NE(o, nullptr) << id;
+            EXPECT_EQ(o->id, id);
+        }
+    }
+    for (const Light& l : doc.lights) EXPECT_EQ(doc.findLight(l.id), &l);
+    EXPECT_EQ(doc.findObject(doc.nextId), nullptr);
+    EXPECT_EQ(doc.findLight(ids[1]), nullptr);  // an object's id is no light's
+    // A list someone reordered is still searched correctly (only more slowly).
+    std::reverse(doc.objects.begin(), doc.objects.end());
+    for (const Object& o : doc.objects) EXPECT_EQ(doc.findObject(o.id), &o);
 }
 
 }  // namespace rs
