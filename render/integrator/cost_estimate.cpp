@@ -51,11 +51,13 @@ CostEstimate estimateCost(const SceneDocument& doc) {
     CostEstimate e;
     e.pixels = double(s.width) * double(s.height);
     e.samplesPerPixel = double(std::max(1, s.supersampling));
+    e.extraCameraRays = s.supersampling > 1 ? 1.0 : 0.0;
     e.treeRays = treeRays(doc);
     for (const Light& l : doc.lights)
         e.shadowRaysPerHit +=
             l.type == LightType::Point ? std::min(1, s.shadowSamples) : double(s.shadowSamples);
-    e.rays = e.pixels * e.samplesPerPixel * e.treeRays * (1.0 + e.shadowRaysPerHit);
+    e.rays = e.pixels * (e.samplesPerPixel + e.extraCameraRays) * e.treeRays *
+             (1.0 + e.shadowRaysPerHit);
     const uint64_t pixels = uint64_t(s.width) * uint64_t(s.height);
     // Linear colour and ids, normals for adaptive supersampling, and the converted image
     // (up to float RGB for EXR and HDR) while it is written.
@@ -70,8 +72,9 @@ std::string budgetExceeded(const CostEstimate& e, const CostBudget& budget) {
     if (!(e.rays <= budget.rays))
         text = "the render is estimated at " + format("%.3g", e.rays) +
                " rays, over the ray budget of " + format("%.3g", budget.rays) + " rays (" +
-               format("%.0f", e.pixels) + " pixels x " + format("%.0f", e.samplesPerPixel) +
-               " samples x " + format("%.4g", e.treeRays) + " rays per ray tree x (1 + " +
+               format("%.0f", e.pixels) + " pixels x (" + format("%.0f", e.samplesPerPixel) +
+               " samples" + (e.extraCameraRays > 0.0 ? " + 1" : "") + ") x " +
+               format("%.4g", e.treeRays) + " rays per ray tree x (1 + " +
                format("%.0f", e.shadowRaysPerHit) + " shadow rays))";
     if (e.frameBytes > budget.bytes) {
         if (!text.empty()) text += "; ";

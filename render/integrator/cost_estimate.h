@@ -21,11 +21,14 @@ inline constexpr uint64_t kDefaultMemoryBudget = uint64_t(8) << 30;
 struct CostEstimate {
     double pixels = 0.0;
     double samplesPerPixel = 0.0;
+    /// Camera rays a pixel may get beyond its samples: one when there are several (an
+    /// adaptive render traces the centre first, a plain one with ids the id pass besides).
+    double extraCameraRays = 0.0;
     /// Rays per camera sample: camera, reflected and refracted rays of one ray tree.
     double treeRays = 0.0;
     /// Shadow rays per shading point: one per point light, shadow_samples per sphere light.
     double shadowRaysPerHit = 0.0;
-    /// pixels x samples x tree rays x (1 + shadow rays): every ray the render may trace.
+    /// pixels x (samples + extra) x tree rays x (1 + shadow rays): every ray it may trace.
     double rays = 0.0;
     /// Frame buffers of a full render (colour, ids, adaptive buffers, the written image).
     uint64_t frameBytes = 0;

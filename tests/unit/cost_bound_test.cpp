@@ -109,10 +109,11 @@ TEST(CostBound, ClosedBoxes_EstimateIsTheRaysTraced) {
     SceneDocument diffuse = closedBox(matte);
     EXPECT_EQ(measure(diffuse).traced, pixels * 2.0);
     expectBound("closed diffuse box", diffuse, 1.001);
-    // Four samples a pixel, as an image render traces them (no id pass: see below).
+    // Four samples a pixel, as an image render traces them (no id pass: see below). The
+    // estimate counts a fifth camera ray, which an id pass or an adaptive centre takes.
     diffuse.render.supersampling = 4;
     EXPECT_EQ(measure(diffuse, false).traced, pixels * 4.0 * 2.0);
-    expectBound("closed diffuse box, 4 samples, no ids", diffuse, 1.001, false);
+    expectBound("closed diffuse box, 4 samples, no ids", diffuse, 1.25 * 1.001, false);
 
     Material silvered;
     silvered.name = "mirror";
@@ -224,15 +225,14 @@ SceneDocument fineDetail(int samples) {
 }
 
 // Where the tree is tight the estimate's samples a pixel must count every camera ray a pixel
-// may get: the estimate counts `supersampling` of them, but an adaptive render traces the
-// centre ray first and then all samples again where it refines (up to 1 + supersampling), and
-// a plain supersampled render with ids on traces the id pass besides. Both exceed the estimate
-// today (fine detail at 9 samples, adaptive: 60,432 rays traced against 55,296 estimated; the
-// closed box at 4 samples with ids: 9 against 8 rays a pixel). Enabled once estimateCost counts
-// supersampling + 1 camera rays a pixel when supersampling > 1.
-TEST(CostBound, DISABLED_CentreOrIdPassBesidesTheSamples_StaysUnderTheEstimate) {
+// may get: an adaptive render traces the centre ray first and then all samples again where it
+// refines (up to 1 + supersampling), and a plain supersampled render with ids on traces the id
+// pass besides. Counting `supersampling` alone was under both (fine detail at 9 samples,
+// adaptive: 60,432 rays traced against 55,296 estimated; the closed box at 4 samples with ids:
+// 9 against 8 rays a pixel).
+TEST(CostBound, CentreOrIdPassBesidesTheSamples_StaysUnderTheEstimate) {
     for (int samples : {2, 4, 9})
-        expectBound("fine detail, " + std::to_string(samples) + " samples, adaptive",
+        expectBound(std::string("fine detail, ") + std::to_string(samples) + " samples, adaptive",
                     fineDetail(samples), 3.0);
     Material matte;
     matte.name = "matte";
