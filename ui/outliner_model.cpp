@@ -1,5 +1,7 @@
-// OutlinerModel: ids are cached per row so edits that keep the structure only Q_EMIT dataChanged.
+// OutlinerModel: rows are cached (id, name, visibility) so an edit signals only what it changed.
 #include "outliner_model.h"
+
+#include <algorithm>
 
 #include "scene_editor.h"
 #include "scene_edits.h"
@@ -10,35 +12,92 @@ namespace {
 // internalId of top-level rows; children carry the row's group + 1 so parent() can find it.
 enum Group : quintptr { kCameraRow = 0, kLightsRow = 1, kObjectsRow = 2, kTopLevel = 100 };
 
-std::vector<ObjectId> idsOf(const auto& list) {
-    std::vector<ObjectId> ids;
-    for (const auto& e : list) ids.push_back(e.id);
-    return ids;
+template <class Row>
+std::vector<Row> rowsFor(const std::vector<Light>& lights) {
+    std::vector<Row> rows;
+    rows.reserve(lights.size());
+    for (const Light& l : lights) rows.push_back({l.id, l.name, true});
+    return rows;
+}
+template <class Row>
+std::vector<Row> rowsFor(const std::vector<Object>& objects) {
+    std::vector<Row> rows;
+    rows.reserve(objects.size());
+    for (const Object& o : objects) rows.push_back({o.id, o.name, o.visible});
+    return rows;
+}
+
+/// Rows a and b agree on ids in [0, n).
+template <class Row>
+std::size_t commonPrefix(const std::vector<Row>& a, const std::vector<Row>& b) {
+    std::size_t n = 0;
+    while (n < a.size() && n < b.size() && a[n].id == b[n].id) ++n;
+    return n;
+}
+template <class Row>
+std::size_t commonSuffix(const std::vector<Row>& a, const std::vector<Row>& b, std::size_t skip) {
+    std::size_t n = 0;
+    while (n + skip < a.size() && n + skip < b.size() &&
+           a[a.size() - 1 - n].id == b[b.size() - 1 - n].id)
+        ++n;
+    return n;
 }
 }  // namespace
 
 OutlinerModel::OutlinerModel(SceneEditor* editor, QObject* parent)
     : QAbstractItemModel(parent), editor_(editor) {
-    lightIds_ = idsOf(editor_->document().lights);
-    objectIds_ = idsOf(editor_->document().objects);
+    lightRows_ = rowsFor<Row>(editor_->document().lights);
+    objectRows_ = rowsFor<Row>(editor_->document().objects);
     connect(editor_, &SceneEditor::documentChanged, this, &OutlinerModel::onDocumentChanged);
 }
 
+const std::vector<OutlinerModel::Row>& OutlinerModel::rowsOf(int group) const {
+    return group == kLightsRow ? lightRows_ : objectRows_;
+}
+
+bool OutlinerModel::update(int group, std::vector<Row>& cached, std::vector<Row> rows) {
+    const QModelIndex parent = index(group, 0);
+    const std::size_t head = commonPrefix(cached, rows);
+    const std::size_t tail = commonSuffix(cached, rows, head);
+    const std::size_t removed = cached.size() - head - tail;
+    const std::size_t added = rows.size() - head - tail;
+    if (removed > 0 && added > 0) return false;  // ids replaced or reordered
+    if (removed > 0) {
+        beginRemoveRows(parent, int(head), int(head + removed - 1));
+        cached.erase(cached.begin() + std::ptrdiff_t(head),
+                     cached.begin() + std::ptrdiff_t(head + removed));
+        endRemoveRows();
+    } else if (added > 0) {
+        beginInsertRows(parent, int(head), int(head + added - 1));
+        cached.insert(cached.begin() + std::ptrdiff_t(head), rows.begin() + std::ptrdiff_t(head),
+                      rows.begin() + std::ptrdiff_t(head + added));
+        endInsertRows();
+    }
+    // Same ids now: signal each run of rows whose text or check changed, and only those.
+    for (std::size_t r = 0; r < rows.size();) {
+        if (cached[r] == rows[r]) {
+            ++r;
+            continue;
+        }
+        const std::size_t first = r;
+        while (r < rows.size() && !(cached[r] == rows[r])) {
+            cached[r] = rows[r];
+            ++r;
+        }
+        Q_EMIT dataChanged(index(int(first), 0, parent), index(int(r - 1), 0, parent));
+    }
+    return true;
+}
+
 void OutlinerModel::onDocumentChanged() {
-    auto lights = idsOf(editor_->document().lights);
-    auto objects = idsOf(editor_->document().objects);
-    if (lights != lightIds_ || objects != objectIds_) {
-        beginResetModel();
-        lightIds_ = std::move(lights);
-        objectIds_ = std::move(objects);
-        endResetModel();
-        return;
-    }
-    for (int g : {kLightsRow, kObjectsRow}) {
-        const QModelIndex p = index(g, 0);
-        const int n = rowCount(p);
-        if (n > 0) Q_EMIT dataChanged(index(0, 0, p), index(n - 1, 0, p));
-    }
+    const SceneDocument& doc = editor_->document();
+    auto lights = rowsFor<Row>(doc.lights);
+    auto objects = rowsFor<Row>(doc.objects);
+    if (update(kLightsRow, lightRows_, lights) && update(kObjectsRow, objectRows_, objects)) return;
+    beginResetModel();
+    lightRows_ = std::move(lights);
+    objectRows_ = std::move(objects);
+    endResetModel();
 }
 
 QModelIndex OutlinerModel::index(int row, int column, const QModelIndex& parent) const {
@@ -55,8 +114,8 @@ QModelIndex OutlinerModel::parent(const QModelIndex& child) const {
 int OutlinerModel::rowCount(const QModelIndex& parent) const {
     if (!parent.isValid()) return 3;
     if (parent.internalId() != kTopLevel || parent.column() != 0) return 0;
-    if (parent.row() == kLightsRow) return int(lightIds_.size());
-    if (parent.row() == kObjectsRow) return int(objectIds_.size());
+    if (parent.row() == kLightsRow || parent.row() == kObjectsRow)
+        return int(rowsOf(parent.row()).size());
     return 0;
 }
 
@@ -68,16 +127,21 @@ ObjectId OutlinerModel::idOf(const QModelIndex& i) const {
     if (!i.isValid()) return kNoObject;
     if (i.internalId() == kTopLevel)
         return i.row() == kCameraRow ? SceneEditor::kCameraSelection : kNoObject;
-    const auto& ids = i.internalId() == kLightsRow ? lightIds_ : objectIds_;
-    return i.row() < int(ids.size()) ? ids[std::size_t(i.row())] : kNoObject;
+    const auto& rows = rowsOf(int(i.internalId()));
+    return i.row() < int(rows.size()) ? rows[std::size_t(i.row())].id : kNoObject;
 }
 
 QModelIndex OutlinerModel::indexOf(ObjectId id) const {
     if (id == SceneEditor::kCameraSelection) return index(kCameraRow, 0);
     for (int g : {kLightsRow, kObjectsRow}) {
-        const auto& ids = g == kLightsRow ? lightIds_ : objectIds_;
-        for (std::size_t r = 0; r < ids.size(); ++r)
-            if (ids[r] == id) return index(int(r), 0, index(g, 0));
+        // Rows follow the document's order, which is by id (see SceneDocument::findObject):
+        // a binary search, then a whole search for a list in another order.
+        const auto& rows = rowsOf(g);
+        auto it = std::lower_bound(rows.begin(), rows.end(), id,
+                                   [](const Row& r, ObjectId key) { return r.id < key; });
+        if (it == rows.end() || it->id != id)
+            it = std::find_if(rows.begin(), rows.end(), [id](const Row& r) { return r.id == id; });
+        if (it != rows.end()) return index(int(it - rows.begin()), 0, index(g, 0));
     }
     return {};
 }

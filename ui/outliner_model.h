@@ -31,8 +31,21 @@ public:
     QModelIndex indexOf(ObjectId id) const;
 
 private:
+    /// What a row shows, kept so that an edit updates only the rows whose text or check
+    /// changed (a move changes none: 10,000 rows are not re-measured per mouse move).
+    struct Row {
+        ObjectId id = kNoObject;
+        std::string name;
+        bool visible = true;
+        bool operator==(const Row&) const = default;
+    };
     void onDocumentChanged();
-    std::vector<ObjectId> lightIds_, objectIds_;
+    /// Brings group `group`'s rows to `rows`: inserts or removes a contiguous run when that is
+    /// the whole difference of ids, then signals the rows whose text or check changed.
+    /// Returns false when the ids changed otherwise (the caller resets the model).
+    bool update(int group, std::vector<Row>& cached, std::vector<Row> rows);
+    const std::vector<Row>& rowsOf(int group) const;
+    std::vector<Row> lightRows_, objectRows_;
     SceneEditor* editor_;
 };
 

@@ -12,6 +12,8 @@ namespace rs::ui {
 OutlinerView::OutlinerView(SceneEditor* editor, QList<QAction*> contextActions, QWidget* parent)
     : QTreeView(parent), editor_(editor), model_(new OutlinerModel(editor, this)) {
     setModel(model_);
+    // Every row is one line: the view need not measure 100,000 rows to lay them out.
+    setUniformRowHeights(true);
     header()->hide();
     setSelectionMode(QAbstractItemView::ExtendedSelection);
     setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
@@ -20,6 +22,10 @@ OutlinerView::OutlinerView(SceneEditor* editor, QList<QAction*> contextActions, 
     expandAll();
     connect(model_, &QAbstractItemModel::modelReset, this, [this] {
         expandAll();
+        selectFromEditor();
+    });
+    connect(model_, &QAbstractItemModel::rowsInserted, this, [this](const QModelIndex& parent) {
+        expand(parent);  // a group that was empty was never expanded
         selectFromEditor();
     });
     // The current row is the active entity, so it is read with the selection: selecting
