@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "core/id_search.h"
 #include "scene_editor.h"
 #include "scene_edits.h"
 
@@ -134,14 +135,9 @@ ObjectId OutlinerModel::idOf(const QModelIndex& i) const {
 QModelIndex OutlinerModel::indexOf(ObjectId id) const {
     if (id == SceneEditor::kCameraSelection) return index(kCameraRow, 0);
     for (int g : {kLightsRow, kObjectsRow}) {
-        // Rows follow the document's order, which is by id (see SceneDocument::findObject):
-        // a binary search, then a whole search for a list in another order.
-        const auto& rows = rowsOf(g);
-        auto it = std::lower_bound(rows.begin(), rows.end(), id,
-                                   [](const Row& r, ObjectId key) { return r.id < key; });
-        if (it == rows.end() || it->id != id)
-            it = std::find_if(rows.begin(), rows.end(), [id](const Row& r) { return r.id == id; });
-        if (it != rows.end()) return index(int(it - rows.begin()), 0, index(g, 0));
+        // Rows follow the document's order, which is by id.
+        const std::ptrdiff_t r = indexById(rowsOf(g), id, [](const Row& row) { return row.id; });
+        if (r >= 0) return index(int(r), 0, index(g, 0));
     }
     return {};
 }

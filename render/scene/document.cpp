@@ -1,8 +1,9 @@
 // Document bookkeeping: id assignment, look-ups, content comparison and the image size limits.
 #include "scene/document.h"
 
-#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
+
+#include "core/id_search.h"
 
 namespace rs {
 
@@ -27,19 +28,10 @@ ObjectId SceneDocument::addLight(Light l) {
 }
 
 namespace {
-/// The entry of `list` with `id`. Ids are handed out in increasing order and entries are
-/// appended, so a list is normally sorted by id and a binary search finds the entry in
-/// O(log n) (a linear search per object per edit made moving one of 10,000 objects
-/// quadratic); a list someone reordered is still searched whole, so the answer never depends
-/// on that order.
 template <class T>
 T* findById(std::vector<T>& list, ObjectId id) {
-    auto it = std::lower_bound(list.begin(), list.end(), id,
-                               [](const T& e, ObjectId key) { return e.id < key; });
-    if (it != list.end() && it->id == id) return &*it;
-    for (T& e : list)
-        if (e.id == id) return &e;
-    return nullptr;
+    const std::ptrdiff_t i = indexById(list, id, [](const T& e) { return e.id; });
+    return i < 0 ? nullptr : &list[std::size_t(i)];
 }
 }  // namespace
 

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "core/id_search.h"
+
 namespace rs {
 
 namespace {
@@ -205,10 +207,8 @@ CompiledScene CompiledScene::withBoxProxy(ObjectId id) const {
 }
 
 int CompiledScene::primitiveIndex(ObjectId id) const {
-    const auto& prims = *primitives_;
-    for (std::size_t i = 0; i < prims.size(); ++i)
-        if (prims[i].id == id) return int(i);
-    return -1;
+    // Primitives follow the document's object order, which is by id.
+    return int(indexById(*primitives_, id, [](const Primitive& p) { return p.id; }));
 }
 
 Aabb CompiledScene::objectBounds(ObjectId id) const {
