@@ -148,7 +148,7 @@ void MaterialList::updateButtons() {
 void MaterialList::newMaterial() {
     SceneDocument doc = editor_->document();
     const std::string name = addMaterial(doc);
-    editor_->edit(tr("New material %1").arg(QString::fromStdString(name)), std::move(doc));
+    editor_->edit(tr("Add material \"%1\"").arg(QString::fromStdString(name)), std::move(doc));
     setCurrent(name);
 }
 
@@ -156,7 +156,7 @@ void MaterialList::duplicateMaterial() {
     SceneDocument doc = editor_->document();
     const std::string name = rs::ui::duplicateMaterial(doc, current());
     if (name.empty()) return;
-    editor_->edit(tr("Duplicate material %1").arg(QString::fromStdString(current())),
+    editor_->edit(tr("Duplicate material \"%1\"").arg(QString::fromStdString(current())),
                   std::move(doc));
     setCurrent(name);
 }
@@ -201,14 +201,14 @@ void MaterialList::deleteMaterial() {
         updateButtons();
         return;
     }
-    editor_->edit(tr("Delete material %1").arg(QString::fromStdString(name)), std::move(doc));
+    editor_->edit(tr("Delete material \"%1\"").arg(QString::fromStdString(name)), std::move(doc));
 }
 
 void MaterialList::assignToSelection() {
     SceneDocument doc = editor_->document();
     const std::string name = current();
     if (name.empty() || assignMaterial(doc, materialTargets(*editor_), name) == 0) return;
-    editor_->edit(tr("Assign material %1").arg(QString::fromStdString(name)), std::move(doc));
+    editor_->edit(tr("Assign material \"%1\"").arg(QString::fromStdString(name)), std::move(doc));
 }
 
 }  // namespace rs::ui

@@ -307,9 +307,14 @@ void MaterialsTest::newAndDuplicateMaterial_EachOneUndoStep() {
     QCOMPARE(list->current(), std::string("material"));
     QCOMPARE(list->list()->count(), int(before + 1));
     QCOMPARE(undoCount(), 1);
+    // The Edit menu reads "Undo Add material "material"", not "Undo New material material".
+    QCOMPARE(window_->editor()->undoStack()->undoText(),
+             QStringLiteral("Add material \"material\""));
 
     QVERIFY(list->setCurrent("orange plastic"));
     QTest::mouseClick(materialButton("duplicateMaterial"), Qt::LeftButton);
+    QCOMPARE(window_->editor()->undoStack()->undoText(),
+             QStringLiteral("Duplicate material \"orange plastic\""));
     QCOMPARE(doc().materials.size(), before + 2);
     const Material& copy = doc().materials.back();
     QCOMPARE(copy.name, std::string("orange plastic 2"));
