@@ -14,6 +14,7 @@
 #include "autosave.h"
 #include "background_jobs.h"
 #include "cluster_submit_dialog.h"
+#include "dialog_folders.h"
 #include "display_frame.h"
 #include "error_reporter.h"
 #include "image/image_io.h"
@@ -23,6 +24,7 @@
 #include "outliner_view.h"
 #include "placement.h"
 #include "render_queue.h"
+#include "scene/parameters.h"
 #include "scene_editor.h"
 #include "scene_file_writer.h"
 #include "session_controller.h"
@@ -72,8 +74,9 @@ void MainWindow::newFile() {
 
 void MainWindow::open() {
     if (!maybeSave()) return;
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open Scene"), QString(), kSceneFilter);
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open Scene"), dialogFolder(FileKind::Scene, editor_->filePath()), kSceneFilter);
+    rememberDialogFolder(FileKind::Scene, path);
     if (!path.isEmpty()) openFile(path);
 }
 
@@ -96,9 +99,11 @@ bool MainWindow::save() {
 }
 
 bool MainWindow::saveAs() {
-    QString path =
-        QFileDialog::getSaveFileName(this, tr("Save Scene"), editor_->filePath(), kSceneFilter);
+    const QString start =
+        editor_->filePath().isEmpty() ? dialogFolder(FileKind::Scene, {}) : editor_->filePath();
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Scene"), start, kSceneFilter);
     if (path.isEmpty()) return false;
+    rememberDialogFolder(FileKind::Scene, path);
     if (!isSceneFile(path)) path += QStringLiteral(".scene.json");
     return saveFile(path);
 }
@@ -127,8 +132,9 @@ void MainWindow::setRenderSize(int width, int height) {
 }
 
 void MainWindow::importMeshDialog() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Import Mesh"), QString(), kMeshFilter);
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Import Mesh"), dialogFolder(FileKind::Mesh, editor_->filePath()), kMeshFilter);
+    rememberDialogFolder(FileKind::Mesh, path);
     if (!path.isEmpty()) importMesh(path);
 }
 
@@ -189,7 +195,9 @@ void MainWindow::exportImageDialog() {
                                     .arg(frame->width)
                                     .arg(frame->height)
                               : tr("Export Current Frame");
-    const QString path = QFileDialog::getSaveFileName(this, title, QString(), kImageFilter);
+    const QString path = QFileDialog::getSaveFileName(
+        this, title, dialogFolder(FileKind::Image, editor_->filePath()), kImageFilter);
+    rememberDialogFolder(FileKind::Image, path);
     if (!path.isEmpty()) exportFrame(path);
 }
 
@@ -199,8 +207,11 @@ void MainWindow::renderImageDialog() {
     auto* form = new QFormLayout(&dialog);
     auto* width = new QSpinBox(&dialog);
     auto* height = new QSpinBox(&dialog);
-    width->setRange(1, 16384);
-    height->setRange(1, 16384);
+    // The format's range, from its descriptors (scene/parameters.cpp).
+    for (auto [spin, key] : {std::pair{width, "width"}, std::pair{height, "height"}}) {
+        const ParamDescriptor* d = findParameter(ParamKind::Render, key);
+        spin->setRange(int(d->range.min), int(d->range.max));
+    }
     width->setValue(editor_->document().render.width);
     height->setValue(editor_->document().render.height);
     form->addRow(tr("Width"), width);
@@ -210,9 +221,11 @@ void MainWindow::renderImageDialog() {
     connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
     form->addRow(buttons);
     if (dialog.exec() != QDialog::Accepted) return;
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Render Image To"), QString(), kImageFilter);
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Render Image To"), dialogFolder(FileKind::Image, editor_->filePath()),
+        kImageFilter);
     if (path.isEmpty()) return;
+    rememberDialogFolder(FileKind::Image, path);
     renderImage(path, width->value(), height->value());
 }
 

@@ -2,11 +2,14 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "default_scene.h"
+#include "dialog_folders.h"
 #include "display_choice.h"
 #include "display_frame.h"
 #include "placement.h"
@@ -49,6 +52,7 @@ private Q_SLOTS:
     void scaleAlongWorldX_StretchesTheAxisOfARotatedObjectThatLiesAlongX();
     void scaleAlongLocalAxes_MovesOtherObjectsAlongThoseAxes();
     void outlineShortcuts_AgreeWithOnOutlinePixelForPixel();
+    void dialogFolders_OpenWhereTheUserLastChose_PerKindOfFile();
 };
 
 void UiLogicTest::materials_DeleteRefusedWhileUsed_RenameFollowsUsers_NamesValidated() {
@@ -277,6 +281,33 @@ void UiLogicTest::outlineShortcuts_AgreeWithOnOutlinePixelForPixel() {
     }
     QCOMPARE(ui::outlinedBounds(f, {1}, {3}),
              ui::outlinedBounds(f, {1}, {}).united(ui::outlinedBounds(f, {3}, {})));
+}
+
+void UiLogicTest::dialogFolders_OpenWhereTheUserLastChose_PerKindOfFile() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("RayStudioTests"));
+    QCoreApplication::setApplicationName(QStringLiteral("RayStudioDialogFolders"));
+    QSettings().clear();
+    QTemporaryDir root;
+    QVERIFY(root.isValid());
+    const QString scenes = root.filePath(QStringLiteral("scenes"));
+    const QString meshes = root.filePath(QStringLiteral("meshes"));
+    QVERIFY(QDir().mkpath(scenes) && QDir().mkpath(meshes));
+    const QString document = scenes + QStringLiteral("/room.scene.json");
+
+    // Nothing chosen yet: the open document's folder, else home.
+    QCOMPARE(ui::dialogFolder(ui::FileKind::Mesh, document), scenes);
+    QCOMPARE(ui::dialogFolder(ui::FileKind::Mesh, {}), QDir::homePath());
+    // A mesh picked elsewhere: mesh dialogs open there, scene dialogs do not.
+    ui::rememberDialogFolder(ui::FileKind::Mesh, meshes + QStringLiteral("/bunny.ply"));
+    QCOMPARE(ui::dialogFolder(ui::FileKind::Mesh, document), meshes);
+    QCOMPARE(ui::dialogFolder(ui::FileKind::Scene, document), scenes);
+    // A cancelled dialog (empty path) forgets nothing; a folder since deleted is passed over.
+    ui::rememberDialogFolder(ui::FileKind::Mesh, {});
+    QCOMPARE(ui::dialogFolder(ui::FileKind::Mesh, document), meshes);
+    QVERIFY(QDir(meshes).removeRecursively());
+    QCOMPARE(ui::dialogFolder(ui::FileKind::Mesh, document), scenes);
+    QSettings().clear();
 }
 
 QTEST_GUILESS_MAIN(UiLogicTest)
