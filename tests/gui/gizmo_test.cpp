@@ -6,6 +6,7 @@
 #include <QtTest>
 #include <cmath>
 
+#include "drag_geometry.h"
 #include "gui_test_support.h"
 #include "outliner_model.h"
 #include "outliner_view.h"
@@ -33,38 +34,6 @@ void drag(QWidget* w, const QPointF& from, const QPointF& to, Qt::KeyboardModifi
     QTest::mousePress(w, Qt::LeftButton, {}, from.toPoint());
     for (int i = 1; i <= 8; ++i) moveHeld(w, from + (to - from) * (i / 8.0), mods);
     QTest::mouseRelease(w, Qt::LeftButton, mods, to.toPoint());
-}
-
-double length(const QPointF& p) {
-    return std::hypot(p.x(), p.y());
-}
-
-/// The unit widget direction in which `axis` leaves `pivot` on screen.
-QPointF screenDirection(const ViewProjection& view, const Vec3& pivot, const Vec3& axis) {
-    const QPointF d = *view.project(pivot + axis) - *view.project(pivot);
-    return d / length(d);
-}
-
-/// How far along unit `axis` a drag from widget point `from` to `to`, both on the line the axis
-/// through `pivot` makes on screen, carries the point it grabbed. Seen in perspective, the
-/// point pivot + s * axis lies at t(s) = a s / (1 + b s) along that line from the pivot's
-/// image (a projective map of the line); where s = 1 and s = 2 appear give a and b, and
-/// s(t) = t / (a - b t) inverts it. Only the view's projection is used, not the gizmo's code.
-double alongAxis(const ViewProjection& view, const Vec3& pivot, const Vec3& axis,
-                 const QPointF& from, const QPointF& to) {
-    const QPointF p0 = *view.project(pivot);
-    const QPointF e = screenDirection(view, pivot, axis);
-    const auto t = [&](const QPointF& p) { return QPointF::dotProduct(p - p0, e); };
-    const double t1 = t(*view.project(pivot + axis)), t2 = t(*view.project(pivot + 2.0f * axis));
-    const double b = (2.0 * t1 - t2) / (2.0 * (t2 - t1)), a = t1 * (1.0 + b);
-    const auto s = [&](const QPointF& p) { return t(p) / (a - b * t(p)); };
-    return s(to) - s(from);
-}
-
-/// Where the view ray through widget point `p` meets the horizontal plane at height `y`.
-Vec3 onHorizontalPlane(const ViewProjection& view, const QPointF& p, float y) {
-    const Ray r = view.rayThrough(p);
-    return r.at((y - r.origin.y) / r.dir.y);
 }
 
 }  // namespace
