@@ -6,6 +6,7 @@
 #include <QtTest>
 #include <cmath>
 
+#include "drag_geometry.h"
 #include "gui_test_support.h"
 #include "outliner_model.h"
 #include "outliner_view.h"
@@ -41,6 +42,13 @@ bool insideWalls(const SceneDocument& doc, const Vec3& p, QString* which) {
         }
     }
     return true;
+}
+
+/// The view's axes as the columns of a rotation: right, true up and forward.
+Mat3 viewAxes(const Camera& c) {
+    const Vec3 forward = glm::normalize(c.target - c.position);
+    const Vec3 right = glm::normalize(glm::cross(forward, c.up));
+    return Mat3(right, glm::cross(right, forward), forward);
 }
 
 }  // namespace
@@ -130,6 +138,10 @@ void EditingTest::orbitPanDolly_MoveTheViewOnly_DocumentUnmodifiedAndUndoEmpty()
     QVERIFY(near(snapshot->camera().origin(), v->viewCamera().position));
 }
 
+// A turntable turn at 0.4 degrees a pixel: 25 pixels to the right turn the heading 10 degrees
+// (about the vertical, the view swinging to the right), 10 pixels down tip the view 4 degrees
+// lower; and the turn is rigid about the ball, so the camera's offset from it turns exactly as
+// its axes do.
 void EditingTest::orbit_TurnsAboutTheSelectionsCentre() {
     clickObject("blue ball");
     const Vec3 centre = *entityCentre(doc(), idOf(*window_, "blue ball"));
@@ -138,6 +150,7 @@ void EditingTest::orbit_TurnsAboutTheSelectionsCentre() {
         return glm::length(v->viewCamera().position - p);
     };
     const float before = distanceTo(centre);
+    const Camera start = v->viewCamera();
     const QPoint c = v->rect().center();
     // A turn small enough that no wall comes between the ball and the view (a larger one is
     // clipped: orbitAboutAFarWall_KeepsTheViewInsideTheRoom).
@@ -147,7 +160,22 @@ void EditingTest::orbit_TurnsAboutTheSelectionsCentre() {
     // A rigid turn about the ball: the view keeps its distance to it, not to a point 8.5 away.
     QVERIFY2(std::abs(distanceTo(centre) - before) < 1e-3f,
              qPrintable(QStringLiteral("%1 -> %2").arg(before).arg(distanceTo(centre))));
-    QVERIFY(glm::length(v->viewCamera().position - doc().camera.position) > 0.5f);
+    const Camera turned = v->viewCamera();
+    const auto heading = [](const Camera& c) {
+        const Vec3 f = glm::normalize(c.target - c.position);
+        return glm::degrees(std::atan2(f.x, -f.z));
+    };
+    const auto elevation = [](const Camera& c) {
+        return glm::degrees(std::asin(glm::normalize(c.target - c.position).y));
+    };
+    const float yaw = std::remainder(heading(turned) - heading(start), 360.0f);
+    const float pitch = elevation(turned) - elevation(start);
+    QVERIFY2(std::abs(yaw - 10.0f) < 0.05f && std::abs(pitch + 4.0f) < 0.05f,
+             qPrintable(QStringLiteral("yaw %1, pitch %2").arg(yaw).arg(pitch)));
+    const Vec3 expected =
+        centre + viewAxes(turned) * glm::transpose(viewAxes(start)) * (start.position - centre);
+    QVERIFY2(glm::length(turned.position - expected) < 1e-3f,
+             qPrintable(str(turned.position) + QStringLiteral(", expected ") + str(expected)));
 }
 
 void EditingTest::sceneCameraFromView_IsOneUndoStep_AndThroughSceneCameraFollowsIt() {
@@ -314,25 +342,44 @@ void EditingTest::escape_RestoresTheSelection_AndLeavesNoUndoStep() {
     QVERIFY(!window_->editor()->undoStack()->canUndo());
 }
 
+// G X carries the ball along X as far as the cursor goes along the image of the X axis through
+// it (alongAxis, within 2 %: the cursor stands on whole pixels, up to half a pixel off that
+// line); with Ctrl held, that distance rounded to the nearest multiple of the 0.25 grid step.
+// The drag ends an odd number of steps away, where a grid of another step would not land.
 void EditingTest::ctrlWhileMoving_SnapsToTheGrid() {
     clickObject("blue ball");
     const ObjectId id = idOf(*window_, "blue ball");
     const Vec3 before = doc().findObject(id)->transform.translate;
+    const Vec3 centre = *entityCentre(doc(), id);
+    const Vec3 x(1, 0, 0);
     Viewport* v = viewport();
-    const QPoint c = v->rect().center();
+    const ViewProjection view = v->projection();
+    const QPoint c = view.project(centre)->toPoint();
+    const QPointF e = screenDirection(view, centre, x);
+    const auto along = [&](double pixels) { return c + (pixels * e).toPoint(); };
     QTest::mouseMove(v, c);
     QTest::keyClicks(v, QStringLiteral("gx"));
-    for (int i = 1; i <= 6; ++i) QTest::mouseMove(v, c + QPoint(13 * i, 0));
-    const QPointF end(c + QPoint(83, 0));
+    for (int i = 1; i <= 6; ++i) QTest::mouseMove(v, along(12.0 * i));
+    const double free = alongAxis(view, centre, x, c, along(72.0));
+    const Vec3 followed = doc().findObject(id)->transform.translate - before;
+    QVERIFY2(free > 0.3 && std::abs(followed.x - free) <= 0.02 * free && followed.y == 0.0f &&
+                 followed.z == 0.0f,
+             qPrintable(str(followed) + QStringLiteral(", expected x %1").arg(free)));
+    const QPointF end(along(78.0));
     QMouseEvent move(QEvent::MouseMove, end, v->mapToGlobal(end), Qt::NoButton, Qt::NoButton,
                      Qt::ControlModifier);
     QApplication::sendEvent(v, &move);
     QTest::mouseClick(v, Qt::LeftButton, {}, end.toPoint());  // A click confirms.
     QVERIFY(!v->transforming());
     const Vec3 delta = doc().findObject(id)->transform.translate - before;
-    const float steps = delta.x / ModalTransform::kGridStep;
-    QVERIFY2(std::abs(delta.x) > 0.2f && std::abs(steps - std::round(steps)) < 1e-3f,
-             qPrintable(str(delta)));
+    const double steps = alongAxis(view, centre, x, c, end) / 0.25;
+    // Not so near half a step that the whole pixels could round it either way (they stay
+    // within 0.01 steps of alongAxis), and an odd number of steps.
+    QVERIFY2(std::abs(steps - std::floor(steps) - 0.5) > 0.1 && int(std::round(steps)) % 2 == 1,
+             qPrintable(QString::number(steps)));
+    const double snapped = 0.25 * std::round(steps);
+    QVERIFY2(snapped > 0.0 && std::abs(delta.x - snapped) < 1e-5,
+             qPrintable(str(delta) + QStringLiteral(", expected x %1").arg(snapped)));
     QCOMPARE(delta.y, 0.0f);
     QCOMPARE(delta.z, 0.0f);
     QCOMPARE(window_->editor()->undoStack()->count(), 1);
@@ -356,12 +403,19 @@ void EditingTest::lightGlyph_IsPickedByClicking_AndMovesWithG() {
     // The glyph followed it to the right.
     QVERIFY(viewport()->lightGlyphs().front().centre.x() > at.x() + 5);
 
-    // The existing mouse drag moves it too.
+    // The mouse drag moves it too, in the plane through it parallel to the image, as far as
+    // the drag's 30 pixels down span at its depth (acrossView, exact but for rounding).
+    const Vec3 dragged = doc().findLight(id)->position;
+    QCOMPARE(viewport()->projection().imageRect(), viewport()->rect());  // the image fills it
+    const Vec3 expected =
+        acrossView(viewport()->viewCamera(), viewport()->height(), dragged, QPointF(0, 30));
     const QPoint from = viewport()->lightGlyphs().front().centre.toPoint();
     QTest::mousePress(viewport(), Qt::LeftButton, {}, from);
     for (int i = 1; i <= 5; ++i) QTest::mouseMove(viewport(), from + QPoint(0, 6 * i));
     QTest::mouseRelease(viewport(), Qt::LeftButton, {}, from + QPoint(0, 30));
-    QVERIFY(doc().findLight(id)->position.y < before.y - 0.1f);
+    const Vec3 moved = doc().findLight(id)->position - dragged;
+    QVERIFY2(expected.y < -0.1f && glm::length(moved - expected) <= 1e-3f * glm::length(expected),
+             qPrintable(str(moved) + QStringLiteral(", expected ") + str(expected)));
     QCOMPARE(window_->editor()->undoStack()->count(), 2);
 }
 
