@@ -16,6 +16,7 @@
 #include <QToolBar>
 #include <QtTest>
 
+#include "drag_geometry.h"
 #include "error_reporter.h"
 #include "gui_test_support.h"
 #include "io/scene_io.h"
@@ -25,6 +26,7 @@
 #include "property_panel.h"
 #include "scene/parameters.h"
 #include "session/governor.h"
+#include "transform_edits.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -129,25 +131,38 @@ void DesignerTest::clickOnNothing_ClearsSelection() {
     QCOMPARE(window_->editor()->selection(), kNoObject);
 }
 
+// A drag moves the ball in the plane through its centre parallel to the image, as far as the
+// drag's 40 pixels span at that depth (acrossView: similar triangles, exact but for rounding).
 void DesignerTest::dragSphere_MovesItInDocument_AndUndoRestores() {
     const SceneDocument before = window_->editor()->document();
     const ObjectId blue = idOf(*window_, "blue ball");
     const auto [x, y] = pixelOf(*window_->viewport()->frame(), blue);
     Viewport* v = window_->viewport();
+    QCOMPARE(v->projection().imageRect(), v->rect());  // the image fills the viewport
+    const Vec3 expected =
+        acrossView(v->viewCamera(), v->height(), *entityCentre(before, blue), QPointF(40, 0));
     const QPoint start = v->widgetPointOf(x, y);
     const int stepsBefore = window_->editor()->undoStack()->count();
     QTest::mousePress(v, Qt::LeftButton, {}, start);
     for (int i = 1; i <= 10; ++i) QTest::mouseMove(v, start + QPoint(4 * i, 0));
     QTest::mouseRelease(v, Qt::LeftButton, {}, start + QPoint(40, 0));
-    const Object* moved = window_->editor()->document().findObject(blue);
-    QVERIFY(moved->transform.translate.x > 0.1f);
+    const Vec3 moved = window_->editor()->document().findObject(blue)->transform.translate;
+    const Vec3 delta = moved - before.findObject(blue)->transform.translate;
+    QVERIFY2(expected.x > 0.1f && glm::length(delta - expected) <= 1e-3f * glm::length(expected),
+             qPrintable(QStringLiteral("(%1, %2, %3), expected (%4, %5, %6)")
+                            .arg(delta.x)
+                            .arg(delta.y)
+                            .arg(delta.z)
+                            .arg(expected.x)
+                            .arg(expected.y)
+                            .arg(expected.z)));
     QCOMPARE(window_->editor()->undoStack()->count(), stepsBefore + 1);  // One drag, one step.
     QVERIFY(settle(*window_));
 
     window_->editor()->undoStack()->undo();
     QVERIFY(window_->editor()->document().sameContent(before));
     window_->editor()->undoStack()->redo();
-    QVERIFY(window_->editor()->document().findObject(blue)->transform.translate.x > 0.1f);
+    QVERIFY(window_->editor()->document().findObject(blue)->transform.translate == moved);
 }
 
 void DesignerTest::updateRate_FallsToZeroInTheStatusBarOnceTheUserStops() {
@@ -199,23 +214,33 @@ void DesignerTest::governorLabel_SaysAsSetOnceTheFrameRefines() {
     QCOMPARE(label->text(), QStringLiteral("governor: off"));
 }
 
+// Locked to Y, the ball's centre goes to the point of its vertical line under the cursor: with
+// the cursor on that line's image, as far up as alongAxis says (within 2 %: whole pixels).
 void DesignerTest::dragWithAxisLock_MovesAlongThatAxisOnly_AndEscapeCancels() {
     const SceneDocument before = window_->editor()->document();
     const ObjectId orange = idOf(*window_, "floating ball");
     const auto [x, y] = pixelOf(*window_->viewport()->frame(), orange);
     QCOMPARE(window_->viewport()->frame()->idAt(x, y), orange);
     Viewport* v = window_->viewport();
+    const ViewProjection view = v->projection();
+    const Vec3 centre = *entityCentre(before, orange);
+    const QPointF image = *view.project(centre);
+    const QPoint to = (image + 36.0 * screenDirection(view, centre, Vec3(0, 1, 0))).toPoint();
     const QPoint start = v->widgetPointOf(x, y);
     QTest::mousePress(v, Qt::LeftButton, {}, start);
     QTest::mouseMove(v, start + QPoint(5, 5));
     QTest::keyClick(v, Qt::Key_Y);
-    QTest::mouseMove(v, start + QPoint(20, -30));
+    QTest::mouseMove(v, to);
     const Vec3 t = window_->editor()->document().findObject(orange)->transform.translate;
     QCOMPARE(t.x, 0.0f);
     QCOMPARE(t.z, 0.0f);
-    QVERIFY2(t.y > 0.05f, qPrintable(QStringLiteral("%1 %2 %3").arg(t.x).arg(t.y).arg(t.z)));
+    const double expected = alongAxis(view, centre, Vec3(0, 1, 0), image, to);
+    QVERIFY2(
+        expected > 0.1 && std::abs(t.y - expected) <= 0.02 * expected,
+        qPrintable(
+            QStringLiteral("%1 %2 %3, expected y %4").arg(t.x).arg(t.y).arg(t.z).arg(expected)));
     QTest::keyClick(v, Qt::Key_Escape);
-    QTest::mouseRelease(v, Qt::LeftButton, {}, start + QPoint(20, -30));
+    QTest::mouseRelease(v, Qt::LeftButton, {}, to);
     QVERIFY(window_->editor()->document().sameContent(before));
     QVERIFY(!window_->editor()->undoStack()->canUndo());
 }
