@@ -255,8 +255,9 @@ TEST(Schema, EveryLegalValue_IsAcceptedWrittenAndReadBackBitForBit) {
                     << what(kind, d) << " refused by its setter";
                 const std::optional<ParamValue> stored = get(h.doc, kind, d.key);
                 ASSERT_TRUE(stored) << what(kind, d);
-                if (!(kind == ParamKind::Plane && d.key == "normal"))  // normalised on set
+                if (!(kind == ParamKind::Plane && d.key == "normal")) {  // normalised on set
                     EXPECT_EQ(*stored, v) << what(kind, d);
+                }
                 const SceneLoadResult back = reread(h.doc);
                 ASSERT_TRUE(back.ok()) << what(kind, d) << ": " << back.errorText();
                 SceneDocument read = back.document;
