@@ -47,6 +47,33 @@ const char* const kUsage =
     "results go to stdout, errors to stderr; exit codes: 0 success, 2 bad input or usage,\n"
     "1 any other failure\n";
 
+/// True when an argument after the command asks for help.
+bool asksForHelp(int argc, char** argv) {
+    for (int i = 2; i < argc; ++i)
+        if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) return true;
+    return false;
+}
+
+/// The usage of one command: the entries of kUsage that begin with it (render has two).
+std::string commandUsage(const std::string& command) {
+    std::string out, line;
+    bool inEntry = false;
+    for (const char* p = kUsage; *p; ++p) {
+        line += *p;
+        if (*p != '\n') continue;
+        // An entry starts "  NAME " and goes on with lines indented further.
+        const bool header = line.size() > 2 && line.compare(0, 2, "  ") == 0 && line[2] != ' ';
+        if (header)
+            inEntry = line.compare(2, command.size() + 1, command + " ") == 0 ||
+                      line.compare(2, command.size() + 1, command + "\n") == 0;
+        else if (line.compare(0, 3, "   ") != 0)
+            inEntry = false;
+        if (inEntry) out += line;
+        line.clear();
+    }
+    return out.empty() ? std::string() : "usage: raystudio-cli\n" + out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -55,6 +82,13 @@ int main(int argc, char** argv) {
         return 2;
     }
     const std::string command = argv[1];
+    if (asksForHelp(argc, argv)) {
+        const std::string usage = commandUsage(command);
+        if (!usage.empty()) {
+            std::fputs(usage.c_str(), stdout);
+            return 0;
+        }
+    }
     try {
         if (command == "render") return rs::cli::runRender(argc, argv);
         if (command == "validate") return rs::cli::runValidate(argc, argv);

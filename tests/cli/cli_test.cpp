@@ -58,6 +58,24 @@ TEST_F(CliTest, Help_PrintsUsageToStdoutAndExits0) {
     EXPECT_EQ(r.err, "");
 }
 
+TEST_F(CliTest, CommandHelp_PrintsThatCommandsUsageToStdoutAndExits0) {
+    for (const char* command : {"render", "validate", "bench", "drag", "merge", "farm"}) {
+        for (const char* flag : {"--help", "-h"}) {
+            CliRun r = cli(std::string(command) + " " + flag);
+            EXPECT_EQ(r.exitCode, 0) << command << " " << flag << ": " << r.err;
+            EXPECT_EQ(r.err, "") << command;
+            EXPECT_EQ(r.out.find("usage: raystudio-cli"), 0u) << r.out;
+            EXPECT_NE(r.out.find(std::string("  ") + command + " "), std::string::npos) << r.out;
+        }
+    }
+    // Only that command's entries: render's two, and neither drag nor merge.
+    const CliRun render = cli("render " + kRoom + " --help");
+    EXPECT_NE(render.out.find("--tile I/N"), std::string::npos) << render.out;
+    EXPECT_NE(render.out.find("--force"), std::string::npos) << render.out;
+    EXPECT_EQ(render.out.find("drag SCENE"), std::string::npos) << render.out;
+    EXPECT_EQ(render.out.find("merge PART"), std::string::npos) << render.out;
+}
+
 TEST_F(CliTest, UnknownCommandOrOption_Exits2NamingItOnStderr) {
     CliRun r = cli("paint " + kRoom);
     EXPECT_EQ(r.exitCode, 2);
