@@ -238,8 +238,10 @@ std::string checkPly(std::string_view head, std::uintmax_t fileSize) {
             // A list costs at least its count; each scalar its size (ASCII: a number). A type
             // the check does not know still takes a byte: the importer reads on regardless
             // (a misspelt type once let a 2-billion-vertex claim run for minutes).
+            // "property list" may end there: the count's type is then unknown (a byte).
             const bool list = w.size() >= 2 && w[1] == "list";
-            const std::uintmax_t bytes = plyScalarBytes(w.size() >= 2 ? w[list ? 2 : 1] : "");
+            const std::size_t type = list ? 2 : 1;
+            const std::uintmax_t bytes = plyScalarBytes(w.size() > type ? w[type] : "");
             claims.back().minBytes +=
                 ascii ? kMinAsciiNumberBytes : std::max<std::uintmax_t>(bytes, 1);
         }

@@ -308,6 +308,16 @@ TEST_F(MeshFiles, PlyHeaderWithoutEndHeader_IsRefusedQuickly) {
     expectRefusedQuickly(write("cut2.ply", "ply2\nformat ascii 1.0\n"), "no end_header");
 }
 
+// Found by tests/fuzz/mesh_loader_fuzz (corpus/mesh_loader/ply-property-list-without-types.ply):
+// a "property list" line with no types made the header check read past its words (ASan).
+TEST_F(MeshFiles, PlyPropertyListWithoutTypes_IsCheckedWithinItsWords) {
+    std::string binary = binaryPlyHeader("4", "2000000000");
+    const std::size_t list = binary.find("property list");
+    ASSERT_NE(list, std::string::npos);
+    binary.replace(list, binary.find('\n', list) - list, "property list");
+    expectRefusedQuickly(write("list.ply", binary + binaryTetraBody()), "2000000000 face elements");
+}
+
 TEST_F(MeshFiles, BinaryPlyOneVertexShort_IsRefused) {
     // Without faces, a binary vertex list is exactly 12 bytes a vertex: one more is a lie.
     expectRefusedQuickly(write("short.ply", binaryPlyHeader("5", "0") + binaryTetraBody(false)),
