@@ -6,6 +6,11 @@ readonly DEFAULT_SCENE="scenes/reference-room.scene.json"
 # Fuzzing: seconds per target for `fuzz` without an argument, and in `test` (CI).
 readonly DEFAULT_FUZZ_SECONDS=300
 readonly CI_FUZZ_SECONDS=30
+# The mutations `test` runs: tests/mutation/run-mutations.sh's --quick list, for --help.
+quick_mutations() {
+    bash "$(dirname "${BASH_SOURCE[0]}")/../tests/mutation/run-mutations.sh" --quick --list \
+        2>/dev/null | cut -d ' ' -f 1 | xargs | fold -s -w 62 | sed -e 's/ *$//' -e 's/^/                  /'
+}
 
 # Everything the build, the tests and the designer need, as Debian 12 names them.
 readonly REQUIRED_PACKAGES=(
@@ -13,6 +18,8 @@ readonly REQUIRED_PACKAGES=(
     qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libgl-dev libqt6svg6
     libglm-dev libopenimageio-dev openimageio-tools libassimp-dev libtbb-dev libembree-dev
     nlohmann-json3-dev libgtest-dev googletest
+    # The formatting check (the tree follows .clang-format) and the mutation check's patches.
+    clang-format patch
     xvfb xauth mesa-utils libgl1-mesa-dri
     # The fuzz preset: Debian's clang and its libFuzzer/sanitizer runtimes.
     clang-14 libclang-rt-14-dev
@@ -31,11 +38,23 @@ on later runs), then:
   run [SCENE]   open SCENE in the designer; without a display (or a built designer),
                 render SCENE with raystudio-cli into build/release/<scene name>.png.
                 SCENE defaults to ${DEFAULT_SCENE}.
-  test          run the session tests under ThreadSanitizer (build/tsan), each fuzzer (the
-                scene reader's and the mesh loader's) for ${CI_FUZZ_SECONDS} s (build/fuzz),
-                the unit and command-line tests under ASan + UBSan (build/asan), then the
-                whole test suite (ctest) and the Slurm farm test (needs root), and exit
-                with the status.
+  test          check the formatting (format-check), then run the session tests under
+                ThreadSanitizer (build/tsan), each fuzzer (the scene reader's and the mesh
+                loader's) for ${CI_FUZZ_SECONDS} s (build/fuzz), the unit and command-line tests
+                under ASan + UBSan (build/asan), the whole test suite (ctest), the Slurm farm
+                test (needs root) and the quick mutations (below), and exit with the status.
+  format-check  check that every C++ file git tracks (*.cpp, *.h, *.inl) is formatted as
+                .clang-format says (clang-format --dry-run --Werror); fails naming the files.
+  format        reformat those files in place (clang-format -i).
+  mutate [NAME...]
+                the mutation check (tests/mutation): put each deliberate bug into the source
+                in turn, rebuild the tests that must catch it in build/release, run them and
+                restore the source; fails if a mutation is missed or its patch no longer
+                applies. All mutations by default (about 15 minutes on two cores), or the
+                NAMEd ones (bash tests/mutation/run-mutations.sh --list names them). The
+                test command runs the quick ones, whose source file rebuilds in seconds and
+                whose tests run in seconds (about 2 minutes on two cores):
+$(quick_mutations)
   asan          build the unit and command-line tests with ASan + UBSan (build/asan) and
                 run them (the ASan stage of test alone).
   fuzz [SECONDS]
@@ -160,6 +179,51 @@ run_fuzzers() {
 }
 # ---- End of fuzzing ------------------------------------------------------------------------
 
+# ---- Formatting (.clang-format) -------------------------------------------------------------
+# Every C++ file git tracks, in one clang-format call; the files it would change are named.
+tracked_cxx_files() {
+    git rev-parse --is-inside-work-tree >/dev/null 2>&1 ||
+        die "the formatting stages need a git checkout (they format the files git tracks)"
+    git ls-files -z '*.cpp' '*.h' '*.inl'
+}
+
+check_format() {
+    command -v clang-format >/dev/null 2>&1 || die "clang-format is not installed"
+    say "Checking the formatting of the C++ files ($(clang-format --version | head -n 1))."
+    local out status=0
+    out="$(tracked_cxx_files | xargs -0 -r clang-format --dry-run --Werror 2>&1)" || status=$?
+    if ((status == 0)); then
+        say "Every C++ file is formatted as .clang-format says."
+        return 0
+    fi
+    local files=()
+    mapfile -t files < <(sed -n \
+        's/^\(.*\):[0-9]*:[0-9]*: error: code should be clang-formatted.*/\1/p' <<<"${out}" |
+        sort -u)
+    if ((${#files[@]})); then
+        printf 'setup.sh: these files are not formatted as .clang-format says (fix them with: bash packaging/setup.sh format):\n' >&2
+        printf '  %s\n' "${files[@]}" >&2
+    else
+        printf 'setup.sh: clang-format failed (exit status %d):\n%s\n' "${status}" "${out}" >&2
+    fi
+    return 1
+}
+
+format_sources() {
+    command -v clang-format >/dev/null 2>&1 || die "clang-format is not installed"
+    say "Formatting the C++ files with clang-format -i."
+    tracked_cxx_files | xargs -0 -r clang-format -i
+}
+# ---- End of formatting ------------------------------------------------------------------------
+
+# ---- Mutation check (tests/mutation) ---------------------------------------------------------
+# run_mutations [--quick] [NAME...]: in build/release, which must be configured and built.
+run_mutations() {
+    say "Running the mutation check${1:+ ($*)}."
+    bash tests/mutation/run-mutations.sh "$@"
+}
+# ---- End of the mutation check ---------------------------------------------------------------
+
 # ---- AddressSanitizer + UndefinedBehaviorSanitizer ---------------------------------------
 # The unit and command-line tests under ASan + UBSan: the asan preset without the designer
 # (Qt is not instrumented, and the GUI tests run in the suite below). Tests named NAME.CASE
@@ -209,10 +273,16 @@ run_tests() {
     say "Running the test suite."
     ctest --preset release --no-tests=error --output-on-failure || status=$?
     run_slurm_farm_test || status=$?
+    if ((status != 0)); then
+        printf 'setup.sh: tests failed (ctest exit status %d)\n' "${status}" >&2
+        return "${status}"
+    fi
+    # Last: it rebuilds the unit tests of build/release once per mutation (and at its end).
+    run_mutations --quick || status=$?
     if ((status == 0)); then
         say "All tests passed."
     else
-        printf 'setup.sh: tests failed (ctest exit status %d)\n' "${status}" >&2
+        printf 'setup.sh: the mutation check failed (exit status %d)\n' "${status}" >&2
     fi
     return "${status}"
 }
@@ -281,6 +351,15 @@ main() {
         asan)
             (($# == 0)) || die "asan takes no arguments (see --help)"
             ;;
+        format-check | format)
+            (($# == 0)) || die "${command} takes no arguments (see --help)"
+            ;;
+        mutate)
+            local name
+            for name in "$@"; do
+                [[ "${name}" =~ ^[a-z0-9-]+$ ]] || die "mutate: '${name}' is not a mutation name (see --help)"
+            done
+            ;;
         fuzz)
             (($# <= 1)) || die "fuzz takes at most a number of seconds (see --help)"
             [[ "${1:-1}" =~ ^[1-9][0-9]*$ ]] || die "fuzz: SECONDS must be a positive whole number, got '${1}'"
@@ -307,6 +386,17 @@ main() {
     [[ -n "${scene}" ]] || scene="${DEFAULT_SCENE}"
 
     install_missing_packages
+    case "${command}" in
+        format-check)
+            check_format
+            return
+            ;;
+        format)
+            format_sources
+            return
+            ;;
+        test) check_format || die "the formatting check failed (above); nothing was built" ;;
+    esac
     [[ "${command}" == fuzz || "${command}" == asan ]] || build_release
     case "${command}" in
         run) run_scene "${scene}" ;;
@@ -314,6 +404,7 @@ main() {
         package) build_package ;;
         asan) run_address_sanitizer_tests ;;
         fuzz) run_fuzzers "${1:-${DEFAULT_FUZZ_SECONDS}}" ;;
+        mutate) run_mutations "$@" ;;
     esac
 }
 
