@@ -11,6 +11,7 @@ namespace rs {
 namespace {
 
 using namespace std::chrono_literals;
+using test::firstDragStep;
 using test::maxDiffToFullRender;
 using test::testRoom;
 
@@ -21,22 +22,6 @@ std::size_t pixelsIn(RenderSession& session, uint8_t state) {
         for (std::size_t i = 0; i < f.pixelCount(); ++i) n += f.state[i] == state;
     });
     return n;
-}
-
-/// Renders `doc` to the end under `policy` (every pixel dirty on each edit, no governor),
-/// then starts dragging objects[2] and moves it once; true when that step's interactive pass
-/// finished, its info in `info`.
-bool firstDragStep(RenderSession& session, SceneDocument& doc, InteractionPolicy policy,
-                   PassInfo& info) {
-    policy.dirtyRegions = false;
-    policy.governorTargetMs = 0.0;
-    session.setPolicy(policy);
-    session.update(doc);
-    if (!session.waitUntilComplete(60s)) return false;
-    session.beginInteraction(doc.objects[2].id);
-    doc.objects[2].transform.translate.x += 0.3f;
-    const uint64_t gen = session.update(doc);
-    return session.waitForPass(gen, 30s, &info) && info.kind == PassKind::Interactive;
 }
 
 TEST(InteractionShortcuts, Interleaved_OnePassTracesHalfTheStalePixels_TheNextTheOtherHalf) {

@@ -9,6 +9,7 @@ namespace rs {
 namespace {
 
 using namespace std::chrono_literals;
+using test::firstDragStep;
 using test::maxDiffToFullRender;
 using test::mixedRoom;
 using test::testRoom;
@@ -230,22 +231,6 @@ TEST(RenderSession, MovingADiffuseBall_RefitsAndTracesOnlyItsRegion) {
     EXPECT_LT(stats.lastDirtyPixels, std::size_t(128 * 96) / 2);
     ASSERT_TRUE(session.waitUntilComplete(60s));
     EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
-}
-
-/// Renders `doc` under `policy` with every pixel dirty on every edit and no governor (exactly
-/// this policy, whatever the machine's speed), then begins dragging objects[2] and moves it
-/// once; true when that step's interactive pass finished (its info in `info`).
-bool firstDragStep(RenderSession& session, SceneDocument& doc, InteractionPolicy policy,
-                   PassInfo& info) {
-    policy.dirtyRegions = false;
-    policy.governorTargetMs = 0.0;
-    session.setPolicy(policy);
-    session.update(doc);
-    if (!session.waitUntilComplete(60s)) return false;
-    session.beginInteraction(doc.objects[2].id);
-    doc.objects[2].transform.translate.x += 0.3f;
-    const uint64_t gen = session.update(doc);
-    return session.waitForPass(gen, 30s, &info) && info.kind == PassKind::Interactive;
 }
 
 TEST(RenderSession, QuarterResolution_EachTracedRayFillsItsBlock) {

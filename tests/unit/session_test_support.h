@@ -85,4 +85,20 @@ inline SceneDocument testRoom() {
     return doc;
 }
 
+/// Renders `doc` under `policy` with every pixel dirty on every edit and no governor (exactly
+/// this policy, whatever the machine's speed), then begins dragging objects[2] and moves it
+/// once; true when that step's interactive pass finished (its info in `info`).
+inline bool firstDragStep(RenderSession& session, SceneDocument& doc, InteractionPolicy policy,
+                          PassInfo& info) {
+    policy.dirtyRegions = false;
+    policy.governorTargetMs = 0.0;
+    session.setPolicy(policy);
+    session.update(doc);
+    if (!session.waitUntilComplete(60s)) return false;
+    session.beginInteraction(doc.objects[2].id);
+    doc.objects[2].transform.translate.x += 0.3f;
+    const uint64_t gen = session.update(doc);
+    return session.waitForPass(gen, 30s, &info) && info.kind == PassKind::Interactive;
+}
+
 }  // namespace rs::test
