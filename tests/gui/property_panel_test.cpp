@@ -1,0 +1,157 @@
+// The property panel against the schema: a file may hold what the editors do not offer by
+// default (max_depth 1000 where the spin box offers 64); the panel shows such a value and
+// keeps it when another field, or another component of the same vector, is edited.
+#include "property_panel.h"
+
+#include <QDoubleSpinBox>
+#include <QSpinBox>
+#include <QtTest>
+#include <cmath>
+
+#include "gui_test_support.h"
+#include "scene/parameters.h"
+
+using namespace rs;
+using namespace rs::ui;
+using namespace rs::ui::test;
+
+class PropertyPanelTest : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init() { QVERIFY(openRoomWindow(window_)); }
+    void cleanup() {
+        window_->editor()->undoStack()->setClean();  // No save prompt on close.
+        window_.reset();
+    }
+    void showsAndKeepsFileValuesBeyondItsEditorsRange();
+
+private:
+    std::unique_ptr<MainWindow> window_;
+};
+
+namespace {
+
+/// A legal value at the far end of the format's range, beyond what an editor offers
+/// wherever the format allows it (max_depth 1000, shininess 30000, a colour of 150).
+std::optional<ParamValue> farLegalValue(const ParamDescriptor& d) {
+    const NumberRange& r = d.range;
+    switch (d.type) {
+        case ParamType::Float:
+            if (!std::isfinite(r.max)) return float(d.softMax * 3.0);
+            return r.maxOpen ? std::nextafter(float(r.max), 0.0f) : float(r.max);
+        case ParamType::Int:
+            return int(r.max);
+        case ParamType::Vec3:
+        case ParamType::Color:
+            if (d.vectorRule == VectorRule::NonNegative)
+                return Vec3(0.0f, float(d.softMax * 1.5), 0.25f);
+            if (d.vectorRule == VectorRule::NonZeroComponents)
+                return Vec3(-2.0f, float(d.softMax * 3.0), 0.5f);
+            if (std::get<Vec3>(d.defaultValue) == Vec3(0.0f))
+                return Vec3(float(d.softMax * 3.0), float(d.softMin * 3.0), 1.5f);
+            return std::get<Vec3>(d.defaultValue) * float(d.softMax * 3.0);
+        default:
+            return std::nullopt;  // bools, enums and files have no range to exceed
+    }
+}
+
+/// The values an editor widget shows: one number per spin box, in order.
+QList<double> shownNumbers(QWidget* editor) {
+    QList<double> out;
+    if (auto* spin = qobject_cast<QSpinBox*>(editor)) return {double(spin->value())};
+    for (auto* spin : editor->findChildren<QDoubleSpinBox*>()) out.push_back(spin->value());
+    return out;
+}
+
+bool near(double shown, double value) {
+    return std::abs(shown - value) <= 1e-3 * std::max(1.0, std::abs(value));
+}
+
+}  // namespace
+
+void PropertyPanelTest::showsAndKeepsFileValuesBeyondItsEditorsRange() {
+    // A file may hold what the editors do not offer by default (max_depth 1000 where the
+    // spin box offers 64). The panel must show such a value and keep it when another field,
+    // or another component of the same vector, is edited.
+    SceneEditor* editor = window_->editor();
+    ObjectId sphere = kNoObject;
+    for (const Object& o : editor->document().objects)
+        if (std::holds_alternative<SphereGeometry>(o.geometry) && !o.material.empty())
+            sphere = o.id;
+    QVERIFY(sphere != kNoObject);
+    struct Case {
+        ObjectId selection;
+        const char* section;
+        ParamKind kind;
+    };
+    const Case cases[] = {{kNoObject, "render", ParamKind::Render},
+                          {SceneEditor::kCameraSelection, "camera", ParamKind::Camera},
+                          {sphere, "geometry", ParamKind::Sphere},
+                          {sphere, "transform", ParamKind::Transform},
+                          {sphere, "material", ParamKind::Material}};
+    int checked = 0;
+    for (const Case& c : cases) {
+        editor->setSelection(c.selection);
+        for (const ParamDescriptor& d : parameters(c.kind)) {
+            const std::optional<ParamValue> far = farLegalValue(d);
+            // The pixel-area limit relates width and height: the width shows the far end.
+            if (!far || d.key == "height") continue;
+            const auto* scalar = std::get_if<float>(&*far);
+            const auto* count = std::get_if<int>(&*far);
+            if ((scalar && *scalar <= d.softMax) || (count && *count <= d.softMax))
+                continue;  // nothing beyond what the editor offers (fractions, image sides)
+            const QByteArray what = QByteArray(c.section) + "." + d.key.c_str();
+            // The value arrives as a file's would: through the document, not the widget.
+            QVERIFY2(window_->propertyPanel()->applyEdit(QLatin1String(c.section), d.key, *far),
+                     what + ": " + window_->propertyPanel()->lastError().toUtf8());
+            auto* widget =
+                window_->propertyPanel()->findChild<QWidget*>(QString::fromStdString(d.key));
+            QVERIFY2(widget, what);
+            const QList<double> shown = shownNumbers(widget);
+            QList<double> expected;
+            if (const auto* f = std::get_if<float>(&*far)) expected = {*f};
+            if (const auto* i = std::get_if<int>(&*far)) expected = {double(*i)};
+            if (const auto* v = std::get_if<Vec3>(&*far)) {
+                if (d.type == ParamType::Color)  // a swatch and its value (largest component)
+                    expected = {double(std::max({v->x, v->y, v->z}))};
+                else
+                    expected = {v->x, v->y, v->z};
+            }
+            QVERIFY2(shown.size() == expected.size(), what);
+            for (int k = 0; k < shown.size(); ++k)
+                QVERIFY2(near(shown[k], expected[k]), what + QByteArray(" shows ") +
+                                                          QByteArray::number(shown[k]) + " for " +
+                                                          QByteArray::number(expected[k]));
+            // Edit the last spin box of this editor (a vector's z): the rest must be kept.
+            if (d.type == ParamType::Vec3) {
+                auto spins = widget->findChildren<QDoubleSpinBox*>();
+                spins.last()->setValue(spins.last()->value() + 0.5);
+                SceneDocument doc = editor->document();
+                std::optional<ParamValue> now;
+                if (c.kind == ParamKind::Camera) now = getParameter(doc.camera, d.key);
+                if (c.kind == ParamKind::Sphere)
+                    now = getParameter(doc.findObject(sphere)->geometry, d.key);
+                if (c.kind == ParamKind::Transform)
+                    now = getParameter(doc.findObject(sphere)->transform, d.key);
+                QVERIFY2(now, what);
+                const Vec3 v = std::get<Vec3>(*now), sample = std::get<Vec3>(*far);
+                QVERIFY2(v.x == sample.x && v.y == sample.y,
+                         what + " lost its x or y when z was edited");
+            }
+            ++checked;
+        }
+    }
+    // Another field edited through its widget leaves the far values alone.
+    editor->setSelection(kNoObject);
+    auto* samples = window_->propertyPanel()->findChild<QSpinBox*>(QStringLiteral("supersampling"));
+    QVERIFY(samples);
+    samples->setValue(2);
+    QCOMPARE(editor->document().render.supersampling, 2);
+    QCOMPARE(editor->document().render.maxDepth, kMaxDepthLimit);
+    QCOMPARE(editor->document().render.shadowSamples, kMaxSampleCount);
+    QVERIFY(checked >= 15);
+}
+
+QTEST_MAIN(PropertyPanelTest)
+#include "property_panel_test.moc"
