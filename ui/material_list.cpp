@@ -69,7 +69,13 @@ MaterialList::MaterialList(SceneEditor* editor, QWidget* parent)
         updateButtons();
     });
     connect(editor_, &SceneEditor::documentChanged, this, &MaterialList::rebuild);
-    connect(editor_, &SceneEditor::selectionChanged, this, &MaterialList::updateButtons);
+    // The list follows the active object's material, as Blender's material slots do: pick an
+    // object, then (to give it another) a material, then Assign to Selection.
+    connect(editor_, &SceneEditor::selectionChanged, this, [this](ObjectId id) {
+        const Object* o = editor_->document().findObject(id);
+        if (o && !o->material.empty()) setCurrent(o->material);
+        updateButtons();
+    });
     rebuild();
 }
 

@@ -395,7 +395,15 @@ void MaterialsTest::assignToSelection_IsOneUndoStep_AndReachesTheFrame() {
     QPushButton* assign = materialButton("assignMaterial");
     QVERIFY(list->setCurrent("red wall"));
     QVERIFY(!assign->isEnabled());  // Nothing selected.
+    // Picking an object shows its material in the list, as Blender's slots do...
     clickObject("chalk ball");
+    QCOMPARE(list->current(), std::string("chalk"));
+    clickObject("blue ball");
+    QCOMPARE(list->current(), std::string("blue plastic"));
+    clickObject("chalk ball");
+    QCOMPARE(list->current(), std::string("chalk"));
+    // ...then picking another material and Assign gives it to the selection.
+    QVERIFY(list->setCurrent("red wall"));
     QVERIFY(assign->isEnabled());
     const ObjectId id = idOf(*window_, "chalk ball");
     const Vec3 chalk = meanColourOf(*window_->viewport()->frame(), id);
