@@ -72,8 +72,8 @@ bool sameIgnoringIds(const std::vector<T>& a, const std::vector<T>& b) {
 
 bool SceneDocument::sameContent(const SceneDocument& o) const {
     return camera == o.camera && render == o.render && materials == o.materials &&
-           extras == o.extras && sameIgnoringIds(lights, o.lights) &&
-           sameIgnoringIds(objects, o.objects);
+           environment == o.environment && extras == o.extras &&
+           sameIgnoringIds(lights, o.lights) && sameIgnoringIds(objects, o.objects);
 }
 
 const char* geometryTypeName(const Geometry& g) {

@@ -65,8 +65,53 @@ struct RenderSettings {
     float exposure = 0.0f;
     Color background{0.0f, 0.0f, 0.0f};
     Color ambient{0.05f, 0.05f, 0.05f};
+    /// Version 1's shadows: every surface blocks light, glass too (format version 2 key
+    /// `opaque_shadows`). Otherwise a shadow ray passes transparent surfaces, filtered.
+    bool opaqueShadows = false;
     Extras extras;
     bool operator==(const RenderSettings&) const = default;
+};
+
+/// An image file a scene refers to (a texture or the environment).
+struct ImageFile {
+    std::string file;          ///< As written in the scene file (relative or absolute).
+    std::string resolvedPath;  ///< Absolute path, once the reader or designer resolved it.
+    const std::string& source() const { return resolvedPath.empty() ? file : resolvedPath; }
+    bool empty() const { return file.empty() && resolvedPath.empty(); }
+    bool operator==(const ImageFile& o) const { return source() == o.source(); }
+};
+
+/// POV-Ray's solid checker in the object's own space: unit cubes of side `scale` alternate
+/// between `even` (the cell holding the origin's positive octant) and `odd`.
+struct CheckerPattern {
+    Color even{1.0f, 1.0f, 1.0f};
+    Color odd{0.0f, 0.0f, 0.0f};
+    float scale = 1.0f;
+    bool operator==(const CheckerPattern&) const = default;
+};
+
+/// An image through the shape's UVs, repeating: uv' = uv * scale + offset.
+struct ImageTexture {
+    ImageFile image;
+    float scaleU = 1.0f, scaleV = 1.0f;
+    float offsetU = 0.0f, offsetV = 0.0f;
+    bool operator==(const ImageTexture&) const = default;
+};
+
+/// What a material's colour is (scenes/FORMAT.md "color"): Material::color alone, a checker,
+/// or an image texture. A pattern replaces the flat colour, which is kept for when it goes.
+using ColorPattern = std::variant<std::monostate, CheckerPattern, ImageTexture>;
+
+/// The world around the scene (format version 2 `environment`): an equirectangular image,
+/// +Y up, its first row straight up, turned `rotation` degrees about +Y. Rays that hit
+/// nothing return it times `intensity` instead of the background colour.
+struct Environment {
+    ImageFile image;  ///< Empty: no environment, the background colour.
+    float intensity = 1.0f;
+    float rotation = 0.0f;
+    Extras extras;
+    bool present() const { return !image.empty(); }
+    bool operator==(const Environment&) const = default;
 };
 
 /// A Whitted material: Phong/Lambert local term plus mirror and glass weights.
@@ -79,19 +124,26 @@ struct Material {
     float reflectivity = 0.0f;
     float transparency = 0.0f;
     float ior = 1.5f;
+    ColorPattern pattern;  ///< When set, the surface's colour instead of `color`.
     Extras extras;
     bool operator==(const Material&) const = default;
 };
 
-enum class LightType { Point, Sphere };
+enum class LightType { Point, Sphere, Directional, Spot };
 
-/// A point light, or a sphere area light sampled for soft shadows. No distance fall-off.
+/// A point light, a sphere area light sampled for soft shadows, a directional (sun) light
+/// travelling along `direction`, or a spot light at `position` aimed at `target` (POV-Ray's
+/// spotlight with tightness 0). No distance fall-off.
 struct Light {
     ObjectId id = kNoObject;
     std::string name;
     LightType type = LightType::Point;
     Vec3 position{0.0f, 0.0f, 0.0f};
-    float radius = 0.5f;  ///< Sphere lights only.
+    float radius = 0.5f;                ///< Sphere lights only.
+    Vec3 direction{0.0f, -1.0f, 0.0f};  ///< Directional lights only: where the light goes.
+    Vec3 target{0.0f, 0.0f, 0.0f};      ///< Spot lights only: the cone's axis points here.
+    float coneRadius = 30.0f;   ///< Spot lights only: half-angle of full intensity, degrees.
+    float coneFalloff = 45.0f;  ///< Spot lights only: half-angle where it reaches 0, degrees.
     Color color{1.0f, 1.0f, 1.0f};
     float intensity = 1.0f;
     Extras extras;
@@ -172,6 +224,7 @@ struct SceneDocument {
     std::vector<Material> materials;
     std::vector<Light> lights;
     std::vector<Object> objects;
+    Environment environment;
     Extras extras;
     ObjectId nextId = 1;
 
