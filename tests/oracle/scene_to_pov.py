@@ -40,12 +40,29 @@ How the illumination equation of scenes/FORMAT.md maps to POV-Ray:
   out of the transmitted one, leaving kt * (1 - F) * trace(refr). Inside a body the
   interior's ior is inverted as ours is. Total internal reflection sends the refracted part
   into the reflected ray in both.
-- Shadows: ours treat every surface as opaque; POV-Ray lets light through a transmitting
-  object. So a glass object gets `no_shadow` and an opaque twin (`no_image no_reflection`)
-  casts its shadow.
+- Shadows: ours multiply a shadow ray by transparency * colour at each surface it crosses
+  (no bending, no caustics); POV-Ray's `filter` f passes f * colour at each crossing, but its
+  transmitting camera-ray pigment must stay `transmit` (the refraction above). So a glass
+  object gets `no_shadow` and a shadow-only twin (`no_image no_reflection`, which refracted
+  rays do not see either) with `rgbf <color, transparency>` casts its shadow; with
+  render.opaque_shadows the twin is black, version 1's opaque shadow.
+- Checker (`color: {checker, scale}`): POV-Ray's `checker` with `scale s`, evaluated at the
+  point of ours (the pattern's z flipped back), declared before the object's transform so it
+  moves with the object.
+- Image textures (`color: {texture, scale, offset}`): an `image_map` (8-bit files
+  `gamma srgb`, float files linear, `interpolate 2`, repeating) at uv' = uv * scale + offset:
+  spheres and rectangles through `uv_mapping` (a rectangle is a mesh2 with uv_vectors; POV-Ray's
+  sphere u runs the other way round in its flipped frame, u = 1 - u_pov), planes a planar map
+  whose pattern x, y are u = (p - point).T1, v = (p - point).T2. Boxes and meshes have no twin.
+- Environment: `sky_sphere` with a spherical (`map_type 1`) image_map of the file, turned by
+  `rotate y * rotation` (the same matrix as our rotation about +Y) and evaluated at the
+  direction of ours (z flipped back); `emission` scales it by intensity. It replaces
+  `background` for every ray that escapes, as ours.
+- Directional light: `parallel` from far along -direction, `point_at` the origin. Spot light:
+  `spotlight` with radius and falloff (half-angles) and `tightness 0`.
 - Depth: our max_depth counts bounces, POV-Ray's max_trace_level counts the camera ray too:
   level = max_depth + 1. Both return black past it. adc_bailout is our min_weight.
-- Geometry: sphere, plane, box, rectangle (two triangles), mesh (mesh2 from the OBJ file with
+- Geometry: sphere, plane, box, rectangle (a two-triangle mesh2 with UVs), mesh (mesh2 from the OBJ file with
   the per-vertex average of unit face normals when smooth_normals, as assimp's
   GenSmoothNormals computes them). Meshes are read from OBJ only (the bundled ones are OBJ).
 
@@ -118,7 +135,86 @@ def is_identity(o):
             and (s == 1 or s == [1, 1, 1]))
 
 
-def material_block(m, scene_ambient_is_zero):
+def affine_inverse(m):
+    """The inverse of a 3x4 affine map (rows, column vectors) as a 3x4 map."""
+    a = [row[:3] for row in m]
+    det = (a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+           + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]))
+    inv = [[(a[(j + 1) % 3][(i + 1) % 3] * a[(j + 2) % 3][(i + 2) % 3]
+             - a[(j + 1) % 3][(i + 2) % 3] * a[(j + 2) % 3][(i + 1) % 3]) / det for j in range(3)] for i in range(3)]
+    t = [-sum(inv[i][k] * m[k][3] for k in range(3)) for i in range(3)]
+    return [inv[i] + [t[i]] for i in range(3)]
+
+
+def raw_matrix(m):
+    """A 3x4 affine map (rows, column vectors) in POV-Ray's row-vector `matrix` order, unflipped."""
+    cols = [m[0][0], m[1][0], m[2][0], m[0][1], m[1][1], m[2][1], m[0][2], m[1][2], m[2][2],
+            m[0][3], m[1][3], m[2][3]]
+    return "matrix <%s>" % ", ".join("%.9g" % x for x in cols)
+
+
+# F = diag(1, 1, -1): a point of ours in POV-Ray's frame and back.
+FLIP = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, 0]]
+
+
+def image_map(path, scene_dir):
+    """An image_map block (planar, repeating) of texture file `path`; 8-bit files are sRGB."""
+    full = path if os.path.isabs(path) else os.path.join(scene_dir, path)
+    ext = os.path.splitext(full)[1].lower().lstrip(".")
+    kind = {"png": "png", "jpg": "jpeg", "jpeg": "jpeg", "tif": "tiff", "tiff": "tiff", "hdr": "hdr",
+            "exr": "exr"}.get(ext)
+    if kind is None:
+        raise ValueError("texture %r: POV-Ray reads no %r files" % (path, ext))
+    gamma = "" if kind in ("hdr", "exr") else " gamma srgb"
+    return 'image_map { %s "%s"%s interpolate 2 }' % (kind, full.replace("\\", "/"), gamma)
+
+
+def pigment(m, o, scene_dir):
+    """The pigment of material `m` on object `o` (in the object's POV-Ray frame, before its
+    transform): flat colour, solid checker, or an image through the shape's UVs."""
+    c = m["color"]
+    kt = m["transparency"]
+    if isinstance(c, list):
+        return "pigment { rgbt <%.9g, %.9g, %.9g, %.9g> }" % (tuple(c) + (kt,)) if kt > 0 else "pigment { %s }" % rgb(c)
+    if "checker" in c:
+        a, b = c["checker"]
+        s = c.get("scale", 1.0)
+        fmt = "rgbt <%.9g, %.9g, %.9g, %.9g>" % (tuple(a) + (kt,)), "rgbt <%.9g, %.9g, %.9g, %.9g>" % (tuple(b) + (kt,))
+        # The pattern is evaluated at the point of ours (z flipped back), cells of side s.
+        return "pigment { checker color %s color %s scale %.9g %s }" % (fmt[0], fmt[1], s, raw_matrix(FLIP))
+    if "texture" not in c:
+        raise ValueError("material %r: color %r has no POV-Ray twin" % (m.get("name"), c))
+    su, sv = c.get("scale", [1.0, 1.0])
+    ou, ov = c.get("offset", [0.0, 0.0])
+    t = o["type"]
+    if t == "plane":
+        # u = (p - point).T1, v = (p - point).T2 of the point p of ours = F P.
+        n = normalize(o["normal"])
+        axis = [0.0, 0.0, 1.0] if abs(n[0]) > 0.9 else [1.0, 0.0, 0.0]
+        d = sum(n[k] * axis[k] for k in range(3))
+        t1 = normalize([axis[k] - n[k] * d for k in range(3)])
+        t2 = cross(n, t1)
+        q = o["point"]
+        rows = []
+        for axis_row, s_, o_ in ((t1, su, ou), (t2, sv, ov), (n, 1.0, 0.0)):
+            r = [axis_row[0] * s_, axis_row[1] * s_, -axis_row[2] * s_]
+            rows.append(r + [o_ - s_ * sum(axis_row[k] * q[k] for k in range(3))])
+        where = raw_matrix(affine_inverse(rows))
+        mapping = ""
+    else:
+        # uv_mapping: the pattern point is (u, v, 0) of the shape's UVs. POV-Ray's sphere
+        # measures u in its own (flipped) frame: u_ours = 1 - u_pov.
+        flip_u = t == "sphere"
+        rows = [[-su if flip_u else su, 0, 0, ou + (su if flip_u else 0.0)], [0, sv, 0, ov], [0, 0, 1, 0]]
+        where = raw_matrix(affine_inverse(rows))
+        mapping = "uv_mapping "
+    block = image_map(c["texture"], scene_dir)
+    if kt > 0:
+        block = block[:-2] + " transmit all %.9g }" % kt
+    return "pigment { %s%s %s }" % (mapping, block, where)
+
+
+def material_block(m, scene_ambient_is_zero, pig):
     kr, kt = m["reflectivity"], m["transparency"]
     local = 1.0 - kr - kt
     kd, ks = m["diffuse"] * local, m["specular"] * local
@@ -136,11 +232,20 @@ def material_block(m, scene_ambient_is_zero):
         finish[1] = "diffuse %.9g" % (kd * scale)
         if ks > 0:
             finish[2] = "phong %.9g phong_size %.9g" % (ks * scale, m["shininess"])
-        pigment = "pigment { rgbt <%.9g, %.9g, %.9g, %.9g> }" % (tuple(m["color"]) + (kt,))
-        return "%s finish { %s }" % (pigment, " ".join(finish)), m["ior"]
+        return "%s finish { %s }" % (pig, " ".join(finish)), m["ior"]
     if kr > 0:
         finish.append("reflection { %.9g }" % kr)
-    return "pigment { %s } finish { %s }" % (rgb(m["color"]), " ".join(finish)), None
+    return "%s finish { %s }" % (pig, " ".join(finish)), None
+
+
+def shadow_pigment(m):
+    """What a glass object's shadow-only twin lets through: ours multiplies a shadow ray by
+    transparency * colour at each crossing, POV-Ray's `filter` f passes f * colour (a pattern's
+    colour at the crossing point, as ours)."""
+    c, kt = m["color"], m["transparency"]
+    if isinstance(c, list):
+        return "pigment { rgbf <%.9g, %.9g, %.9g, %.9g> }" % (tuple(c) + (kt,))
+    return None
 
 
 def read_obj(path):
@@ -189,29 +294,30 @@ def mesh_block(path, smooth):
 
 
 def geometry(o, scene_dir):
-    """The object's POV-Ray block without its closing brace and the matrix it needs."""
+    """The object's POV-Ray block without its closing brace, and its transform ('' if none):
+    textures go between the two, so that they move with the object."""
     t = o["type"]
     if t == "sphere":
         g = "sphere { %s, %.9g" % (v3(o["center"]), o["radius"])
     elif t == "plane":
         n = normalize(o["normal"])
         d = sum(n[k] * o["point"][k] for k in range(3))
-        return "plane { %s, %.9g" % (v3(n), d)
+        return "plane { %s, %.9g" % (v3(n), d), ""
     elif t == "box":
         g = "box { %s, %s" % (v3(o["min"]), v3(o["max"]))
     elif t == "rectangle":
         c, u, v = o["center"], o["u"], o["v"]
         corner = [[c[k] + su * u[k] + sv * v[k] for k in range(3)] for su, sv in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-        g = "mesh { triangle { %s, %s, %s } triangle { %s, %s, %s }" % (
-            v3(corner[0]), v3(corner[1]), v3(corner[2]), v3(corner[0]), v3(corner[2]), v3(corner[3]))
+        # u = (a + 1) / 2, v = (b + 1) / 2 for the point c + a u + b v.
+        g = ("mesh2 { vertex_vectors { 4, %s, %s, %s, %s } uv_vectors { 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> }"
+             " face_indices { 2, <0, 1, 2>, <0, 2, 3> } uv_indices { 2, <0, 1, 2>, <0, 2, 3> }"
+             % (v3(corner[0]), v3(corner[1]), v3(corner[2]), v3(corner[3])))
     elif t == "mesh":
         path = o["file"] if os.path.isabs(o["file"]) else os.path.join(scene_dir, o["file"])
         g = mesh_block(path, o.get("smooth_normals", True))
     else:
         raise ValueError("object %r: type %r has no POV-Ray twin" % (o.get("name"), t))
-    if not is_identity(o):
-        g += " " + pov_matrix(object_matrix(o))
-    return g
+    return g, ("" if is_identity(o) else pov_matrix(object_matrix(o)))
 
 
 def convert(doc, scene_dir=".", width=None, height=None):
@@ -236,31 +342,56 @@ def convert(doc, scene_dir=".", width=None, height=None):
         fov_x = 2 * math.degrees(math.atan(math.tan(math.radians(cam.get("fov_y", 55.0)) / 2) * width / height))
         lens = "perspective right x * %.9g up y angle %.9g" % (width / height, fov_x)
     out.append("camera { %s location %s look_at %s sky %s }" % (lens, v3(position), v3(target), v3(up)))
+    env = doc.get("environment")
+    if env is not None:
+        # POV-Ray's spherical map measures u in its flipped frame: the map is evaluated at the
+        # direction of ours (z flipped back) turned by `rotation` about +Y (POV-Ray's `rotate y`
+        # is the same matrix as our right-handed rotation about +Y).
+        intensity = env.get("intensity", 1.0)
+        out.append("sky_sphere { pigment { %s map_type 1 } rotate y * %.9g %s } emission rgb %.9g }"
+                   % (image_map(env["file"], scene_dir)[:-2], env.get("rotation", 0.0),
+                      raw_matrix(FLIP), intensity))
     for light in doc.get("lights", []):
         color = [light.get("intensity", 1.0) * c for c in light.get("color", [1, 1, 1])]
+        kind = light.get("type", "point")
         extra = ""
-        if shadow_samples > 0 and light.get("type", "point") == "sphere":
+        if kind == "directional":
+            # A parallel light from far up its direction; only the direction matters to POV-Ray.
+            d = normalize(light["direction"])
+            far = [-1e4 * d[k] for k in range(3)]
+            out.append("light_source { %s %s parallel point_at <0, 0, 0> }  // %s"
+                       % (v3(far), rgb(color), light.get("name", "")))
+            continue
+        if kind == "spot":
+            extra = " spotlight point_at %s radius %.9g falloff %.9g tightness 0" % (
+                v3(light["target"]), light["radius"], light["falloff"])
+        if shadow_samples > 0 and kind == "sphere":
             d = 2 * light["radius"]
             s = max(2, int(math.ceil(math.sqrt(shadow_samples))))
             extra = " area_light <%.9g, 0, 0>, <0, 0, %.9g>, %d, %d circular orient" % (d, d, s, s)
         out.append("light_source { %s %s%s }  // %s" % (v3(light["position"]), rgb(color), extra, light.get("name", "")))
     materials = {m["name"]: dict(DEFAULT_MATERIAL, **m) for m in doc.get("materials", [])}
     no_ambient = all(a == 0 for a in ambient)
+    opaque_shadows = render.get("opaque_shadows", False)
     for o in doc.get("objects", []):
         if not o.get("visible", True):
             continue
         m = materials.get(o.get("material"), dict(DEFAULT_MATERIAL))
-        texture, ior = material_block(m, no_ambient)
-        g = geometry(o, scene_dir)
+        texture, ior = material_block(m, no_ambient, pigment(m, o, scene_dir))
+        g, where = geometry(o, scene_dir)
         name = o.get("name", "")
         if shadow_samples == 0:
             texture += " no_shadow"  # not `shadowless` lights: POV-Ray drops their highlights
         if ior is None:
-            out.append("%s %s }  // %s" % (g, texture, name))
+            out.append("%s %s %s }  // %s" % (g, texture, where, name))
         else:
-            out.append("%s %s interior { ior %.9g } no_shadow }  // %s" % (g, texture, ior, name))
+            out.append("%s %s interior { ior %.9g } %s no_shadow }  // %s" % (g, texture, ior, where, name))
             if shadow_samples > 0:
-                out.append("%s pigment { rgb 0 } no_image no_reflection }  // %s: its shadow" % (g, name))
+                shadow = None if opaque_shadows else shadow_pigment(m)
+                if shadow is None and not opaque_shadows:
+                    raise ValueError("object %r: a patterned glass's filtered shadow has no twin" % name)
+                out.append("%s %s %s no_image no_reflection }  // %s: its shadow"
+                           % (g, shadow or "pigment { rgb 0 }", where, name))
     return "\n".join(out) + "\n"
 
 
