@@ -39,6 +39,18 @@ inline bool appendSample(const Vec3& q, const Vec3& p, const Vec3& n, LightSampl
     return true;
 }
 
+/// appendSample toward a light's centre; a spot light's sample is not listed outside its
+/// falloff cone either (it adds nothing there, so it needs no shadow ray).
+inline bool appendCentreSample(const CompiledLight& l, const Vec3& p, const Vec3& n,
+                               LightSamples& samples) {
+    const Vec3& q = l.position;
+    const TowardLight<float> t(q.x, q.y, q.z, p.x, p.y, p.z, n.x, n.y, n.z);
+    if (!t.listed()) return false;
+    if (l.spot && !(spotFactor(l, -glm::dot(l.axis, Vec3(t.x, t.y, t.z))) > 0.0f)) return false;
+    samples.push_back({Vec3(t.x, t.y, t.z), t.dist, t.nl});
+    return true;
+}
+
 /// Appends the listed ones of a lane of samples toward q, in lane order; returns how many.
 inline uint32_t appendSamples(FloatLanes qx, FloatLanes qy, FloatLanes qz, const Vec3& p,
                               const Vec3& n, LightSamples& samples) {
@@ -149,7 +161,7 @@ void LightSampler::sampleLight(std::size_t li, const Vec3& p, const Vec3& n, uin
     LightSpan span{uint32_t(li), uint32_t(samples.size()), 0, 1};
     if (centreOnly(li, area)) {
         // A point light's samples all coincide, so one stands for all of them.
-        span.listed = appendSample(light.position, p, n, samples) ? 1 : 0;
+        span.listed = appendCentreSample(light, p, n, samples) ? 1 : 0;
     } else {
         const Vec3 w = glm::normalize(light.position - p);
         const Vec3 axisA = glm::normalize(std::abs(w.x) > 0.9f ? glm::cross(w, Vec3(0, 1, 0))
@@ -178,7 +190,8 @@ void LightSampler::sampleLight(std::size_t li, const Vec3& p, const Vec3& n, uin
 
 void LightSampler::sampleCentres(std::size_t li, const ShadingPoints& pts, std::size_t first,
                                  std::size_t end, CentreSamples& out) const {
-    const Vec3& c = scene_.lights()[li].position;
+    const CompiledLight& light = scene_.lights()[li];
+    const Vec3& c = light.position;
     const FloatLanes qx = splat(c.x), qy = splat(c.y), qz = splat(c.z);
     const std::size_t p = padded(pts.count);
     for (auto* v : {&out.dx, &out.dy, &out.dz, &out.dist, &out.nl})
@@ -197,33 +210,58 @@ void LightSampler::sampleCentres(std::size_t li, const ShadingPoints& pts, std::
                                         loadLanes(nz + i));
         storeLanes(dx + i, t.x), storeLanes(dy + i, t.y), storeLanes(dz + i, t.z);
         storeLanes(dist + i, t.dist), storeLanes(nl + i, t.nl);
-        const Bytes listed = __builtin_convertvector(t.listed() & 1, Bytes);  // 0 or 1
+        MaskLanes inside = t.listed();
+        if (light.spot)  // appendCentreSample's rule: nothing outside the falloff cone
+            inside &= spotFactor(light, -((light.axis.x * t.x + light.axis.y * t.y) +
+                                          light.axis.z * t.z)) > 0.0f;
+        const Bytes listed = __builtin_convertvector(inside & 1, Bytes);  // 0 or 1
         std::memcpy(listedFlags + i, &listed, sizeof listed);
     }
 }
 
 Color spanShare(const CompiledScene& scene, const SurfaceTerms<float>& surface, const Vec3& n,
                 const Vec3& toViewer, const LightSpan& span, const LightSample* samples,
-                const uint8_t* occluded) {
+                const uint8_t* occluded, const Color* transmitted) {
+    const CompiledLight& light = scene.lights()[span.light];
     float r = 0.0f, g = 0.0f, b = 0.0f;
     for (uint32_t i = span.first; i < span.first + span.listed; ++i) {
-        if (occluded && occluded[i]) continue;
+        const bool blocked = occluded && occluded[i];
+        if (blocked && !(transmitted && transmitted[i] != Color(0.0f))) continue;
         const LightSample& s = samples[i];
+        if (!blocked && !light.spot) {
+            addSampleTerm(surface, n.x, n.y, n.z, toViewer.x, toViewer.y, toViewer.z, s.dir.x,
+                          s.dir.y, s.dir.z, s.nl, true, r, g, b);
+            continue;
+        }
+        // Through glass, or a spot light's cone: the term scaled per channel.
+        float tr = 0.0f, tg = 0.0f, tb = 0.0f;
         addSampleTerm(surface, n.x, n.y, n.z, toViewer.x, toViewer.y, toViewer.z, s.dir.x, s.dir.y,
-                      s.dir.z, s.nl, true, r, g, b);
+                      s.dir.z, s.nl, true, tr, tg, tb);
+        Color scale(lightFactor(light, s.dir));
+        if (blocked) scale *= transmitted[i];
+        r += tr * scale.x, g += tg * scale.y, b += tb * scale.z;
     }
-    const Color& power = scene.lights()[span.light].power;
+    const Color& power = light.power;
     const float drawn = float(span.drawn);
     return Color(share(r, power.x, drawn), share(g, power.y, drawn), share(b, power.z, drawn));
 }
 
-Color shadeLights(const CompiledScene& scene, const CompiledMaterial& m, const Vec3& n,
+Color sampleShare(const CompiledLight& light, const SurfaceTerms<float>& surface, const Vec3& n,
+                  const Vec3& toViewer, const LightSample& s, float drawn) {
+    float r = 0.0f, g = 0.0f, b = 0.0f;
+    addSampleTerm(surface, n.x, n.y, n.z, toViewer.x, toViewer.y, toViewer.z, s.dir.x, s.dir.y,
+                  s.dir.z, s.nl, true, r, g, b);
+    const float f = lightFactor(light, s.dir);
+    return Color(share(r * f, light.power.x, drawn), share(g * f, light.power.y, drawn),
+                 share(b * f, light.power.z, drawn));
+}
+
+Color shadeLights(const CompiledScene& scene, const SurfaceTerms<float>& surface, const Vec3& n,
                   const Vec3& toViewer, const LightSpan* spans, std::size_t spanCount,
-                  const LightSample* samples, const uint8_t* occluded) {
-    const SurfaceTerms<float> surface = surfaceTerms(m);
+                  const LightSample* samples, const uint8_t* occluded, const Color* transmitted) {
     Color sum(0.0f);
     for (std::size_t k = 0; k < spanCount; ++k)
-        sum += spanShare(scene, surface, n, toViewer, spans[k], samples, occluded);
+        sum += spanShare(scene, surface, n, toViewer, spans[k], samples, occluded, transmitted);
     return sum;
 }
 
@@ -242,6 +280,12 @@ void addCentreLight(const CompiledLight& light, const ShadingPoints& pts,
                       load<L>(pts.vx, i), load<L>(pts.vy, i), load<L>(pts.vz, i),
                       load<L>(centres.dx, i), load<L>(centres.dy, i), load<L>(centres.dz, i),
                       load<L>(centres.nl, i), visible, r, g, b);
+        if (light.spot) {
+            const L f = spotFactor(light, -((light.axis.x * load<L>(centres.dx, i) +
+                                             light.axis.y * load<L>(centres.dy, i)) +
+                                            light.axis.z * load<L>(centres.dz, i)));
+            r *= f, g *= f, b *= f;
+        }
         // A light with no listed sample has no span: nothing is added (spanShare's callers).
         const L sr = load<L>(sums.r, i), sg = load<L>(sums.g, i), sb = load<L>(sums.b, i);
         store(sums.r, i, select(listed, sr + share(r, light.power.x, 1.0f), sr));

@@ -7,10 +7,29 @@
 #include <vector>
 
 #include "core/scratch_arena.h"
+#include "integrator/lanes.h"
 #include "integrator/sampling.h"
 #include "snapshot/compiled_scene.h"
 
 namespace rs {
+
+/// POV-Ray's spotlight fall-off with tightness 0: 1 inside the radius cone, 0 outside the
+/// falloff cone, the cubic 3t^2 - 2t^3 of t = (cos - cosFalloff) / (cosRadius - cosFalloff)
+/// between. `cosTheta` is the cosine of the angle between the light's axis and the direction
+/// from the light to the point. (One value, or a lane of them.)
+template <class F>
+inline F spotFactor(const CompiledLight& l, F cosTheta) {
+    const float width = l.cosRadius - l.cosFalloff;
+    if (!(width > 0.0f)) return select(cosTheta >= l.cosRadius, F{} + 1.0f, F{});
+    F t = (cosTheta - l.cosFalloff) * (1.0f / width);
+    t = select(t < 0.0f, F{}, select(t > 1.0f, F{} + 1.0f, t));
+    return (3.0f - 2.0f * t) * t * t;
+}
+/// The light's factor for a unit direction `toLight` from the shaded point: spotFactor for
+/// spot lights, else 1.
+inline float lightFactor(const CompiledLight& l, const Vec3& toLight) {
+    return l.spot ? spotFactor(l, -glm::dot(l.axis, toLight)) : 1.0f;
+}
 
 /// One light sample seen from a shading point: unit direction and distance to the point of
 /// the light, and n . dir (> 0: samples below the horizon are never listed).
@@ -67,6 +86,9 @@ struct SurfaceArrays {
         r[i] = t.r, g[i] = t.g, b[i] = t.b;
         specular[i] = t.specular, cutoff[i] = t.cutoff, shininess[i] = t.shininess;
     }
+    SurfaceTerms<float> get(std::size_t i) const {
+        return {r[i], g[i], b[i], specular[i], cutoff[i], shininess[i]};
+    }
 };
 
 /// One light's sample toward its centre from each of a ShadingPoints' points (a point light,
@@ -121,17 +143,27 @@ private:
     int laned_;          ///< A sphere light's samples [0, laned_) are taken in lanes.
 };
 
-/// The format's inner sum over lights: Lambert plus Phong of material `m` for the listed
-/// samples, each skipped when `occluded` (indexed like samples; null: none is) says so.
-Color shadeLights(const CompiledScene& scene, const CompiledMaterial& m, const Vec3& n,
+/// The format's inner sum over lights: Lambert plus Phong of surface terms `surface` for the
+/// listed samples. A sample that `occluded` (indexed like samples; null: none is) says is
+/// blocked adds nothing, unless `transmitted` (indexed alike; null: nothing is) gives the
+/// colour that passed the glass on its way: then it adds its term times that colour.
+Color shadeLights(const CompiledScene& scene, const SurfaceTerms<float>& surface, const Vec3& n,
                   const Vec3& toViewer, const LightSpan* spans, std::size_t spanCount,
-                  const LightSample* samples, const uint8_t* occluded);
+                  const LightSample* samples, const uint8_t* occluded,
+                  const Color* transmitted = nullptr);
 
-/// What one span of samples adds to shadeLights' sum: its unshadowed samples' Lambert + Phong
-/// terms for `surface`, times the light's power, over the samples drawn.
+/// What one span of samples adds to shadeLights' sum: its unshadowed (or transmitted)
+/// samples' Lambert + Phong terms for `surface`, times the light's power and spot factor,
+/// over the samples drawn.
 Color spanShare(const CompiledScene& scene, const SurfaceTerms<float>& surface, const Vec3& n,
                 const Vec3& toViewer, const LightSpan& span, const LightSample* samples,
-                const uint8_t* occluded);
+                const uint8_t* occluded, const Color* transmitted = nullptr);
+
+/// One unshadowed sample's share of light `light` (one of `drawn`): its term for `surface`
+/// times power and spot factor over drawn. The kernel adds it times the colour a shadow ray
+/// kept through glass.
+Color sampleShare(const CompiledLight& light, const SurfaceTerms<float>& surface, const Vec3& n,
+                  const Vec3& toViewer, const LightSample& s, float drawn);
 
 /// shadeLights' term of centre-sampled light `light` for points [first, end) of `points`
 /// (first a multiple of kLaneWidth), four at a time, added to `sums`: the samples `centres`,

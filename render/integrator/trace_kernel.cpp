@@ -38,6 +38,7 @@ constexpr std::size_t kSampleCap = 1024;
 struct LevelPoints {
     ShadingPoints shading;           ///< Position, faced normal, direction to the viewer.
     SurfaceArrays surface, lambert;  ///< Their materials' terms, and as plain Lambert.
+    ScratchVector<Color> ambient, lambertAmbient;  ///< Their ambient terms, likewise.
     ScratchVector<uint32_t> material, seed, owner;
     ScratchVector<float> weight;     ///< Accumulated weight of the ray that hit there.
     ScratchVector<float> asDiffuse;  ///< Mirror/glass share shown as Lambert while moving.
@@ -52,6 +53,7 @@ struct LevelPoints {
         if (material.size() < n)
             for (auto* v : {&material, &seed, &owner, &ray}) v->resize(n);
         if (weight.size() < n) weight.resize(n), asDiffuse.resize(n);
+        if (ambient.size() < n) ambient.resize(n), lambertAmbient.resize(n);
         if (inside.size() < n) inside.resize(n);
     }
     std::size_t count() const { return shading.count; }
@@ -72,8 +74,10 @@ struct TraceKernel::Workspace {
     ScratchVector<float> sox, soy, soz, sdx, sdy, sdz, stmax;
     ScratchVector<uint32_t> slight;
     ScratchVector<uint8_t> occluded;
-    std::size_t shadowCount = 0;                    ///< Shadow rays written by pushShadow.
-    ScratchVector<CentreSamples> centres;           ///< Per centre-sampled light.
+    ScratchVector<Color> transmitted;      ///< Per shadow ray: what passed glass (0: blocked).
+    ScratchVector<uint32_t> centreBase;    ///< Per centre-sampled light: its first shadow ray.
+    std::size_t shadowCount = 0;           ///< Shadow rays written by pushShadow.
+    ScratchVector<CentreSamples> centres;  ///< Per centre-sampled light.
     ScratchVector<ScratchVector<uint8_t>> blocked;  ///< Per centre-sampled light and point.
     LightSums sums, lambertSums;
     ScratchVector<uint32_t> cursor;  ///< Each point's next sphere-light span.
@@ -175,6 +179,14 @@ TraceKernel::TraceKernel(const CompiledScene& scene, const TraceOptions& options
     // What the options fix for every level: which lights are sampled at their centre alone
     // (four points at a time) and which over their disk (point by point), and how many
     // samples a point draws at most.
+    for (const CompiledMaterial& m : scene.materials())
+        transmissive_ |= !settings.opaqueShadows && m.transparency > 0.0f;
+    // A camera sample's cone: a pixel's angle (perspective) or width (orthographic), shared
+    // among the pixel's supersamples.
+    const CameraModel& camera = scene.camera();
+    const float pixel = 2.0f * camera.halfHeight() * camera.invHeight() /
+                        std::sqrt(float(std::max(1, settings.supersampling)));
+    (camera.orthographic() ? originWidth_ : spread_) = pixel;
     const int shadowSamples = settings.shadowSamples;
     area_ = shadowSamples > 0 && options_.shadows == ShadowQuality::Full;
     traceShadows_ = shadowSamples > 0 && (options_.shadows == ShadowQuality::Full ||
@@ -196,7 +208,7 @@ bool TraceKernel::trace(const CameraBatch& rays, const TraceOutput& out, TraceCo
         if (out.rays) std::fill(out.rays + start, out.rays + end, 1u);  // Each counts itself.
         for (std::size_t i = start; out.records && i < end; ++i) out.records.clear(i);
         for (std::size_t i = start; out.segments && i < end; ++i) out.segments.clear(i);
-        ws.ping.setCamera(rays, start, end);
+        ws.ping.setCamera(rays, start, end, originWidth_);
         if (!traceLevels(ws, ws.ping, 0, out, counters, stale)) return false;
     }
     return true;
@@ -276,6 +288,8 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         ObjectId id;
         scene_.describe(slots[i], materialIndex, id);
         const CompiledMaterial& m = materials[materialIndex];
+        // The cone's width at the hit: what a pattern filters over, and where children start.
+        const float width = level.cone[i] + hits.t[i] * spread_;
 
         // While moving, mirror and glass shares may be shown as plain Lambert (thesis 4.2).
         float reflectivity = m.reflectivity, transparency = m.transparency, asDiffuse = 0.0f;
@@ -293,9 +307,32 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         if (m.localWeight > 0.0f || (AsDiffuse && asDiffuse > 0.0f)) {
             const std::size_t j = count++;
             pointRay[j] = uint32_t(i);
-            pts.surface.set(j, surfaces[materialIndex]);
-            if (AsDiffuse)
-                pts.lambert.set(j, lamberts_[materialIndex]), pts.asDiffuse[j] = asDiffuse;
+            if (true) {
+                pts.surface.set(j, surfaces[materialIndex]);
+                pts.ambient[j] = ambients_[materialIndex];
+                if (AsDiffuse) {
+                    pts.lambert.set(j, lamberts_[materialIndex]), pts.asDiffuse[j] = asDiffuse;
+                    pts.lambertAmbient[j] = lambertAmbients_[materialIndex];
+                }
+            } else {
+                // The pattern's colour here, filtered over the cone's footprint, in place of
+                // the material's colour in every term (scenes/FORMAT.md "color").
+                const Vec3 p(sp.px[i], sp.py[i], sp.pz[i]);
+                const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
+                const Vec3 n(hits.nx[i], hits.ny[i], hits.nz[i]);
+                const Color c = surfaceColor(m, slots[i], p, n, footprintAt(d, n, width));
+                SurfaceTerms<float> terms = surfaces[materialIndex];
+                const Color diffuseColor = m.diffuse * c;
+                terms.r = diffuseColor.x, terms.g = diffuseColor.y, terms.b = diffuseColor.z;
+                pts.surface.set(j, terms);
+                pts.ambient[j] = settings.ambient * c * m.diffuse;
+                if (AsDiffuse) {
+                    SurfaceTerms<float> lambert = lamberts_[materialIndex];
+                    lambert.r = c.x, lambert.g = c.y, lambert.b = c.z;
+                    pts.lambert.set(j, lambert), pts.asDiffuse[j] = asDiffuse;
+                    pts.lambertAmbient[j] = settings.ambient * c;
+                }
+            }
             pointMaterial[j] = materialIndex, pointSeed[j] = seeds[i], pointOwner[j] = owner;
             pointWeight[j] = weight;
         }
@@ -315,7 +352,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                 reflectWeight += transparency * f;
                 const float w = weight * (transparency * (1.0f - f));
                 if (w >= options_.minWeight)
-                    next.push(p - nf * eps_, t, w, hashCombine(seeds[i], 2u), owner);
+                    next.push(p - nf * eps_, t, w, hashCombine(seeds[i], 2u), owner, width);
             } else {
                 reflectWeight += transparency;
             }
@@ -324,7 +361,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             const float w = weight * reflectWeight;
             if (w >= options_.minWeight)
                 next.push(p + nf * eps_, d - 2.0f * glm::dot(d, nf) * nf, w,
-                          hashCombine(seeds[i], 1u), owner);
+                          hashCombine(seeds[i], 1u), owner, width);
         }
     }
     if (count < n) {  // close up: point j is the j-th shaded hit (ray i >= j, so in place)
@@ -371,11 +408,15 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         // One shadow batch: every centre-sampled light's listed rays, light by light, then
         // the sphere lights' samples in list order.
         const uint8_t* areaOccluded = nullptr;
+        const Color* areaTransmitted = nullptr;
         if (traceShadows) {
             const ShadowRayArrays rays = ws.shadows(group * perPoint_);
-            for (const uint32_t li : centreLights_)
+            if (ws.centreBase.size() < lightCount) ws.centreBase.resize(lightCount);
+            for (const uint32_t li : centreLights_) {
+                ws.centreBase[li] = uint32_t(ws.shadowCount);
                 ws.shadowCount = writeCentreShadows(sp, ws.centres[li], first, end, eps_, li, rays,
                                                     ws.shadowCount);
+            }
             const std::size_t areaBase = ws.shadowCount;
             if (sampled) ws.shadowRays(sp, first, group, eps_, areaBase);
             // One answer past the rays, so the loop below may read it without a branch.
@@ -384,6 +425,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             if (ws.shadowCount > 0) {
                 scene_.engine().anyHit(ws.shadowBatch(area), ws.occluded.data());
                 counters.shadowRays += ws.shadowCount;
+                if (transmissive_) transmit(ws);
             }
             // Each centre ray's answer back to its point (flags are 0 or 1).
             std::size_t r = 0;
@@ -396,6 +438,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                     for (std::size_t j = first; j < end; ++j) out.rays[pts.owner[j]] += c.listed[j];
             }
             areaOccluded = ws.occluded.data() + areaBase;
+            if (transmissive_) areaTransmitted = ws.transmitted.data() + areaBase;
             if (Bookkeeping && out.rays && sampled)
                 for (std::size_t j = first; j < end; ++j)
                     for (uint32_t k = ws.pointSpans[j - first]; k < ws.pointSpans[j - first + 1];
@@ -414,6 +457,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                 if (AsDiffuse)
                     addCentreLight(light, sp, pts.lambert, ws.centres[li], blocked, first, end,
                                    ws.lambertSums);
+                if (transmissive_ && traceShadows) addTransmitted<AsDiffuse>(ws, li, first, end);
                 continue;
             }
             for (std::size_t j = first; j < end; ++j) {
@@ -421,13 +465,12 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
                 if (k == ws.pointSpans[j - first + 1] || ws.spans[k].light != li) continue;
                 const LightSpan& span = ws.spans[k++];
                 const Vec3 nf(sp.nx[j], sp.ny[j], sp.nz[j]), v(sp.vx[j], sp.vy[j], sp.vz[j]);
-                const uint32_t mi = pts.material[j];
-                const Color c =
-                    spanShare(scene_, surfaces_[mi], nf, v, span, ws.samples.data(), areaOccluded);
+                const Color c = spanShare(scene_, pts.surface.get(j), nf, v, span,
+                                          ws.samples.data(), areaOccluded, areaTransmitted);
                 ws.sums.r[j] += c.x, ws.sums.g[j] += c.y, ws.sums.b[j] += c.z;
                 if (AsDiffuse) {
-                    const Color l = spanShare(scene_, lamberts_[mi], nf, v, span, ws.samples.data(),
-                                              areaOccluded);
+                    const Color l = spanShare(scene_, pts.lambert.get(j), nf, v, span,
+                                              ws.samples.data(), areaOccluded, areaTransmitted);
                     ws.lambertSums.r[j] += l.x, ws.lambertSums.g[j] += l.y,
                         ws.lambertSums.b[j] += l.z;
                 }
@@ -435,7 +478,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         }
 
         const float *sumR = ws.sums.r.data(), *sumG = ws.sums.g.data(), *sumB = ws.sums.b.data();
-        const Color* ambients = ambients_.data();
+        const Color* ambients = pts.ambient.data();
         Color* color = out.color;
         std::optional<PerRayAppender<ShadingRecord>> records;
         if (Bookkeeping && deferred && out.records) records.emplace(out.records);
@@ -444,17 +487,20 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             const float weight = pointWeight[j], localWeight = materials[mi].localWeight;
             if (localWeight > 0.0f) {
                 const Color direct(sumR[j], sumG[j], sumB[j]);
-                color[owner] += weight * (localWeight * (ambients[mi] + direct));
+                color[owner] += weight * (localWeight * (ambients[j] + direct));
                 // Shown unshadowed while moving; the record lets the shadows be added later.
                 if (Bookkeeping && records)
-                    records->append(owner, ShadingRecord{Vec3(sp.px[j], sp.py[j], sp.pz[j]),
-                                                         Vec3(sp.nx[j], sp.ny[j], sp.nz[j]),
-                                                         Vec3(sp.vx[j], sp.vy[j], sp.vz[j]),
-                                                         weight * localWeight, mi, pts.seed[j]});
+                    records->append(
+                        owner,
+                        ShadingRecord{Vec3(sp.px[j], sp.py[j], sp.pz[j]),
+                                      Vec3(sp.nx[j], sp.ny[j], sp.nz[j]),
+                                      Vec3(sp.vx[j], sp.vy[j], sp.vz[j]), weight * localWeight,
+                                      Color(pts.surface.r[j], pts.surface.g[j], pts.surface.b[j]),
+                                      mi, pts.seed[j]});
             }
             if (AsDiffuse && pts.asDiffuse[j] > 0.0f) {
                 const Color direct(ws.lambertSums.r[j], ws.lambertSums.g[j], ws.lambertSums.b[j]);
-                color[owner] += weight * (pts.asDiffuse[j] * (lambertAmbients_[mi] + direct));
+                color[owner] += weight * (pts.asDiffuse[j] * (pts.lambertAmbient[j] + direct));
             }
         }
     }
@@ -485,6 +531,7 @@ void TraceKernel::resolveDeferred(const ShadingRecord* records, std::size_t coun
         ws.pointSpans.push_back(uint32_t(ws.spans.size()));
         ws.centrePointSpans.push_back(uint32_t(ws.centreSpans.size()));
         const uint8_t* occluded = nullptr;
+        const Color* transmitted = nullptr;
         if (shadows && !ws.samples.empty()) {
             pts.resize(n);
             for (std::size_t j = 0; j < n; ++j) {
@@ -496,20 +543,94 @@ void TraceKernel::resolveDeferred(const ShadingRecord* records, std::size_t coun
             scene_.engine().anyHit(ws.shadowBatch(true), ws.occluded.data());
             occluded = ws.occluded.data();
             counters.shadowRays += ws.samples.size();
+            if (transmissive_) {
+                transmit(ws);
+                transmitted = ws.transmitted.data();
+            }
         }
         for (std::size_t j = 0; j < n; ++j) {
             const ShadingRecord& r = records[first + j];
-            const CompiledMaterial& m = scene_.materials()[r.material];
-            const Color shadowed =
-                shadeLights(scene_, m, r.n, r.toViewer, ws.spans.data() + ws.pointSpans[j],
-                            ws.pointSpans[j + 1] - ws.pointSpans[j], ws.samples.data(), occluded);
+            const SurfaceTerms<float> terms = recordTerms(r);
+            const Color shadowed = shadeLights(
+                scene_, terms, r.n, r.toViewer, ws.spans.data() + ws.pointSpans[j],
+                ws.pointSpans[j + 1] - ws.pointSpans[j], ws.samples.data(), occluded, transmitted);
             const Color unshadowed = shadeLights(
-                scene_, m, r.n, r.toViewer, ws.centreSpans.data() + ws.centrePointSpans[j],
+                scene_, terms, r.n, r.toViewer, ws.centreSpans.data() + ws.centrePointSpans[j],
                 ws.centrePointSpans[j + 1] - ws.centrePointSpans[j], ws.centreSamples.data(),
                 nullptr);
             out[first + j] = r.weight * (shadowed - unshadowed);
         }
         first += n;
+    }
+}
+
+Color TraceKernel::transmission(const Vec3& origin, const Vec3& dir, float tmax) const {
+    // A shadow ray through glass (scenes/FORMAT.md "Shadows"): each transparent surface it
+    // crosses keeps transparency x colour of the light, no bending; anything opaque stops it.
+    constexpr int kMostCrossings = 64;
+    Color kept(1.0f);
+    Vec3 o = origin;
+    float left = tmax;
+    // The walk counts as the one shadow ray it continues (per-pixel counts stay exact).
+    for (int crossing = 0; crossing < kMostCrossings; ++crossing) {
+        EngineHit hit;
+        if (!scene_.engine().closestHit(Ray::make(o, dir), left, hit)) return kept;
+        uint32_t mi;
+        ObjectId id;
+        scene_.describe(hit.slot, mi, id);
+        const CompiledMaterial& m = scene_.materials()[mi];
+        if (!(m.transparency > 0.0f)) return Color(0.0f);
+        const Vec3 p = o + dir * hit.t;
+        kept *= m.transparency * surfaceColor(m, hit.slot, p, hit.n, Footprint{});
+        if (kept == Color(0.0f)) return kept;
+        o = p + dir * eps_;
+        left -= hit.t + eps_;
+        if (!(left > 0.0f)) return kept;
+    }
+    return Color(0.0f);  // More glass than that: treated as blocking.
+}
+
+Color TraceKernel::surfaceColor(const CompiledMaterial& m, uint32_t slot, const Vec3& p,
+                                const Vec3& n, const Footprint& footprint) const {
+    (void)slot, (void)p, (void)n, (void)footprint;
+    return m.color;
+}
+
+SurfaceTerms<float> TraceKernel::recordTerms(const ShadingRecord& r) const {
+    const CompiledMaterial& m = scene_.materials()[r.material];
+    return {r.diffuse.x, r.diffuse.y, r.diffuse.z, m.specular, m.specularCutoff, m.shininess};
+}
+
+void TraceKernel::transmit(Workspace& ws) const {
+    const std::size_t n = ws.shadowCount;
+    if (ws.transmitted.size() < n) ws.transmitted.resize(n);
+    for (std::size_t r = 0; r < n; ++r)
+        ws.transmitted[r] = ws.occluded[r]
+                                ? transmission(Vec3(ws.sox[r], ws.soy[r], ws.soz[r]),
+                                               Vec3(ws.sdx[r], ws.sdy[r], ws.sdz[r]), ws.stmax[r])
+                                : Color(0.0f);
+}
+
+template <bool AsDiffuse>
+void TraceKernel::addTransmitted(Workspace& ws, uint32_t li, std::size_t first,
+                                 std::size_t end) const {
+    // Centre rays were written for the listed points in point order (writeCentreShadows).
+    const CompiledLight& light = scene_.lights()[li];
+    const CentreSamples& c = ws.centres[li];
+    const ShadingPoints& sp = ws.points.shading;
+    uint32_t r = ws.centreBase[li];
+    for (std::size_t j = first; j < end; ++j) {
+        if (!c.listed[j]) continue;
+        const Color kept = ws.transmitted[r++];
+        if (kept == Color(0.0f)) continue;
+        const LightSample s{Vec3(c.dx[j], c.dy[j], c.dz[j]), c.dist[j], c.nl[j]};
+        const Vec3 n(sp.nx[j], sp.ny[j], sp.nz[j]), v(sp.vx[j], sp.vy[j], sp.vz[j]);
+        const Color add = kept * sampleShare(light, ws.points.surface.get(j), n, v, s, 1.0f);
+        ws.sums.r[j] += add.x, ws.sums.g[j] += add.y, ws.sums.b[j] += add.z;
+        if (AsDiffuse) {
+            const Color l = kept * sampleShare(light, ws.points.lambert.get(j), n, v, s, 1.0f);
+            ws.lambertSums.r[j] += l.x, ws.lambertSums.g[j] += l.y, ws.lambertSums.b[j] += l.z;
+        }
     }
 }
 

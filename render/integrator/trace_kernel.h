@@ -11,6 +11,7 @@
 #include "image/image.h"
 #include "integrator/light_sampling.h"
 #include "integrator/whitted.h"
+#include "snapshot/footprint.h"
 
 namespace rs {
 
@@ -187,6 +188,21 @@ private:
     void keepBooks(const Level& level, const HitBatch& hits, int depth,
                    const TraceOutput& out) const;
 
+    /// The colour a shadow ray keeps from `origin` along unit `dir` to `tmax` through
+    /// transparent surfaces (0 when something opaque blocks it), by closest hits.
+    Color transmission(const Vec3& origin, const Vec3& dir, float tmax) const;
+    /// transmission() of each occluded shadow ray of the workspace's batch, into
+    /// ws.transmitted (0 for the rays that were not occluded).
+    void transmit(Workspace& ws) const;
+    /// Adds what centre-sampled light `li` gives points [first, end) through glass.
+    template <bool AsDiffuse>
+    void addTransmitted(Workspace& ws, uint32_t li, std::size_t first, std::size_t end) const;
+    /// Material `m`'s colour at world point p (unit normal n) of engine slot `slot`.
+    Color surfaceColor(const CompiledMaterial& m, uint32_t slot, const Vec3& p, const Vec3& n,
+                       const Footprint& footprint) const;
+    /// A deferred shading record's Lambert + Phong terms.
+    SurfaceTerms<float> recordTerms(const ShadingRecord& r) const;
+
     const CompiledScene& scene_;
     TraceOptions options_;
     float eps_;
@@ -200,6 +216,9 @@ private:
     /// 1 for each material that reflects or refracts (a pixel's tree that meets it is marked).
     std::vector<uint8_t> specular_;
     bool area_ = false;          ///< Sphere lights are sampled over their disk.
+    bool transmissive_ = false;  ///< Shadow rays pass transparent surfaces (filtered).
+    float spread_ = 0.0f;       ///< A cone's growth in width per unit travelled (perspective).
+    float originWidth_ = 0.0f;  ///< A camera ray's cone width at its origin (orthographic).
     bool traceShadows_ = false;  ///< Shadow rays are traced now (not Off, not Deferred).
     /// Lights sampled at their centre (four points at a time) and over their disk, in the
     /// scene's order; the most samples one point draws.

@@ -16,6 +16,9 @@ namespace rs {
 /// each field by index: no per-field capacity check, no allocation once they have grown.
 struct TraceKernel::Level {
     ScratchVector<float> ox, oy, oz, dx, dy, dz, tmax, weight;
+    /// Width of the ray's cone where it starts (world units): it grows by the kernel's spread
+    /// per unit travelled, and a hit's width is what textures filter over.
+    ScratchVector<float> cone;
     ScratchVector<uint32_t> seed, owner;
     std::size_t count = 0;
 
@@ -25,24 +28,26 @@ struct TraceKernel::Level {
     void reserve(std::size_t n) {
         if (n <= ox.size()) return;
         const std::size_t grown = std::max(n, 2 * ox.size());
-        for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tmax, &weight}) v->resize(grown);
+        for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tmax, &weight, &cone}) v->resize(grown);
         seed.resize(grown);
         owner.resize(grown);
     }
     /// Appends a ray; reserve() must have made room for it.
-    void push(const Vec3& o, const Vec3& d, float w, uint32_t s, uint32_t who) {
+    void push(const Vec3& o, const Vec3& d, float w, uint32_t s, uint32_t who, float width) {
         const std::size_t i = count++;
         ox[i] = o.x, oy[i] = o.y, oz[i] = o.z;
         dx[i] = d.x, dy[i] = d.y, dz[i] = d.z;
         tmax[i] = kInfinity;
         weight[i] = w;
+        cone[i] = width;
         seed[i] = s;
         owner[i] = who;
     }
     /// Camera rays [begin, end) of `rays` as the level (weight 1; owner: index in `rays`;
-    /// seeds of 0 when `rays.seed` is null),
+    /// seeds of 0 when `rays.seed` is null; cones `width` wide at their origins),
     /// written field by field through local pointers.
-    void setCamera(const CameraBatch& rays, std::size_t begin, std::size_t end) {
+    void setCamera(const CameraBatch& rays, std::size_t begin, std::size_t end,
+                   float width = 0.0f) {
         const std::size_t n = end - begin;
         reserve(n);
         float *pox = ox.data(), *poy = oy.data(), *poz = oz.data();
@@ -54,6 +59,7 @@ struct TraceKernel::Level {
         }
         std::fill_n(tmax.data(), n, kInfinity);
         std::fill_n(weight.data(), n, 1.0f);
+        std::fill_n(cone.data(), n, width);
         if (rays.seed)
             std::copy_n(rays.seed + begin, n, seed.data());
         else
@@ -69,7 +75,7 @@ struct TraceKernel::Level {
         };
         copy(ox, from.ox), copy(oy, from.oy), copy(oz, from.oz);
         copy(dx, from.dx), copy(dy, from.dy), copy(dz, from.dz);
-        copy(tmax, from.tmax), copy(weight, from.weight);
+        copy(tmax, from.tmax), copy(weight, from.weight), copy(cone, from.cone);
         copy(seed, from.seed), copy(owner, from.owner);
         count += end - begin;
     }

@@ -56,7 +56,8 @@ struct TraceOptions {
 /// the camera or secondary rays (thesis 3.3).
 struct ShadingRecord {
     Vec3 p, n, toViewer;
-    float weight;  ///< Path throughput times the material's local share.
+    float weight;   ///< Path throughput times the material's local share.
+    Color diffuse;  ///< Diffuse times the surface's colour there (its pattern's, if any).
     uint32_t material;
     uint32_t seed;  ///< Light-sampling seed, so the deferred samples equal a full trace's.
 };

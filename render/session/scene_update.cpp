@@ -18,11 +18,27 @@ bool sameTracedSettings(RenderSettings a, RenderSettings b) {
 }
 
 bool sameLight(const Light& a, const Light& b) {
-    return a.id == b.id && a.type == b.type && a.position == b.position && a.color == b.color &&
-           a.intensity == b.intensity && (a.type != LightType::Sphere || a.radius == b.radius);
+    if (a.id != b.id || a.type != b.type || a.color != b.color || a.intensity != b.intensity)
+        return false;
+    switch (a.type) {
+        case LightType::Point:
+            return a.position == b.position;
+        case LightType::Sphere:
+            return a.position == b.position && a.radius == b.radius;
+        case LightType::Directional:
+            return a.direction == b.direction;
+        case LightType::Spot:
+            return a.position == b.position && a.target == b.target &&
+                   a.coneRadius == b.coneRadius && a.coneFalloff == b.coneFalloff;
+    }
+    return false;
 }
 
+/// Where the light's rays come from: a directional light's point is kSunDistance away
+/// (CompiledLight), a spot light's cone lies within its point's reach.
 LightSphere sphereOf(const Light& l) {
+    if (l.type == LightType::Directional)
+        return {-glm::normalize(l.direction) * kSunDistance, 0.0f};
     return {l.position, l.type == LightType::Sphere ? l.radius : 0.0f};
 }
 
@@ -76,7 +92,8 @@ SceneUpdate updateScene(const SceneDocument& before,
     }
     edit.resized =
         before.render.width != after.render.width || before.render.height != after.render.height;
-    if (!(before.camera == after.camera) || !sameTracedSettings(before.render, after.render))
+    if (!(before.camera == after.camera) || !sameTracedSettings(before.render, after.render) ||
+        !(before.environment == after.environment))
         edit.everything = true;
     edit.lights = changedLights(before.lights, after.lights);
     edit.displayOnly = !edit.everything && (before.render.tonemap != after.render.tonemap ||
@@ -94,6 +111,17 @@ SceneUpdate updateScene(const SceneDocument& before,
     }
     for (const Material& m : before.materials)
         if (!after.findMaterial(m.name)) changedMaterials.insert(m.name);
+
+    // Glass filters the shadows it casts (scenes/FORMAT.md "Shadows"): a material change of
+    // an object that is or was transparent reaches every pixel whose shadow rays cross it.
+    auto filters = [](const SceneDocument& doc, const std::string& name) {
+        const Material* m = doc.findMaterial(name);
+        return !doc.render.opaqueShadows && m && m->transparency > 0.0f;
+    };
+    auto castsFilteredShadow = [&](const Object& prev, const Object& o) {
+        return filters(before, prev.material) || filters(after, o.material);
+    };
+    std::set<ObjectId> reshadowed;
 
     std::map<ObjectId, const Object*> old;
     for (const Object& o : before.objects) old[o.id] = &o;
@@ -117,6 +145,8 @@ SceneUpdate updateScene(const SceneDocument& before,
         if (isPlane(o) || isPlane(prev)) {
             if (shapeChanged || kindChanged || prev.visible != o.visible)
                 edit.everything = true;
+            else if (materialChanged && o.visible && castsFilteredShadow(prev, o))
+                edit.everything = true;
             else if (materialChanged && o.visible)
                 edit.retinted.push_back(o.id);
             structural |= kindChanged || prev.visible != o.visible;
@@ -133,6 +163,7 @@ SceneUpdate updateScene(const SceneDocument& before,
         } else if (materialChanged && o.visible) {
             moved.push_back(o.id);  // Recompiled for its material index; bounds unchanged.
             edit.retinted.push_back(o.id);
+            if (castsFilteredShadow(prev, o)) reshadowed.insert(o.id);
         }
     }
     for (const auto& [id, o] : old) {
@@ -162,7 +193,7 @@ SceneUpdate updateScene(const SceneDocument& before,
     for (ObjectId id : added) addRegion(a.objectBounds(id));
     for (ObjectId id : moved) {
         const Aabb ob = b.objectBounds(id), nb = a.objectBounds(id);
-        if (ob.min == nb.min && ob.max == nb.max &&
+        if (ob.min == nb.min && ob.max == nb.max && !reshadowed.count(id) &&
             std::find(edit.retinted.begin(), edit.retinted.end(), id) != edit.retinted.end())
             continue;  // A material change only: its pixels are retinted, not re-shaped.
         addRegion(ob);

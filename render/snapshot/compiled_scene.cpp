@@ -1,6 +1,7 @@
 // Building a snapshot from a document and refitting it after moves.
 #include "snapshot/compiled_scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/id_search.h"
@@ -31,6 +32,24 @@ Frame makeFrame(const Mat4& worldFromObject) {
     f.dirToObject = Mat3(f.objectFromWorld);
     f.normalToWorld = glm::transpose(Mat3(f.objectFromWorld));
     return f;
+}
+
+CompiledLight compileLight(const Light& l) {
+    CompiledLight c{l.position, l.type == LightType::Sphere ? l.radius : 0.0f,
+                    l.color * l.intensity, l.id};
+    if (l.type == LightType::Directional) {
+        c.position = -glm::normalize(l.direction) * kSunDistance;
+        c.sun = true;
+    } else if (l.type == LightType::Spot) {
+        c.spot = true;
+        const Vec3 axis = l.target - l.position;
+        c.axis = glm::length(axis) > 0.0f ? glm::normalize(axis) : Vec3(0.0f, -1.0f, 0.0f);
+        const float radians = float(M_PI) / 180.0f;
+        c.cosRadius = std::cos(std::clamp(l.coneRadius, 0.0f, 90.0f) * radians);
+        c.cosFalloff =
+            std::cos(std::clamp(std::max(l.coneFalloff, l.coneRadius), 0.0f, 90.0f) * radians);
+    }
+    return c;
 }
 
 uint32_t materialIndex(const SceneDocument& doc, const std::string& name) {
@@ -122,10 +141,7 @@ CompiledScene::CompiledScene(const SceneDocument& doc, const CompiledScene* prev
     : camera_(doc.camera, doc.render.width, doc.render.height), settings_(doc.render) {
     materials_.push_back(compileMaterial(Material{}));
     for (const Material& m : doc.materials) materials_.push_back(compileMaterial(m));
-    for (const Light& l : doc.lights) {
-        const float radius = l.type == LightType::Sphere ? l.radius : 0.0f;
-        lights_.push_back({l.position, radius, l.color * l.intensity, l.id});
-    }
+    for (const Light& l : doc.lights) lights_.push_back(compileLight(l));
     planes_ = compilePlanes(doc);
     auto prims = std::make_shared<std::vector<Primitive>>();
     for (const Object& o : doc.objects) {
@@ -155,6 +171,7 @@ void CompiledScene::computeEpsilon() {
     sceneBounds_ = Aabb{};
     for (const Primitive& p : *primitives_) sceneBounds_.expand(p.worldBounds);
     for (const CompiledLight& l : lights_) {
+        if (l.sun) continue;  // Far away by construction; the scene's size is what matters.
         sceneBounds_.expand(l.position - Vec3(l.radius));
         sceneBounds_.expand(l.position + Vec3(l.radius));
     }

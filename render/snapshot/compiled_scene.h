@@ -24,12 +24,25 @@ struct CompiledMaterial {
     float specularCutoff;
 };
 
+/// How far a directional light's point is placed along its reverse direction: far enough
+/// that its rays are parallel to within 1e-4 radians over a scene ten thousand units wide,
+/// near enough that a float direction to it is exact to about 1e-7 (scenes/FORMAT.md).
+inline constexpr float kSunDistance = 1e8f;
+
 /// A light as the integrator needs it: position, radius (0 for a point) and intensity * colour.
+/// A directional light is a point light kSunDistance away (so every shadow ray, dirty-region
+/// cone and sample is a point light's); a spot light is a point light whose power falls off
+/// outside its cone.
 struct CompiledLight {
     Vec3 position;
     float radius;
     Color power;
     ObjectId id;
+    bool spot = false;             ///< Power times spotFactor (integrator/light_sampling.h).
+    bool sun = false;              ///< A directional light: not part of the scene's bounds.
+    Vec3 axis{0.0f, -1.0f, 0.0f};  ///< Spot lights: unit direction from the light to its target.
+    float cosFalloff = 0.0f;       ///< Spot lights: cos of the half-angle where power reaches 0.
+    float cosRadius = 1.0f;        ///< Spot lights: cos of the half-angle of full power.
 };
 
 /// What a ray hit: where, the unit outward normal, material and the object's id.
