@@ -217,8 +217,8 @@ private:
     std::vector<uint8_t> specular_;
     bool area_ = false;          ///< Sphere lights are sampled over their disk.
     bool transmissive_ = false;  ///< Shadow rays pass transparent surfaces (filtered).
-    float spread_ = 0.0f;       ///< A cone's growth in width per unit travelled (perspective).
-    float originWidth_ = 0.0f;  ///< A camera ray's cone width at its origin (orthographic).
+    float spread_ = 0.0f;        ///< A cone's growth in width per unit travelled (perspective).
+    float originWidth_ = 0.0f;   ///< A camera ray's cone width at its origin (orthographic).
     bool traceShadows_ = false;  ///< Shadow rays are traced now (not Off, not Deferred).
     /// Lights sampled at their centre (four points at a time) and over their disk, in the
     /// scene's order; the most samples one point draws.
