@@ -1,0 +1,115 @@
+// Texture coordinates of spheres, planes, rectangles and boxes, with their gradients.
+#include "texture/shape_uv.h"
+
+#include <cmath>
+
+namespace rs {
+
+namespace {
+constexpr float kTwoPi = 2.0f * kPi;
+}  // namespace
+
+ShapeUV sphereUV(const Vec3& p, const Vec3& center, float radius) {
+    (void)radius;
+    ShapeUV uv;
+    const Vec3 d = p - center;
+    const float rhoSquared = d.x * d.x + d.z * d.z;
+    const float lengthSquared = rhoSquared + d.y * d.y;
+    if (!(lengthSquared > 0.0f)) {  // the centre itself: no direction
+        uv.v = 0.5f;
+        return uv;
+    }
+    const float rho = std::sqrt(rhoSquared);
+    const float length = std::sqrt(lengthSquared);
+    if (rhoSquared > 0.0f) {
+        // acos(x / rho), mirrored for z < 0: atan2 gives the same angle without the acos's
+        // loss of precision near +-X.
+        float phi = std::atan2(d.z, d.x);
+        if (phi < 0.0f) phi += kTwoPi;
+        float u = phi / kTwoPi;
+        if (u >= 1.0f) u = 0.0f;  // -0 and rounding just below the seam
+        uv.u = u;
+        uv.dudp = Vec3(-d.z, 0.0f, d.x) / (kTwoPi * rhoSquared);
+        uv.dvdp = Vec3(-d.y * d.x / rho, rho, -d.y * d.z / rho) / (kPi * lengthSquared);
+    }
+    const float sine = std::clamp(d.y / length, -1.0f, 1.0f);
+    uv.v = 0.5f + std::asin(sine) / kPi;
+    return uv;
+}
+
+ShapeUV planeUV(const Vec3& p, const Vec3& point, const Vec3& normal) {
+    const Vec3 n = glm::normalize(normal);
+    const Vec3 axis = std::abs(n.x) > 0.9f ? Vec3(0.0f, 0.0f, 1.0f) : Vec3(1.0f, 0.0f, 0.0f);
+    const Vec3 t1 = glm::normalize(axis - n * glm::dot(n, axis));
+    const Vec3 t2 = glm::cross(n, t1);
+    const Vec3 d = p - point;
+    ShapeUV uv;
+    uv.u = glm::dot(d, t1);
+    uv.v = glm::dot(d, t2);
+    uv.dudp = t1;
+    uv.dvdp = t2;
+    return uv;
+}
+
+ShapeUV rectangleUV(const Vec3& p, const Vec3& center, const Vec3& u, const Vec3& v) {
+    // The dual basis inside the plane, as RectangleShape::make builds it.
+    const Vec3 normal = glm::normalize(glm::cross(u, v));
+    const Vec3 vPerp = glm::cross(v, normal);
+    const Vec3 uPerp = glm::cross(normal, u);
+    const Vec3 uDual = vPerp / glm::dot(u, vPerp);
+    const Vec3 vDual = uPerp / glm::dot(v, uPerp);
+    const Vec3 d = p - center;
+    ShapeUV uv;
+    uv.u = 0.5f * (glm::dot(d, uDual) + 1.0f);
+    uv.v = 0.5f * (glm::dot(d, vDual) + 1.0f);
+    uv.dudp = 0.5f * uDual;
+    uv.dvdp = 0.5f * vDual;
+    return uv;
+}
+
+namespace {
+
+/// One box-face coordinate: (p[axis] - min[axis]) / ext when `rising`, else
+/// (max[axis] - p[axis]) / ext; its gradient lies along that axis.
+void faceCoordinate(const Vec3& p, const Vec3& min, const Vec3& max, int axis, bool rising,
+                    float& value, Vec3& gradient) {
+    const float ext = max[axis] - min[axis];
+    gradient = Vec3(0.0f);
+    if (!(ext > 0.0f)) {
+        value = 0.0f;
+        return;
+    }
+    const float inv = 1.0f / ext;
+    value = rising ? (p[axis] - min[axis]) * inv : (max[axis] - p[axis]) * inv;
+    gradient[axis] = rising ? inv : -inv;
+}
+
+}  // namespace
+
+ShapeUV boxUV(const Vec3& p, const Vec3& n, const Vec3& min, const Vec3& max) {
+    const Vec3 a = glm::abs(n);
+    const int axis = (a.x >= a.y && a.x >= a.z) ? 0 : (a.y >= a.z ? 1 : 2);
+    const bool positive = n[axis] >= 0.0f;
+    // (axis of u, u rising?, axis of v, v rising?) per face, as the header lists them.
+    int uAxis = 0, vAxis = 1;
+    bool uRising = true, vRising = true;
+    switch (axis) {
+        case 0:  // +X: u = (max.z - z); -X: u = (z - min.z); v = (y - min.y)
+            uAxis = 2;
+            uRising = !positive;
+            break;
+        case 1:  // u = (x - min.x); +Y: v = (max.z - z); -Y: v = (z - min.z)
+            vAxis = 2;
+            vRising = !positive;
+            break;
+        default:  // +Z: u = (x - min.x); -Z: u = (max.x - x); v = (y - min.y)
+            uRising = positive;
+            break;
+    }
+    ShapeUV uv;
+    faceCoordinate(p, min, max, uAxis, uRising, uv.u, uv.dudp);
+    faceCoordinate(p, min, max, vAxis, vRising, uv.v, uv.dvdp);
+    return uv;
+}
+
+}  // namespace rs

@@ -1,0 +1,55 @@
+// Texture coordinates of the analytic shapes and their gradients, in each shape's own space.
+#pragma once
+
+#include "core/math.h"
+
+namespace rs {
+
+/// Texture coordinates at a surface point and their gradients in object space: for a small
+/// step dp in the tangent plane, du = dot(dudp, dp) and dv = dot(dvdp, dp) (object units).
+/// The gradients are those of the functions below extended off the surface, so only their
+/// tangent components matter.
+struct ShapeUV {
+    float u = 0.0f, v = 0.0f;
+    Vec3 dudp{0.0f}, dvdp{0.0f};
+};
+
+/// POV-Ray's spherical map (map_type 1) about `center`, with d = (p - c) / |p - c|:
+///   u = phi / (2 pi), phi = acos(d.x / sqrt(d.x^2 + d.z^2)), phi = 2 pi - phi when d.z < 0,
+///     so u runs from 0 at +X through 0.25 at +Z, 0.5 at -X and 0.75 at -Z back to 1 (the
+///     seam is the half-plane z = 0, x > 0); u = 0 on the axis (d.x^2 + d.z^2 = 0);
+///   v = 0.5 + asin(d.y) / pi: 0 at the south pole (-Y), 0.5 on the equator, 1 at the north.
+/// Gradients: du/dp = (-dz, 0, dx) / (2 pi (dx^2 + dz^2)) with (dx, dy, dz) = p - c, which
+/// grows without bound toward the poles (where u is singular; zero on the axis itself), and
+/// dv/dp = (-dy dx / rho, rho, -dy dz / rho) / (pi |p - c|^2), rho = sqrt(dx^2 + dz^2) (zero
+/// on the axis). `radius` is used only when p is the centre (u = 0, v = 0.5, zero gradients).
+ShapeUV sphereUV(const Vec3& p, const Vec3& center, float radius);
+
+/// A plane's planar projection, unit cells in scene units. With n = normalize(`normal`):
+///   T1 = normalize(X - n (n.X)), or normalize(Z - n (n.Z)) when |n.x| > 0.9;  T2 = n x T1;
+///   u = (p - point) . T1,  v = (p - point) . T2;  dudp = T1, dvdp = T2.
+/// For the floor n = +Y: T1 = +X, T2 = -Z, so u = x - point.x and v = point.z - z.
+ShapeUV planeUV(const Vec3& p, const Vec3& point, const Vec3& normal);
+
+/// The rectangle c + a u + b v, a, b in [-1, 1] (u, v its half-extent edges, not necessarily
+/// orthogonal): texture u = (a + 1) / 2, v = (b + 1) / 2, so [0, 1]^2 spans it from corner
+/// c - u - v. (a, b) come from the in-plane dual basis of (u, v), as RectangleShape's test
+/// does, so sheared rectangles map exactly; dudp = uDual / 2, dvdp = vDual / 2.
+ShapeUV rectangleUV(const Vec3& p, const Vec3& center, const Vec3& u, const Vec3& v);
+
+/// [0, 1]^2 on each face of the axis-aligned box [min, max], the face chosen by the dominant
+/// axis of the outward object-space normal `n` (ties go to X, then Y). Every face is upright
+/// as seen from outside: u grows to the viewer's right and v upward, where "up" is +Y on the
+/// four side faces, -Z on the top face (seen from above) and +Z on the bottom face (seen from
+/// below). With ext = max - min:
+///   +X face: u = (max.z - z) / ext.z,  v = (y - min.y) / ext.y
+///   -X face: u = (z - min.z) / ext.z,  v = (y - min.y) / ext.y
+///   +Y face: u = (x - min.x) / ext.x,  v = (max.z - z) / ext.z
+///   -Y face: u = (x - min.x) / ext.x,  v = (z - min.z) / ext.z
+///   +Z face: u = (x - min.x) / ext.x,  v = (y - min.y) / ext.y
+///   -Z face: u = (max.x - x) / ext.x,  v = (y - min.y) / ext.y
+/// The gradients are the constant coefficients of x, y, z above. A zero extent on an axis
+/// gives 0 for that coordinate and its gradient.
+ShapeUV boxUV(const Vec3& p, const Vec3& n, const Vec3& min, const Vec3& max);
+
+}  // namespace rs
