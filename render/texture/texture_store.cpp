@@ -1,0 +1,223 @@
+// The TextureStore: header checks, the sRGB-decoding reader, and OpenImageIO lookups.
+#include "texture/texture_store.h"
+
+#include <OpenImageIO/imagecache.h>
+#include <OpenImageIO/imageio.h>
+#include <OpenImageIO/texture.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <mutex>
+
+#include "io/input_file.h"
+#include "texture/srgb_input.h"
+
+namespace rs {
+
+namespace {
+
+using OIIO::TextureOpt;
+using OIIO::TextureSystem;
+
+constexpr float kTwoPi = 2.0f * kPi;
+/// Untiled images appear to the lookups as tiles of this many pixels square.
+constexpr int kAutoTile = 64;
+
+std::string describeFile(const std::string& path) {
+    return "texture file '" + path + "'";
+}
+
+/// What a file was when it was last registered with the cache; a change means a re-read.
+struct FileStamp {
+    std::filesystem::file_time_type modified;
+    std::uintmax_t size = 0;
+    bool srgb = false;
+    bool operator==(const FileStamp& o) const {
+        return modified == o.modified && size == o.size && srgb == o.srgb;
+    }
+};
+
+TextureOpt makeOptions(TextureOpt::Wrap twrap) {
+    TextureOpt opt;
+    opt.swrap = TextureOpt::WrapPeriodic;
+    opt.twrap = twrap;
+    opt.interpmode = TextureOpt::InterpBilinear;  // exact at texel centres, and cheaper
+    opt.mipmode = TextureOpt::MipModeAniso;
+    return opt;
+}
+
+}  // namespace
+
+struct TextureStore::Impl {
+    OIIO::ImageCache* cache = nullptr;
+    TextureSystem* system = nullptr;
+    std::atomic<float> megabytes{kDefaultTextureCacheMegabytes};
+    std::mutex registerMutex;
+    std::map<std::string, FileStamp> registered;
+
+    /// This thread's OpenImageIO record, fetched once per thread: the lookup's fast path.
+    TextureSystem::Perthread* perthread() const {
+        thread_local const Impl* owner = nullptr;
+        thread_local TextureSystem::Perthread* info = nullptr;
+        if (owner != this || !info) {
+            info = system->get_perthread_info();
+            owner = this;
+        }
+        return info;
+    }
+
+    /// The three channels of one lookup as a colour: grey for one- and two-channel images.
+    Color lookup(const TextureHandle& texture, TextureOpt& opt, float s, float t, float dsdx,
+                 float dtdx, float dsdy, float dtdy) const {
+        const int channels = texture.channels >= 3 ? 3 : 1;
+        float result[3] = {0.0f, 0.0f, 0.0f};
+        const bool ok =
+            system->texture(static_cast<TextureSystem::TextureHandle*>(texture.handle), perthread(),
+                            opt, s, t, dsdx, dtdx, dsdy, dtdy, channels, result);
+        if (!ok) {
+            (void)system->geterror();  // a file that broke after opening: shown as missing
+            return missingTexture(s, t);
+        }
+        if (channels == 1) return Color(result[0]);
+        return Color(result[0], result[1], result[2]);
+    }
+};
+
+TextureStore& TextureStore::shared() {
+    static TextureStore* store = new TextureStore;
+    return *store;
+}
+
+TextureStore::TextureStore() : impl_(new Impl) {
+    impl_->cache = OIIO::ImageCache::create(/*shared=*/false);
+    impl_->cache->attribute("max_memory_MB", kDefaultTextureCacheMegabytes);
+    impl_->cache->attribute("autotile", kAutoTile);
+    impl_->cache->attribute("automip", 1);
+    impl_->cache->attribute("accept_untiled", 1);
+    impl_->cache->attribute("accept_unmipped", 1);
+    impl_->cache->attribute("unassociatedalpha", 1);  // colours as stored, alpha ignored
+    impl_->system = TextureSystem::create(/*shared=*/false, impl_->cache);
+}
+
+void TextureStore::setCacheMegabytes(float mb) {
+    if (!(mb > 0.0f) || !std::isfinite(mb)) return;
+    impl_->megabytes.store(mb);
+    impl_->cache->attribute("max_memory_MB", mb);
+}
+
+float TextureStore::cacheMegabytes() const {
+    return impl_->megabytes.load();
+}
+
+TextureHandle TextureStore::open(const std::string& path, std::string& error) {
+    error.clear();
+    std::uintmax_t size = 0;
+    const std::string why = checkInputFile(path, kMaxTextureFileBytes, &size);
+    if (!why.empty()) {
+        error = describeFile(path) + (why.rfind("is ", 0) == 0 ? " " : ": ") + why;
+        return {};
+    }
+    std::error_code ec;
+    const auto modified = std::filesystem::last_write_time(path, ec);
+
+    // The header alone: its size, pixel format and whether it has MIP levels.
+    OIIO::ImageSpec spec;
+    bool mipmapped = false;
+    {
+        auto input = OIIO::ImageInput::open(path);
+        if (!input) {
+            std::string detail = OIIO::geterror();
+            if (detail.empty()) detail = "unknown format or corrupt header";
+            error = describeFile(path) + " is not an image that can be read: " + detail;
+            return {};
+        }
+        spec = input->spec();
+        mipmapped = input->seek_subimage(0, 1);
+        (void)input->geterror();
+    }
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+        error = describeFile(path) + " has no pixels";
+        return {};
+    }
+    const std::int64_t pixels = std::int64_t(spec.width) * spec.height * std::max(spec.depth, 1);
+    if (!mipmapped && pixels > kMaxAutoMipPixels) {
+        error = describeFile(path) + " is " + std::to_string(spec.width) + " x " +
+                std::to_string(spec.height) +
+                " pixels without MIP levels, more than the 4096 x 4096 that are MIP-mapped "
+                "while rendering; make a tiled, MIP-mapped copy with maketx (Debian's "
+                "openimageio-tools), e.g. `maketx '" +
+                path + "' -o copy.exr`, and use that";
+        return {};
+    }
+
+    TextureHandle handle;
+    handle.srgb = isSrgbEncoded(spec.format);
+    handle.channels = spec.nchannels;
+    const OIIO::ustring name(path);
+    {
+        // Register the file with the reader it needs the first time, and afresh when it has
+        // changed on disk (handles already given out stay valid and see the new pixels).
+        std::lock_guard<std::mutex> lock(impl_->registerMutex);
+        const FileStamp stamp{modified, size, handle.srgb};
+        auto found = impl_->registered.find(path);
+        if (found == impl_->registered.end() || !(found->second == stamp)) {
+            const bool replace = found != impl_->registered.end();
+            if (replace) impl_->system->invalidate(name, true);
+            if (!impl_->cache->add_file(name, handle.srgb ? &createSrgbLinearInput : nullptr,
+                                        nullptr, replace)) {
+                std::string detail = impl_->cache->geterror();
+                error = describeFile(path) + " cannot be read: " +
+                        (detail.empty() ? std::string("unknown error") : detail);
+                return {};
+            }
+            impl_->registered[path] = stamp;
+        }
+    }
+    auto* oiioHandle = impl_->system->get_texture_handle(name, impl_->perthread());
+    if (!oiioHandle || !impl_->system->good(oiioHandle)) {
+        std::string detail = impl_->system->geterror();
+        error = describeFile(path) +
+                " cannot be read: " + (detail.empty() ? std::string("unknown error") : detail);
+        return {};
+    }
+    handle.handle = oiioHandle;
+    return handle;
+}
+
+Color TextureStore::lookup(const TextureHandle& texture, float s, float t, float dsdx, float dtdx,
+                           float dsdy, float dtdy) const {
+    if (!texture) return missingTexture(s, t);
+    // OpenImageIO takes its options by non-const reference: one copy per thread, made once.
+    thread_local TextureOpt options = makeOptions(TextureOpt::WrapPeriodic);
+    return impl_->lookup(texture, options, s, t, dsdx, dtdx, dsdy, dtdy);
+}
+
+Color TextureStore::environment(const TextureHandle& texture, const Vec3& d, float rotationDegrees,
+                                float coneAngle) const {
+    const float length = glm::length(d);
+    const Vec3 n = length > 0.0f ? d / length : Vec3(0.0f, 1.0f, 0.0f);
+    const float rho = std::sqrt(n.x * n.x + n.z * n.z);
+    float phi = rho > 0.0f ? std::atan2(n.z, n.x) : 0.0f;
+    if (phi < 0.0f) phi += kTwoPi;
+    float s = phi / kTwoPi + rotationDegrees / 360.0f;
+    s -= std::floor(s);
+    const float v = 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) / kPi;
+    const float t = 1.0f - v;
+    if (!texture) return missingTexture(s, t);
+    const float cone = std::max(coneAngle, 0.0f);
+    const float dt = cone / kPi;
+    const float ds = std::min(cone / (kTwoPi * std::max(rho, 1e-6f)), 1.0f);
+    thread_local TextureOpt options = makeOptions(TextureOpt::WrapClamp);
+    return impl_->lookup(texture, options, s, t, ds, 0.0f, 0.0f, dt);
+}
+
+Color missingTexture(float s, float t) {
+    const double cells = std::floor(8.0 * double(s)) + std::floor(8.0 * double(t));
+    const bool even = cells - 2.0 * std::floor(0.5 * cells) == 0.0;
+    return even ? Color(1.0f, 0.0f, 1.0f) : Color(0.0f);
+}
+
+}  // namespace rs
