@@ -14,6 +14,7 @@
 #include "integrator/light_sampling.h"
 #include "integrator/sampling.h"
 #include "integrator/trace_level.h"
+#include "integrator/trace_workspace.h"
 
 namespace rs {
 
@@ -32,136 +33,6 @@ constexpr std::size_t kLevelCap = std::size_t(1) << 18;
 constexpr std::size_t kSampleCap = 1024;
 
 }  // namespace
-
-/// A level's shading points as structure of arrays: where and how each is lit (the light
-/// lanes read these), and what its sum goes back to.
-struct LevelPoints {
-    ShadingPoints shading;           ///< Position, faced normal, direction to the viewer.
-    SurfaceArrays surface, lambert;  ///< Their materials' terms, and as plain Lambert.
-    ScratchVector<Color> ambient, lambertAmbient;  ///< Their ambient terms, likewise.
-    ScratchVector<uint32_t> material, seed, owner;
-    ScratchVector<float> weight;     ///< Accumulated weight of the ray that hit there.
-    ScratchVector<float> asDiffuse;  ///< Mirror/glass share shown as Lambert while moving.
-    ScratchVector<uint32_t> ray;     ///< The level's ray whose hit each point is.
-    ScratchVector<uint8_t> inside;   ///< Per ray of the level: whether its normal was turned.
-
-    /// Room for n points; none written yet (count() is 0 until finish()).
-    void reserve(std::size_t n, bool lamberts) {
-        shading.resize(n);
-        surface.resize(n);
-        if (lamberts) lambert.resize(n);
-        if (material.size() < n)
-            for (auto* v : {&material, &seed, &owner, &ray}) v->resize(n);
-        if (weight.size() < n) weight.resize(n), asDiffuse.resize(n);
-        if (ambient.size() < n) ambient.resize(n), lambertAmbient.resize(n);
-        if (inside.size() < n) inside.resize(n);
-    }
-    std::size_t count() const { return shading.count; }
-};
-
-/// Per-thread storage reused from call to call: no allocation once it has grown. Its arrays
-/// (and Level's, LevelPoints') are ScratchVectors, in the thread's huge-page arena: grown on
-/// a cold render's first tiles from 4 KiB pages they cost some 600 page faults of ~10 us.
-struct TraceKernel::Workspace {
-    Level ping, pong;
-    ScratchVector<float> t, nx, ny, nz;
-    ScratchVector<uint32_t> slot;
-    LevelPoints points;  ///< The points of a level being shaded, lane by lane.
-    LightSamples samples, centreSamples;
-    LightSpans spans, centreSpans;
-    ScratchVector<uint32_t> pointSpans;  ///< First span of each point of a group, plus an end.
-    ScratchVector<uint32_t> centrePointSpans;
-    ScratchVector<float> sox, soy, soz, sdx, sdy, sdz, stmax;
-    ScratchVector<uint32_t> slight;
-    ScratchVector<uint8_t> occluded;
-    ScratchVector<Color> transmitted;      ///< Per shadow ray: what passed glass (0: blocked).
-    ScratchVector<uint32_t> centreBase;    ///< Per centre-sampled light: its first shadow ray.
-    std::size_t shadowCount = 0;           ///< Shadow rays written by pushShadow.
-    ScratchVector<CentreSamples> centres;  ///< Per centre-sampled light.
-    ScratchVector<ScratchVector<uint8_t>> blocked;  ///< Per centre-sampled light and point.
-    LightSums sums, lambertSums;
-    ScratchVector<uint32_t> cursor;  ///< Each point's next sphere-light span.
-
-    HitBatch hits(std::size_t n) {
-        for (auto* v : {&t, &nx, &ny, &nz}) v->resize(n);
-        slot.resize(n);
-        return {t.data(), nx.data(), ny.data(), nz.data(), slot.data()};
-    }
-    /// Shadow rays for samples [0, samples.size()) of points [first, first + count) of `pts`,
-    /// whose spans pointSpans lists. The rays go from index `base` on, after those
-    /// pushShadow wrote.
-    void shadowRays(const ShadingPoints& pts, std::size_t first, std::size_t count, float eps,
-                    std::size_t base = 0) {
-        const std::size_t n = base + samples.size(), lane = std::size_t(kLaneWidth);
-        // One lane of slack: origins and lights are written a whole lane at a time.
-        if (sox.size() < n + lane)
-            for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n + lane);
-        if (slight.size() < n + lane) slight.resize(n + lane);
-        shadowCount = n;
-        float *ox = sox.data() + base, *oy = soy.data() + base, *oz = soz.data() + base;
-        float *dx = sdx.data() + base, *dy = sdy.data() + base, *dz = sdz.data() + base;
-        float* tmax = stmax.data() + base;
-        uint32_t* light = slight.data() + base;
-        // Every sample lies in exactly one span, the spans in sample order: directions and
-        // lengths in one pass over the samples, four at a time.
-        const LightSample* s = samples.data();
-        std::size_t i = 0;
-        static_assert(offsetof(LightSample, dir) == 0 && offsetof(LightSample, dist) == 12,
-                      "a sample's first four floats are dir.x, dir.y, dir.z, dist");
-        for (; i + lane <= samples.size(); i += lane) {
-            // Four samples' (dir, dist) as rows, transposed into lanes.
-            FloatLanes r0, r1, r2, r3;
-            std::memcpy(&r0, &s[i], sizeof r0), std::memcpy(&r1, &s[i + 1], sizeof r1);
-            std::memcpy(&r2, &s[i + 2], sizeof r2), std::memcpy(&r3, &s[i + 3], sizeof r3);
-            const FloatLanes t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
-            const FloatLanes t1 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
-            const FloatLanes t2 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
-            const FloatLanes t3 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
-            const FloatLanes x = __builtin_shufflevector(t0, t1, 0, 1, 4, 5);
-            const FloatLanes y = __builtin_shufflevector(t0, t1, 2, 3, 6, 7);
-            const FloatLanes z = __builtin_shufflevector(t2, t3, 0, 1, 4, 5);
-            const FloatLanes t = shadowLength(__builtin_shufflevector(t2, t3, 2, 3, 6, 7), eps);
-            std::memcpy(dx + i, &x, sizeof x), std::memcpy(dy + i, &y, sizeof y);
-            std::memcpy(dz + i, &z, sizeof z), std::memcpy(tmax + i, &t, sizeof t);
-        }
-        for (; i < samples.size(); ++i) {
-            dx[i] = s[i].dir.x, dy[i] = s[i].dir.y, dz[i] = s[i].dir.z;
-            tmax[i] = shadowLength(s[i], eps);
-        }
-        // Each span's origin and light, a lane at a time: a span's last lane may run into the
-        // next span, which is written after it, or into the slack.
-        for (std::size_t j = 0; j < count; ++j) {
-            const std::size_t q = first + j;
-            const Vec3 o = shadowOrigin(Vec3(pts.px[q], pts.py[q], pts.pz[q]),
-                                        Vec3(pts.nx[q], pts.ny[q], pts.nz[q]), eps);
-            const FloatLanes x = splat(o.x), y = splat(o.y), z = splat(o.z);
-            for (uint32_t k = pointSpans[j]; k < pointSpans[j + 1]; ++k) {
-                const LightSpan& span = spans[k];
-                const uint32_t l[kLaneWidth] = {span.light, span.light, span.light, span.light};
-                for (uint32_t r = span.first; r < span.first + span.listed; r += uint32_t(lane)) {
-                    std::memcpy(ox + r, &x, sizeof x), std::memcpy(oy + r, &y, sizeof y);
-                    std::memcpy(oz + r, &z, sizeof z), std::memcpy(light + r, l, sizeof l);
-                }
-            }
-        }
-    }
-    /// Room for n shadow rays written through shadowArrays(); none written yet.
-    ShadowRayArrays shadows(std::size_t n) {
-        if (sox.size() < n)
-            for (auto* v : {&sox, &soy, &soz, &sdx, &sdy, &sdz, &stmax}) v->resize(n);
-        if (slight.size() < n) slight.resize(n);
-        shadowCount = 0;
-        return {sox.data(), soy.data(), soz.data(),   sdx.data(),
-                sdy.data(), sdz.data(), stmax.data(), slight.data()};
-    }
-    RayBatch shadowBatch(bool coherent) const {
-        RayBatch b{sox.data(), soy.data(), soz.data(),   sdx.data(),
-                   sdy.data(), sdz.data(), stmax.data(), shadowCount};
-        b.light = slight.data();
-        b.coherent = coherent;
-        return b;
-    }
-};
 
 TraceKernel::TraceKernel(const CompiledScene& scene, const TraceOptions& options)
     : scene_(scene), options_(options), eps_(scene.epsilon()), sampler_(scene) {
@@ -307,32 +178,9 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         if (m.localWeight > 0.0f || (AsDiffuse && asDiffuse > 0.0f)) {
             const std::size_t j = count++;
             pointRay[j] = uint32_t(i);
-            if (true) {
-                pts.surface.set(j, surfaces[materialIndex]);
-                pts.ambient[j] = ambients_[materialIndex];
-                if (AsDiffuse) {
-                    pts.lambert.set(j, lamberts_[materialIndex]), pts.asDiffuse[j] = asDiffuse;
-                    pts.lambertAmbient[j] = lambertAmbients_[materialIndex];
-                }
-            } else {
-                // The pattern's colour here, filtered over the cone's footprint, in place of
-                // the material's colour in every term (scenes/FORMAT.md "color").
-                const Vec3 p(sp.px[i], sp.py[i], sp.pz[i]);
-                const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
-                const Vec3 n(hits.nx[i], hits.ny[i], hits.nz[i]);
-                const Color c = surfaceColor(m, slots[i], p, n, footprintAt(d, n, width));
-                SurfaceTerms<float> terms = surfaces[materialIndex];
-                const Color diffuseColor = m.diffuse * c;
-                terms.r = diffuseColor.x, terms.g = diffuseColor.y, terms.b = diffuseColor.z;
-                pts.surface.set(j, terms);
-                pts.ambient[j] = settings.ambient * c * m.diffuse;
-                if (AsDiffuse) {
-                    SurfaceTerms<float> lambert = lamberts_[materialIndex];
-                    lambert.r = c.x, lambert.g = c.y, lambert.b = c.z;
-                    pts.lambert.set(j, lambert), pts.asDiffuse[j] = asDiffuse;
-                    pts.lambertAmbient[j] = settings.ambient * c;
-                }
-            }
+            pts.surface.set(j, surfaces[materialIndex]);
+            if (AsDiffuse)
+                pts.lambert.set(j, lamberts_[materialIndex]), pts.asDiffuse[j] = asDiffuse;
             pointMaterial[j] = materialIndex, pointSeed[j] = seeds[i], pointOwner[j] = owner;
             pointWeight[j] = weight;
         }
@@ -478,7 +326,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         }
 
         const float *sumR = ws.sums.r.data(), *sumG = ws.sums.g.data(), *sumB = ws.sums.b.data();
-        const Color* ambients = pts.ambient.data();
+        const Color* ambients = ambients_.data();
         Color* color = out.color;
         std::optional<PerRayAppender<ShadingRecord>> records;
         if (Bookkeeping && deferred && out.records) records.emplace(out.records);
@@ -487,7 +335,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             const float weight = pointWeight[j], localWeight = materials[mi].localWeight;
             if (localWeight > 0.0f) {
                 const Color direct(sumR[j], sumG[j], sumB[j]);
-                color[owner] += weight * (localWeight * (ambients[j] + direct));
+                color[owner] += weight * (localWeight * (ambients[mi] + direct));
                 // Shown unshadowed while moving; the record lets the shadows be added later.
                 if (Bookkeeping && records)
                     records->append(
@@ -500,7 +348,7 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
             }
             if (AsDiffuse && pts.asDiffuse[j] > 0.0f) {
                 const Color direct(ws.lambertSums.r[j], ws.lambertSums.g[j], ws.lambertSums.b[j]);
-                color[owner] += weight * (pts.asDiffuse[j] * (pts.lambertAmbient[j] + direct));
+                color[owner] += weight * (pts.asDiffuse[j] * (lambertAmbients_[mi] + direct));
             }
         }
     }
@@ -588,50 +436,6 @@ Color TraceKernel::transmission(const Vec3& origin, const Vec3& dir, float tmax)
         if (!(left > 0.0f)) return kept;
     }
     return Color(0.0f);  // More glass than that: treated as blocking.
-}
-
-Color TraceKernel::surfaceColor(const CompiledMaterial& m, uint32_t slot, const Vec3& p,
-                                const Vec3& n, const Footprint& footprint) const {
-    (void)slot, (void)p, (void)n, (void)footprint;
-    return m.color;
-}
-
-SurfaceTerms<float> TraceKernel::recordTerms(const ShadingRecord& r) const {
-    const CompiledMaterial& m = scene_.materials()[r.material];
-    return {r.diffuse.x, r.diffuse.y, r.diffuse.z, m.specular, m.specularCutoff, m.shininess};
-}
-
-void TraceKernel::transmit(Workspace& ws) const {
-    const std::size_t n = ws.shadowCount;
-    if (ws.transmitted.size() < n) ws.transmitted.resize(n);
-    for (std::size_t r = 0; r < n; ++r)
-        ws.transmitted[r] = ws.occluded[r]
-                                ? transmission(Vec3(ws.sox[r], ws.soy[r], ws.soz[r]),
-                                               Vec3(ws.sdx[r], ws.sdy[r], ws.sdz[r]), ws.stmax[r])
-                                : Color(0.0f);
-}
-
-template <bool AsDiffuse>
-void TraceKernel::addTransmitted(Workspace& ws, uint32_t li, std::size_t first,
-                                 std::size_t end) const {
-    // Centre rays were written for the listed points in point order (writeCentreShadows).
-    const CompiledLight& light = scene_.lights()[li];
-    const CentreSamples& c = ws.centres[li];
-    const ShadingPoints& sp = ws.points.shading;
-    uint32_t r = ws.centreBase[li];
-    for (std::size_t j = first; j < end; ++j) {
-        if (!c.listed[j]) continue;
-        const Color kept = ws.transmitted[r++];
-        if (kept == Color(0.0f)) continue;
-        const LightSample s{Vec3(c.dx[j], c.dy[j], c.dz[j]), c.dist[j], c.nl[j]};
-        const Vec3 n(sp.nx[j], sp.ny[j], sp.nz[j]), v(sp.vx[j], sp.vy[j], sp.vz[j]);
-        const Color add = kept * sampleShare(light, ws.points.surface.get(j), n, v, s, 1.0f);
-        ws.sums.r[j] += add.x, ws.sums.g[j] += add.y, ws.sums.b[j] += add.z;
-        if (AsDiffuse) {
-            const Color l = kept * sampleShare(light, ws.points.lambert.get(j), n, v, s, 1.0f);
-            ws.lambertSums.r[j] += l.x, ws.lambertSums.g[j] += l.y, ws.lambertSums.b[j] += l.z;
-        }
-    }
 }
 
 void TraceKernel::firstHits(const CameraBatch& rays, ObjectId* ids) const {

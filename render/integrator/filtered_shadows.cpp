@@ -1,0 +1,58 @@
+// Shadows through glass (scenes/FORMAT.md "Shadows"): a shadow ray the engine reports
+// blocked walks on by closest hits, keeping transparency x colour at each transparent
+// surface, and what it kept is added to the light's term.
+#include "integrator/trace_kernel.h"
+#include "integrator/trace_workspace.h"
+
+namespace rs {
+
+Color TraceKernel::surfaceColor(const CompiledMaterial& m, uint32_t slot, const Vec3& p,
+                                const Vec3& n, const Footprint& footprint) const {
+    (void)slot, (void)p, (void)n, (void)footprint;
+    return m.color;
+}
+
+SurfaceTerms<float> TraceKernel::recordTerms(const ShadingRecord& r) const {
+    const CompiledMaterial& m = scene_.materials()[r.material];
+    return {r.diffuse.x, r.diffuse.y, r.diffuse.z, m.specular, m.specularCutoff, m.shininess};
+}
+
+void TraceKernel::transmit(Workspace& ws) const {
+    const std::size_t n = ws.shadowCount;
+    if (ws.transmitted.size() < n) ws.transmitted.resize(n);
+    for (std::size_t r = 0; r < n; ++r)
+        ws.transmitted[r] = ws.occluded[r]
+                                ? transmission(Vec3(ws.sox[r], ws.soy[r], ws.soz[r]),
+                                               Vec3(ws.sdx[r], ws.sdy[r], ws.sdz[r]), ws.stmax[r])
+                                : Color(0.0f);
+}
+
+template <bool AsDiffuse>
+void TraceKernel::addTransmitted(Workspace& ws, uint32_t li, std::size_t first,
+                                 std::size_t end) const {
+    // Centre rays were written for the listed points in point order (writeCentreShadows).
+    const CompiledLight& light = scene_.lights()[li];
+    const CentreSamples& c = ws.centres[li];
+    const ShadingPoints& sp = ws.points.shading;
+    uint32_t r = ws.centreBase[li];
+    for (std::size_t j = first; j < end; ++j) {
+        if (!c.listed[j]) continue;
+        const Color kept = ws.transmitted[r++];
+        if (kept == Color(0.0f)) continue;
+        const LightSample s{Vec3(c.dx[j], c.dy[j], c.dz[j]), c.dist[j], c.nl[j]};
+        const Vec3 n(sp.nx[j], sp.ny[j], sp.nz[j]), v(sp.vx[j], sp.vy[j], sp.vz[j]);
+        const Color add = kept * sampleShare(light, ws.points.surface.get(j), n, v, s, 1.0f);
+        ws.sums.r[j] += add.x, ws.sums.g[j] += add.y, ws.sums.b[j] += add.z;
+        if (AsDiffuse) {
+            const Color l = kept * sampleShare(light, ws.points.lambert.get(j), n, v, s, 1.0f);
+            ws.lambertSums.r[j] += l.x, ws.lambertSums.g[j] += l.y, ws.lambertSums.b[j] += l.z;
+        }
+    }
+}
+
+template void TraceKernel::addTransmitted<true>(Workspace&, uint32_t, std::size_t,
+                                                std::size_t) const;
+template void TraceKernel::addTransmitted<false>(Workspace&, uint32_t, std::size_t,
+                                                 std::size_t) const;
+
+}  // namespace rs
