@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "closed_form_support.h"
 #include "integrator/renderer.h"
 #include "integrator/whitted.h"
 #include "test_scenes.h"
@@ -16,20 +17,8 @@ using test::addMaterial;
 using test::addPlane;
 using test::addPointLight;
 using test::addSphere;
-
-void expectColorNear(const Color& actual, const Color& expected, float tol,
-                     const std::string& what) {
-    EXPECT_NEAR(actual.x, expected.x, tol) << what;
-    EXPECT_NEAR(actual.y, expected.y, tol) << what;
-    EXPECT_NEAR(actual.z, expected.z, tol) << what;
-}
-
-Color traceOne(const SceneDocument& doc, const Ray& ray) {
-    const CompiledScene scene(doc);
-    const WhittedIntegrator integrator(scene);
-    TraceCounters counters;
-    return integrator.traceCamera(ray, 11u, counters);
-}
+using test::expectColorNear;
+using test::traceOne;
 
 // A unit sphere seen by an orthographic camera down -z, lit by one point light: every pixel
 // that sees it is ambient * color * kd + I * C * kd * color * max(0, N.L) at the point its

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "closed_form_support.h"
 #include "integrator/whitted.h"
 #include "test_scenes.h"
 
@@ -14,22 +15,10 @@ using test::addMaterial;
 using test::addPlane;
 using test::addPointLight;
 using test::addSphere;
+using test::expectColorNear;
+using test::traceOne;
 
 constexpr float kPi = 3.14159265358979f;
-
-Color traceOne(const SceneDocument& doc, const Ray& ray) {
-    const CompiledScene scene(doc);
-    const WhittedIntegrator integrator(scene);
-    TraceCounters counters;
-    return integrator.traceCamera(ray, 5u, counters);
-}
-
-void expectColorNear(const Color& actual, const Color& expected, float tol,
-                     const std::string& what) {
-    EXPECT_NEAR(actual.x, expected.x, tol) << what;
-    EXPECT_NEAR(actual.y, expected.y, tol) << what;
-    EXPECT_NEAR(actual.z, expected.z, tol) << what;
-}
 
 /// A grey floor at y = 0 (diffuse 1, colour c) and the ambient term, no light yet.
 SceneDocument floorScene(const Color& c, const Color& ambient) {
@@ -102,8 +91,7 @@ TEST(SpotLight, FullInsideItsRadius_NothingBeyondItsFalloff_TheCubicBetween) {
         const float nl = std::cos(angle * kPi / 180.0f);  // the light is straight above the axis
         const Color expected =
             ambient * c + spot.intensity * c * nl * spotFalloff(angle, 20.0f, 40.0f);
-        expectColorNear(floorAt(doc, x, 0.0f), expected, 3e-5f,
-                        "angle " + std::to_string(angle));
+        expectColorNear(floorAt(doc, x, 0.0f), expected, 3e-5f, "angle " + std::to_string(angle));
     }
     // Aimed elsewhere, the same light leaves this point dark.
     doc.lights[0].target = Vec3(10, 0, 0);
