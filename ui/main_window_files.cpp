@@ -10,6 +10,7 @@
 #include <QSpinBox>
 #include <QStatusBar>
 #include <algorithm>
+#include <cstdio>
 
 #include "autosave.h"
 #include "background_jobs.h"
@@ -90,7 +91,19 @@ bool MainWindow::openFile(const QString& path) {
     }
     editor_->resetDocument(std::move(result.document), QFileInfo(path).absoluteFilePath());
     addRecentFile(QFileInfo(path).absoluteFilePath());
-    statusBar()->showMessage(tr("Opened %1").arg(path), 3000);
+    if (result.warnings.empty()) {
+        statusBar()->showMessage(tr("Opened %1").arg(path), 3000);
+        return true;
+    }
+    // Images that cannot be read: the scene is usable, the image shows as the missing pattern
+    // and is saved back as written. Said without a dialog; the details go to stderr.
+    for (const SceneError& w : result.warnings)
+        std::fprintf(stderr, "%s (warning)\n", w.toString().c_str());
+    statusBar()->showMessage(
+        tr("Opened %1; %n image(s) could not be read and show as the missing pattern: %2", "",
+           int(result.warnings.size()))
+            .arg(path, QString::fromStdString(result.warnings.front().toString())),
+        15000);
     return true;
 }
 

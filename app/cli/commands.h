@@ -16,7 +16,8 @@ int runMerge(int argc, char** argv);
 int runFarm(int argc, char** argv);
 
 /// Loads a scene for a command; prints every error to stderr and returns false on failure.
-bool loadSceneOrReport(const std::string& path, SceneDocument& doc);
+/// Warnings (images that cannot be read) are printed too; `warned` says whether there were.
+bool loadSceneOrReport(const std::string& path, SceneDocument& doc, bool* warned = nullptr);
 
 /// Applies the shared render-setting overrides (--width, --height, --max-depth, --min-weight,
 /// --shadow-samples, --supersampling); throws UsageError on bad values.

@@ -6,13 +6,17 @@
 
 namespace rs::cli {
 
-bool loadSceneOrReport(const std::string& path, SceneDocument& doc) {
+bool loadSceneOrReport(const std::string& path, SceneDocument& doc, bool* warned) {
     SceneLoadResult result = loadScene(path);
     if (!result.ok()) {
         for (const SceneError& e : result.errors)
             std::fprintf(stderr, "%s\n", e.toString().c_str());
         return false;
     }
+    // An image that cannot be read does not stop a render: it shows as the missing pattern.
+    for (const SceneError& w : result.warnings)
+        std::fprintf(stderr, "%s (warning)\n", w.toString().c_str());
+    if (warned) *warned = !result.warnings.empty();
     doc = std::move(result.document);
     return true;
 }

@@ -1,4 +1,5 @@
-// `raystudio-cli validate`: prints ok, or every error of the scene file with its location.
+// `raystudio-cli validate`: prints ok, or every error of the scene file with its location
+// (status 2), or its warnings (status 1).
 #include <cstdio>
 
 #include "arguments.h"
@@ -11,7 +12,10 @@ int runValidate(int argc, char** argv) {
     if (args.positional().size() != 1) throw UsageError{"expects exactly one scene file"};
     // Errors go to stderr like every command's; stdout carries only the verdict "ok".
     SceneDocument doc;
-    if (!loadSceneOrReport(args.positional()[0], doc)) return 2;
+    bool warned = false;
+    if (!loadSceneOrReport(args.positional()[0], doc, &warned)) return 2;
+    // Loadable, but something in it will not show as meant (an image that cannot be read).
+    if (warned) return 1;
     std::printf("ok\n");
     return 0;
 }

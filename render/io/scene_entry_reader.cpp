@@ -59,20 +59,25 @@ bool EntryReader::numberValue(const Json& j, const std::string& pointer, const c
     return true;
 }
 
-bool EntryReader::number(const char* key, float& out, NumberRange range, Need need) {
-    const Json* j = get(key);
-    if (!j) return need == Need::Optional || missing(key);
+bool EntryReader::numberIn(const Json& j, const std::string& pointer, const char* what,
+                           NumberRange range, float& out) {
     double value = 0.0;
-    if (!numberValue(*j, pointerTo(key), key, value)) return false;
+    if (!numberValue(j, pointer, what, value)) return false;
     // The range applies to the float that is stored: 1e-50 is > 0 but becomes 0.
     float f = floatFromJson(value);
     if (!range.contains(f)) {
-        sink_.atValue(pointerTo(key), std::string(key) + " must be " + range.describe() + ", got " +
-                                          describeJson(*j));
+        sink_.atValue(pointer, std::string(what) + " must be " + range.describe() + ", got " +
+                                   describeJson(j));
         return false;
     }
     out = f;
     return true;
+}
+
+bool EntryReader::number(const char* key, float& out, NumberRange range, Need need) {
+    const Json* j = get(key);
+    if (!j) return need == Need::Optional || missing(key);
+    return numberIn(*j, pointerTo(key), key, range, out);
 }
 
 bool EntryReader::integer(const char* key, int& out, int min, int max, Need need) {
@@ -129,37 +134,70 @@ bool EntryReader::string(const char* key, std::string& out, Need need) {
     return true;
 }
 
-bool EntryReader::vector(const char* key, Vec3& out, VectorRule rule, Need need) {
-    const Json* j = get(key);
-    if (!j) return need == Need::Optional || missing(key);
-    const std::string at = pointerTo(key);
-    if (!j->is_array() || j->size() != 3) {
-        sink_.atValue(at, std::string(key) + " must be an array of 3 numbers [x, y, z], got " +
-                              describeJson(*j));
+bool EntryReader::vectorIn(const Json& j, const std::string& at, const char* what, VectorRule rule,
+                           NumberRange range, Vec3& out) {
+    if (!j.is_array() || j.size() != 3) {
+        sink_.atValue(at, std::string(what) + " must be an array of 3 numbers [x, y, z], got " +
+                              describeJson(j));
         return false;
     }
     Vec3 v;
     for (std::size_t i = 0; i < 3; ++i) {
         double d = 0.0;
         std::string element = appendPointer(at, i);
-        if (!numberValue((*j)[i], element, key, d)) return false;
+        if (!numberValue(j[i], element, what, d)) return false;
         v[static_cast<int>(i)] = floatFromJson(d);
         if (rule == VectorRule::NonNegative && v[static_cast<int>(i)] < 0.0f) {
-            sink_.atValue(element, std::string(key) + " components must be >= 0, got " +
-                                       describeJson((*j)[i]));
+            sink_.atValue(
+                element, std::string(what) + " components must be >= 0, got " + describeJson(j[i]));
             return false;
         }
         if (rule == VectorRule::NonZeroComponents && v[static_cast<int>(i)] == 0.0f) {
-            sink_.atValue(element, std::string(key) + " components must be non-zero");
+            sink_.atValue(element, std::string(what) + " components must be non-zero");
+            return false;
+        }
+        if (!range.contains(v[static_cast<int>(i)])) {
+            sink_.atValue(element, std::string(what) + " components must be " + range.describe() +
+                                       ", got " + describeJson(j[i]));
             return false;
         }
     }
     if (rule == VectorRule::NonZero && v == Vec3(0.0f)) {
-        sink_.atValue(at, std::string(key) + " must be a non-zero vector");
+        sink_.atValue(at, std::string(what) + " must be a non-zero vector");
         return false;
     }
     out = v;
     return true;
+}
+
+bool EntryReader::vector(const char* key, Vec3& out, VectorRule rule, Need need) {
+    const Json* j = get(key);
+    if (!j) return need == Need::Optional || missing(key);
+    return vectorIn(*j, pointerTo(key), key, rule, NumberRange::any(), out);
+}
+
+EntryReader::Read EntryReader::element(const ParamDescriptor& d, const char* key, std::size_t index,
+                                       std::size_t count, const char* shape, ParamValue& out) {
+    const Json* j = get(key);
+    if (!j) return d.required ? (missing(key), Read::Invalid) : Read::Absent;
+    if (!j->is_array() || j->size() != count) {
+        if (index == 0)
+            sink_.atValue(pointerTo(key), std::string(key) + " must be an array of " + shape +
+                                              ", got " + describeJson(*j));
+        return Read::Invalid;
+    }
+    const std::string at = appendPointer(pointerTo(key), index);
+    const std::string what = std::string(key) + "/" + std::to_string(index);
+    if (d.type == ParamType::Float) {
+        float f = 0.0f;
+        if (!numberIn((*j)[index], at, what.c_str(), d.range, f)) return Read::Invalid;
+        out = f;
+        return Read::Ok;
+    }
+    Vec3 v(0.0f);
+    if (!vectorIn((*j)[index], at, what.c_str(), d.vectorRule, d.range, v)) return Read::Invalid;
+    out = v;
+    return Read::Ok;
 }
 
 EntryReader::Read EntryReader::parameter(const ParamDescriptor& d, ParamValue& out) {

@@ -74,6 +74,12 @@ public:
     /// Reads the field `d` describes (scene/parameters.h): its type, range and vector rule,
     /// required or not; an enum by its spellings. `out` is set only when Ok.
     Read parameter(const ParamDescriptor& d, ParamValue& out);
+    /// Reads element `index` of `key`, an array of `count` values each of the type `d`
+    /// describes (Float, Vec3 or Color), checked against `d` and reported at
+    /// `/key/index` under the name `key`. `shape` names the array in the error when
+    /// `key` is not such an array ("2 colours [r, g, b]"); that error is reported once.
+    Read element(const ParamDescriptor& d, const char* key, std::size_t index, std::size_t count,
+                 const char* shape, ParamValue& out);
     /// The required, non-empty `name`.
     bool name(std::string& out);
 
@@ -107,6 +113,10 @@ public:
 
 private:
     bool missing(const char* key);
+    bool numberIn(const Json& j, const std::string& pointer, const char* what, NumberRange range,
+                  float& out);
+    bool vectorIn(const Json& j, const std::string& pointer, const char* what, VectorRule rule,
+                  NumberRange range, Vec3& out);
     bool numberValue(const Json& j, const std::string& pointer, const char* what, double& out);
 
     SceneErrorSink& sink_;

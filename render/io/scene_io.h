@@ -1,4 +1,4 @@
-// Reading and writing scene files, format version 1 (scenes/FORMAT.md).
+// Reading and writing scene files, format versions 1 and 2 (scenes/FORMAT.md).
 #pragma once
 
 #include <string>
@@ -23,13 +23,25 @@ struct SceneError {
 struct SceneLoadResult {
     SceneDocument document;
     std::vector<SceneError> errors;
+    /// Problems that do not stop the load (an image file that cannot be read: it shows as the
+    /// missing-image pattern and is saved back as written). Only with a document.
+    std::vector<SceneError> warnings;
     bool ok() const { return errors.empty(); }
     /// All errors, one per line.
     std::string errorText() const;
+    /// All warnings, one per line.
+    std::string warningText() const;
 };
 
-/// Parses scene text. `baseDir` resolves relative mesh paths; `fileName` is used in messages.
-/// Meshes are loaded (through loadMesh) so a missing or broken mesh fails the load.
+/// The newest format version this program reads and writes.
+inline constexpr int kSceneFormatVersion = 2;
+/// Where `doc` uses what version 1 cannot say, as JSON pointers (a patterned colour, a sun or
+/// spot light's type, the environment, opaque_shadows): the writer writes version 1 when
+/// there is none, and the reader refuses each in a file that says version 1.
+std::vector<std::string> version2Uses(const SceneDocument& doc);
+
+/// Parses scene text. `baseDir` resolves relative mesh and image paths; `fileName` is used in
+/// messages. Meshes are loaded (through loadMesh) so a missing or broken mesh fails the load.
 SceneLoadResult parseScene(const std::string& text, const std::string& baseDir,
                            const std::string& fileName = "");
 /// Reads and parses a scene file.

@@ -48,23 +48,28 @@ bool parseSyntax(const std::string& text, const std::string& fileName, Json& roo
     return false;
 }
 
-// Returns false when the text is not a version 1 scene at all: then nothing else is checked,
-// since a flood of "unknown key" errors would hide the one that matters.
-bool readHeader(EntryReader& top) {
+// Returns false when the text is not a scene of a version this program reads: then nothing
+// else is checked, since a flood of "unknown key" errors would hide the one that matters.
+bool readHeader(EntryReader& top, int& version) {
     std::string format;
     if (!top.string("format", format, Need::Required)) return false;
     if (format != "raystudio-scene") {
         top.sink().atValue("/format", "format must be \"raystudio-scene\", got \"" + format + "\"");
         return false;
     }
-    int version = 0;
     if (!top.integer("version", version, INT_MIN, INT_MAX, Need::Required)) return false;
-    if (version != 1) {
+    if (version < 1 || version > kSceneFormatVersion) {
         top.sink().atValue("/version", "unsupported version " + std::to_string(version) +
-                                           " (this program reads version 1)");
+                                           " (this program reads versions 1 and 2)");
         return false;
     }
     return true;
+}
+
+// A version 1 file must not use what version 2 added: an old build would refuse it.
+void refuseVersion2Keys(SceneErrorSink& sink, const SceneDocument& doc) {
+    for (const std::string& pointer : version2Uses(doc))
+        sink.atValue(pointer, "needs format version 2 (the file says \"version\": 1)");
 }
 }  // namespace
 
@@ -84,6 +89,12 @@ std::string SceneError::toString() const {
 std::string SceneLoadResult::errorText() const {
     std::string out;
     for (const SceneError& e : errors) out += e.toString() + "\n";
+    return out;
+}
+
+std::string SceneLoadResult::warningText() const {
+    std::string out;
+    for (const SceneError& e : warnings) out += e.toString() + "\n";
     return out;
 }
 
@@ -108,15 +119,23 @@ SceneLoadResult parseScene(const std::string& text, const std::string& baseDir,
 
     EntryReader top(sink, root, "");
     SceneDocument& doc = result.document;
-    if (readHeader(top)) {
+    int version = 0;
+    if (readHeader(top, version)) {
         if (const Json* j = top.get("camera")) readCamera(sink, *j, doc.camera);
         if (const Json* j = top.get("render")) readRenderSettings(sink, *j, doc.render);
+        if (const Json* j = top.get("environment")) readEnvironment(sink, *j, doc.environment);
         if (const Json* j = top.get("materials")) readMaterials(sink, *j, doc);
         if (const Json* j = top.get("lights")) readLights(sink, *j, doc);
         if (const Json* j = top.get("objects")) readObjects(sink, *j, baseDir, doc);
         doc.extras = top.finish();
+        if (version == 1) refuseVersion2Keys(sink, doc);
     }
-    if (!result.ok()) result.document = SceneDocument{};
+    if (!result.ok()) {
+        result.document = SceneDocument{};
+        return result;
+    }
+    SceneErrorSink warnings(fileName, locator, result.warnings);
+    checkImageFiles(warnings, baseDir, doc);
     return result;
 }
 

@@ -7,7 +7,12 @@ namespace rs {
 namespace {
 void readMaterial(EntryReader& r, Material& m) {
     r.name(m.name);
-    const auto invalid = readFields(r, ParamKind::Material, m);
+    // `color` is [r, g, b] or, from version 2, an object: a checker or an image texture.
+    const Json* color = r.get("color");
+    const bool patterned = color && color->is_object();
+    if (patterned) readColorPattern(r.sink(), *color, r.pointerTo("color"), m.pattern);
+    const auto invalid = patterned ? readFields(r, ParamKind::Material, m, {"color"})
+                                   : readFields(r, ParamKind::Material, m);
     if (noneInvalid(invalid, {"reflectivity", "transparency"})) {
         if (auto e = materialWeightsError(m)) {
             // Placed where the file raises the sum: transparency when it gives one.
@@ -23,11 +28,28 @@ void readLight(EntryReader& r, Light& light) {
     ParamValue type;
     const auto read = r.parameter(*findParameter(ParamKind::PointLight, "type"), type);
     if (read == EntryReader::Read::Ok) setField(light, "type", type);
-    readFields(r, lightKind(light), light, {"type"});
-    if (read != EntryReader::Read::Ok)
-        r.get("radius");  // the type error says it all; no "unknown key" noise as well
-    else if (light.type == LightType::Point)
-        r.forbid("radius", "a point light has no radius (a sphere light has)");
+    const auto invalid = readFields(r, lightKind(light), light, {"type"});
+    if (read != EntryReader::Read::Ok) {
+        // The type error says it all; no "unknown key" noise as well.
+        for (const char* key : {"radius", "direction", "target", "falloff", "position"}) r.get(key);
+        return;
+    }
+    switch (light.type) {
+        case LightType::Point:
+            r.forbid("radius", "a point light has no radius (a sphere light has)");
+            break;
+        case LightType::Directional:
+            r.forbid("position",
+                     "a directional light has no position (it shines from infinitely "
+                     "far along \"direction\")");
+            break;
+        case LightType::Spot:
+            if (noneInvalid(invalid, {"position", "target"}))
+                if (auto e = spotConeError(light)) r.sink().atValue(r.pointerTo(e.key), e.message);
+            break;
+        case LightType::Sphere:
+            break;
+    }
 }
 }  // namespace
 

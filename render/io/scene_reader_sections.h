@@ -27,6 +27,17 @@ void readLights(SceneErrorSink& sink, const Json& json, SceneDocument& doc);
 void readObjects(SceneErrorSink& sink, const Json& json, const std::string& baseDir,
                  SceneDocument& doc);
 
+/// Reads a material's `color` given as an object (`/materials/N/color` at `pointer`): the
+/// checker or the image-texture form.
+void readColorPattern(SceneErrorSink& sink, const Json& json, const std::string& pointer,
+                      ColorPattern& out);
+/// Reads `/environment`.
+void readEnvironment(SceneErrorSink& sink, const Json& json, Environment& environment);
+/// Resolves the image files of `doc` (textures, the environment) against `baseDir` and
+/// reports each that cannot be read to `warnings`, naming its key: the scene still loads and
+/// shows such an image as the missing-image pattern.
+void checkImageFiles(SceneErrorSink& warnings, const std::string& baseDir, SceneDocument& doc);
+
 /// Reads every field the descriptors of `kind` name, except `skip`, into `target`: the
 /// descriptors are the format's schema, so a field added there is read here too. Returns
 /// the keys that were present but invalid (each already reported).

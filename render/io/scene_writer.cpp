@@ -90,11 +90,67 @@ Json renderJson(const RenderSettings& r) {
     return j;
 }
 
-Json materialJson(const Material& m) {
+// Relative when the file lies below `baseDir`, so a project folder can move as a whole.
+std::string fileFor(const std::string& file, const std::string& resolvedPath,
+                    const std::string& baseDir) {
+    fs::path absolute;
+    if (!resolvedPath.empty())
+        absolute = resolvedPath;
+    else if (fs::path(file).is_absolute())
+        absolute = file;
+    if (absolute.empty() || baseDir.empty()) return file;  // nothing to re-anchor against
+    std::error_code ec;
+    fs::path base = fs::absolute(fs::path(baseDir), ec).lexically_normal();
+    if (ec) return file;
+    if (base.filename().empty()) base = base.parent_path();  // "/a/b/" -> "/a/b"
+    absolute = absolute.lexically_normal();
+    fs::path relative = absolute.lexically_relative(base);
+    if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
+    return absolute.generic_string();
+}
+
+/// Two fields of `kind` written as one array `[a, b]` (a checker's colours, a texture's
+/// scale or offset): written when either differs from its default.
+template <class T>
+void putPair(Json& j, ParamKind kind, const T& target, const char* key, const char* first,
+             const char* second, bool always = false) {
+    const ParamDescriptor &a = *findParameter(kind, first), &b = *findParameter(kind, second);
+    const ParamValue va = *getField(target, first), vb = *getField(target, second);
+    if (always || va != a.defaultValue || vb != b.defaultValue)
+        j[key] = Json::array({parameterJson(a, va), parameterJson(b, vb)});
+}
+
+Json colorJson(const Material& m, const std::string& baseDir) {
+    if (const auto* c = std::get_if<CheckerPattern>(&m.pattern)) {
+        Json j = Json::object();
+        putPair(j, ParamKind::Checker, *c, "checker", "even", "odd", true);
+        putFields(j, ParamKind::Checker, *c, {"even", "odd"});
+        return j;
+    }
+    if (const auto* t = std::get_if<ImageTexture>(&m.pattern)) {
+        Json j = Json::object();
+        j["texture"] = fileFor(t->image.file, t->image.resolvedPath, baseDir);
+        putPair(j, ParamKind::ImageTexture, *t, "scale", "scale_u", "scale_v");
+        putPair(j, ParamKind::ImageTexture, *t, "offset", "offset_u", "offset_v");
+        return j;
+    }
+    return parameterJson(*findParameter(ParamKind::Material, "color"), m.color);
+}
+
+Json materialJson(const Material& m, const std::string& baseDir) {
     Json j = Json::object();
     j["name"] = m.name;
     putFields(j, ParamKind::Material, m);
+    j["color"] = colorJson(m, baseDir);
     putExtras(j, m.extras);
+    return j;
+}
+
+Json environmentJson(const Environment& e, const std::string& baseDir) {
+    Json j = Json::object();
+    putFields(j, ParamKind::Environment, e);
+    j["file"] = fileFor(e.image.file, e.image.resolvedPath, baseDir);
+    putExtras(j, e.extras);
     return j;
 }
 
@@ -107,30 +163,12 @@ Json lightJson(const Light& l) {
     return j;
 }
 
-// Relative when the mesh lies below `baseDir`, so a project folder can move as a whole.
-std::string meshFileFor(const MeshGeometry& g, const std::string& baseDir) {
-    fs::path absolute;
-    if (!g.resolvedPath.empty())
-        absolute = g.resolvedPath;
-    else if (fs::path(g.file).is_absolute())
-        absolute = g.file;
-    if (absolute.empty() || baseDir.empty()) return g.file;  // nothing to re-anchor against
-    std::error_code ec;
-    fs::path base = fs::absolute(fs::path(baseDir), ec).lexically_normal();
-    if (ec) return g.file;
-    if (base.filename().empty()) base = base.parent_path();  // "/a/b/" -> "/a/b"
-    absolute = absolute.lexically_normal();
-    fs::path relative = absolute.lexically_relative(base);
-    if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
-    return absolute.generic_string();
-}
-
 void putGeometry(Json& j, const Geometry& geometry, const std::string& baseDir) {
     std::visit(
         [&](const auto& g) {
             using G = std::decay_t<decltype(g)>;
             if constexpr (std::is_same_v<G, MeshGeometry>) {
-                j["file"] = meshFileFor(g, baseDir);
+                j["file"] = fileFor(g.file, g.resolvedPath, baseDir);
                 putFields(j, ParamKind::Mesh, g, {"file"});
             } else {
                 putFields(j, geometryKind(geometry), g);
@@ -185,11 +223,13 @@ bool writeAll(std::FILE* f, const std::string& text) {
 std::string serializeScene(const SceneDocument& doc, const std::string& baseDir) {
     Json j = Json::object();
     j["format"] = "raystudio-scene";
-    j["version"] = 1;
+    // Version 1 whenever it can say it all, so older builds keep reading what they can.
+    j["version"] = version2Uses(doc).empty() ? 1 : kSceneFormatVersion;
     j["camera"] = cameraJson(doc.camera);
     j["render"] = renderJson(doc.render);
+    if (doc.environment.present()) j["environment"] = environmentJson(doc.environment, baseDir);
     j["materials"] = Json::array();
-    for (const Material& m : doc.materials) j["materials"].push_back(materialJson(m));
+    for (const Material& m : doc.materials) j["materials"].push_back(materialJson(m, baseDir));
     j["lights"] = Json::array();
     for (const Light& l : doc.lights) j["lights"].push_back(lightJson(l));
     j["objects"] = Json::array();

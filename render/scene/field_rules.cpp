@@ -72,4 +72,17 @@ FieldRuleError cameraLookError(const Camera& camera) {
     return {};
 }
 
+FieldRuleError spotConeError(const Light& l) {
+    if (l.type != LightType::Spot) return {};
+    if (toDouble(l.target) == toDouble(l.position))
+        return {"target", "spot light target must differ from its position"};
+    return {};
+}
+
+FieldRuleError textureScaleError(const ImageTexture& t) {
+    if (t.scaleU == 0.0f) return {"scale_u", "texture scale must be non-zero"};
+    if (t.scaleV == 0.0f) return {"scale_v", "texture scale must be non-zero"};
+    return {};
+}
+
 }  // namespace rs

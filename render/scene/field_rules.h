@@ -31,6 +31,12 @@ FieldRuleError materialWeightsError(const Material& m);
 /// view ("up").
 FieldRuleError cameraLookError(const Camera& c);
 
+/// A spot light must aim somewhere: target != position ("target"). Other lights always pass.
+/// (A falloff below the radius is allowed: the cone then ends in a hard edge at the radius.)
+FieldRuleError spotConeError(const Light& l);
+/// An image texture's scale is non-zero in both directions ("scale_u", "scale_v").
+FieldRuleError textureScaleError(const ImageTexture& t);
+
 /// A float as the shortest decimal that reads back as the same float ("0.9", "1e+20").
 std::string floatText(float f);
 

@@ -91,22 +91,34 @@ const std::vector<Field<Material>>& materialFields() {
                        0.01)};
     return f;
 }
-const std::vector<Field<Light>>& lightFields(bool sphere) {
-    static const std::vector<Field<Light>> point{
-        required(
-            fields::choice("type", "Type", &Light::type, {"point", "sphere"}, {"Point", "Sphere"})),
-        required(fields::vector("position", "Position", &Light::position)),
-        fields::color("color", "Colour", &Light::color),
-        fields::number("intensity", "Intensity", &Light::intensity, NumberRange::positive(), 1e-4,
-                       kBig, 0.1)};
-    static const std::vector<Field<Light>> sphereLight = [] {
-        auto f = point;
-        f.insert(f.begin() + 2,
-                 required(fields::number("radius", "Radius", &Light::radius,
-                                         NumberRange::positive(), 1e-4, kBig, 0.05)));
+const std::vector<Field<Light>>& lightFields(LightType type) {
+    using L = Light;
+    const auto typeField = required(
+        fields::choice("type", "Type", &L::type, {"point", "sphere", "directional", "spot"},
+                       {"Point", "Sphere", "Sun (directional)", "Spot"}));
+    const auto position = required(fields::vector("position", "Position", &L::position));
+    const auto shade =
+        std::vector<Field<L>>{fields::color("color", "Colour", &L::color),
+                              fields::number("intensity", "Intensity", &L::intensity,
+                                             NumberRange::positive(), 1e-4, kBig, 0.1)};
+    auto list = [&](std::vector<Field<L>> own) {
+        std::vector<Field<L>> f{typeField};
+        f.insert(f.end(), own.begin(), own.end());
+        f.insert(f.end(), shade.begin(), shade.end());
         return f;
-    }();
-    return sphere ? sphereLight : point;
+    };
+    static const std::vector<std::vector<Field<L>>> byType{
+        list({position}),
+        list({position, required(fields::number("radius", "Radius", &L::radius,
+                                                NumberRange::positive(), 1e-4, kBig, 0.05))}),
+        list({required(fields::vector("direction", "Direction", &L::direction, VectorRule::NonZero,
+                                      -1.0, 1.0, 0.05))}),
+        list({position, required(fields::vector("target", "Target", &L::target)),
+              fields::number("radius", "Cone radius (deg)", &L::coneRadius,
+                             NumberRange::closed(0, 90), 0, 90, 1),
+              fields::number("falloff", "Cone falloff (deg)", &L::coneFalloff,
+                             NumberRange::closed(0, 90), 0, 90, 1)})};
+    return byType.at(std::size_t(type));
 }
 const std::vector<Field<Camera>>& cameraFields() {
     using C = Camera;
@@ -145,7 +157,49 @@ const std::vector<Field<RenderSettings>>& renderFields() {
         fields::number("exposure", "Exposure (stops)", &R::exposure, NumberRange::any(), -20, 20,
                        0.1),
         fields::color("background", "Background", &R::background),
-        fields::color("ambient", "Ambient", &R::ambient)};
+        fields::color("ambient", "Ambient", &R::ambient),
+        fields::boolean("opaque_shadows", "Opaque shadows (version 1)", &R::opaqueShadows)};
+    return f;
+}
+const std::vector<Field<CheckerPattern>>& checkerFields() {
+    using C = CheckerPattern;
+    static const std::vector<Field<C>> f{
+        fields::color("even", "Colour 1", &C::even), fields::color("odd", "Colour 2", &C::odd),
+        fields::number("scale", "Cell size", &C::scale, NumberRange::positive(), 1e-3, kBig, 0.05)};
+    return f;
+}
+/// An image file's path as written in the scene file (`file` of an ImageFile member).
+template <class T>
+Field<T> imageFile(const char* key, const char* label, ImageFile T::*m) {
+    ParamDescriptor d = fields::describe(key, label, ParamType::File, NumberRange::any(), 0, 0, 0);
+    d.defaultValue = std::string();
+    d.required = true;
+    d.alwaysWritten = true;
+    return {std::move(d), [m](const T& t) { return ParamValue((t.*m).file); },
+            [m](T& t, const ParamValue& v) {
+                // A new path: whoever resolved the old one resolves this one again.
+                t.*m = ImageFile{std::get<std::string>(v), {}};
+            }};
+}
+const std::vector<Field<ImageTexture>>& imageTextureFields() {
+    using I = ImageTexture;
+    // A negative scale mirrors the image; zero would collapse it to one texel.
+    const NumberRange any = NumberRange::any();
+    static const std::vector<Field<I>> f{
+        imageFile("texture", "Image", &I::image),
+        fields::number("scale_u", "Repeat U", &I::scaleU, any, -1000, 1000, 0.1),
+        fields::number("scale_v", "Repeat V", &I::scaleV, any, -1000, 1000, 0.1),
+        fields::number("offset_u", "Offset U", &I::offsetU, any, -1000, 1000, 0.05),
+        fields::number("offset_v", "Offset V", &I::offsetV, any, -1000, 1000, 0.05)};
+    return f;
+}
+const std::vector<Field<Environment>>& environmentFields() {
+    using E = Environment;
+    static const std::vector<Field<E>> f{imageFile("file", "Image", &E::image),
+                                         fields::number("intensity", "Intensity", &E::intensity,
+                                                        NumberRange::nonNegative(), 0, 100, 0.05),
+                                         fields::number("rotation", "Rotation (deg)", &E::rotation,
+                                                        NumberRange::any(), -360, 360, 5)};
     return f;
 }
 
@@ -171,7 +225,16 @@ const std::vector<Field<Material>>& fieldsFor(const Material&) {
     return materialFields();
 }
 const std::vector<Field<Light>>& fieldsFor(const Light& l) {
-    return lightFields(l.type == LightType::Sphere);
+    return lightFields(l.type);
+}
+const std::vector<Field<CheckerPattern>>& fieldsFor(const CheckerPattern&) {
+    return checkerFields();
+}
+const std::vector<Field<ImageTexture>>& fieldsFor(const ImageTexture&) {
+    return imageTextureFields();
+}
+const std::vector<Field<Environment>>& fieldsFor(const Environment&) {
+    return environmentFields();
 }
 const std::vector<Field<Camera>>& fieldsFor(const Camera&) {
     return cameraFields();
@@ -227,12 +290,22 @@ const std::string& ParamDescriptor::enumLabel(int i) const {
 const std::vector<ParamDescriptor>& parameters(ParamKind kind) {
     using fields::descriptorsOf;
     static const std::vector<std::vector<ParamDescriptor>> all{
-        descriptorsOf(sphereFields()),    descriptorsOf(planeFields()),
-        descriptorsOf(rectangleFields()), descriptorsOf(boxFields()),
-        descriptorsOf(meshFields()),      descriptorsOf(transformFields()),
-        descriptorsOf(materialFields()),  descriptorsOf(lightFields(false)),
-        descriptorsOf(lightFields(true)), descriptorsOf(cameraFields()),
-        descriptorsOf(renderFields())};
+        descriptorsOf(sphereFields()),
+        descriptorsOf(planeFields()),
+        descriptorsOf(rectangleFields()),
+        descriptorsOf(boxFields()),
+        descriptorsOf(meshFields()),
+        descriptorsOf(transformFields()),
+        descriptorsOf(materialFields()),
+        descriptorsOf(lightFields(LightType::Point)),
+        descriptorsOf(lightFields(LightType::Sphere)),
+        descriptorsOf(cameraFields()),
+        descriptorsOf(renderFields()),
+        descriptorsOf(lightFields(LightType::Directional)),
+        descriptorsOf(lightFields(LightType::Spot)),
+        descriptorsOf(checkerFields()),
+        descriptorsOf(imageTextureFields()),
+        descriptorsOf(environmentFields())};
     return all[std::size_t(kind)];
 }
 
@@ -247,13 +320,25 @@ ParamKind geometryKind(const Geometry& geometry) {
 }
 
 ParamKind lightKind(const Light& light) {
-    return light.type == LightType::Sphere ? ParamKind::SphereLight : ParamKind::PointLight;
+    switch (light.type) {
+        case LightType::Sphere:
+            return ParamKind::SphereLight;
+        case LightType::Directional:
+            return ParamKind::DirectionalLight;
+        case LightType::Spot:
+            return ParamKind::SpotLight;
+        case LightType::Point:
+            break;
+    }
+    return ParamKind::PointLight;
 }
 
 const char* kindLabel(ParamKind kind) {
     static const char* const labels[] = {
-        "Sphere",   "Plane",       "Rectangle",    "Box",    "Mesh",           "Transform",
-        "Material", "Point light", "Sphere light", "Camera", "Render settings"};
+        "Sphere",       "Plane",     "Rectangle",       "Box",
+        "Mesh",         "Transform", "Material",        "Point light",
+        "Sphere light", "Camera",    "Render settings", "Sun light",
+        "Spot light",   "Checker",   "Image texture",   "Environment"};
     return labels[std::size_t(kind)];
 }
 
@@ -301,6 +386,9 @@ template std::string setField(Material&, const std::string&, const ParamValue&);
 template std::string setField(Light&, const std::string&, const ParamValue&);
 template std::string setField(Camera&, const std::string&, const ParamValue&);
 template std::string setField(RenderSettings&, const std::string&, const ParamValue&);
+template std::string setField(CheckerPattern&, const std::string&, const ParamValue&);
+template std::string setField(ImageTexture&, const std::string&, const ParamValue&);
+template std::string setField(Environment&, const std::string&, const ParamValue&);
 
 template <class T>
 std::optional<ParamValue> getField(const T& target, const std::string& key) {
@@ -316,6 +404,9 @@ template std::optional<ParamValue> getField(const Material&, const std::string&)
 template std::optional<ParamValue> getField(const Light&, const std::string&);
 template std::optional<ParamValue> getField(const Camera&, const std::string&);
 template std::optional<ParamValue> getField(const RenderSettings&, const std::string&);
+template std::optional<ParamValue> getField(const CheckerPattern&, const std::string&);
+template std::optional<ParamValue> getField(const ImageTexture&, const std::string&);
+template std::optional<ParamValue> getField(const Environment&, const std::string&);
 
 std::optional<ParamValue> getParameter(const Geometry& g, const std::string& key) {
     return std::visit([&](const auto& s) { return fields::get(fieldsFor(s), s, key); }, g);
@@ -360,7 +451,11 @@ std::optional<ParamValue> getParameter(const Light& l, const std::string& key) {
     return fields::get(fieldsFor(l), l, key);
 }
 std::string setParameter(Light& l, const std::string& key, const ParamValue& value) {
-    return setField(l, key, value);
+    Light copy = l;
+    if (std::string e = setField(copy, key, value); !e.empty()) return e;
+    if (auto e = spotConeError(copy)) return e.message;
+    l = std::move(copy);
+    return {};
 }
 std::optional<ParamValue> getParameter(const Camera& c, const std::string& key) {
     return fields::get(cameraFields(), c, key);
@@ -381,6 +476,29 @@ std::string setParameter(RenderSettings& r, const std::string& key, const ParamV
     if (std::string e = imageSizeError(copy.width, copy.height); !e.empty()) return e;
     r = std::move(copy);
     return {};
+}
+
+std::optional<ParamValue> getParameter(const CheckerPattern& c, const std::string& key) {
+    return getField(c, key);
+}
+std::optional<ParamValue> getParameter(const ImageTexture& t, const std::string& key) {
+    return getField(t, key);
+}
+std::optional<ParamValue> getParameter(const Environment& e, const std::string& key) {
+    return getField(e, key);
+}
+std::string setParameter(CheckerPattern& c, const std::string& key, const ParamValue& value) {
+    return setField(c, key, value);
+}
+std::string setParameter(ImageTexture& t, const std::string& key, const ParamValue& value) {
+    ImageTexture copy = t;
+    if (std::string e = setField(copy, key, value); !e.empty()) return e;
+    if (auto e = textureScaleError(copy)) return e.message;
+    t = std::move(copy);
+    return {};
+}
+std::string setParameter(Environment& e, const std::string& key, const ParamValue& value) {
+    return setField(e, key, value);
 }
 
 }  // namespace rs

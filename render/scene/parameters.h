@@ -61,13 +61,21 @@ enum class ParamKind {
     PointLight,
     SphereLight,
     Camera,
-    Render
+    Render,
+    DirectionalLight,
+    SpotLight,
+    Checker,       ///< A material colour's `{"checker": ...}` form.
+    ImageTexture,  ///< A material colour's `{"texture": ...}` form.
+    Environment
 };
 /// Every kind, in enum order (for tests and tools that walk the schema).
 inline constexpr ParamKind kAllParamKinds[] = {
-    ParamKind::Sphere,      ParamKind::Plane,     ParamKind::Rectangle, ParamKind::Box,
-    ParamKind::Mesh,        ParamKind::Transform, ParamKind::Material,  ParamKind::PointLight,
-    ParamKind::SphereLight, ParamKind::Camera,    ParamKind::Render};
+    ParamKind::Sphere,     ParamKind::Plane,      ParamKind::Rectangle,
+    ParamKind::Box,        ParamKind::Mesh,       ParamKind::Transform,
+    ParamKind::Material,   ParamKind::PointLight, ParamKind::SphereLight,
+    ParamKind::Camera,     ParamKind::Render,     ParamKind::DirectionalLight,
+    ParamKind::SpotLight,  ParamKind::Checker,    ParamKind::ImageTexture,
+    ParamKind::Environment};
 
 /// The descriptors of one kind, in display order (also the order keys are written in).
 const std::vector<ParamDescriptor>& parameters(ParamKind kind);
@@ -103,11 +111,18 @@ std::string setParameter(Material& m, const std::string& key, const ParamValue& 
 std::string setParameter(Light& l, const std::string& key, const ParamValue& value);
 std::string setParameter(Camera& c, const std::string& key, const ParamValue& value);
 std::string setParameter(RenderSettings& r, const std::string& key, const ParamValue& value);
+std::optional<ParamValue> getParameter(const CheckerPattern& c, const std::string& key);
+std::optional<ParamValue> getParameter(const ImageTexture& t, const std::string& key);
+std::optional<ParamValue> getParameter(const Environment& e, const std::string& key);
+std::string setParameter(CheckerPattern& c, const std::string& key, const ParamValue& value);
+std::string setParameter(ImageTexture& t, const std::string& key, const ParamValue& value);
+std::string setParameter(Environment& e, const std::string& key, const ParamValue& value);
 
 /// Validates and assigns one field alone, without the rules that relate fields: the scene
 /// reader uses it and then checks those rules itself, naming positions in the file.
 /// Defined for SphereGeometry, PlaneGeometry, RectangleGeometry, BoxGeometry, MeshGeometry,
-/// Transform, Material, Light, Camera and RenderSettings.
+/// Transform, Material, Light, Camera, RenderSettings, CheckerPattern, ImageTexture and
+/// Environment.
 template <class T>
 std::string setField(T& target, const std::string& key, const ParamValue& value);
 /// The value of one field by key (the same types as setField), or nullopt.

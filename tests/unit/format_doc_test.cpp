@@ -162,10 +162,13 @@ TEST_F(FormatDoc, ExamplesShowEveryKindOfObjectLightAndMaterial) {
             if (m.reflectivity > 0.0f) materials.insert("mirror");
             if (m.reflectivity == 0.0f && m.transparency == 0.0f && m.diffuse > 0.0f)
                 materials.insert(m.specular > 0.0f ? "phong" : "diffuse");
+            if (std::holds_alternative<CheckerPattern>(m.pattern)) materials.insert("checker");
+            if (std::holds_alternative<ImageTexture>(m.pattern)) materials.insert("image");
             if (!m.extras.empty()) places.insert("material");
         }
         for (const Light& l : doc.lights) {
-            lights.insert(l.type == LightType::Point ? "point" : "sphere");
+            static const char* const types[] = {"point", "sphere", "directional", "spot"};
+            lights.insert(types[int(l.type)]);
             if (!l.extras.empty()) places.insert("light");
         }
         for (const Object& o : doc.objects) {
@@ -190,8 +193,8 @@ TEST_F(FormatDoc, ExamplesShowEveryKindOfObjectLightAndMaterial) {
     }
     using Names = std::set<std::string>;
     EXPECT_EQ(objects, (Names{"sphere", "plane", "rectangle", "box", "mesh"}));
-    EXPECT_EQ(lights, (Names{"point", "sphere"}));
-    EXPECT_EQ(materials, (Names{"diffuse", "phong", "mirror", "glass"}));
+    EXPECT_EQ(lights, (Names{"point", "sphere", "directional", "spot"}));
+    EXPECT_EQ(materials, (Names{"diffuse", "phong", "mirror", "glass", "checker", "image"}));
     EXPECT_EQ(places, (Names{"top level", "camera", "render", "material", "light", "object"}))
         << "x- keys";
     EXPECT_TRUE(orthographic && perspective);
@@ -205,15 +208,23 @@ TEST_F(FormatDoc, ExamplesUseEveryKeyOfTheFormat) {
     // The format's keys, written out here from the document (not taken from the reader).
     using Keys = std::set<std::string>;
     const std::map<std::string, Keys> format = {
-        {"top level", {"format", "version", "camera", "render", "materials", "lights", "objects"}},
+        {"top level",
+         {"format", "version", "camera", "render", "environment", "materials", "lights",
+          "objects"}},
+        {"environment", {"file", "intensity", "rotation"}},
+        {"checker colour", {"checker", "scale"}},
+        {"texture colour", {"texture", "scale", "offset"}},
         {"camera", {"projection", "position", "target", "up", "fov_y", "ortho_height"}},
         {"render",
          {"width", "height", "max_depth", "min_weight", "shadow_samples", "supersampling",
-          "adaptive_supersampling", "tonemap", "exposure", "background", "ambient"}},
+          "adaptive_supersampling", "tonemap", "exposure", "background", "ambient",
+          "opaque_shadows"}},
         {"material",
          {"name", "color", "diffuse", "specular", "shininess", "reflectivity", "transparency",
           "ior"}},
-        {"light", {"name", "type", "position", "radius", "color", "intensity"}},
+        {"light",
+         {"name", "type", "position", "radius", "color", "intensity", "direction", "target",
+          "falloff"}},
         {"object", {"name", "type", "material", "visible", "translate", "rotate", "scale"}},
         {"sphere", {"center", "radius"}},
         {"plane", {"point", "normal"}},
@@ -237,7 +248,13 @@ TEST_F(FormatDoc, ExamplesUseEveryKeyOfTheFormat) {
             if (j["render"].contains("tonemap"))
                 tonemaps.insert(j["render"]["tonemap"].get<std::string>());
         }
-        for (const auto& m : j.value("materials", nlohmann::json::array())) note("material", m);
+        if (j.contains("environment")) note("environment", j["environment"]);
+        for (const auto& m : j.value("materials", nlohmann::json::array())) {
+            note("material", m);
+            const nlohmann::json color = m.value("color", nlohmann::json());
+            if (color.is_object())
+                note(color.contains("checker") ? "checker colour" : "texture colour", color);
+        }
         for (const auto& l : j.value("lights", nlohmann::json::array())) note("light", l);
         for (const auto& o : j.value("objects", nlohmann::json::array())) {
             note("object", o);

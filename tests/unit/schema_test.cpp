@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -23,6 +24,17 @@ struct Host {
     SceneDocument doc;
     std::string pointer;
 };
+
+/// Where a field of `kind` stands in its entry, as a JSON pointer suffix: the key itself, or
+/// an element of the array the format writes two fields as (scenes/FORMAT.md, "color").
+std::string fileKey(ParamKind kind, const std::string& key) {
+    static const std::map<std::string, std::string> pairs{
+        {"even", "checker/0"},  {"odd", "checker/1"},     {"scale_u", "scale/0"},
+        {"scale_v", "scale/1"}, {"offset_u", "offset/0"}, {"offset_v", "offset/1"}};
+    const bool patterned = kind == ParamKind::Checker || kind == ParamKind::ImageTexture;
+    const auto it = pairs.find(key);
+    return patterned && it != pairs.end() ? it->second : key;
+}
 
 Host hostFor(ParamKind kind) {
     Host h;
@@ -56,11 +68,36 @@ Host hostFor(ParamKind kind) {
             h.pointer = "/materials/0";
             break;
         }
+        case ParamKind::Checker:
+        case ParamKind::ImageTexture: {
+            Material m;
+            m.name = "m";
+            if (kind == ParamKind::Checker) {
+                m.pattern = CheckerPattern{};
+            } else {
+                ImageTexture t;
+                t.image = {"textures/tiles.png", kDir + "/textures/tiles.png"};
+                m.pattern = t;
+            }
+            h.doc.materials.push_back(m);
+            h.pointer = "/materials/0/color";
+            break;
+        }
+        case ParamKind::Environment:
+            h.doc.environment.image = {"textures/sky.hdr", kDir + "/textures/sky.hdr"};
+            h.pointer = "/environment";
+            break;
         case ParamKind::PointLight:
-        case ParamKind::SphereLight: {
+        case ParamKind::SphereLight:
+        case ParamKind::DirectionalLight:
+        case ParamKind::SpotLight: {
             Light l;
             l.name = "l";
-            l.type = kind == ParamKind::SphereLight ? LightType::Sphere : LightType::Point;
+            l.type = kind == ParamKind::SphereLight        ? LightType::Sphere
+                     : kind == ParamKind::DirectionalLight ? LightType::Directional
+                     : kind == ParamKind::SpotLight        ? LightType::Spot
+                                                           : LightType::Point;
+            l.position = Vec3(0.0f, 4.0f, 0.0f);  // a spot light must aim somewhere
             h.doc.addLight(l);
             h.pointer = "/lights/0";
             break;
@@ -88,7 +125,15 @@ auto onTarget(SceneDocument& doc, ParamKind kind, F f) {
             return f(doc.materials.at(0));
         case ParamKind::PointLight:
         case ParamKind::SphereLight:
+        case ParamKind::DirectionalLight:
+        case ParamKind::SpotLight:
             return f(doc.lights.at(0));
+        case ParamKind::Checker:
+            return f(std::get<CheckerPattern>(doc.materials.at(0).pattern));
+        case ParamKind::ImageTexture:
+            return f(std::get<ImageTexture>(doc.materials.at(0).pattern));
+        case ParamKind::Environment:
+            return f(doc.environment);
         case ParamKind::Camera:
             return f(doc.camera);
         case ParamKind::Render:
@@ -280,9 +325,9 @@ TEST(Schema, EveryValueOutsideTheFormat_IsRefusedBySetterAndReader) {
                 EXPECT_NE(set(h.doc, kind, d.key, values[i]), "")
                     << what(kind, d) << " accepted by its setter: " << texts[i].dump();
                 Json file = Json::parse(serializeScene(h.doc, kDir));
-                file[Json::json_pointer(h.pointer)][d.key] = texts[i];
+                const std::string at = h.pointer + "/" + fileKey(kind, d.key);
+                file[Json::json_pointer(at)] = texts[i];
                 const SceneLoadResult r = parseScene(file.dump(2), kDir, "bad.scene.json");
-                const std::string at = h.pointer + "/" + d.key;
                 bool placed = false;
                 for (const SceneError& e : r.errors) placed |= e.pointer.rfind(at, 0) == 0;
                 EXPECT_TRUE(placed) << what(kind, d) << " = " << texts[i].dump()
@@ -300,7 +345,12 @@ TEST(Schema, AnAbsentKey_ReadsAsTheDescriptorsDefault_AndDefaultsAreNotWritten) 
             Host h = hostFor(kind);
             Json file = Json::parse(serializeScene(h.doc, kDir));
             Json& entry = file[Json::json_pointer(h.pointer)];
-            const bool written = entry.contains(d.key);
+            const std::string key = fileKey(kind, d.key);
+            // The checker's two colours are the form itself: without them there is no checker.
+            if (kind == ParamKind::Checker && key != d.key) continue;
+            // A pair (a texture's scale) is written when either half is not its default.
+            const std::string whole = key.substr(0, key.find('/'));
+            const bool written = entry.contains(whole);
             // The writer's one rule beyond the descriptors: the lens of the projection in use
             // (fov_y of a perspective camera) is always stated.
             const bool lens = kind == ParamKind::Camera && d.key == "fov_y";
@@ -310,7 +360,7 @@ TEST(Schema, AnAbsentKey_ReadsAsTheDescriptorsDefault_AndDefaultsAreNotWritten) 
                 // A fresh entry holds the struct's defaults: the writer leaves them out.
                 EXPECT_FALSE(written) << what(kind, d) << " written at its default";
             }
-            entry.erase(d.key);
+            entry.erase(whole);
             const SceneLoadResult r = parseScene(file.dump(2), kDir, "absent.scene.json");
             if (d.required) {
                 EXPECT_FALSE(r.ok()) << what(kind, d) << " is required but was not missed";
@@ -335,8 +385,12 @@ TEST(Schema, TheWriterWritesNoFieldTheSchemaDoesNotName) {
         const ParamKind now = h.doc.lights.empty() ? kind : lightKind(h.doc.lights[0]);
         for (const auto& item : entry.items()) {
             const std::string& key = item.key();
+            bool pair = false;
+            if (const ParamDescriptor* first = findParameter(now, key + "_u"))
+                pair = fileKey(now, first->key) == key + "/0";
+            if (now == ParamKind::Checker && key == "checker") pair = true;
             const bool described =
-                findParameter(now, key) != nullptr ||
+                pair || findParameter(now, key) != nullptr ||
                 (h.pointer == "/objects/0" &&
                  findParameter(ParamKind::Transform, key) != nullptr) ||
                 (kind == ParamKind::Transform && findParameter(ParamKind::Sphere, key) != nullptr);
