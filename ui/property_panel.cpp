@@ -6,8 +6,11 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QVBoxLayout>
 
+#include "color_pattern_editor.h"
+#include "color_pattern_edits.h"
 #include "io/mesh_io.h"
 #include "parameter_widgets.h"
 #include "scene_editor.h"
@@ -17,6 +20,14 @@ namespace rs::ui {
 
 namespace {
 const QString kDefaultMaterial = QStringLiteral("(default grey)");
+
+/// The material of `d` named `name` (const or not, as `d`), or null.
+template <class Doc>
+auto materialNamed(Doc& d, const std::string& name) -> decltype(&d.materials[0]) {
+    for (auto& m : d.materials)
+        if (m.name == name) return &m;
+    return nullptr;
+}
 
 /// Changing smooth_normals changes the loaded triangles' normals: reload the mesh.
 void reloadMeshIfNeeded(Geometry& g, const std::string& key) {
@@ -41,10 +52,14 @@ QString PropertyPanel::signature() const {
     const SceneDocument& doc = editor_->document();
     const ObjectId id = editor_->selection();
     QString s = QString::number(id) + QLatin1Char('/') + QString::number(doc.materials.size());
-    if (const Object* o = doc.findObject(id))
+    if (const Object* o = doc.findObject(id)) {
         s += QStringLiteral("/o%1/%2")
                  .arg(o->geometry.index())
                  .arg(QString::fromStdString(o->material));
+        // Its material's colour form decides which sections are shown.
+        if (const Material* m = doc.findMaterial(o->material))
+            s += QStringLiteral("/p%1").arg(m->pattern.index());
+    }
     if (const Light* l = doc.findLight(id)) s += QStringLiteral("/l%1").arg(int(l->type));
     for (const Material& m : doc.materials) s += QLatin1Char('|') + QString::fromStdString(m.name);
     return s;
@@ -75,8 +90,8 @@ bool PropertyPanel::applyEdit(const QString& section, const std::string& key,
 }
 
 template <class Locate>
-void PropertyPanel::addSection(const QString& title, const QString& section, ParamKind kind,
-                               Locate locate) {
+QFormLayout* PropertyPanel::addSection(const QString& title, const QString& section, ParamKind kind,
+                                       Locate locate) {
     auto* box = new QGroupBox(title, content_);
     auto* form = new QFormLayout(box);
     const QString mergePrefix = QString::number(editor_->selection()) + QLatin1Char(':') + title;
@@ -125,6 +140,7 @@ void PropertyPanel::addSection(const QString& title, const QString& section, Par
         });
     }
     layout_->addWidget(box);
+    return form;
 }
 
 void PropertyPanel::addMaterialChooser(ObjectId id) {
@@ -168,13 +184,84 @@ void PropertyPanel::addMaterialChooser(ObjectId id) {
     layout_->addWidget(box);
     if (o->material.empty() || !doc.findMaterial(o->material)) return;
     const std::string name = o->material;
-    addSection(tr("Material \"%1\"").arg(QString::fromStdString(name)), QStringLiteral("material"),
-               ParamKind::Material, [name](auto& d) {
-                   decltype(&d.materials[0]) found = nullptr;
-                   for (auto& mat : d.materials)
-                       if (mat.name == name) found = &mat;
-                   return found;
-               });
+    QFormLayout* materialForm = addSection(tr("Material \"%1\"").arg(QString::fromStdString(name)),
+                                           QStringLiteral("material"), ParamKind::Material,
+                                           [name](auto& d) { return materialNamed(d, name); });
+    addColorForm(name, materialForm);
+}
+
+void PropertyPanel::addColorForm(const std::string& name, QFormLayout* form) {
+    const Material* material = editor_->document().findMaterial(name);
+    const ColorMode mode = colorModeOf(*material);
+    QComboBox* combo = makeColorModeCombo(form->parentWidget());
+    form->insertRow(0, tr("Colour mode"), combo);
+    // The flat colour stays in the document under a pattern (Colour mode shows it again).
+    const auto& fields = parameters(ParamKind::Material);
+    for (std::size_t i = 0; i < fields.size(); ++i)
+        if (fields[i].key == "color") form->setRowVisible(int(i) + 1, mode == ColorMode::Colour);
+    const QString qname = QString::fromStdString(name);
+    connect(combo, &QComboBox::activated, this, [this, name, qname, combo](int index) {
+        SceneDocument doc = editor_->document();
+        Material* m = findMaterial(doc, name);
+        if (!m) return;
+        std::string path;
+        if (ColorMode(index) == ColorMode::Image && colorModeOf(*m) != ColorMode::Image) {
+            path = chooseTextureFile(this, editor_->filePath()).toStdString();
+            if (path.empty()) {
+                refresh();  // Cancelled: the selector shows the document's mode again.
+                return;
+            }
+        }
+        if (!setColorMode(*m, ColorMode(index), path)) return;
+        editor_->edit(tr("Colour of \"%1\": %2").arg(qname, combo->itemText(index)),
+                      std::move(doc));
+    });
+    refreshers_.push_back([this, name, combo] {
+        if (const Material* m = editor_->document().findMaterial(name)) {
+            const QSignalBlocker block(combo);
+            combo->setCurrentIndex(int(colorModeOf(*m)));
+        }
+    });
+
+    if (mode == ColorMode::Checker) {
+        addSection(tr("Checker"), QStringLiteral("checker"), ParamKind::Checker, [name](auto& d) {
+            auto* m = materialNamed(d, name);
+            return m ? std::get_if<CheckerPattern>(&m->pattern) : nullptr;
+        });
+    } else if (mode == ColorMode::Image) {
+        QFormLayout* image =
+            addSection(tr("Image texture"), QStringLiteral("texture"), ParamKind::ImageTexture,
+                       [name](auto& d) {
+                           auto* m = materialNamed(d, name);
+                           return m ? std::get_if<ImageTexture>(&m->pattern) : nullptr;
+                       });
+        // Under the file's row: Choose... and the thumbnail (or why the file cannot be read).
+        int row = 0;
+        for (const ParamDescriptor& d : parameters(ParamKind::ImageTexture)) {
+            ++row;
+            if (d.type == ParamType::File) break;
+        }
+        auto* choose = new QPushButton(tr("Choose…"), image->parentWidget());
+        choose->setObjectName(QStringLiteral("chooseTexture"));
+        choose->setToolTip(tr("Choose the image file"));
+        auto* preview = new TexturePreview(image->parentWidget());
+        preview->setObjectName(QStringLiteral("texturePreview"));
+        image->insertRow(row, QString(), choose);
+        image->insertRow(row + 1, QString(), preview);
+        connect(choose, &QPushButton::clicked, this, [this, name] {
+            const QString path = chooseTextureFile(this, editor_->filePath());
+            if (path.isEmpty()) return;
+            SceneDocument doc = editor_->document();
+            Material* m = findMaterial(doc, name);
+            if (!m || !setColorMode(*m, ColorMode::Image, path.toStdString())) return;
+            editor_->edit(tr("Change texture image"), std::move(doc));
+        });
+        refreshers_.push_back([this, name, preview] {
+            const Material* m = editor_->document().findMaterial(name);
+            if (const auto* t = m ? std::get_if<ImageTexture>(&m->pattern) : nullptr)
+                preview->setImage(t->image.source());
+        });
+    }
 }
 
 void PropertyPanel::rebuild() {

@@ -9,6 +9,7 @@
 #include "scene/document.h"
 #include "scene/parameters.h"
 
+class QFormLayout;
 class QLabel;
 class QVBoxLayout;
 
@@ -35,8 +36,12 @@ private:
     void refresh();
     QString signature() const;
     template <class Locate>
-    void addSection(const QString& title, const QString& section, ParamKind kind, Locate locate);
+    QFormLayout* addSection(const QString& title, const QString& section, ParamKind kind,
+                            Locate locate);
     void addMaterialChooser(ObjectId id);
+    /// The Colour / Checker / Image selector in material `name`'s `form` and, for a pattern,
+    /// its section (checker colours and cell size, or the image with its thumbnail).
+    void addColorForm(const std::string& name, QFormLayout* form);
     void showError(const QString& text);
 
     SceneEditor* editor_;
