@@ -15,6 +15,7 @@
 #include "autosave.h"
 #include "background_jobs.h"
 #include "cluster_submit_dialog.h"
+#include "color_pattern_edits.h"
 #include "dialog_folders.h"
 #include "display_frame.h"
 #include "error_reporter.h"
@@ -30,6 +31,7 @@
 #include "scene_file_writer.h"
 #include "session_controller.h"
 #include "snapshot/compiled_scene.h"
+#include "texture_drop.h"
 #include "user_confirmation.h"
 #include "viewport.h"
 
@@ -292,8 +294,18 @@ void MainWindow::dropEvent(QDropEvent* event) {
             if (maybeSave()) openFile(path);
             break;
         }
-        // Dropped on the viewport: the mesh lands on the surface under the cursor.
         const QPoint at = viewport_->mapFrom(this, event->position().toPoint());
+        if (isTextureFileName(path.toStdString())) {
+            // An image: the texture of the object under the cursor, picked as a click would.
+            const auto pixel =
+                viewport_->rect().contains(at) ? viewport_->pixelAt(at) : std::nullopt;
+            const ObjectId id =
+                pixel ? viewport_->frame()->idAt(pixel->x(), pixel->y()) : kNoObject;
+            statusBar()->showMessage(dropTexture(*editor_, id, QFileInfo(path).absoluteFilePath()),
+                                     8000);
+            break;
+        }
+        // Dropped on the viewport: the mesh lands on the surface under the cursor.
         importMesh(path, viewport_->rect().contains(at) ? std::optional<QPoint>(at) : std::nullopt);
     }
     event->acceptProposedAction();
