@@ -16,6 +16,13 @@
 
 namespace rs::ui {
 
+namespace {
+/// What the texture cache may be set to: below 16 MB OpenImageIO thrashes on one 4k texture;
+/// 64 GB is more than any machine this runs on would give it.
+constexpr int kMinTextureCacheMegabytes = 16;
+constexpr int kMaxTextureCacheMegabytes = 65536;
+}  // namespace
+
 Preferences loadPreferences() {
     QSettings s;
     Preferences p;
@@ -35,7 +42,17 @@ Preferences loadPreferences() {
     if (!validPreviewDivider(p.previewDivider)) p.previewDivider = 1;
     if (!parseDisplayKind(s.value(QStringLiteral("viewport/display")).toString(), p.display))
         p.display = DisplayKind::Automatic;
+    p.textureCacheMegabytes =
+        s.value(QStringLiteral("textures/cacheMegabytes"), p.textureCacheMegabytes).toInt();
+    if (p.textureCacheMegabytes < kMinTextureCacheMegabytes ||
+        p.textureCacheMegabytes > kMaxTextureCacheMegabytes)
+        p.textureCacheMegabytes = int(kDefaultTextureCacheMegabytes);
+    applyProcessPreferences(p);
     return p;
+}
+
+void applyProcessPreferences(const Preferences& p) {
+    TextureStore::shared().setCacheMegabytes(float(p.textureCacheMegabytes));
 }
 
 void savePreferences(const Preferences& p) {
@@ -47,6 +64,7 @@ void savePreferences(const Preferences& p) {
     s.setValue(QStringLiteral("autosave/seconds"), p.autosaveSeconds);
     s.setValue(QStringLiteral("viewport/previewDivider"), p.previewDivider);
     s.setValue(QStringLiteral("viewport/display"), QString::fromLatin1(displayKindName(p.display)));
+    s.setValue(QStringLiteral("textures/cacheMegabytes"), p.textureCacheMegabytes);
 }
 
 int governorRate(double targetMs) {
@@ -180,6 +198,24 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
         notify();
     });
     form->addRow(tr("Autosave every"), autosave);
+
+    // Decoded texture tiles kept in memory (OpenImageIO's cache), for the whole process.
+    auto* textureCache = new QSpinBox(this);
+    textureCache->setObjectName(QStringLiteral("textureCacheMegabytes"));
+    textureCache->setRange(kMinTextureCacheMegabytes, kMaxTextureCacheMegabytes);
+    textureCache->setSingleStep(64);
+    textureCache->setKeyboardTracking(false);
+    textureCache->setValue(prefs_.textureCacheMegabytes);
+    textureCache->setToolTip(
+        tr("Memory for decoded image textures and environments (default %1 MB); more keeps "
+           "large textures from being read again")
+            .arg(int(kDefaultTextureCacheMegabytes)));
+    connect(textureCache, &QSpinBox::valueChanged, this, [=, this](int v) {
+        prefs_.textureCacheMegabytes = v;
+        applyProcessPreferences(prefs_);
+        notify();
+    });
+    form->addRow(tr("Texture cache (MB)"), textureCache);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::accept);

@@ -7,6 +7,7 @@
 #include "accel/ray_engine.h"
 #include "display_choice.h"
 #include "session/interaction_policy.h"
+#include "texture/texture_store.h"
 
 namespace rs::ui {
 
@@ -21,19 +22,25 @@ struct Preferences {
     int previewDivider = 1;
     /// Which frame view draws the viewport (display_choice.h has the Automatic rule).
     DisplayKind display = DisplayKind::Automatic;
+    /// The texture cache's bound in MB (TextureStore, process-wide).
+    int textureCacheMegabytes = int(kDefaultTextureCacheMegabytes);
 };
 
 /// Frames per second the governor aims at for a target frame time (0: off), and back.
 int governorRate(double targetMs);
 double governorTargetMs(int framesPerSecond);
 
-/// Reads preferences from QSettings (defaults where absent or unreadable).
+/// Reads preferences from QSettings (defaults where absent or unreadable) and applies those
+/// that belong to the whole process rather than a window: the texture cache's bound.
 Preferences loadPreferences();
+/// Applies the process-wide preferences (TextureStore::shared().setCacheMegabytes).
+void applyProcessPreferences(const Preferences& prefs);
 /// Writes preferences to QSettings (the policy as policyToJson text).
 void savePreferences(const Preferences& prefs);
 
 /// One control per interaction policy setting plus the thread count and the ray engine; every
-/// change is announced at once through changed() so the session follows live.
+/// change is announced at once through changed() so the session follows live (the texture
+/// cache, which is the process's, the dialog applies itself).
 class PreferencesDialog : public QDialog {
     Q_OBJECT
 public:
