@@ -22,9 +22,11 @@
 #include <QTimer>
 #include <QUrl>
 #include <QtTest>
+#include <cmath>
 
 #include "color_pattern_editor.h"
 #include "gui_test_support.h"
+#include "image/image_io.h"
 #include "preferences.h"
 #include "property_panel.h"
 #include "scene/parameters.h"
@@ -57,6 +59,7 @@ private Q_SLOTS:
     void checkerFields_ReachTheDocument_AndRefuseWhatTheFormatRefuses();
     void imageMode_ChosenFile_Thumbnail_AndRepeatReachTheDocument();
     void unreadableTexture_ShowsTheErrorInsteadOfAThumbnail();
+    void exrThumbnail_IsLinearEncodedToSrgb();
     void imageDroppedOnASharedMaterial_MakesItsOwn_InOneUndoStep();
     void imageDroppedOnAnOwnMaterial_TexturesIt_AndEmptySpaceSaysWhere();
     void textureCachePreference_SetsTheStore_AndIsKept();
@@ -302,6 +305,32 @@ void TexturesTest::unreadableTexture_ShowsTheErrorInsteadOfAThumbnail() {
     QVERIFY2(preview->error().contains(QStringLiteral("broken.png")), qPrintable(preview->error()));
     auto* error = preview->findChild<QLabel*>(QStringLiteral("textureError"));
     QVERIFY(error && error->isVisibleTo(preview));
+}
+
+void TexturesTest::exrThumbnail_IsLinearEncodedToSrgb() {
+    // Left half linear 0.2140 (sRGB 0.5: 1.055 * 0.214^(1/2.4) - 0.055), right half 4 (HDR,
+    // beyond white): QImageReader cannot read EXR, the thumbnail must still show it.
+    ImageRgb image(8, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 8; ++x)
+            image.pixels[std::size_t(y) * 8 + x] = Color(x < 4 ? 0.2140f : 4.0f);
+    const QString path = dir_.filePath(QStringLiteral("grey.exr"));
+    std::string error;
+    QVERIFY2(writeImage(path.toStdString(), image, ToneMap::Clamp, 0.0f, error), error.c_str());
+    clickObject("chalk ball");
+    stepMode(Qt::Key_Down);
+    chooseImage(path);
+    auto* preview = window_->propertyPanel()->findChild<TexturePreview*>();
+    QVERIFY(preview);
+    QVERIFY2(preview->hasThumbnail(), qPrintable(preview->error()));
+    const QImage shown =
+        preview->findChild<QLabel*>(QStringLiteral("textureThumbnail"))->pixmap().toImage();
+    const double expected = 255.0 * (1.055 * std::pow(0.2140, 1.0 / 2.4) - 0.055);
+    const QColor left = shown.pixelColor(shown.width() / 8, shown.height() / 2);
+    const QColor right = shown.pixelColor(shown.width() * 7 / 8, shown.height() / 2);
+    QVERIFY2(std::abs(left.red() - expected) <= 2.0 && left.red() == left.blue(),
+             qPrintable(QStringLiteral("%1 vs %2").arg(left.red()).arg(expected)));
+    QCOMPARE(right.green(), 255);
 }
 
 void TexturesTest::imageDroppedOnASharedMaterial_MakesItsOwn_InOneUndoStep() {
