@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/id_search.h"
+#include "texture/texture_store.h"
 
 namespace rs {
 
@@ -14,9 +15,9 @@ CompiledMaterial compileMaterial(const Material& m) {
     float cutoff = 0.0f;
     if (m.specular > 0.0f && m.shininess > 0.0f)
         cutoff = std::min(1.0f, std::pow(1e-7f / m.specular, 1.0f / m.shininess));
-    return {m.color,        m.diffuse,      m.specular, m.shininess,
-            m.reflectivity, m.transparency, m.ior,      1.0f - m.reflectivity - m.transparency,
-            cutoff};
+    return {m.color,        m.diffuse,        m.specular, m.shininess,
+            m.reflectivity, m.transparency,   m.ior,      1.0f - m.reflectivity - m.transparency,
+            cutoff,         MaterialPattern{}};
 }
 
 /// True when the linear part is a rotation times a uniform scale (spheres stay spheres).
@@ -139,8 +140,7 @@ std::shared_ptr<const std::vector<PlanePrimitive>> compilePlanes(const SceneDocu
 CompiledScene::CompiledScene(const SceneDocument& doc, const CompiledScene* previous,
                              EngineKind engine)
     : camera_(doc.camera, doc.render.width, doc.render.height), settings_(doc.render) {
-    materials_.push_back(compileMaterial(Material{}));
-    for (const Material& m : doc.materials) materials_.push_back(compileMaterial(m));
+    compileLooks(doc);
     for (const Light& l : doc.lights) lights_.push_back(compileLight(l));
     planes_ = compilePlanes(doc);
     auto prims = std::make_shared<std::vector<Primitive>>();
@@ -156,6 +156,7 @@ CompiledScene::CompiledScene(const SceneDocument& doc, const CompiledScene* prev
     primitives_ = std::move(prims);
     computeEpsilon();
     engine_ = buildEngine(engine, geometry(), previous ? previous->engine_.get() : nullptr);
+    compilePatterns(doc);
 }
 
 SceneGeometry CompiledScene::geometry() const {
@@ -186,8 +187,7 @@ CompiledScene CompiledScene::refitted(const SceneDocument& doc,
                                       const std::vector<ObjectId>& moved) const {
     CompiledScene out = *this;
     // Material definitions may have changed (same names, same order): recompile the table.
-    out.materials_.resize(1);
-    for (const Material& m : doc.materials) out.materials_.push_back(compileMaterial(m));
+    out.compileLooks(doc);
     // Planes are few and cheap: recompile them for material changes.
     out.planes_ = compilePlanes(doc);
     auto prims = std::make_shared<std::vector<Primitive>>(*primitives_);
@@ -205,7 +205,81 @@ CompiledScene CompiledScene::refitted(const SceneDocument& doc,
     out.primitives_ = std::move(prims);
     out.computeEpsilon();
     out.engine_ = engine_->updated(out.geometry(), indices);
+    out.compilePatterns(doc);
     return out;
+}
+
+void CompiledScene::compileLooks(const SceneDocument& doc) {
+    problems_.clear();
+    materials_.clear();
+    materials_.push_back(compileMaterial(Material{}));
+    for (std::size_t i = 0; i < doc.materials.size(); ++i) {
+        const Material& m = doc.materials[i];
+        CompiledMaterial c = compileMaterial(m);
+        MaterialPattern& p = c.pattern;
+        if (const auto* checker = std::get_if<CheckerPattern>(&m.pattern)) {
+            p.kind = MaterialPattern::Kind::Checker;
+            p.even = checker->even, p.odd = checker->odd, p.checkerScale = checker->scale;
+        } else if (const auto* image = std::get_if<ImageTexture>(&m.pattern)) {
+            p.kind = MaterialPattern::Kind::Image;
+            p.scaleU = image->scaleU, p.scaleV = image->scaleV;
+            p.offsetU = image->offsetU, p.offsetV = image->offsetV;
+            std::string error;
+            p.texture = TextureStore::shared().open(image->image.source(), error);
+            if (!p.texture)
+                problems_.push_back("/materials/" + std::to_string(i) + "/color/texture: " + error);
+        }
+        materials_.push_back(c);
+    }
+    environment_ = CompiledEnvironment{};
+    if (doc.environment.present()) {
+        environment_.present = true;
+        environment_.intensity = doc.environment.intensity;
+        environment_.rotation = doc.environment.rotation;
+        std::string error;
+        environment_.texture = TextureStore::shared().open(doc.environment.image.source(), error);
+        if (!environment_.texture) problems_.push_back("/environment/file: " + error);
+    }
+}
+
+void CompiledScene::compilePatterns(const SceneDocument& doc) {
+    bool any = false;
+    for (const CompiledMaterial& m : materials_)
+        any |= m.pattern.kind != MaterialPattern::Kind::None;
+    if (!any) {
+        if (!patterns_->empty()) patterns_ = std::make_shared<SurfacePatterns>();
+        return;
+    }
+    auto patterns = std::make_shared<SurfacePatterns>();
+    patterns->resize(primitives_->size(), planes_->size());
+    auto patterned = [&](uint32_t material) {
+        return materials_[material].pattern.kind != MaterialPattern::Kind::None;
+    };
+    for (std::size_t i = 0; i < primitives_->size(); ++i) {
+        const Primitive& p = (*primitives_)[i];
+        if (!patterned(p.material)) continue;
+        if (const Object* o = doc.findObject(p.id))
+            patterns->setPrimitive(i, SurfacePatterns::surfaceOf(*o));
+    }
+    for (std::size_t i = 0; i < planes_->size(); ++i) {
+        const PlanePrimitive& p = (*planes_)[i];
+        if (!patterned(p.material)) continue;
+        if (const Object* o = doc.findObject(p.id))
+            patterns->setPlane(i, SurfacePatterns::surfaceOf(*o));
+    }
+    patterns_ = std::move(patterns);
+}
+
+Color CompiledScene::environmentColor(const Vec3& dir, float spread) const {
+    if (!environment_.present) return settings_.background;
+    if (!environment_.texture) {
+        // The loud "missing" pattern over the sky, in the environment's own coordinates.
+        const float u = 0.5f + std::atan2(dir.z, dir.x) / (2.0f * float(M_PI));
+        const float v = 0.5f + std::asin(std::clamp(dir.y, -1.0f, 1.0f)) / float(M_PI);
+        return missingTexture(8.0f * u, 4.0f * (1.0f - v));
+    }
+    return environment_.intensity * TextureStore::shared().environment(
+                                        environment_.texture, dir, environment_.rotation, spread);
 }
 
 CompiledScene CompiledScene::withBoxProxy(ObjectId id) const {

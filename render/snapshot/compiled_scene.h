@@ -11,6 +11,7 @@
 #include "geometry/shapes.h"
 #include "scene/document.h"
 #include "snapshot/camera_model.h"
+#include "snapshot/surface_patterns.h"
 
 namespace rs {
 
@@ -22,6 +23,15 @@ struct CompiledMaterial {
     /// R.V below which specular * (R.V)^shininess < 1e-7: far below a float colour's
     /// resolution, so the costly pow is skipped there (the same on every render path).
     float specularCutoff;
+    MaterialPattern pattern;  ///< A checker or an image in place of `color`.
+};
+
+/// The environment as the integrator looks it up (scenes/FORMAT.md "environment").
+struct CompiledEnvironment {
+    bool present = false;
+    TextureHandle texture;  ///< Empty when the file could not be opened: "missing" shows.
+    float intensity = 1.0f;
+    float rotation = 0.0f;  ///< Degrees about +Y.
 };
 
 /// How far a directional light's point is placed along its reverse direction: far enough
@@ -106,10 +116,27 @@ public:
     /// Bounds of everything bounded, lights included.
     const Aabb& sceneBounds() const { return sceneBounds_; }
 
+    /// What an escaped ray along unit `dir` returns: the environment (filtered over a cone of
+    /// full angle `spread`) times its intensity, else the background colour.
+    Color environmentColor(const Vec3& dir, float spread) const;
+    const CompiledEnvironment& environment() const { return environment_; }
+    /// True when some material has a checker or an image: only then does shading look
+    /// patterns up (flat-colour scenes take the tables' colours, as before patterns).
+    bool hasPatterns() const { return !patterns_->empty(); }
+    /// Where patterned materials are looked up, by engine slot (empty without patterns).
+    const SurfacePatterns& patterns() const { return *patterns_; }
+    /// Images that could not be opened (textures, the environment), one message each naming
+    /// its scene key and the file; they render as the "missing" pattern.
+    const std::vector<std::string>& problems() const { return problems_; }
+
 private:
     CompiledScene() = default;
     void computeEpsilon();
     SceneGeometry geometry() const;
+    /// Material table (built-in grey first) and environment of `doc`, images opened.
+    void compileLooks(const SceneDocument& doc);
+    /// patterns_ for every primitive and plane whose material has a pattern.
+    void compilePatterns(const SceneDocument& doc);
 
     CameraModel camera_;
     RenderSettings settings_;
@@ -120,6 +147,9 @@ private:
     std::shared_ptr<const RayEngine> engine_;
     float epsilon_ = 1e-4f;
     Aabb sceneBounds_;
+    CompiledEnvironment environment_;
+    std::shared_ptr<const SurfacePatterns> patterns_ = std::make_shared<SurfacePatterns>();
+    std::vector<std::string> problems_;
 };
 
 }  // namespace rs

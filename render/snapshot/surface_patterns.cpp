@@ -1,0 +1,103 @@
+// Pattern surfaces and the colour of a checker or an image at a hit.
+#include "snapshot/surface_patterns.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "texture/checker.h"
+#include "texture/shape_uv.h"
+
+namespace rs {
+
+namespace {
+
+/// The surface for a shape in world space already (planes: the document keeps them so).
+PatternSurface identitySurface(PatternSurface::Shape shape) {
+    PatternSurface s;
+    s.shape = shape;
+    return s;
+}
+
+/// Half-widths along the object's axes of the box that holds the footprint's ellipse.
+Vec3 boxHalfWidths(const Vec3& a1, const Vec3& a2) {
+    return glm::sqrt(a1 * a1 + a2 * a2);
+}
+
+}  // namespace
+
+PatternSurface SurfacePatterns::surfaceOf(const Object& o) {
+    PatternSurface s;
+    if (const auto* plane = std::get_if<PlaneGeometry>(&o.geometry)) {
+        s = identitySurface(PatternSurface::Shape::Plane);
+        s.a = plane->point;
+        s.b = glm::normalize(plane->normal);
+        return s;
+    }
+    const Mat4 worldFromObject = o.transform.matrix();
+    s.objectFromWorld = glm::inverse(worldFromObject);
+    s.dirToObject = Mat3(s.objectFromWorld);
+    s.normalToObject = glm::transpose(Mat3(worldFromObject));
+    if (const auto* sphere = std::get_if<SphereGeometry>(&o.geometry)) {
+        s.shape = PatternSurface::Shape::Sphere;
+        s.a = sphere->center;
+        s.r = sphere->radius;
+    } else if (const auto* rect = std::get_if<RectangleGeometry>(&o.geometry)) {
+        s.shape = PatternSurface::Shape::Rectangle;
+        s.a = rect->center, s.b = rect->u, s.c = rect->v;
+    } else if (const auto* box = std::get_if<BoxGeometry>(&o.geometry)) {
+        s.shape = PatternSurface::Shape::Box;
+        s.a = box->min, s.b = box->max;
+    } else {
+        s.shape = PatternSurface::Shape::Mesh;
+    }
+    return s;
+}
+
+void SurfacePatterns::resize(std::size_t primitives, std::size_t planes) {
+    primitives_.assign(primitives, PatternSurface{});
+    planes_.assign(planes, identitySurface(PatternSurface::Shape::Plane));
+}
+
+const PatternSurface& SurfacePatterns::at(uint32_t slot) const {
+    return (slot & kPlaneSlot) ? planes_[slot & ~kPlaneSlot] : primitives_[slot];
+}
+
+Color patternColor(const MaterialPattern& pattern, const PatternSurface& surface, const Vec3& p,
+                   const Vec3& n, const Footprint& footprint) {
+    const bool world = surface.shape == PatternSurface::Shape::Plane;
+    const Vec3 po = world ? p : Vec3(surface.objectFromWorld * glm::vec4(p, 1.0f));
+    const Vec3 a1 = world ? footprint.a1 : surface.dirToObject * footprint.a1;
+    const Vec3 a2 = world ? footprint.a2 : surface.dirToObject * footprint.a2;
+    if (pattern.kind == MaterialPattern::Kind::Checker) {
+        const float odd = checkerOddFraction(po, boxHalfWidths(a1, a2), pattern.checkerScale);
+        return pattern.even + (pattern.odd - pattern.even) * odd;
+    }
+    ShapeUV uv{0.0f, 0.0f, Vec3(0.0f), Vec3(0.0f)};
+    switch (surface.shape) {
+        case PatternSurface::Shape::Sphere:
+            uv = sphereUV(po, surface.a, surface.r);
+            break;
+        case PatternSurface::Shape::Plane:
+            uv = planeUV(po, surface.a, surface.b);
+            break;
+        case PatternSurface::Shape::Rectangle:
+            uv = rectangleUV(po, surface.a, surface.b, surface.c);
+            break;
+        case PatternSurface::Shape::Box:
+            uv = boxUV(po, glm::normalize(surface.normalToObject * n), surface.a, surface.b);
+            break;
+        case PatternSurface::Shape::Mesh:  // The file's UVs are not read yet: uv (0, 0).
+            break;
+    }
+    // Texture coordinates (s, t) with t = 0 the image's top row; a pixel's derivatives are
+    // the full footprint (twice its half-axes).
+    const float su = pattern.scaleU, sv = pattern.scaleV;
+    const float s = uv.u * su + pattern.offsetU;
+    const float t = 1.0f - (uv.v * sv + pattern.offsetV);
+    const float dsdx = 2.0f * glm::dot(uv.dudp, a1) * su, dtdx = -2.0f * glm::dot(uv.dvdp, a1) * sv;
+    const float dsdy = 2.0f * glm::dot(uv.dudp, a2) * su, dtdy = -2.0f * glm::dot(uv.dvdp, a2) * sv;
+    if (!pattern.texture) return missingTexture(s, t);
+    return TextureStore::shared().lookup(pattern.texture, s, t, dsdx, dtdx, dsdy, dtdy);
+}
+
+}  // namespace rs
