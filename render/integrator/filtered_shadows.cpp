@@ -1,6 +1,7 @@
 // Shadows through glass (scenes/FORMAT.md "Shadows"): a shadow ray the engine reports
 // blocked walks on by closest hits, keeping transparency x colour at each transparent
-// surface, and what it kept is added to the light's term.
+// surface, and what it kept is added to the light's term. Also the one place a surface's colour
+// at a point is decided (its checker or image, else its flat colour).
 #include "integrator/trace_kernel.h"
 #include "integrator/trace_workspace.h"
 
@@ -8,8 +9,8 @@ namespace rs {
 
 Color TraceKernel::surfaceColor(const CompiledMaterial& m, uint32_t slot, const Vec3& p,
                                 const Vec3& n, const Footprint& footprint) const {
-    (void)slot, (void)p, (void)n, (void)footprint;
-    return m.color;
+    if (m.pattern.kind == MaterialPattern::Kind::None) return m.color;
+    return patternColor(m.pattern, scene_.patterns().at(slot), p, n, footprint);
 }
 
 SurfaceTerms<float> TraceKernel::recordTerms(const ShadingRecord& r) const {

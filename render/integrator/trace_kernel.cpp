@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstring>
 #include <optional>
+#include <type_traits>
 
 #include "core/scratch_arena.h"
 #include "integrator/centre_shadows.h"
@@ -127,7 +128,10 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
     counters.rays += n;
     const RenderSettings& settings = scene_.settings();
     LevelPoints& pts = ws.points;
-    pts.reserve(n, AsDiffuse);
+    // Patterns and the environment are looked up only in scenes that have them: a flat-colour
+    // scene takes the per-material tables and the background, as it always did.
+    const bool patterns = scene_.hasPatterns(), environment = scene_.environment().present;
+    pts.reserve(n, AsDiffuse, patterns);
     ShadingPoints& sp = pts.shading;
     // Where each hit lies and which way it faces, four rays at a time into the points'
     // arrays at the ray's index; what its material makes of it, hit by hit, with the other
@@ -152,7 +156,9 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         const float weight = weights[i];
         const bool found = slots[i] != kNoSlot;
         if (!found) {
-            out.color[owner] += weight * settings.background;
+            const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
+            out.color[owner] +=
+                weight * (environment ? scene_.environmentColor(d, spread_) : settings.background);
             continue;
         }
         uint32_t materialIndex;
@@ -222,6 +228,34 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
     }
     sp.count = count;
     if (count == 0) return;
+    if (patterns) {
+        // Patterned points: the pattern's colour there, filtered over the cone's footprint,
+        // in place of the material's colour in every term (scenes/FORMAT.md "color"); every
+        // point's ambient terms, which the local sums below then take point by point.
+        for (std::size_t j = 0; j < count; ++j) {
+            const uint32_t mi = pointMaterial[j];
+            const CompiledMaterial& m = materials[mi];
+            if (m.pattern.kind == MaterialPattern::Kind::None) {
+                pts.ambient[j] = ambients_[mi];
+                if (AsDiffuse) pts.lambertAmbient[j] = lambertAmbients_[mi];
+                continue;
+            }
+            const std::size_t i = pointRay[j];
+            const Vec3 p(sp.px[j], sp.py[j], sp.pz[j]), d(level.dx[i], level.dy[i], level.dz[i]);
+            const Vec3 normal(hits.nx[i], hits.ny[i], hits.nz[i]);
+            const float width = level.cone[i] + hits.t[i] * spread_;
+            const Color c = surfaceColor(m, slots[i], p, normal, footprintAt(d, normal, width));
+            const Color diffuseColor = m.diffuse * c;
+            pts.surface.r[j] = diffuseColor.x;
+            pts.surface.g[j] = diffuseColor.y;
+            pts.surface.b[j] = diffuseColor.z;
+            pts.ambient[j] = settings.ambient * c * m.diffuse;
+            if (AsDiffuse) {
+                pts.lambert.r[j] = c.x, pts.lambert.g[j] = c.y, pts.lambert.b[j] = c.z;
+                pts.lambertAmbient[j] = settings.ambient * c;
+            }
+        }
+    }
 
     // The local terms, light by light over as many points as fit one shadow batch.
     const bool deferred = options_.shadows == ShadowQuality::Deferred;
@@ -326,31 +360,44 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         }
 
         const float *sumR = ws.sums.r.data(), *sumG = ws.sums.g.data(), *sumB = ws.sums.b.data();
-        const Color* ambients = ambients_.data();
         Color* color = out.color;
         std::optional<PerRayAppender<ShadingRecord>> records;
         if (Bookkeeping && deferred && out.records) records.emplace(out.records);
-        for (std::size_t j = first; j < end; ++j) {
-            const uint32_t mi = pointMaterial[j], owner = pointOwner[j];
-            const float weight = pointWeight[j], localWeight = materials[mi].localWeight;
-            if (localWeight > 0.0f) {
-                const Color direct(sumR[j], sumG[j], sumB[j]);
-                color[owner] += weight * (localWeight * (ambients[mi] + direct));
-                // Shown unshadowed while moving; the record lets the shadows be added later.
-                if (Bookkeeping && records)
-                    records->append(
-                        owner,
-                        ShadingRecord{Vec3(sp.px[j], sp.py[j], sp.pz[j]),
-                                      Vec3(sp.nx[j], sp.ny[j], sp.nz[j]),
-                                      Vec3(sp.vx[j], sp.vy[j], sp.vz[j]), weight * localWeight,
-                                      Color(pts.surface.r[j], pts.surface.g[j], pts.surface.b[j]),
-                                      mi, pts.seed[j]});
+        // Ambient terms per material, or per point when the scene has patterns: a loop for
+        // each, so flat-colour scenes run the loop they always did.
+        const auto addLocal = [&](auto patterned) {
+            const Color* ambients = patterned ? pts.ambient.data() : ambients_.data();
+            const Color* lambertAmbients =
+                patterned ? pts.lambertAmbient.data() : lambertAmbients_.data();
+            for (std::size_t j = first; j < end; ++j) {
+                const uint32_t mi = pointMaterial[j], owner = pointOwner[j];
+                const std::size_t a = patterned ? j : mi;
+                const float weight = pointWeight[j], localWeight = materials[mi].localWeight;
+                if (localWeight > 0.0f) {
+                    const Color direct(sumR[j], sumG[j], sumB[j]);
+                    color[owner] += weight * (localWeight * (ambients[a] + direct));
+                    // Shown unshadowed while moving; the record lets the shadows be added
+                    // later.
+                    if (Bookkeeping && records)
+                        records->append(
+                            owner, ShadingRecord{
+                                       Vec3(sp.px[j], sp.py[j], sp.pz[j]),
+                                       Vec3(sp.nx[j], sp.ny[j], sp.nz[j]),
+                                       Vec3(sp.vx[j], sp.vy[j], sp.vz[j]), weight * localWeight,
+                                       Color(pts.surface.r[j], pts.surface.g[j], pts.surface.b[j]),
+                                       mi, pts.seed[j]});
+                }
+                if (AsDiffuse && pts.asDiffuse[j] > 0.0f) {
+                    const Color direct(ws.lambertSums.r[j], ws.lambertSums.g[j],
+                                       ws.lambertSums.b[j]);
+                    color[owner] += weight * (pts.asDiffuse[j] * (lambertAmbients[a] + direct));
+                }
             }
-            if (AsDiffuse && pts.asDiffuse[j] > 0.0f) {
-                const Color direct(ws.lambertSums.r[j], ws.lambertSums.g[j], ws.lambertSums.b[j]);
-                color[owner] += weight * (pts.asDiffuse[j] * (lambertAmbients_[mi] + direct));
-            }
-        }
+        };
+        if (patterns)
+            addLocal(std::true_type{});
+        else
+            addLocal(std::false_type{});
     }
 }
 

@@ -18,14 +18,18 @@ namespace rs {
 struct LevelPoints {
     ShadingPoints shading;           ///< Position, faced normal, direction to the viewer.
     SurfaceArrays surface, lambert;  ///< Their materials' terms, and as plain Lambert.
+    /// Their ambient terms, likewise: written only when the scene has patterns (a pattern's
+    /// colour differs point by point); flat colours take the kernel's per-material table.
+    ScratchVector<Color> ambient, lambertAmbient;
     ScratchVector<uint32_t> material, seed, owner;
     ScratchVector<float> weight;     ///< Accumulated weight of the ray that hit there.
     ScratchVector<float> asDiffuse;  ///< Mirror/glass share shown as Lambert while moving.
     ScratchVector<uint32_t> ray;     ///< The level's ray whose hit each point is.
     ScratchVector<uint8_t> inside;   ///< Per ray of the level: whether its normal was turned.
 
-    /// Room for n points; none written yet (count() is 0 until finish()).
-    void reserve(std::size_t n, bool lamberts) {
+    /// Room for n points; none written yet (count() is 0 until finish()). `patterns`: room
+    /// for the per-point ambient terms too.
+    void reserve(std::size_t n, bool lamberts, bool patterns) {
         shading.resize(n);
         surface.resize(n);
         if (lamberts) lambert.resize(n);
@@ -33,6 +37,7 @@ struct LevelPoints {
             for (auto* v : {&material, &seed, &owner, &ray}) v->resize(n);
         if (weight.size() < n) weight.resize(n), asDiffuse.resize(n);
         if (inside.size() < n) inside.resize(n);
+        if (patterns && ambient.size() < n) ambient.resize(n), lambertAmbient.resize(n);
     }
     std::size_t count() const { return shading.count; }
 };
