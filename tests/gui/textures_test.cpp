@@ -27,6 +27,7 @@
 #include "color_pattern_editor.h"
 #include "gui_test_support.h"
 #include "image/image_io.h"
+#include "io/scene_io.h"
 #include "preferences.h"
 #include "property_panel.h"
 #include "scene/parameters.h"
@@ -256,6 +257,9 @@ void TexturesTest::imageMode_ChosenFile_Thumbnail_AndRepeatReachTheDocument() {
     QVERIFY(texture);
     QCOMPARE(QString::fromStdString(texture->image.file), path);
     QCOMPARE(QString::fromStdString(texture->image.resolvedPath), path);
+    // Saved beside the image, the scene names it relative to its own folder.
+    const std::string saved = serializeScene(doc(), dir_.path().toStdString());
+    QVERIFY2(saved.find("\"texture\": \"redgreen.png\"") != std::string::npos, saved.c_str());
     QCOMPARE(texture->scaleU, 1.0f);  // FORMAT.md: scale [1, 1], offset [0, 0] by default.
     QCOMPARE(texture->offsetV, 0.0f);
 
