@@ -12,6 +12,7 @@
 
 #include "closed_form_support.h"
 #include "integrator/whitted.h"
+#include "session_test_support.h"
 #include "test_scenes.h"
 
 namespace rs {
@@ -340,6 +341,39 @@ TEST_F(PatternsTest, MissingEnvironmentIsAProblem_AndRendersTheMissingPattern) {
     EXPECT_EQ(magenta + black, 41);  // Never the background, never a crash.
     EXPECT_GT(magenta, 0);
     EXPECT_GT(black, 0);
+}
+
+// --- Through the interactive session -------------------------------------------------------
+
+TEST_F(PatternsTest, DraggedCheckeredBallUnderTheSkyEndsAsAFullRender) {
+    // The session refits the snapshot as the ball moves: its checker must move with it, and
+    // what escapes must stay the sky, as a render from scratch of the final document says.
+    SceneDocument doc = test::smallRoom(64, 48);
+    doc.environment.image.file =
+        twoColumns("sky.exr", Color(0.25f, 0.5f, 0.75f), Color(0.75f, 0.125f, 0.5f));
+    doc.environment.rotation = 30.0f;
+    for (Material& m : doc.materials)
+        if (m.reflectivity == 0.0f && m.transparency == 0.0f)
+            m.pattern = CheckerPattern{m.color, Color(0.1f, 0.2f, 0.9f), 0.3f};
+    addChecker(doc, "ball checker", Color(0.9f, 0.8f, 0.1f), Color(0.8f, 0.1f, 0.1f), 0.2f);
+    const ObjectId ball = addSphere(doc, "ball", Vec3(-0.8f, -1.2f, -3.5f), 0.5f, "ball checker");
+    SceneDocument noSky = doc;
+    noSky.environment = Environment{};
+    ASSERT_NE(renderImage(CompiledScene(doc)).image.pixels,
+              renderImage(CompiledScene(noSky)).image.pixels)
+        << "the camera sees the sky";
+    RenderSession session(2);
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(std::chrono::seconds(60)));
+    EXPECT_LE(test::maxDiffToFullRender(session, doc), 1e-5f) << "before the drag";
+    session.beginInteraction(ball);
+    for (int step = 1; step <= 4; ++step) {
+        doc.findObject(ball)->transform.translate = Vec3(0.13f * float(step), 0.05f, 0.0f);
+        session.update(doc);
+    }
+    session.endInteraction();
+    ASSERT_TRUE(session.waitUntilComplete(std::chrono::seconds(60)));
+    EXPECT_LE(test::maxDiffToFullRender(session, doc), 1e-5f) << "after the drag";
 }
 
 }  // namespace
