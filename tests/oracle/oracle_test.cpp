@@ -17,10 +17,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "image/image_io.h"
 #include "integrator/renderer.h"
@@ -42,6 +44,10 @@ struct OracleCase {
     int edgePixels;     ///< pixels allowed to need that neighbourhood
     int shadowSamples;  ///< override of render.shadow_samples for both renderers; -1: none
     std::string why;    ///< what the bounds allow for
+    /// Camera samples a pixel for both (a perfect square). Above 1, POV-Ray renders at
+    /// sqrt(samples) times the size, one ray through each centre, and its pixels are averaged
+    /// in blocks: the centres of our regular sub-grid exactly.
+    int samples = 1;
 };
 
 std::string feature(const char* name) {
@@ -50,6 +56,10 @@ std::string feature(const char* name) {
 std::string bundled(const char* name) {
     return std::string(RAYSTUDIO_SCENES_DIR "/") + name + ".scene.json";
 }
+
+constexpr double kV2Mean = 3.0 / 255.0;
+constexpr float kV2Pixel = 0.35f;
+constexpr int kV2Edges = 400;
 
 // Half-float rounding of POV-Ray's output is below 1e-3 for values up to 2; 0.01 is 2.5 steps
 // of an 8-bit display value. The edge counts are the measured ones plus a small margin.
@@ -88,6 +98,19 @@ const std::vector<OracleCase>& cases() {
          "0.07, worst 0.059)"},
         {"soft_shadows", bundled("soft-shadows"), 5e-3, 0.04f, 20, 256,
          "as soft_shadow; the bundled scene's 16 samples raised to 256 for both"},
+        // Format version 2, at 16 samples a pixel: a mean of 3/255 on linear values. Our checker
+        // and textures are filtered by the ray's footprint, POV-Ray's point-sampled: they
+        // differ where cells are smaller than a sample (the far floor).
+        {"classic", bundled("classic"), kV2Mean, kV2Pixel, kV2Edges, -1,
+         "sky, checker floor, glass and mirror balls, sun light, filtered shadows", 16},
+        {"classic_spot", feature("classic-spot"), kV2Mean, kV2Pixel, kV2Edges, -1,
+         "spot light (tightness 0), tinted glass's filtered shadow, turned sky", 16},
+        {"classic_sun", feature("classic-sun"), kV2Mean, kV2Pixel, kV2Edges, -1,
+         "low sun, brighter turned sky, checker of 0.75 on a floor, moved mirror ball", 16},
+        {"classic_opaque", feature("classic-opaque"), kV2Mean, kV2Pixel, kV2Edges, -1,
+         "render.opaque_shadows: the glass casts version 1's black shadow", 16},
+        {"textures", feature("textures"), kV2Mean, kV2Pixel, kV2Edges, -1,
+         "an sRGB PNG through sphere, rectangle and plane UVs, scaled and offset", 16},
     };
     return all;
 }
@@ -138,6 +161,9 @@ std::string shellQuoted(const fs::path& p) {
 
 /// POV-Ray's render of `scenePath`'s twin, or an error message.
 bool renderPovray(const OracleCase& c, ImageRgb& image, std::string& error) {
+    int n = 1;
+    while ((n + 1) * (n + 1) <= c.samples) ++n;
+    const int width = kWidth * n, height = kHeight * n;
     const fs::path work = fs::path(RAYSTUDIO_ORACLE_WORK) / c.name;
     fs::create_directories(work);
     const fs::path pov = work / "twin.pov", exr = work / "povray.exr", log = work / "povray.log";
@@ -149,8 +175,8 @@ bool renderPovray(const OracleCase& c, ImageRgb& image, std::string& error) {
         error = "scene_to_pov.py failed: " + convert;
     } else {
         fs::remove(exr);
-        const std::string render = "'" RAYSTUDIO_POVRAY "' +W" + std::to_string(kWidth) + " +H" +
-                                   std::to_string(kHeight) + " -D -A +WT1 +FE +O" +
+        const std::string render = "'" RAYSTUDIO_POVRAY "' +W" + std::to_string(width) + " +H" +
+                                   std::to_string(height) + " -D -A +WT1 +FE +O" +
                                    shellQuoted(exr) + " " + shellQuoted(pov) + " >" +
                                    shellQuoted(log) + " 2>&1";
         if (std::system(render.c_str()) != 0) error = "povray failed: " + render;
@@ -162,7 +188,53 @@ bool renderPovray(const OracleCase& c, ImageRgb& image, std::string& error) {
         error += "\n" + text.str();
         return false;
     }
-    return readImage(exr.string(), image, error);
+    ImageRgb full;
+    if (!readImage(exr.string(), full, error)) return false;
+    if (n == 1) {
+        image = full;
+        return true;
+    }
+    if (full.width != width || full.height != height) {
+        error = "POV-Ray's image is " + std::to_string(full.width) + "x" +
+                std::to_string(full.height) + ", not " + std::to_string(width) + "x" +
+                std::to_string(height);
+        return false;
+    }
+    image = ImageRgb(kWidth, kHeight);
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            Color sum(0.0f);
+            for (int dy = 0; dy < n; ++dy)
+                for (int dx = 0; dx < n; ++dx) sum += full.at(x * n + dx, y * n + dy);
+            image.at(x, y) = sum / float(n * n);
+        }
+    return true;
+}
+
+/// Mean and standard deviation of a picture's luminance (Rec. 709 weights).
+std::pair<double, double> lumaStats(const ImageRgb& image) {
+    double sum = 0.0, squares = 0.0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const Color c = image.at(x, y);
+            const double l = 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+            sum += l;
+            squares += l * l;
+        }
+    const double count = double(image.width) * double(image.height);
+    const double mean = sum / count;
+    return {mean, std::sqrt(std::max(0.0, squares / count - mean * mean))};
+}
+
+/// Mean |a - b| over the rows [y0, y1) and all channels.
+double meanDifference(const ImageRgb& a, const ImageRgb& b, int y0, int y1) {
+    double sum = 0.0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            const Color d = glm::abs(a.at(x, y) - b.at(x, y));
+            sum += double(d.x + d.y + d.z) / 3.0;
+        }
+    return sum / (double(a.width) * double(y1 - y0));
 }
 
 SceneDocument oracleDocument(const OracleCase& c) {
@@ -171,7 +243,7 @@ SceneDocument oracleDocument(const OracleCase& c) {
     SceneDocument doc = loaded.document;
     doc.render.width = kWidth;
     doc.render.height = kHeight;
-    doc.render.supersampling = 1;  // POV-Ray renders with -A: one ray through each centre
+    doc.render.supersampling = c.samples;  // POV-Ray: -A, one ray through each (sub)centre
     doc.render.adaptiveSupersampling = false;
     if (c.shadowSamples >= 0) doc.render.shadowSamples = c.shadowSamples;
     return doc;
@@ -196,10 +268,24 @@ TEST_P(Oracle, MatchesPovray) {
     ASSERT_TRUE(renderPovray(c, pov, error)) << error;
     ASSERT_EQ(pov.width, kWidth);
     ASSERT_EQ(pov.height, kHeight);
+    if (c.samples > 1) {
+        // Not trivially black, blown out or uniform: a twin that lost its objects, its lights
+        // or its sky must not pass by agreeing on nothing.
+        const auto [mean, spread] = lumaStats(pov);
+        EXPECT_GE(mean, 0.05) << c.name << ": POV-Ray's picture is nearly black";
+        EXPECT_LE(mean, 2.0) << c.name << ": POV-Ray's picture is blown out";
+        EXPECT_GE(spread, 0.05) << c.name << ": POV-Ray's picture is nearly uniform";
+    }
     const SceneDocument doc = oracleDocument(c);
     for (const EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
         RenderOptions options;
         const ImageRgb ours = renderImage(CompiledScene(doc, nullptr, engine), options).image;
+        if (c.samples > 1) {
+            const auto [mean, spread] = lumaStats(ours);
+            EXPECT_GE(mean, 0.05) << c.name << ": our picture is nearly black";
+            EXPECT_LE(mean, 2.0) << c.name << ": our picture is blown out";
+            EXPECT_GE(spread, 0.05) << c.name << ": our picture is nearly uniform";
+        }
         const Comparison d = compare(ours, pov, c.pixel);
         // Kept next to POV-Ray's render for a look at a failure (oiiotool --diff).
         const fs::path mine = fs::path(RAYSTUDIO_ORACLE_WORK) / c.name /
@@ -288,6 +374,68 @@ TEST(OracleTolerance, SlightlyWrongTerms_Fail) {
             if (o.name == "chrome ball") o.material = "chalk";
         EXPECT_FALSE(passes(c, doc)) << "the chrome ball made matte passes";
     }
+}
+
+// The version-2 terms gone slightly wrong fail too.
+TEST(OracleTolerance, SlightlyWrongVersion2Terms_Fail) {
+    {
+        const OracleCase& c = findCase("classic");
+        SceneDocument doc = oracleDocument(c);
+        EXPECT_TRUE(passes(c, doc));
+        doc.environment.intensity = 1.15f;
+        EXPECT_FALSE(passes(c, doc)) << "a 15 % brighter sky passes";
+    }
+    {
+        const OracleCase& c = findCase("classic");
+        SceneDocument doc = oracleDocument(c);
+        std::get<CheckerPattern>(material(doc, "checker floor").pattern).scale = 0.9f;
+        EXPECT_FALSE(passes(c, doc)) << "checker cells of 0.9 for 1 pass";
+    }
+    {
+        const OracleCase& c = findCase("classic_opaque");
+        SceneDocument doc = oracleDocument(c);
+        doc.render.opaqueShadows = false;
+        EXPECT_FALSE(passes(c, doc)) << "a filtered shadow for an opaque one passes";
+    }
+    {
+        const OracleCase& c = findCase("classic_spot");
+        SceneDocument doc = oracleDocument(c);
+        doc.lights[0].coneFalloff = 34.0f;
+        EXPECT_FALSE(passes(c, doc)) << "a spot falloff of 34 degrees for 30 passes";
+    }
+    {
+        const OracleCase& c = findCase("textures");
+        SceneDocument doc = oracleDocument(c);
+        std::get<ImageTexture>(material(doc, "ball tiles").pattern).offsetU = 0.1f;
+        EXPECT_FALSE(passes(c, doc)) << "a ball texture turned by a tenth passes";
+    }
+}
+
+// The sky is seen: the classic scene's upper rows (above the horizon at 160 x 90) differ from
+// the same scene without its environment, in our render and in POV-Ray's, by far more than the
+// oracle's mean bound, so a renderer that ignores the environment fails here and in the
+// classic case above.
+TEST(OracleSky, ClassicSkyIsSeen) {
+    const OracleCase& c = findCase("classic");
+    OracleCase bare = c;
+    bare.name = "classic-nosky";
+    bare.scene = feature("classic-nosky");
+    const SceneDocument with = oracleDocument(c);
+    const SceneDocument without = oracleDocument(bare);
+    ASSERT_TRUE(with.environment.present());
+    ASSERT_FALSE(without.environment.present());
+    const int rows = 15;  // the horizon is below row 20 of 90 at the classic camera
+    const ImageRgb oursWith = renderImage(CompiledScene(with)).image;
+    const ImageRgb oursWithout = renderImage(CompiledScene(without)).image;
+    ImageRgb povWith, povWithout;
+    std::string error;
+    OracleCase own = c;
+    own.name += "-sky";
+    ASSERT_TRUE(renderPovray(own, povWith, error)) << error;
+    ASSERT_TRUE(renderPovray(bare, povWithout, error)) << error;
+    EXPECT_GE(meanDifference(povWith, povWithout, 0, rows), 0.1) << "POV-Ray's twin lost the sky";
+    EXPECT_GE(meanDifference(oursWith, oursWithout, 0, rows), 0.1) << "our render lost the sky";
+    EXPECT_LE(meanDifference(oursWith, povWith, 0, rows), kV2Mean) << "our sky is not POV-Ray's";
 }
 
 }  // namespace
