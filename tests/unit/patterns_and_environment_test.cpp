@@ -208,6 +208,67 @@ TEST(CheckerSurface, GlassShadowTakesTheCheckerColourWhereTheShadowRayCrossesIt)
     }
 }
 
+TEST(CheckerSurface, MirrorShownAsLambertWhileMovingTakesTheCellsColour) {
+    // The interactive policy's mirror-as-Lambert share (reflectivity r shaded as a Lambert
+    // surface of the colour there): local (1 - r) * (A c kd + I c kd) + r * (A c + I c).
+    const Color even(0.9f, 0.6f, 0.2f), odd(0.1f, 0.4f, 0.7f), ambient(0.1f, 0.05f, 0.1f);
+    const float kd = 0.5f, r = 0.6f, intensity = 1.25f;
+    SceneDocument doc;
+    doc.render.ambient = ambient;
+    addChecker(doc, "tiles", even, odd, 1.0f, r);
+    doc.materials.back().diffuse = kd;
+    addPlane(doc, "floor", Vec3(0), Vec3(0, 1, 0), "tiles");
+    TraceOptions moving = TraceOptions::fromSettings(doc.render);
+    moving.reflectionAsDiffuse = true;
+    for (const auto& [x, c] : {std::pair{0.5f, even}, std::pair{1.5f, odd}}) {
+        SceneDocument lit = doc;
+        addPointLight(lit, "above", Vec3(x, 4.0f, 0.5f), intensity);
+        const CompiledScene scene(lit);
+        const WhittedIntegrator integrator(scene, moving);
+        TraceCounters counters;
+        const Color got = integrator.traceCamera(down(x, 0.5f), 3u, counters);
+        const Color expected = (1.0f - r) * (ambient * c * kd + intensity * c * kd) +
+                               r * (ambient * c + intensity * c);
+        expectColorNear(got, expected, 1e-5f, "x = " + std::to_string(x));
+    }
+}
+
+TEST(CheckerSurface, DeferredShadowsResolveToTheFullTraceOnAPattern) {
+    // Shown unshadowed first, then each record's shadowed-minus-unshadowed added: the record
+    // must carry the cell's colour for the sum to be the full trace's.
+    const Color even(0.9f, 0.6f, 0.2f), odd(0.1f, 0.4f, 0.7f);
+    SceneDocument doc;
+    doc.render.ambient = Color(0.05f);
+    addChecker(doc, "tiles", even, odd, 1.0f);
+    addPlane(doc, "floor", Vec3(0), Vec3(0, 1, 0), "tiles");
+    addMaterial(doc, "stone", Color(0.5f), 1.0f);
+    addSphere(doc, "blocker", Vec3(0.5f, 2.0f, 0.5f), 0.4f, "stone");
+    addPointLight(doc, "above", Vec3(0.5f, 4.0f, 0.5f));
+    const CompiledScene scene(doc);
+    const WhittedIntegrator full(scene);
+    TraceOptions deferredOptions = TraceOptions::fromSettings(doc.render);
+    deferredOptions.shadows = ShadowQuality::Deferred;
+    const WhittedIntegrator deferred(scene, deferredOptions);
+    for (const auto& [x, c] : {std::pair{0.5f, even}, std::pair{1.5f, odd}}) {
+        TraceCounters counters;
+        const Color whole = full.traceCamera(down(x, 0.5f), 5u, counters);
+        ShadingRecord records[4];
+        RecordSink sink{records, 4};
+        Color sum = deferred.traceCamera(down(x, 0.5f), 5u, counters, nullptr, &sink);
+        ASSERT_FALSE(sink.overflow);
+        EXPECT_EQ(sink.count, 1);  // The floor point: the light's term was left to resolve.
+        for (int k = 0; k < sink.count; ++k) sum += deferred.resolveDeferred(records[k], counters);
+        expectColorNear(sum, whole, 1e-6f, "x = " + std::to_string(x));
+    }
+    // Under the blocker only the ambient term is left; beside it the light adds c.
+    TraceCounters counters;
+    expectColorNear(full.traceCamera(down(0.5f, 0.5f), 5u, counters), 0.05f * even, 1e-6f,
+                    "shadowed even cell");
+    expectColorNear(full.traceCamera(down(1.5f, 0.5f), 5u, counters),
+                    0.05f * odd + odd * (4.0f / std::sqrt(17.0f)),  // N.L = 4 / sqrt(17)
+                    1e-5f, "lit odd cell");
+}
+
 // --- Image textures -------------------------------------------------------------------------
 
 TEST_F(PatternsTest, SphereShowsTheImageWhereItsLongitudeSays_8BitIsDecodedFromSRGB) {
