@@ -137,10 +137,14 @@ struct MarkContext {
     float lightSlack = 0.0f;  ///< Rounding allowance of the light-facing test (scene scale).
 };
 
+/// How far (in cosine) outside a spot light's falloff cone a point must lie to be left alone:
+/// the cone test here and the integrator's round differently.
+constexpr float kSpotConeSlack = 1e-4f;
+
 /// Whether a changed light can add to pixel i: unless the pixel sees only one shading point
 /// (no mirror or glass in its tree, one sample) and every changed light sphere lies wholly
 /// below that point's horizon, where the integrator adds nothing (n . l <= 0 for every
-/// sample), the pixel is marked. Background pixels see no light.
+/// sample) or outside its spot cone, the pixel is marked. Background pixels see no light.
 bool lightMayChange(const MarkContext& c, std::size_t i) {
     const DeepFrame& f = c.frame;
     if (f.id[i] == kNoObject && f.sampleCount[i] == 0) return false;
@@ -154,8 +158,14 @@ bool lightMayChange(const MarkContext& c, std::size_t i) {
     const float facing = glm::dot(n, toEye);
     if (std::abs(facing) <= 1e-4f * glm::length(toEye)) return true;  // Grazing: either side.
     const Vec3 ns = facing > 0.0f ? n : -n;
-    for (const LightSphere& l : c.edit.lights)
-        if (glm::dot(ns, l.position - p) > -(l.radius + c.lightSlack)) return true;
+    for (const LightSphere& l : c.edit.lights) {
+        const Vec3 toPoint = p - l.position;
+        // Outside a spot light's falloff cone it adds nothing (spotFactor is 0 there).
+        if (l.spot &&
+            glm::dot(l.axis, toPoint) < (l.cosFalloff - kSpotConeSlack) * glm::length(toPoint))
+            continue;
+        if (glm::dot(ns, -toPoint) > -(l.radius + c.lightSlack)) return true;
+    }
     return false;
 }
 
@@ -204,16 +214,32 @@ bool treeMayCross(const MarkContext& c, std::size_t i, int tile) {
     return false;
 }
 
+/// Whether a ray of pixel i may have left the scene: its centre ray missed, it averages
+/// supersamples (any of which may have missed), or a secondary ray of its tree escaped.
+bool seesEnvironment(const DeepFrame& f, std::size_t i, int tile) {
+    if (f.id[i] == kNoObject || f.sampleCount[i] > 0) return true;
+    if (!(f.flags[i] & kTouchedSpecular)) return false;
+    if (f.flags[i] & kTreeUnknown) return true;
+    const auto& pool = f.tileSegments[std::size_t(tile)];
+    for (uint32_t k = 0; k < f.segmentCount[i]; ++k)
+        if (pool[f.segmentStart[i] + k].escapes) return true;
+    return false;
+}
+
 /// Which per-pixel tests a tile needs; all false: no pixel of the tile can be affected.
 struct TileTests {
     bool footprint = false, retint = false, primaryShadow = false, tree = false, light = false;
-    bool any() const { return footprint || retint || primaryShadow || tree || light; }
+    bool environment = false;
+    bool any() const {
+        return footprint || retint || primaryShadow || tree || light || environment;
+    }
 };
 
 TileTests tileTests(const MarkContext& c, const PixelRect& r, const TileSummary& t) {
     TileTests tests;
     tests.retint = !c.edit.retinted.empty();
     tests.light = !c.edit.lights.empty();
+    tests.environment = c.edit.environment;
     for (const PixelRect& f : c.footprints)
         if (f.x0 < r.x1 && r.x0 < f.x1 && f.y0 < r.y1 && r.y0 < f.y1) tests.footprint = true;
     // Each slab test is preceded by the division-free light-cone test of its points.
@@ -272,6 +298,7 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
         if (!c.edit.retinted.empty() || treeMayCross(c, i, tile)) return true;
     }
     if (tests.light && lightMayChange(c, i)) return true;
+    if (tests.environment && seesEnvironment(c.frame, i, tile)) return true;
     const glm::vec4 hb = c.frame.hitBound[i];
     if (tests.primaryShadow && hb.w >= 0.0f) {
         // Any segment from the hit points to any point of a light stays within
@@ -396,8 +423,9 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     c.lightSlack = 1e-4f * std::max(1.0f, glm::length(after.sceneBounds().extent()));
     if (scope == MarkScope::WithoutShadows) c.shadows = false;
     if (scope == MarkScope::ShadowsOnly) {
-        // Retints and light edits are never deferred.
-        if (!c.shadows || !edit.retinted.empty() || !edit.lights.empty()) return 0;
+        // Retints, light and environment edits are never deferred.
+        if (!c.shadows || !edit.retinted.empty() || !edit.lights.empty() || edit.environment)
+            return 0;
         c.segments = false;
     }
     c.regions = mergeOverlapping(edit.regions);

@@ -34,12 +34,11 @@ bool sameLight(const Light& a, const Light& b) {
     return false;
 }
 
-/// Where the light's rays come from: a directional light's point is kSunDistance away
-/// (CompiledLight), a spot light's cone lies within its point's reach.
+/// Where the light's rays come from, as the integrator sees it (a directional light's point
+/// is kSunDistance away), and a spot light's cone.
 LightSphere sphereOf(const Light& l) {
-    if (l.type == LightType::Directional)
-        return {-glm::normalize(l.direction) * kSunDistance, 0.0f};
-    return {l.position, l.type == LightType::Sphere ? l.radius : 0.0f};
+    const CompiledLight c = compileLight(l);
+    return {c.position, c.radius, c.spot, c.axis, c.cosFalloff};
 }
 
 /// The spheres of every light whose contribution may differ: changed lights (old and new), and
@@ -92,9 +91,11 @@ SceneUpdate updateScene(const SceneDocument& before,
     }
     edit.resized =
         before.render.width != after.render.width || before.render.height != after.render.height;
-    if (!(before.camera == after.camera) || !sameTracedSettings(before.render, after.render) ||
-        !(before.environment == after.environment))
+    if (!(before.camera == after.camera) || !sameTracedSettings(before.render, after.render))
         edit.everything = true;
+    // The environment is seen only by rays that leave the scene (it lights nothing).
+    const bool environmentChanged = !(before.environment == after.environment);
+    edit.environment = environmentChanged && !edit.everything;
     edit.lights = changedLights(before.lights, after.lights);
     edit.displayOnly = !edit.everything && (before.render.tonemap != after.render.tonemap ||
                                             before.render.exposure != after.render.exposure);
@@ -172,7 +173,8 @@ SceneUpdate updateScene(const SceneDocument& before,
         if (isPlane(*o) && o->visible) edit.everything = true;
     }
 
-    if (edit.everything || structural || materialListChanged || !edit.lights.empty()) {
+    if (edit.everything || structural || materialListChanged || !edit.lights.empty() ||
+        environmentChanged) {
         update.snapshot =
             std::make_shared<const CompiledScene>(after, beforeSnapshot.get(), engine);
     } else if (!moved.empty() || !edit.retinted.empty()) {

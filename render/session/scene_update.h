@@ -13,6 +13,11 @@ namespace rs {
 struct LightSphere {
     Vec3 position;
     float radius;
+    /// Spot lights: the cone outside which the light adds nothing (its axis and the cosine
+    /// of its falloff half-angle, as compileLight gives them).
+    bool spot = false;
+    Vec3 axis{0.0f, -1.0f, 0.0f};
+    float cosFalloff = -1.0f;
 };
 
 /// What an edit changed, in the terms dirty regions need.
@@ -25,11 +30,15 @@ struct SceneEdit {
     /// Old and new spheres of changed lights (moved, recoloured, added, removed); a pixel
     /// none of them can light at any of its shading points keeps its colour.
     std::vector<LightSphere> lights;
+    /// The environment changed (its image, intensity or rotation): pixels with a ray that
+    /// escaped the scene re-trace.
+    bool environment = false;
     ObjectId focus = kNoObject;  ///< An object the edit is about, for tile priority.
     bool refitted = false;       ///< The snapshot was refitted, not rebuilt.
     /// Anything to re-trace: marking can skip the edit otherwise.
     bool traced() const {
-        return everything || !regions.empty() || !retinted.empty() || !lights.empty();
+        return everything || environment || !regions.empty() || !retinted.empty() ||
+               !lights.empty();
     }
     bool any() const { return displayOnly || traced(); }
 };

@@ -35,24 +35,6 @@ Frame makeFrame(const Mat4& worldFromObject) {
     return f;
 }
 
-CompiledLight compileLight(const Light& l) {
-    CompiledLight c{l.position, l.type == LightType::Sphere ? l.radius : 0.0f,
-                    l.color * l.intensity, l.id};
-    if (l.type == LightType::Directional) {
-        c.position = -glm::normalize(l.direction) * kSunDistance;
-        c.sun = true;
-    } else if (l.type == LightType::Spot) {
-        c.spot = true;
-        const Vec3 axis = l.target - l.position;
-        c.axis = glm::length(axis) > 0.0f ? glm::normalize(axis) : Vec3(0.0f, -1.0f, 0.0f);
-        const float radians = float(M_PI) / 180.0f;
-        c.cosRadius = std::cos(std::clamp(l.coneRadius, 0.0f, 90.0f) * radians);
-        c.cosFalloff =
-            std::cos(std::clamp(std::max(l.coneFalloff, l.coneRadius), 0.0f, 90.0f) * radians);
-    }
-    return c;
-}
-
 uint32_t materialIndex(const SceneDocument& doc, const std::string& name) {
     for (std::size_t i = 0; i < doc.materials.size(); ++i)
         if (doc.materials[i].name == name) return uint32_t(i + 1);
@@ -136,6 +118,24 @@ std::shared_ptr<const std::vector<PlanePrimitive>> compilePlanes(const SceneDocu
 }
 
 }  // namespace
+
+CompiledLight compileLight(const Light& l) {
+    CompiledLight c{l.position, l.type == LightType::Sphere ? l.radius : 0.0f,
+                    l.color * l.intensity, l.id};
+    if (l.type == LightType::Directional) {
+        c.position = -glm::normalize(l.direction) * kSunDistance;
+        c.sun = true;
+    } else if (l.type == LightType::Spot) {
+        c.spot = true;
+        const Vec3 axis = l.target - l.position;
+        c.axis = glm::length(axis) > 0.0f ? glm::normalize(axis) : Vec3(0.0f, -1.0f, 0.0f);
+        const float radians = float(M_PI) / 180.0f;
+        c.cosRadius = std::cos(std::clamp(l.coneRadius, 0.0f, 90.0f) * radians);
+        c.cosFalloff =
+            std::cos(std::clamp(std::max(l.coneFalloff, l.coneRadius), 0.0f, 90.0f) * radians);
+    }
+    return c;
+}
 
 CompiledScene::CompiledScene(const SceneDocument& doc, const CompiledScene* previous,
                              EngineKind engine)

@@ -55,6 +55,11 @@ struct CompiledLight {
     float cosRadius = 1.0f;        ///< Spot lights: cos of the half-angle of full power.
 };
 
+/// A light as the integrator sees it: a sun becomes a point kSunDistance away, a spot light
+/// gets its axis and the cosines of its cone (clamped to [0, 90] degrees, falloff at least
+/// the radius). Dirty marking asks the same question of a light's old and new cones.
+CompiledLight compileLight(const Light& l);
+
 /// What a ray hit: where, the unit outward normal, material and the object's id.
 struct SurfaceHit {
     float t;

@@ -1,6 +1,7 @@
 // The session invariant over every kind of edit the designer can make: after random rotations,
 // scales, geometry parameters, smooth-normal toggles, exposure and tone map, render settings,
-// material edits and reassignments (besides moves and light edits), the refined frame equals a
+// material edits and reassignments, checkers and textures, the environment, spot and sun
+// lights (besides moves and point-light edits), the refined frame equals a
 // from-scratch render in colour, and a from-scratch session's frame in object id, depth and
 // normal, with both engines, on a scene of boxes, rectangles, a smooth mesh, scaled spheres
 // and a sphere light.
@@ -16,6 +17,7 @@ namespace rs {
 namespace {
 
 using namespace std::chrono_literals;
+const std::string kScenes = RAYSTUDIO_SCENES_DIR;
 
 SceneDocument invariantRoom() {
     SceneDocument doc = test::editRoom(64, 48);
@@ -95,7 +97,7 @@ Object& randomBounded(SceneDocument& doc, std::mt19937& rng) {
 void randomEdit(SceneDocument& doc, std::mt19937& rng, std::string& kind) {
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     Object& o = randomBounded(doc, rng);
-    switch (rng() % 9) {
+    switch (rng() % 14) {
         case 0:
             kind = "rotate " + o.name;
             o.transform.rotate += Vec3(25.0f * u(rng), 40.0f * u(rng), 15.0f * u(rng));
@@ -162,6 +164,70 @@ void randomEdit(SceneDocument& doc, std::mt19937& rng, std::string& kind) {
             kind = "reassign material of " + o.name;
             o.material = doc.materials[rng() % doc.materials.size()].name;
             break;
+        case 8:
+            kind = "checker on a material";
+            {
+                Material& m = doc.materials[rng() % doc.materials.size()];
+                CheckerPattern c;
+                c.even = Color(0.9f, 0.2f + 0.2f * u(rng), 0.1f);
+                c.odd = Color(0.1f, 0.2f, 0.8f);
+                c.scale = 0.3f + 0.2f * std::abs(u(rng));
+                m.pattern = c;
+            }
+            break;
+        case 9:
+            kind = "texture on a material";
+            {
+                Material& m = doc.materials[rng() % doc.materials.size()];
+                ImageTexture t;
+                t.image = {"textures/tiles.png", kScenes + "/textures/tiles.png"};
+                t.scaleU = 1.0f + std::abs(u(rng));
+                t.offsetV = 0.5f * u(rng);
+                m.pattern = rng() % 4 ? ColorPattern(t) : ColorPattern();
+            }
+            break;
+        case 10:
+            kind = "environment";
+            if (rng() % 4 == 0) {
+                doc.environment = Environment{};
+            } else {
+                doc.environment.image = {"textures/sky.hdr", kScenes + "/textures/sky.hdr"};
+                doc.environment.rotation = 180.0f * u(rng);
+                doc.environment.intensity = 1.0f + 0.5f * u(rng);
+            }
+            break;
+        case 11: {
+            kind = "spot light";
+            Light* spot = nullptr;
+            for (Light& l : doc.lights)
+                if (l.type == LightType::Spot) spot = &l;
+            if (!spot) {
+                Light l;
+                l.name = "spot";
+                l.type = LightType::Spot;
+                spot = doc.findLight(doc.addLight(l));
+            }
+            spot->position = Vec3(0.5f * u(rng), 2.5f, 0.5f * u(rng));
+            spot->target = Vec3(u(rng), 0.0f, -3.0f + u(rng));
+            spot->coneRadius = 10.0f + 5.0f * std::abs(u(rng));
+            spot->coneFalloff = spot->coneRadius + 10.0f * std::abs(u(rng));
+            break;
+        }
+        case 12: {
+            kind = "sun light";
+            Light* sun = nullptr;
+            for (Light& l : doc.lights)
+                if (l.type == LightType::Directional) sun = &l;
+            if (!sun) {
+                Light l;
+                l.name = "sun";
+                l.type = LightType::Directional;
+                l.intensity = 0.5f;
+                sun = doc.findLight(doc.addLight(l));
+            }
+            sun->direction = Vec3(0.5f * u(rng), -1.0f, 0.5f * u(rng));
+            break;
+        }
         default:
             kind = "move " + o.name;
             o.transform.translate += Vec3(0.3f * u(rng), 0.2f * u(rng), 0.3f * u(rng));
@@ -197,11 +263,11 @@ void runEdits(EngineKind engine, uint32_t seed) {
 }
 
 TEST(SessionInvariant, EveryEditKind_Embree_FrameEqualsFromScratch) {
-    for (uint32_t seed : {21u, 22u, 23u}) runEdits(EngineKind::Embree, seed);
+    for (uint32_t seed : {21u, 22u, 23u, 24u}) runEdits(EngineKind::Embree, seed);
 }
 
 TEST(SessionInvariant, EveryEditKind_Builtin_FrameEqualsFromScratch) {
-    for (uint32_t seed : {31u, 32u, 33u}) runEdits(EngineKind::Builtin, seed);
+    for (uint32_t seed : {31u, 32u, 33u, 34u}) runEdits(EngineKind::Builtin, seed);
 }
 
 }  // namespace
