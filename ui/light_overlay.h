@@ -2,7 +2,9 @@
 #pragma once
 
 #include <QColor>
+#include <QLineF>
 #include <QPointF>
+#include <QPolygonF>
 #include <vector>
 
 #include "scene/document.h"
@@ -12,12 +14,17 @@ class QPainter;
 
 namespace rs::ui {
 
-/// Where a light is drawn: a small disc for a point light, its projected sphere otherwise.
+/// Where a light is drawn: a small disc for a point light, its projected sphere for a sphere
+/// light; a spot adds the line to its target and its cone (rays along the falloff edge, circles
+/// at the radius and falloff angles at the target's distance); a sun (no position) adds
+/// parallel arrows along its direction from its anchor (Light::position).
 struct LightGlyph {
     ObjectId id = kNoObject;
     QPointF centre;
     float radius = 0.0f;  ///< Widget pixels.
     QColor color;
+    std::vector<QLineF> lines;     ///< Widget coordinates: axis, cone rays, arrows.
+    std::vector<QPolygonF> loops;  ///< Widget coordinates, closed: the cone's circles.
 };
 
 /// Glyphs of the document's lights in front of the view camera.

@@ -12,6 +12,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
+#include <algorithm>
 #include <tuple>
 
 #include "action_icons.h"
@@ -32,6 +33,7 @@
 #include "shortcuts_dialog.h"
 #include "user_confirmation.h"
 #include "viewport.h"
+#include "world_panel.h"
 
 namespace rs::ui {
 
@@ -124,11 +126,18 @@ void MainWindow::createActions() {
     addActions_.append(mesh);
     auto light = [this](const QString& text, LightType type, const char* icon) {
         auto* a = new QAction(actionIcon(nullptr, icon), text, this);
-        connect(a, &QAction::triggered, this, [this, type] { addLightAction(type); });
+        connect(a, &QAction::triggered, this, [this, type] {
+            if (type == LightType::Spot || type == LightType::Directional)
+                addAimedLightAction(type);
+            else
+                addLightAction(type);
+        });
         addActions_.append(a);
     };
     light(tr("Point light"), LightType::Point, "add-point-light");
     light(tr("Sphere light"), LightType::Sphere, "add-sphere-light");
+    light(tr("Spot light"), LightType::Spot, "add-spot-light");
+    light(tr("Sun light"), LightType::Directional, "add-sun-light");
     for (QAction* a : addActions_) a->setObjectName(QStringLiteral("add ") + a->text());
 
     // Placement (issue 11): new objects rest on the surface under the view centre, or with
@@ -159,6 +168,32 @@ void MainWindow::createDocks() {
     materialsDock->setObjectName(QStringLiteral("materialsDock"));
     materialsDock->setWidget(materials_);
     addDockWidget(Qt::RightDockWidgetArea, materialsDock);
+    world_ = new WorldPanel(editor_, this);
+    auto* worldDock = new QDockWidget(tr("World"), this);
+    worldDock->setObjectName(QStringLiteral("worldDock"));
+    worldDock->setWidget(world_);
+    addDockWidget(Qt::RightDockWidgetArea, worldDock);
+    tabifyDockWidget(materialsDock, worldDock);  // Beside the materials: the scene's looks.
+    materialsDock->raise();
+}
+
+void MainWindow::addAimedLightAction(LightType type) {
+    // A spot goes above the point the view looks at, aimed at it; a sun (no position) has
+    // its glyph drawn there.
+    SceneDocument doc = editor_->document();
+    const Placement place = placementAt(std::nullopt);
+    const ObjectId id = addLight(doc, type, place.point);
+    Light* l = doc.findLight(id);
+    if (type == LightType::Spot) {
+        const float len = glm::length(doc.camera.up);
+        const Vec3 up = len > 1e-6f ? doc.camera.up / len : Vec3(0.0f, 1.0f, 0.0f);
+        const float height = std::clamp(0.5f * place.distance, 1.0f, 5.0f);
+        l->target = place.point;
+        l->position = place.point + up * height;
+    }
+    const QString text = tr("Add %1").arg(QString::fromStdString(l->name));
+    editor_->edit(text, std::move(doc));
+    editor_->setSelection(id);
 }
 
 void MainWindow::createMenus() {

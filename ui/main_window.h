@@ -34,6 +34,7 @@ class SceneEditor;
 class SessionController;
 class SessionErrorRelay;
 class Viewport;
+class WorldPanel;
 
 /// Top-level window of RayStudio.
 class MainWindow : public QMainWindow {
@@ -87,6 +88,7 @@ public:
     OutlinerView* outliner() const { return outliner_; }
     PropertyPanel* propertyPanel() const { return properties_; }
     MaterialList* materialList() const { return materials_; }
+    WorldPanel* worldPanel() const { return world_; }
     RenderQueue* renderQueue() const { return renders_; }
     RenderWindow* renderWindow() const { return renderWindow_; }
     RenderStatus* renderStatus() const { return renderStatus_; }
@@ -128,6 +130,8 @@ private:
     void onSessionError(const QString& message);
     void addShapeAction(ShapeKind kind);
     void addLightAction(LightType type);
+    /// Add -> Spot light (above the point the view looks at, aimed at it) or Sun light.
+    void addAimedLightAction(LightType type);
     void deleteSelection();
     void duplicateSelection();
 
@@ -139,6 +143,7 @@ private:
     OutlinerView* outliner_ = nullptr;
     PropertyPanel* properties_ = nullptr;
     MaterialList* materials_ = nullptr;
+    WorldPanel* world_ = nullptr;
     RenderQueue* renders_ = nullptr;
     RenderWindow* renderWindow_ = nullptr;
     RenderStatus* renderStatus_ = nullptr;

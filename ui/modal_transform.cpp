@@ -205,6 +205,15 @@ QString ModalTransform::describe() const {
     else if (axis_ >= 0)
         s += QLatin1Char(' ') + QLatin1String(kAxisNames[axis_]);
     if (!typed_.isEmpty()) s += QLatin1Char(' ') + typed_;
+    // A sun light is everywhere at once: moving it moves only where its glyph is drawn.
+    if (kind_ != TransformKind::Rotate)
+        for (ObjectId id : ids_)
+            if (const Light* l = start_.findLight(id); l && l->type == LightType::Directional) {
+                s += QStringLiteral(
+                    "   (a sun light has no position: only its glyph moves; "
+                    "R turns its direction)");
+                break;
+            }
     return s + QStringLiteral(
                    "   (X Y Z lock, type a value, Ctrl snaps, Enter/click confirms, Esc cancels)");
 }

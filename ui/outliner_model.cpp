@@ -153,8 +153,18 @@ QVariant OutlinerModel::data(const QModelIndex& i, int role) const {
     const ObjectId id = idOf(i);
     if (const Light* l = doc.findLight(id)) {
         if (role == Qt::DisplayRole || role == Qt::EditRole) return QString::fromStdString(l->name);
-        if (role == Qt::ToolTipRole)
-            return l->type == LightType::Sphere ? tr("Sphere light") : tr("Point light");
+        if (role == Qt::ToolTipRole) {
+            switch (l->type) {
+                case LightType::Point:
+                    return tr("Point light");
+                case LightType::Sphere:
+                    return tr("Sphere light");
+                case LightType::Directional:
+                    return tr("Sun light");
+                case LightType::Spot:
+                    return tr("Spot light");
+            }
+        }
     } else if (const Object* o = doc.findObject(id)) {
         if (role == Qt::DisplayRole || role == Qt::EditRole) return QString::fromStdString(o->name);
         if (role == Qt::CheckStateRole) return o->visible ? Qt::Checked : Qt::Unchecked;

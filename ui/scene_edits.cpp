@@ -80,9 +80,13 @@ ObjectId addMesh(SceneDocument& doc, const std::string& file, std::shared_ptr<co
 ObjectId addLight(SceneDocument& doc, LightType type, const Vec3& at) {
     Light l;
     l.type = type;
-    l.name = uniqueName(doc, type == LightType::Sphere ? "sphere light" : "point light");
-    l.position = at;
+    static const char* const names[] = {"point light", "sphere light", "sun light", "spot light"};
+    l.name = uniqueName(doc, names[int(type)]);
+    l.position = at;  // A sun has no position: this is where its glyph is drawn.
     l.radius = 0.3f;
+    // A sun slanting steeply down (about 55 degrees); a spot aimed straight down.
+    if (type == LightType::Directional) l.direction = glm::normalize(Vec3(-1.0f, -2.0f, -1.0f));
+    if (type == LightType::Spot) l.target = at - Vec3(0.0f, 1.0f, 0.0f);
     return doc.addLight(std::move(l));
 }
 
@@ -99,6 +103,7 @@ ObjectId duplicate(SceneDocument& doc, ObjectId id) {
         Light copy = *l;
         copy.name = uniqueName(doc, l->name);
         copy.position += offset;
+        copy.target += offset;  // A spot keeps its aim.
         return doc.addLight(std::move(copy));
     }
     return kNoObject;
@@ -118,7 +123,9 @@ void moveBy(SceneDocument& doc, ObjectId id, const Vec3& delta) {
         else
             o->transform.translate += delta;
     } else if (Light* l = doc.findLight(id)) {
+        // A spot moves with its target, keeping its aim (as Blender's does).
         l->position += delta;
+        if (l->type == LightType::Spot) l->target += delta;
     }
 }
 

@@ -20,13 +20,15 @@ ObjectId addShape(SceneDocument& doc, ShapeKind kind, const Vec3& at);
 /// Adds a mesh object for already loaded data, its origin at `at`; returns its id.
 ObjectId addMesh(SceneDocument& doc, const std::string& file, std::shared_ptr<const MeshData> data,
                  const Vec3& at);
-/// Adds a point or sphere light at `at`; returns its id.
+/// Adds a light of `type` at `at` (a spot aimed straight down from it, a sun slanting
+/// down along (-1, -2, -1) with its glyph at `at`); returns its id.
 ObjectId addLight(SceneDocument& doc, LightType type, const Vec3& at);
 /// Duplicates object or light `id` (slightly offset); returns the copy's id or kNoObject.
 ObjectId duplicate(SceneDocument& doc, ObjectId id);
 /// Removes object or light `id`; false when there is none.
 bool remove(SceneDocument& doc, ObjectId id);
-/// Moves object or light `id` by `delta` (translate for shapes, point for planes).
+/// Moves object or light `id` by `delta` (translate for shapes, point for planes; a spot's
+/// target with its position).
 void moveBy(SceneDocument& doc, ObjectId id, const Vec3& delta);
 /// Replaces object or light `id` of `doc` with its state in `from` (nothing when either lacks it).
 void restoreEntity(SceneDocument& doc, const SceneDocument& from, ObjectId id);

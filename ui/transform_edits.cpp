@@ -97,7 +97,12 @@ void rotateAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3&
     const bool aboutZ = std::abs(axis.x) < 1e-6f && std::abs(axis.y) < 1e-6f;
     for (ObjectId id : ids) {
         if (Light* l = doc.findLight(id)) {
+            // A spot turns rigidly (its target about its own position when it is the pivot);
+            // a sun's direction turns, its glyph's anchor goes round the pivot.
             l->position = pivot + apply(turn, l->position - pivot);
+            if (l->type == LightType::Spot) l->target = pivot + apply(turn, l->target - pivot);
+            if (l->type == LightType::Directional)
+                l->direction = glm::normalize(apply(turn, l->direction));
             continue;
         }
         Object* o = doc.findObject(id);
@@ -124,7 +129,9 @@ void scaleAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3& 
     const Mat3 scale = axes * Mat3(glm::scale(Mat4(1.0f), factors)) * glm::transpose(axes);
     for (ObjectId id : ids) {
         if (Light* l = doc.findLight(id)) {
+            const Vec3 was = l->position;
             l->position = pivot + scale * (l->position - pivot);
+            if (l->type == LightType::Spot) l->target += l->position - was;  // Keeps its aim.
             if (l->type == LightType::Sphere)
                 l->radius *=
                     std::max({std::abs(factors.x), std::abs(factors.y), std::abs(factors.z)});

@@ -17,12 +17,13 @@ Aabb worldBounds(const SceneDocument& doc, ObjectId id);
 Vec3 pivotOf(const SceneDocument& doc, const std::vector<ObjectId>& ids);
 /// Moves every entity by `delta`.
 void translateAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3& delta);
-/// Rotates every entity by `degrees` about the line through `pivot` along unit `axis`.
+/// Rotates every entity by `degrees` about the line through `pivot` along unit `axis` (a
+/// spot's target with it, a sun's direction).
 void rotateAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3& pivot,
                const Vec3& axis, float degrees);
 /// Scales every entity about `pivot` by `factors` along the columns of the orthonormal
 /// `axes` (the world's, or the gizmo's local ones); sphere lights scale their radius by the
-/// largest factor; planes only move.
+/// largest factor; planes only move; a spot moves with its target (its cone unchanged).
 void scaleAll(SceneDocument& doc, const std::vector<ObjectId>& ids, const Vec3& pivot,
               const Vec3& factors, const Mat3& axes = Mat3(1.0f));
 /// Euler angles in degrees (X, then Y, then Z, as Transform::rotate) of rotation matrix `r`.

@@ -1,0 +1,60 @@
+// The World panel: the environment around the scene (its equirectangular image, intensity and
+// rotation) with a preview strip of the image, every change one undoable edit.
+#pragma once
+
+#include <QString>
+#include <QWidget>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "scene/parameters.h"
+
+class QLabel;
+class QPushButton;
+
+namespace rs::ui {
+
+class SceneEditor;
+
+/// Edits SceneDocument::environment. Without an image the background colour shows, and
+/// Intensity and Rotation (from ParamKind::Environment's descriptors) are disabled.
+class WorldPanel : public QWidget {
+    Q_OBJECT
+public:
+    /// Size of the preview strip's box; the image keeps its aspect inside it.
+    static constexpr int kStripWidth = 280;
+    static constexpr int kStripHeight = 90;
+
+    explicit WorldPanel(SceneEditor* editor, QWidget* parent = nullptr);
+
+    /// Choose...: asks for an image (object name "environmentFileDialog"), starting in the
+    /// folder images were last chosen in, and sets it; false when cancelled.
+    bool chooseImage();
+    /// Sets the environment's image to `path` (made absolute) in one undoable edit.
+    void setImageFile(const QString& path);
+    /// Remove: no environment image (the background colour shows), one undoable edit.
+    void removeImage();
+
+    /// The error shown instead of the strip (empty while the strip or nothing is shown).
+    QString previewError() const;
+    /// True while the strip shows an image.
+    bool hasPreview() const;
+
+private:
+    void applyParameter(const std::string& key, const ParamValue& value);
+    void refresh();
+    void showPreview(const std::string& path);
+
+    SceneEditor* editor_;
+    QLabel* file_;
+    QPushButton* remove_;
+    QLabel* strip_;
+    QLabel* error_;
+    std::vector<QWidget*> numberEditors_;
+    std::vector<std::function<void()>> refreshers_;
+    std::string shown_;  ///< The path the strip shows (or failed to read).
+    qint64 shownStamp_ = -1;
+};
+
+}  // namespace rs::ui
