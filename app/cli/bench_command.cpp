@@ -36,7 +36,7 @@ double median(std::vector<double> v) {
 int runBench(int argc, char** argv) {
     OptionSpec spec;
     spec.valued = {"--repeat", "--threads", "--width", "--height", "--min-weight", "--engine"};
-    spec.flags = {"--json"};
+    spec.flags = {"--json", "--baseline-only"};
     Arguments args(argc, argv, 2, spec);
     const EngineKind engine = engineOption(args);
     if (args.positional().size() != 1) throw UsageError{"expects exactly one scene file"};
@@ -60,7 +60,10 @@ int runBench(int argc, char** argv) {
     if (!json)
         std::printf("%-16s %6s %12s %14s   (%dx%d, median of %d)\n", "experiment", "value",
                     "median ms", "rays", doc.render.width, doc.render.height, repeat);
-    for (const Experiment& e : experiments) {
+    // --baseline-only: the scene as it is, nothing varied (for benchmarks comparing scenes).
+    const std::size_t count = args.has("--baseline-only") ? 1 : experiments.size();
+    for (std::size_t k = 0; k < count; ++k) {
+        const Experiment& e = experiments[k];
         for (int value : e.values) {
             SceneDocument variant = doc;
             e.apply(variant.render, value);

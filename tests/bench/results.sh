@@ -16,6 +16,7 @@ built, the load average before and after, and then
   headline   the reference room against POV-Ray 3.7    compare-povray.sh RUNS THREADS
              a 1M-triangle mesh against Embree alone   compare-embree.sh RUNS THREADS
              the designer in a window (Xvfb)           measure-designer.sh --json, RUNS times
+             checker + sky, 4k textures vs flat        looks-cost.sh RUNS THREADS
   full only  both ray engines on every scene           engine-table.sh 5 THREADS
              session frame against renderImage         session-frame.sh 15 THREADS
              the interaction policies                  policy-table.sh
@@ -26,7 +27,7 @@ built, the load average before and after, and then
   --full         7 runs each, the designer 3 times, and the four tables: 5-10 minutes
                  (the 1M-triangle and 100,000-sphere scenes are generated and loaded often)
   --threads N    render threads (default 2)
-  --skip LIST    comma-separated rows to leave out: povray, embree, designer
+  --skip LIST    comma-separated rows to leave out: povray, embree, designer, looks
                  (written as "not measured" in the file)
   --display N    the X display measure-designer.sh gives Xvfb (default: a free one)
   --output FILE  write FILE instead of tests/bench/RESULTS.md
@@ -64,7 +65,7 @@ done
 [[ "${threads}" =~ ^[1-9][0-9]*$ ]] || { echo "results.sh: --threads needs a positive number, not '${threads}'" >&2; exit 2; }
 [[ -n "${output}" ]] || { echo "results.sh: --output needs a file name" >&2; exit 2; }
 for s in ${skip//,/ }; do
-    [[ "${s}" =~ ^(povray|embree|designer)$ ]] || { echo "results.sh: --skip knows povray, embree and designer, not '${s}'" >&2; exit 2; }
+    [[ "${s}" =~ ^(povray|embree|designer|looks)$ ]] || { echo "results.sh: --skip knows povray, embree, designer and looks, not '${s}'" >&2; exit 2; }
 done
 skipped() { [[ "${skip}" == *",$1,"* ]]; }
 if [[ "${mode}" == full ]]; then runs=7; designer_runs=3; else runs=3; designer_runs=1; fi
@@ -144,6 +145,23 @@ else
     em="$(need "Embree's time" "$(awk '/rtcIntersect1 alone/ {print $4}' "${work}/embree")")"
     rs="$(need "RayStudio's mesh time" "$(awk '/RayStudio, shaded image/ {print $4}' "${work}/embree")")"
     headline+=("| 1,000,000-triangle mesh, 1280x720 primary rays + Lambert shading (the whole trace path), against Embree 3's \`rtcIntersect1\` alone (no shading) on the same rays, ${threads} threads | ${rs} ms | ${em} ms | **$(ratio "${em}" "${rs}")x** (Embree / RayStudio) | \`bash tests/bench/compare-embree.sh ${runs} ${threads}\` |")
+fi
+
+if skipped looks; then
+    headline+=("| the classic scene's checker and sky, and 4k textures on the reference room, against flat colours | not measured (--skip looks) | | | |")
+else
+    command -v oiiotool >/dev/null 2>&1 || { echo "results.sh: oiiotool not found (apt-get install openimageio-tools), or pass --skip looks" >&2; exit 1; }
+    run_stage "looks vs flat" "${work}/looks" bash "${root}/tests/bench/looks-cost.sh" "${runs}" "${threads}"
+    for what in classic textured; do
+        read -r flat patterned factor < <(awk -v w="${what}" '$1 == w {print $3, $6, $9}' "${work}/looks")
+        need "the ${what} times" "${factor:-}" >/dev/null
+        if [[ "${what}" == classic ]]; then
+            label="classic scene (checkered floor, glass and mirror balls, HDR sky), 1280x720, 4 samples a pixel, against the same with flat colours and a flat background"
+        else
+            label="reference room with a 4096x4096 PNG texture on every material, against flat colours (texture cache warm)"
+        fi
+        headline+=("| ${label}, ${threads} threads | ${patterned} ms | ${flat} ms | **${factor}x** the flat scene's time | \`bash tests/bench/looks-cost.sh ${runs} ${threads}\` |")
+    done
 fi
 
 if skipped designer; then
