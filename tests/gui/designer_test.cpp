@@ -390,7 +390,7 @@ void DesignerTest::toolbarAndMenus_HaveIcons_AndTheWindowItsIcon() {
         ++buttons;
         QVERIFY2(!a->icon().pixmap(24, 24).isNull(), qPrintable(a->text()));
     }
-    QCOMPARE(buttons, 10);
+    QCOMPARE(buttons, 12);  // Four shapes, Mesh, four lights, Undo, Redo, Render Image.
     for (const QString& text :
          {QStringLiteral("&New"), QStringLiteral("&Open..."), QStringLiteral("&Save"),
           QStringLiteral("&Delete"), QStringLiteral("&Render Image...")}) {
@@ -401,6 +401,11 @@ void DesignerTest::toolbarAndMenus_HaveIcons_AndTheWindowItsIcon() {
     }
     // The bundled fallback itself draws (not only a theme that happens to be installed).
     QVERIFY(!QIcon(QStringLiteral(":/icons/actions/add-sphere.svg")).pixmap(24, 24).isNull());
+    for (const char* light : {"add-spot-light", "add-sun-light"})
+        QVERIFY2(!QIcon(QStringLiteral(":/icons/actions/%1.svg").arg(QLatin1String(light)))
+                      .pixmap(24, 24)
+                      .isNull(),
+                 light);
 }
 
 void DesignerTest::badSceneFile_ShowsErrorAndKeepsDocument() {
