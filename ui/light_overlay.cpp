@@ -123,6 +123,20 @@ ObjectId pickLight(const std::vector<LightGlyph>& glyphs, const QPointF& p) {
     return best;
 }
 
+QRegion glyphRegion(const LightGlyph& g, int margin) {
+    const int extent = int(std::ceil(std::max(double(g.radius), double(kPointGlyphPx)))) + margin;
+    QRegion r(QRect(g.centre.toPoint() - QPoint(extent, extent), QSize(2 * extent, 2 * extent)));
+    // A diagonal line's bounding box is generous, but a glyph has only a few of them.
+    for (const QLineF& line : g.lines)
+        r += QRectF(line.p1(), line.p2())
+                 .normalized()
+                 .toAlignedRect()
+                 .adjusted(-margin, -margin, margin, margin);
+    for (const QPolygonF& loop : g.loops)
+        r += loop.boundingRect().toAlignedRect().adjusted(-margin, -margin, margin, margin);
+    return r;
+}
+
 void paintLightGlyphs(QPainter& p, const std::vector<LightGlyph>& glyphs,
                       const std::vector<ObjectId>& selected) {
     p.setRenderHint(QPainter::Antialiasing);

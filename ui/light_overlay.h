@@ -5,6 +5,7 @@
 #include <QLineF>
 #include <QPointF>
 #include <QPolygonF>
+#include <QRegion>
 #include <vector>
 
 #include "scene/document.h"
@@ -31,6 +32,10 @@ struct LightGlyph {
 std::vector<LightGlyph> lightGlyphs(const SceneDocument& doc, const ViewProjection& view);
 /// The light whose glyph is under widget point `p` (the nearest centre wins), or kNoObject.
 ObjectId pickLight(const std::vector<LightGlyph>& glyphs, const QPointF& p);
+
+/// Widget pixels glyph `g` paints on (its disc, lines and circles), `margin` pixels wider:
+/// what must be repainted when it appears, moves or goes.
+QRegion glyphRegion(const LightGlyph& g, int margin);
 
 /// Draws `glyphs` (those of `selected` highlighted) with `p`, in widget coordinates.
 void paintLightGlyphs(QPainter& p, const std::vector<LightGlyph>& glyphs,

@@ -187,7 +187,12 @@ void MainWindow::addAimedLightAction(LightType type) {
     if (type == LightType::Spot) {
         const float len = glm::length(doc.camera.up);
         const Vec3 up = len > 1e-6f ? doc.camera.up / len : Vec3(0.0f, 1.0f, 0.0f);
-        const float height = std::clamp(0.5f * place.distance, 1.0f, 5.0f);
+        float height = std::clamp(0.5f * place.distance, 1.0f, 5.0f);
+        // Below a ceiling, if there is one: a spot above it would light nothing.
+        const auto snapshot = session_->session().snapshot();
+        const Placement above =
+            placeAlong(snapshot.get(), Ray::make(place.point + up * 1e-3f, up), height / 0.8f);
+        if (above.onSurface) height = std::min(height, 0.8f * above.distance);
         l->target = place.point;
         l->position = place.point + up * height;
     }

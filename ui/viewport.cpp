@@ -162,10 +162,7 @@ QRegion Viewport::overlayRegion() const {
     // Pens, antialiasing and the highlight ring reach a few pixels past the shapes.
     constexpr int kMargin = 4;
     QRegion r;
-    for (const LightGlyph& g : glyphs_) {
-        const int extent = int(std::ceil(std::max(double(g.radius), 6.0))) + kMargin;
-        r += QRect(g.centre.toPoint() - QPoint(extent, extent), QSize(2 * extent, 2 * extent));
-    }
+    for (const LightGlyph& g : glyphs_) r += glyphRegion(g, kMargin);
     if (const auto g = gizmo()) r += g->bounds().toAlignedRect();
     if (drag_ == Drag::Box)
         r += QRect(pressPos_, lastPos_).normalized().adjusted(-kMargin, -kMargin, kMargin, kMargin);

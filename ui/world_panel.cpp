@@ -137,9 +137,11 @@ void WorldPanel::applyParameter(const std::string& key, const ParamValue& value)
 void WorldPanel::refresh() {
     const Environment& env = editor_->document().environment;
     const bool present = env.present();
-    file_->setText(present ? QString::fromStdString(env.image.file)
-                           : tr("None (background colour)"));
-    file_->setToolTip(QString::fromStdString(env.image.source()));
+    // The name, which fits; the whole path in the tool tip.
+    file_->setText(present ? QFileInfo(QString::fromStdString(env.image.file)).fileName()
+                           : tr("None"));
+    file_->setToolTip(present ? QString::fromStdString(env.image.source())
+                              : tr("No environment: rays that miss show the background colour"));
     remove_->setEnabled(present);
     for (QWidget* w : numberEditors_) w->setEnabled(present);
     for (const auto& r : refreshers_) r();

@@ -165,6 +165,9 @@ void WorldAndLightsTest::glyphs_ShowTheSpotsConeAndTheSunsArrows() {
     const Light& l = *doc().findLight(spot);
     const QPointF target = *view.project(l.target);
     QVERIFY(QLineF(s->lines[0].p2(), target).length() < 0.5);
+    // What the raster view repaints for it reaches the cone's far end, not only the disc.
+    QVERIFY(glyphRegion(*s, 4).contains(target.toPoint()));
+    QVERIFY(QLineF(s->centre, target).length() > 20.0);
     // The falloff circle is wider than the radius circle, by tan 45 / tan 30 across the view.
     const double r0 = s->loops[0].boundingRect().width(), r1 = s->loops[1].boundingRect().width();
     const double ratio = std::tan(45.0 * M_PI / 180.0) / std::tan(30.0 * M_PI / 180.0);
