@@ -1,13 +1,17 @@
 // The World panel (the environment's image, intensity and rotation, each one undoable edit)
 // and the spot and sun lights: Add, their glyphs, the outliner's labels, and G / R on them.
 #include <QAction>
+#include <QApplication>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QPushButton>
 #include <QStatusBar>
+#include <QTimer>
 #include <QtTest>
 #include <cmath>
 
+#include "dialog_folders.h"
 #include "gui_test_support.h"
 #include "light_overlay.h"
 #include "outliner_model.h"
@@ -57,6 +61,7 @@ private Q_SLOTS:
     void worldPanel_SetImage_UndoRestores_RemoveClears();
     void worldPanel_IntensityAndRotation_OneUndoStepPerDrag();
     void worldPanel_UnreadableImage_ShowsTheErrorInsteadOfTheStrip();
+    void worldPanel_Choose_StartsInTheLastImageFolder_CancelKeepsTheDocument();
 
 private:
     const SceneDocument& doc() const { return window_->editor()->document(); }
@@ -324,6 +329,43 @@ void WorldAndLightsTest::worldPanel_UnreadableImage_ShowsTheErrorInsteadOfTheStr
     world->setImageFile(skyPath());
     QVERIFY(world->hasPreview());
     QVERIFY(world->previewError().isEmpty());
+}
+
+void WorldAndLightsTest::worldPanel_Choose_StartsInTheLastImageFolder_CancelKeepsTheDocument() {
+    WorldPanel* world = window_->worldPanel();
+    QVERIFY(world);
+    // An image was last chosen in scenes/textures: the dialog opens there, offering HDR and EXR.
+    rememberDialogFolder(FileKind::Image, skyPath());
+    const QString folder = QFileInfo(skyPath()).absolutePath();
+    const auto answer = [&](bool accept) {
+        bool ran = false;
+        QTimer::singleShot(0, this, [&, accept] {
+            auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+            QVERIFY(dialog);
+            ran = true;
+            QCOMPARE(dialog->objectName(), QStringLiteral("environmentFileDialog"));
+            QCOMPARE(QFileInfo(dialog->directory().absolutePath()).canonicalFilePath(),
+                     QFileInfo(folder).canonicalFilePath());
+            const QString filters = dialog->nameFilters().join(' ');
+            for (const char* ext : {"*.hdr", "*.exr", "*.png", "*.jpg", "*.tif", "*.tiff"})
+                QVERIFY2(filters.contains(QLatin1String(ext)), qPrintable(filters));
+            if (accept) {
+                dialog->selectFile(skyPath());
+                static_cast<QDialog*>(dialog)->accept();  // Protected in QFileDialog.
+            } else {
+                static_cast<QDialog*>(dialog)->reject();
+            }
+        });
+        const bool chosen = world->chooseImage();  // Returns when the dialog closes.
+        return ran ? int(chosen) : -1;
+    };
+    const int steps = window_->editor()->undoStack()->count();
+    QCOMPARE(answer(false), 0);
+    QVERIFY(!doc().environment.present());
+    QCOMPARE(window_->editor()->undoStack()->count(), steps);
+    QCOMPARE(answer(true), 1);
+    QCOMPARE(QString::fromStdString(doc().environment.image.source()), skyPath());
+    QCOMPARE(window_->editor()->undoStack()->count(), steps + 1);
 }
 
 QTEST_MAIN(WorldAndLightsTest)
