@@ -51,6 +51,19 @@ QPointF along(const QPointF& from, const QPointF& to, double px) {
 }  // namespace
 
 Mat3 gizmoAxes(const SceneDocument& doc, ObjectId active, bool local) {
+    // A spot or a sun shines along its local -Z, as Blender's do: its own X and Y lie across
+    // the beam, so a local rotation tilts it.
+    if (const Light* l = local ? doc.findLight(active) : nullptr) {
+        const Vec3 beam = l->type == LightType::Spot          ? l->target - l->position
+                          : l->type == LightType::Directional ? l->direction
+                                                              : Vec3(0.0f);
+        const float len = glm::length(beam);
+        if (len <= 1e-6f) return Mat3(1.0f);
+        const Vec3 z = -beam / len;
+        const Vec3 helper = std::abs(z.y) < 0.99f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
+        const Vec3 x = glm::normalize(glm::cross(helper, z));
+        return Mat3(x, glm::cross(z, x), z);
+    }
     const Object* o = local ? doc.findObject(active) : nullptr;
     if (!o || std::holds_alternative<PlaneGeometry>(o->geometry)) return Mat3(1.0f);
     // The rotation of T * R * S: the matrix's columns with their scale divided out.

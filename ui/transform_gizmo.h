@@ -24,7 +24,8 @@ struct GizmoHandle {
 };
 
 /// The axes the gizmo shows for the selection, as columns: the world's, or (local) the
-/// active object's own rotation, Blender's transform orientations.
+/// active object's own rotation, Blender's transform orientations (a spot's or a sun's local
+/// -Z is where it shines).
 Mat3 gizmoAxes(const SceneDocument& doc, ObjectId active, bool local);
 
 /// The gizmo of one pose, at a fixed size on screen whatever the distance.

@@ -16,6 +16,7 @@
 #include "light_overlay.h"
 #include "outliner_model.h"
 #include "outliner_view.h"
+#include "transform_gizmo.h"
 #include "world_panel.h"
 
 using namespace rs;
@@ -57,6 +58,7 @@ private Q_SLOTS:
     void glyphs_ShowTheSpotsConeAndTheSunsArrows();
     void rotateSpot_TurnsItsTargetAboutItsPosition();
     void moveSpot_MovesPositionAndTargetTogether();
+    void localAxes_OfASpotAndASun_PutTheirBeamAlongMinusZ();
     void sun_RotateTurnsItsDirection_MoveSaysItHasNoPosition();
     void worldPanel_SetImage_UndoRestores_RemoveClears();
     void worldPanel_IntensityAndRotation_OneUndoStepPerDrag();
@@ -234,6 +236,23 @@ void WorldAndLightsTest::moveSpot_MovesPositionAndTargetTogether() {
     QVERIFY2(near(after.target, before.target + Vec3(1.5f, 0, 0)), qPrintable(str(after.target)));
     window_->editor()->undoStack()->undo();
     QVERIFY(*doc().findLight(id) == before);
+}
+
+void WorldAndLightsTest::localAxes_OfASpotAndASun_PutTheirBeamAlongMinusZ() {
+    const ObjectId spot = add("Spot light");
+    const ObjectId sun = add("Sun light");
+    const Light& s = *doc().findLight(spot);
+    const float k = 1.0f / std::sqrt(6.0f);
+    for (const auto& [id, beam] : {std::pair{spot, glm::normalize(s.target - s.position)},
+                                   std::pair{sun, Vec3(-k, -2.0f * k, -k)}}) {
+        const Mat3 axes = gizmoAxes(doc(), id, true);
+        QVERIFY2(near(axes[2], -beam), qPrintable(str(axes[2])));
+        // Orthonormal and right-handed.
+        QVERIFY(std::abs(glm::dot(axes[0], axes[1])) < 1e-5f);
+        QVERIFY(std::abs(glm::dot(axes[0], axes[2])) < 1e-5f);
+        QVERIFY(near(glm::cross(axes[0], axes[1]), axes[2]));
+        QVERIFY(near(gizmoAxes(doc(), id, false)[2], Vec3(0, 0, 1)));  // World axes.
+    }
 }
 
 void WorldAndLightsTest::sun_RotateTurnsItsDirection_MoveSaysItHasNoPosition() {
