@@ -26,6 +26,7 @@ enum PixelFlag : uint8_t {
     kDeferredValid = 2,     ///< Traced with only shadows deferred: records complete the pixel.
     kTracedLastUpdate = 4,  ///< Re-traced by the latest edit (debug overlay).
     kTreeUnknown = 8,       ///< Its secondary segments were not all kept: always re-trace.
+    kSampleMissed = 16,     ///< A supersample's camera ray hit nothing (saw the environment).
 };
 
 /// The flags of a pixel an edit marks stale: its deferred records no longer hold, and the

@@ -214,10 +214,10 @@ bool treeMayCross(const MarkContext& c, std::size_t i, int tile) {
     return false;
 }
 
-/// Whether a ray of pixel i may have left the scene: its centre ray missed, it averages
-/// supersamples (any of which may have missed), or a secondary ray of its tree escaped.
+/// Whether a ray of pixel i may have left the scene: its centre ray missed, one of its
+/// supersamples missed, or a secondary ray of its tree escaped.
 bool seesEnvironment(const DeepFrame& f, std::size_t i, int tile) {
-    if (f.id[i] == kNoObject || f.sampleCount[i] > 0) return true;
+    if (f.id[i] == kNoObject || (f.sampleCount[i] > 0 && (f.flags[i] & kSampleMissed))) return true;
     if (!(f.flags[i] & kTouchedSpecular)) return false;
     if (f.flags[i] & kTreeUnknown) return true;
     const auto& pool = f.tileSegments[std::size_t(tile)];

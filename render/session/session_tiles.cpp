@@ -202,6 +202,8 @@ bool supersampleTile(const TileInput& in, TileResult& out) {
             const PrimaryInfo& info = samples.info[q];
             if (info.id != kNoObject)
                 s.hitBound = growBound(s.hitBound, samples.origin[q] + samples.dir[q] * info.depth);
+            else
+                s.flags |= kSampleMissed;
             if (info.touchedSpecular) s.flags |= kTouchedSpecular;
             s.cost += samples.rays[q];
             // The pixel's segments of all its new samples, as one list of kSegmentsPerPixel.
