@@ -57,6 +57,9 @@ struct TextureStore::Impl {
     std::atomic<float> megabytes{kDefaultTextureCacheMegabytes};
     std::mutex registerMutex;
     std::map<std::string, FileStamp> registered;
+    /// Handles given out, by path, with the file's stamp then: a snapshot compiled per edit
+    /// (every drag step) asks again for the same files, and needs no header read for them.
+    std::map<std::string, std::pair<FileStamp, TextureHandle>> opened;
 
     /// This thread's OpenImageIO record, fetched once per thread: the lookup's fast path.
     TextureSystem::Perthread* perthread() const {
@@ -122,6 +125,13 @@ TextureHandle TextureStore::open(const std::string& path, std::string& error) {
     }
     std::error_code ec;
     const auto modified = std::filesystem::last_write_time(path, ec);
+    {
+        std::lock_guard<std::mutex> lock(impl_->registerMutex);
+        const auto known = impl_->opened.find(path);
+        if (known != impl_->opened.end() && known->second.first.modified == modified &&
+            known->second.first.size == size)
+            return known->second.second;
+    }
 
     // The header alone: its size, pixel format and whether it has MIP levels.
     OIIO::ImageSpec spec;
@@ -184,6 +194,8 @@ TextureHandle TextureStore::open(const std::string& path, std::string& error) {
         return {};
     }
     handle.handle = oiioHandle;
+    std::lock_guard<std::mutex> lock(impl_->registerMutex);
+    impl_->opened[path] = {FileStamp{modified, size, handle.srgb}, handle};
     return handle;
 }
 
