@@ -4,12 +4,12 @@
 
 #include <QString>
 #include <QWidget>
-#include <string>
 
 class QComboBox;
-class QLabel;
 
 namespace rs::ui {
+
+class ImagePreview;
 
 /// The mode selector, items in ColorMode order (color_pattern_edits.h); object name
 /// "colorMode".
@@ -23,24 +23,12 @@ QString textureFileFilter();
 /// when cancelled. `documentPath`: the open scene's file, for the first time.
 QString chooseTextureFile(QWidget* parent, const QString& documentPath);
 
-/// A small preview of a texture file: the image scaled to fit kThumbnailSide, or, for a file
-/// the renderer cannot read, the error sentence in its place.
-class TexturePreview : public QWidget {
-    Q_OBJECT
-public:
-    static constexpr int kThumbnailSide = 96;
-    explicit TexturePreview(QWidget* parent = nullptr);
-    /// Shows `path` (read once per path and modification time; later calls reuse it).
-    void setImage(const std::string& path);
-    /// The error shown (empty while a thumbnail is shown).
-    QString error() const;
-    /// True while a thumbnail (not an error) is shown.
-    bool hasThumbnail() const;
+/// The side of a texture's thumbnail in the property panel.
+inline constexpr int kTextureThumbnailSide = 96;
 
-private:
-    QLabel* image_;
-    QLabel* error_;
-    std::string shown_;
-};
+/// A texture's preview (image_preview.h): the image scaled to fit kTextureThumbnailSide, or,
+/// for a file the renderer cannot read, the error sentence in its place (labels
+/// "textureThumbnail" and "textureError").
+ImagePreview* makeTexturePreview(QWidget* parent);
 
 }  // namespace rs::ui

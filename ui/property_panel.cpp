@@ -11,6 +11,7 @@
 
 #include "color_pattern_editor.h"
 #include "color_pattern_edits.h"
+#include "image_preview.h"
 #include "io/mesh_io.h"
 #include "parameter_widgets.h"
 #include "scene_editor.h"
@@ -244,7 +245,7 @@ void PropertyPanel::addColorForm(const std::string& name, QFormLayout* form) {
         auto* choose = new QPushButton(tr("Choose…"), image->parentWidget());
         choose->setObjectName(QStringLiteral("chooseTexture"));
         choose->setToolTip(tr("Choose the image file"));
-        auto* preview = new TexturePreview(image->parentWidget());
+        auto* preview = makeTexturePreview(image->parentWidget());
         preview->setObjectName(QStringLiteral("texturePreview"));
         image->insertRow(row, QString(), choose);
         image->insertRow(row + 1, QString(), preview);

@@ -1,21 +1,18 @@
 // World panel: the environment image, intensity and rotation, and the image's preview strip.
 #include "world_panel.h"
 
-#include <QDateTime>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QImage>
 #include <QLabel>
-#include <QPixmap>
 #include <QPushButton>
 #include <QVBoxLayout>
 
 #include "dialog_folders.h"
+#include "image_preview.h"
 #include "parameter_widgets.h"
 #include "scene_editor.h"
-#include "texture/thumbnail.h"
 
 namespace rs::ui {
 
@@ -23,11 +20,6 @@ namespace {
 
 /// The pixels read for the strip: enough for its width, whatever the file's size.
 constexpr int kReadSide = 2 * WorldPanel::kStripWidth;
-
-qint64 stampOf(const std::string& path) {
-    const QFileInfo info(QString::fromStdString(path));
-    return info.exists() ? info.lastModified().toMSecsSinceEpoch() : -1;
-}
 
 }  // namespace
 
@@ -70,17 +62,16 @@ WorldPanel::WorldPanel(SceneEditor* editor, QWidget* parent) : QWidget(parent), 
         });
     }
 
-    strip_ = new QLabel(this);
-    strip_->setObjectName(QStringLiteral("environmentStrip"));
-    strip_->setFixedHeight(kStripHeight);
-    strip_->setAlignment(Qt::AlignCenter);
-    error_ = new QLabel(this);
-    error_->setObjectName(QStringLiteral("environmentError"));
-    error_->setWordWrap(true);
-    error_->setStyleSheet(QStringLiteral("color: #d03030;"));
-    error_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    layout->addWidget(strip_);
-    layout->addWidget(error_);
+    preview_ = new ImagePreview(QSize(kStripWidth, kStripHeight), kReadSide, Qt::AlignCenter,
+                                QStringLiteral("environmentStrip"),
+                                QStringLiteral("environmentError"), this);
+    layout->addWidget(preview_);
+    valueError_ = new QLabel(this);
+    valueError_->setObjectName(QStringLiteral("environmentValueError"));
+    valueError_->setWordWrap(true);
+    valueError_->setStyleSheet(QStringLiteral("color: #d03030;"));
+    valueError_->hide();
+    layout->addWidget(valueError_);
     layout->addStretch(1);
 
     connect(editor_, &SceneEditor::documentChanged, this, &WorldPanel::refresh);
@@ -122,11 +113,12 @@ void WorldPanel::applyParameter(const std::string& key, const ParamValue& value)
     SceneDocument doc = editor_->document();
     const std::string error = setParameter(doc.environment, key, value);
     if (!error.empty()) {
-        error_->setText(QString::fromStdString(error));
-        error_->show();
+        valueError_->setText(QString::fromStdString(error));
+        valueError_->show();
         refresh();  // Put the widget back to the document's value.
         return;
     }
+    valueError_->hide();
     const ParamDescriptor* d = findParameter(ParamKind::Environment, key);
     // A drag of the slider or the spin box's arrows is one step (MergeKind::Property).
     editor_->edit(tr("Change environment %1").arg(QString::fromStdString(d ? d->label : key)),
@@ -145,42 +137,15 @@ void WorldPanel::refresh() {
     remove_->setEnabled(present);
     for (QWidget* w : numberEditors_) w->setEnabled(present);
     for (const auto& r : refreshers_) r();
-    showPreview(present ? env.image.source() : std::string());
-}
-
-void WorldPanel::showPreview(const std::string& path) {
-    const qint64 stamp = path.empty() ? -1 : stampOf(path);
-    if (path == shown_ && stamp == shownStamp_) return;
-    shown_ = path;
-    shownStamp_ = stamp;
-    strip_->setPixmap(QPixmap());
-    error_->clear();
-    if (path.empty()) {
-        strip_->hide();
-        error_->hide();
-        return;
-    }
-    // OpenImageIO reads every format the renderer does (HDR and EXR clamped, sRGB-encoded).
-    const Thumbnail t = makeThumbnail(path, kReadSide);
-    if (!t.ok()) {
-        strip_->hide();
-        error_->setText(QString::fromStdString(t.error.empty() ? "cannot read " + path : t.error));
-        error_->show();
-        return;
-    }
-    const QImage image(t.rgb.data(), t.width, t.height, t.width * 3, QImage::Format_RGB888);
-    strip_->setPixmap(QPixmap::fromImage(
-        image.scaled(kStripWidth, kStripHeight, Qt::KeepAspectRatio, Qt::SmoothTransformation)));
-    strip_->show();
-    error_->hide();
+    preview_->setImage(present ? env.image.source() : std::string());
 }
 
 QString WorldPanel::previewError() const {
-    return error_->isHidden() ? QString() : error_->text();
+    return preview_->error();
 }
 
 bool WorldPanel::hasPreview() const {
-    return !strip_->isHidden() && !strip_->pixmap().isNull();
+    return preview_->hasImage();
 }
 
 }  // namespace rs::ui

@@ -15,6 +15,7 @@ class QPushButton;
 
 namespace rs::ui {
 
+class ImagePreview;
 class SceneEditor;
 
 /// Edits SceneDocument::environment. Without an image the background colour shows, and
@@ -44,17 +45,14 @@ public:
 private:
     void applyParameter(const std::string& key, const ParamValue& value);
     void refresh();
-    void showPreview(const std::string& path);
 
     SceneEditor* editor_;
     QLabel* file_;
     QPushButton* remove_;
-    QLabel* strip_;
-    QLabel* error_;
+    ImagePreview* preview_;
+    QLabel* valueError_;  ///< A value the format refuses (the editors' ranges keep it rare).
     std::vector<QWidget*> numberEditors_;
     std::vector<std::function<void()>> refreshers_;
-    std::string shown_;  ///< The path the strip shows (or failed to read).
-    qint64 shownStamp_ = -1;
 };
 
 }  // namespace rs::ui

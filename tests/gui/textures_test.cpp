@@ -27,6 +27,7 @@
 #include "color_pattern_editor.h"
 #include "gui_test_support.h"
 #include "image/image_io.h"
+#include "image_preview.h"
 #include "io/scene_io.h"
 #include "preferences.h"
 #include "property_panel.h"
@@ -263,14 +264,13 @@ void TexturesTest::imageMode_ChosenFile_Thumbnail_AndRepeatReachTheDocument() {
     QCOMPARE(texture->scaleU, 1.0f);  // FORMAT.md: scale [1, 1], offset [0, 0] by default.
     QCOMPARE(texture->offsetV, 0.0f);
 
-    auto* preview = window_->propertyPanel()->findChild<TexturePreview*>();
+    auto* preview = window_->propertyPanel()->findChild<ImagePreview*>();
     QVERIFY(preview);
-    QVERIFY2(preview->hasThumbnail(), qPrintable(preview->error()));
+    QVERIFY2(preview->hasImage(), qPrintable(preview->error()));
     auto* thumb = preview->findChild<QLabel*>(QStringLiteral("textureThumbnail"));
     const QImage shown = thumb->pixmap().toImage();
     // 8 x 4 fitted to the thumbnail's side, aspect kept.
-    QCOMPARE(shown.size(),
-             QSize(TexturePreview::kThumbnailSide, TexturePreview::kThumbnailSide / 2));
+    QCOMPARE(shown.size(), QSize(kTextureThumbnailSide, kTextureThumbnailSide / 2));
     const QColor left = shown.pixelColor(shown.width() / 8, shown.height() / 2);
     const QColor right = shown.pixelColor(shown.width() * 7 / 8, shown.height() / 2);
     QVERIFY2(left.red() > 200 && left.green() < 60, qPrintable(left.name()));
@@ -303,9 +303,9 @@ void TexturesTest::unreadableTexture_ShowsTheErrorInsteadOfAThumbnail() {
     chooseImage(good);
     QVERIFY(window_->propertyPanel()->applyEdit(QStringLiteral("texture"), "texture",
                                                 bad.toStdString()));
-    auto* preview = window_->propertyPanel()->findChild<TexturePreview*>();
+    auto* preview = window_->propertyPanel()->findChild<ImagePreview*>();
     QVERIFY(preview);
-    QVERIFY(!preview->hasThumbnail());
+    QVERIFY(!preview->hasImage());
     QVERIFY2(preview->error().contains(QStringLiteral("broken.png")), qPrintable(preview->error()));
     auto* error = preview->findChild<QLabel*>(QStringLiteral("textureError"));
     QVERIFY(error && error->isVisibleTo(preview));
@@ -324,9 +324,9 @@ void TexturesTest::exrThumbnail_IsLinearEncodedToSrgb() {
     clickObject("chalk ball");
     stepMode(Qt::Key_Down);
     chooseImage(path);
-    auto* preview = window_->propertyPanel()->findChild<TexturePreview*>();
+    auto* preview = window_->propertyPanel()->findChild<ImagePreview*>();
     QVERIFY(preview);
-    QVERIFY2(preview->hasThumbnail(), qPrintable(preview->error()));
+    QVERIFY2(preview->hasImage(), qPrintable(preview->error()));
     const QImage shown =
         preview->findChild<QLabel*>(QStringLiteral("textureThumbnail"))->pixmap().toImage();
     const double expected = 255.0 * (1.055 * std::pow(0.2140, 1.0 / 2.4) - 0.055);

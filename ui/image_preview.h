@@ -1,0 +1,38 @@
+// A preview of an image file for the designer's panels (a texture's thumbnail, the
+// environment's strip): the image scaled into a box, or the sentence why it cannot be read.
+#pragma once
+
+#include <QSize>
+#include <QString>
+#include <QWidget>
+#include <string>
+
+class QLabel;
+
+namespace rs::ui {
+
+class ImagePreview : public QWidget {
+    Q_OBJECT
+public:
+    /// Shows images read at most `readSide` pixels on their larger side, scaled down to fit
+    /// `box` when larger. The two labels are named `imageName` and `errorName` (for tests).
+    ImagePreview(QSize box, int readSide, Qt::Alignment alignment, const QString& imageName,
+                 const QString& errorName, QWidget* parent = nullptr);
+    /// Shows `path` (empty: nothing). The renderer's own check comes first, so the error is
+    /// the one a render would report. Read again only when the file changed on disk.
+    void setImage(const std::string& path);
+    /// The error shown (empty while an image or nothing is shown).
+    QString error() const;
+    /// True while an image (not an error) is shown.
+    bool hasImage() const;
+
+private:
+    QSize box_;
+    int readSide_;
+    QLabel* image_;
+    QLabel* error_;
+    std::string shown_;
+    long long shownStamp_ = -1;
+};
+
+}  // namespace rs::ui
