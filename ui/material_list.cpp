@@ -1,14 +1,19 @@
 // MaterialList: list widget, buttons and the edits of scene_edits.h they push.
 #include "material_list.h"
 
+#include <QAbstractItemDelegate>
 #include <QGridLayout>
+#include <QIcon>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
+#include <set>
 #include <unordered_map>
+#include <utility>
 
+#include "material_preview.h"
 #include "scene_editor.h"
 #include "scene_edits.h"
 
@@ -17,6 +22,12 @@ namespace rs::ui {
 namespace {
 /// The material name an item stands for (its text is edited in place, so kept apart).
 constexpr int kNameRole = Qt::UserRole;
+
+QIcon iconOf(const QImage& image, int side) {
+    QPixmap pixmap = QPixmap::fromImage(image);
+    pixmap.setDevicePixelRatio(double(image.width()) / double(side));
+    return QIcon(pixmap);
+}
 }  // namespace
 
 std::vector<ObjectId> materialTargets(const SceneEditor& editor) {
@@ -28,10 +39,11 @@ std::vector<ObjectId> materialTargets(const SceneEditor& editor) {
 }
 
 MaterialList::MaterialList(SceneEditor* editor, QWidget* parent)
-    : QWidget(parent), editor_(editor) {
+    : QWidget(parent), editor_(editor), previews_(new MaterialPreviews(this)) {
     auto* layout = new QVBoxLayout(this);
     list_ = new QListWidget(this);
     list_->setObjectName(QStringLiteral("materialList"));
+    list_->setIconSize(QSize(kIconSide, kIconSide));
     list_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
     layout->addWidget(list_, 1);
     auto* buttons = new QGridLayout;
@@ -69,6 +81,15 @@ MaterialList::MaterialList(SceneEditor* editor, QWidget* parent)
         updateButtons();
     });
     connect(editor_, &SceneEditor::documentChanged, this, &MaterialList::rebuild);
+    connect(previews_, &MaterialPreviews::previewReady, this, &MaterialList::onPreviewReady);
+    // Queued: the view leaves its editing state after the delegate has signalled.
+    connect(
+        list_->itemDelegate(), &QAbstractItemDelegate::closeEditor, this,
+        [this] {
+            if (!std::exchange(iconsDeferred_, false)) return;
+            refreshPreviews(true);  // The deferred pictures are cached: nothing is rendered.
+        },
+        Qt::QueuedConnection);
     // The list follows the active object's material, as Blender's material slots do: pick an
     // object, then (to give it another) a material, then Assign to Selection.
     connect(editor_, &SceneEditor::selectionChanged, this, [this](ObjectId id) {
@@ -112,6 +133,7 @@ void MaterialList::rebuild() {
     for (const Material& m : doc.materials)
         shown << QString::fromStdString(m.name) + QLatin1Char('/') + QString::number(users[m.name]);
     if (shown == shown_) {
+        refreshPreviews(false);  // A drag leaves the materials alone: nothing is asked for.
         updateButtons();
         return;
     }
@@ -130,7 +152,53 @@ void MaterialList::rebuild() {
         }
     }
     if (!setCurrent(keep) && list_->count() > 0) list_->setCurrentRow(0);
+    refreshPreviews(true);
     updateButtons();
+}
+
+void MaterialList::refreshPreviews(bool force) {
+    const SceneDocument& doc = editor_->document();
+    const int side = qRound(kIconSide * list_->devicePixelRatioF());
+    if (!force && side == previewedSide_ && doc.environment == previewedEnvironment_ &&
+        doc.materials == previewed_)
+        return;
+    previewed_ = doc.materials;
+    previewedEnvironment_ = doc.environment;
+    previewedSide_ = side;
+    std::set<std::string> names;
+    for (const Material& m : doc.materials) names.insert(m.name);
+    previews_->retain(names);
+    // The items are the document's materials in order (rebuild).
+    if (std::size_t(list_->count()) != doc.materials.size()) return;
+    if (force || iconKeys_.size() != doc.materials.size())
+        iconKeys_.assign(doc.materials.size(), QString());
+    for (int i = 0; i < list_->count(); ++i) {
+        QListWidgetItem* item = list_->item(i);
+        const Material& m = doc.materials[std::size_t(i)];
+        const QString key = QString::fromStdString(materialPreviewKey(m, doc.environment, side));
+        if (iconKeys_[std::size_t(i)] == key) continue;
+        iconKeys_[std::size_t(i)] = key;
+        const QImage preview = previews_->request(m, doc.environment, side);
+        setPreviewIcon(item, preview.isNull() ? materialSwatch(m, side) : preview);
+    }
+}
+
+void MaterialList::onPreviewReady(const QString& name, const QString& key, const QImage& image) {
+    for (int i = 0; i < list_->count(); ++i) {
+        QListWidgetItem* item = list_->item(i);
+        if (iconKeys_.size() > std::size_t(i) && iconKeys_[std::size_t(i)] == key &&
+            item->data(kNameRole).toString() == name)
+            setPreviewIcon(item, image);
+    }
+}
+
+void MaterialList::setPreviewIcon(QListWidgetItem* item, const QImage& image) {
+    // itemWidget() is indexWidget(): an open editor too.
+    if (list_->itemWidget(item)) {
+        iconsDeferred_ = true;
+        return;
+    }
+    item->setIcon(iconOf(image, kIconSide));
 }
 
 void MaterialList::updateButtons() {

@@ -1,5 +1,6 @@
 // The material list dock: the document's materials with New, Duplicate, Rename, Delete and
 // Assign to the selection, each one undo step; names checked as the scene format requires.
+// Each material shows a preview sphere traced in the background (material_preview.h).
 #pragma once
 
 #include <QStringList>
@@ -16,6 +17,7 @@ class QPushButton;
 
 namespace rs::ui {
 
+class MaterialPreviews;
 class SceneEditor;
 
 /// The objects "Assign" gives the material: the selection's objects (lights and the camera
@@ -44,8 +46,21 @@ public:
     void deleteMaterial();
     void assignToSelection();
 
+    /// The previews' renderer (tests count its renders).
+    MaterialPreviews* previews() const { return previews_; }
+    /// Edge of a list icon in logical pixels.
+    static constexpr int kIconSide = 48;
+
 private:
     void rebuild();
+    /// Gives each item its preview, or its swatch while the preview renders; asks only for
+    /// materials whose content (or the environment) changed since, unless `force`.
+    void refreshPreviews(bool force);
+    void onPreviewReady(const QString& name, const QString& key, const QImage& image);
+    /// Shows `image` as the item's icon, unless its name is being edited in place: a change of
+    /// the item would put the name back into the editor, over what is being typed. That icon
+    /// is set once the editor closes.
+    void setPreviewIcon(QListWidgetItem* item, const QImage& image);
     void updateButtons();
     void onItemChanged(QListWidgetItem* item);
     void applyRename(const std::string& from, const std::string& to);
@@ -61,6 +76,14 @@ private:
     QLabel* message_;
     QString refused_;    ///< A refused rename's error, shown until the next change.
     QStringList shown_;  ///< "name/users" of each material listed.
+    MaterialPreviews* previews_;
+    std::vector<Material> previewed_;  ///< The materials as the icons were last asked for.
+    Environment previewedEnvironment_;
+    int previewedSide_ = 0;
+    /// Per row, the preview key (materialPreviewKey) its icon shows or waits for. Kept out of
+    /// the items: any change of an item puts its name back into an open in-place editor.
+    std::vector<QString> iconKeys_;
+    bool iconsDeferred_ = false;  ///< An icon waits for the in-place editor to close.
 };
 
 }  // namespace rs::ui
