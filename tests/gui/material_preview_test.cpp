@@ -71,6 +71,7 @@ private Q_SLOTS:
     void rapidEdits_RenderOnlyTheLatestContent();
     void movingAnObject_OrRenamingAMaterial_RendersNothing();
     void previewArrivingDuringAnInPlaceRename_KeepsWhatIsTyped();
+    void environmentEdits_RenderEveryMaterialOnce_AndTexturesAreTraced();
 
 private:
     /// The icon of material `name` as the list draws it, at its full resolution.
@@ -295,6 +296,46 @@ void MaterialPreviewTest::previewArrivingDuringAnInPlaceRename_KeepsWhatIsTyped(
     QCOMPARE(qAlpha(preview.pixel(0, 0)), 255);
     const QVector3D centre = meanAround(preview, side / 2.0, side / 2.0, side / 12.0);
     QVERIFY2(centre.y() > 60 && centre.y() > 3 * centre.x(), qPrintable(describe(centre)));
+}
+
+void MaterialPreviewTest::environmentEdits_RenderEveryMaterialOnce_AndTexturesAreTraced() {
+    const QImage greyBefore = icon(QStringLiteral("grey"));
+    const int before = renders();
+    SceneDocument doc = editor_->document();
+    Material tiles = diffuse("tiles", Color(0.8f, 0.8f, 0.8f));
+    ImageTexture texture;
+    texture.image.file = RAYSTUDIO_SCENES_DIR "/textures/tiles.png";
+    tiles.pattern = texture;
+    doc.materials.push_back(tiles);
+    doc.environment.image.file = RAYSTUDIO_SCENES_DIR "/textures/sky.hdr";
+    editor_->edit(QStringLiteral("Sky and tiles"), std::move(doc));
+    QVERIFY(waitIdle());
+    // Six materials, each once: the sky is part of every preview.
+    QCOMPARE(renders() - before, 6);
+    const QImage grey = icon(QStringLiteral("grey"));
+    const QImage textured = icon(QStringLiteral("tiles"));
+    QCOMPARE(textured.size(), grey.size());
+    QVERIFY(grey != greyBefore);  // The sky in place of the wall.
+    const int side = grey.width();
+    double sum = 0;
+    int n = 0;
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x)
+            if (std::hypot(x + 0.5 - side / 2.0, y + 0.5 - side / 2.0) < side / 3.0) {
+                const QRgb a = grey.pixel(x, y), b = textured.pixel(x, y);
+                sum += std::abs(qRed(a) - qRed(b)) + std::abs(qGreen(a) - qGreen(b)) +
+                       std::abs(qBlue(a) - qBlue(b));
+                n += 3;
+            }
+    QVERIFY2(sum / n > 15 && sum / n < 255, qPrintable(QString::number(sum / n)));
+
+    // Turning the sky traces every preview again, once each.
+    const int turned = renders();
+    doc = editor_->document();
+    doc.environment.rotation = 90.0f;
+    editor_->edit(QStringLiteral("Turn the sky"), std::move(doc));
+    QVERIFY(waitIdle());
+    QCOMPARE(renders() - turned, 6);
 }
 
 QTEST_MAIN(MaterialPreviewTest)
