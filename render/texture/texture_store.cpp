@@ -8,12 +8,15 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <mutex>
 
 #include "io/input_file.h"
 #include "texture/srgb_input.h"
+#include "texture/texel_cache.h"
 
 namespace rs {
 
@@ -40,14 +43,43 @@ struct FileStamp {
     }
 };
 
-TextureOpt makeOptions(TextureOpt::Wrap twrap) {
-    TextureOpt opt;
-    opt.swrap = TextureOpt::WrapPeriodic;
-    opt.twrap = twrap;
-    opt.interpmode = TextureOpt::InterpBilinear;  // exact at texel centres, and cheaper
-    opt.mipmode = TextureOpt::MipModeAniso;
-    return opt;
+/// This thread's OpenImageIO record for `system`, fetched once per thread.
+TextureSystem::Perthread* perthreadOf(TextureSystem* system) {
+    thread_local const TextureSystem* owner = nullptr;
+    thread_local TextureSystem::Perthread* info = nullptr;
+    if (owner != system || !info) {
+        info = system->get_perthread_info();
+        owner = system;
+    }
+    return info;
 }
+
+/// One version of an open file's MIP pyramid, read through the TextureSystem: its tile
+/// cache (bounded by the cache's megabytes) stays what reads the file, lazily, tile by tile.
+class OiioTexels final : public TexelSource {
+public:
+    OiioTexels(TextureSystem* system, TextureSystem::TextureHandle* handle, int channels)
+        : system_(system), handle_(handle), channels_(channels >= 3 ? 3 : 1) {}
+
+    bool fetch(int level, int x0, int x1, int y0, int y1, float* out) const override {
+        TextureOpt options;
+        const std::size_t count = std::size_t(x1 - x0) * std::size_t(y1 - y0);
+        if (channels_ == 3)
+            return system_->get_texels(handle_, perthreadOf(system_), options, level, x0, x1, y0,
+                                       y1, 0, 1, 0, 3, OIIO::TypeFloat, out);
+        // Grey: read one channel into the front of `out`, then spread it, last texel first.
+        if (!system_->get_texels(handle_, perthreadOf(system_), options, level, x0, x1, y0, y1, 0,
+                                 1, 0, 1, OIIO::TypeFloat, out))
+            return false;
+        for (std::size_t i = count; i-- > 0;) out[3 * i] = out[3 * i + 1] = out[3 * i + 2] = out[i];
+        return true;
+    }
+
+private:
+    TextureSystem* system_;
+    TextureSystem::TextureHandle* handle_;
+    int channels_;
+};
 
 }  // namespace
 
@@ -61,31 +93,35 @@ struct TextureStore::Impl {
     /// (every drag step) asks again for the same files, and needs no header read for them.
     std::map<std::string, std::pair<FileStamp, TextureHandle>> opened;
 
-    /// This thread's OpenImageIO record, fetched once per thread: the lookup's fast path.
-    TextureSystem::Perthread* perthread() const {
-        thread_local const Impl* owner = nullptr;
-        thread_local TextureSystem::Perthread* info = nullptr;
-        if (owner != this || !info) {
-            info = system->get_perthread_info();
-            owner = this;
-        }
-        return info;
-    }
+    /// Every pyramid handed out (a handle may outlive any snapshot that holds it).
+    std::deque<std::unique_ptr<OiioTexels>> pyramids;
 
-    /// The three channels of one lookup as a colour: grey for one- and two-channel images.
-    Color lookup(const TextureHandle& texture, TextureOpt& opt, float s, float t, float dsdx,
-                 float dtdx, float dsdy, float dtdy) const {
-        const int channels = texture.channels >= 3 ? 3 : 1;
-        float result[3] = {0.0f, 0.0f, 0.0f};
-        const bool ok =
-            system->texture(static_cast<TextureSystem::TextureHandle*>(texture.handle), perthread(),
-                            opt, s, t, dsdx, dtdx, dsdy, dtdy, channels, result);
-        if (!ok) {
-            (void)system->geterror();  // a file that broke after opening: shown as missing
-            return missingTexture(s, t);
+    TextureSystem::Perthread* perthread() const { return perthreadOf(system); }
+
+    /// The MIP pyramid of the file registered as `name`, or null when its levels cannot be
+    /// read. Call with registerMutex held.
+    const TexelSource* pyramid(const OIIO::ustring& name, TextureSystem::TextureHandle* handle,
+                               int channels) {
+        int levels = 0;
+        if (!cache->get_image_info(name, 0, 0, OIIO::ustring("miplevels"), OIIO::TypeInt,
+                                   &levels) ||
+            levels <= 0) {
+            (void)cache->geterror();
+            return nullptr;
         }
-        if (channels == 1) return Color(result[0]);
-        return Color(result[0], result[1], result[2]);
+        auto texels = std::make_unique<OiioTexels>(system, handle, channels);
+        texels->levels = std::min(levels, kMaxMipLevels);
+        for (int level = 0; level < texels->levels; ++level) {
+            const OIIO::ImageSpec* spec = cache->imagespec(name, 0, level);
+            if (!spec || spec->width <= 0 || spec->height <= 0) {
+                (void)cache->geterror();
+                return nullptr;
+            }
+            texels->width[std::size_t(level)] = spec->width;
+            texels->height[std::size_t(level)] = spec->height;
+        }
+        pyramids.push_back(std::move(texels));
+        return pyramids.back().get();
     }
 };
 
@@ -109,6 +145,7 @@ void TextureStore::setCacheMegabytes(float mb) {
     if (!(mb > 0.0f) || !std::isfinite(mb)) return;
     impl_->megabytes.store(mb);
     impl_->cache->attribute("max_memory_MB", mb);
+    setResidentTexelBudget(std::size_t(double(mb) * 0.5 * 1024.0 * 1024.0));
 }
 
 float TextureStore::cacheMegabytes() const {
@@ -195,16 +232,22 @@ TextureHandle TextureStore::open(const std::string& path, std::string& error) {
     }
     handle.handle = oiioHandle;
     std::lock_guard<std::mutex> lock(impl_->registerMutex);
+    handle.texels = impl_->pyramid(name, oiioHandle, handle.channels);
+    if (!handle.texels) {
+        error = describeFile(path) + " cannot be read: its MIP levels are not readable";
+        return {};
+    }
     impl_->opened[path] = {FileStamp{modified, size, handle.srgb}, handle};
     return handle;
 }
 
 Color TextureStore::lookup(const TextureHandle& texture, float s, float t, float dsdx, float dtdx,
                            float dsdy, float dtdy) const {
-    if (!texture) return missingTexture(s, t);
-    // OpenImageIO takes its options by non-const reference: one copy per thread, made once.
-    thread_local TextureOpt options = makeOptions(TextureOpt::WrapPeriodic);
-    return impl_->lookup(texture, options, s, t, dsdx, dtdx, dsdy, dtdy);
+    Color c;
+    if (!texture.texels || !filteredLookup(*texture.texels, s, t, dsdx, dtdx, dsdy, dtdy,
+                                           /*clampT=*/false, c))
+        return missingTexture(s, t);  // also a file that broke after opening
+    return c;
 }
 
 Color TextureStore::environment(const TextureHandle& texture, const Vec3& d, float rotationDegrees,
@@ -218,12 +261,14 @@ Color TextureStore::environment(const TextureHandle& texture, const Vec3& d, flo
     s -= std::floor(s);
     const float v = 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) / kPi;
     const float t = 1.0f - v;
-    if (!texture) return missingTexture(s, t);
     const float cone = std::max(coneAngle, 0.0f);
     const float dt = cone / kPi;
     const float ds = std::min(cone / (kTwoPi * std::max(rho, 1e-6f)), 1.0f);
-    thread_local TextureOpt options = makeOptions(TextureOpt::WrapClamp);
-    return impl_->lookup(texture, options, s, t, ds, 0.0f, 0.0f, dt);
+    Color c;
+    if (!texture.texels ||
+        !filteredLookup(*texture.texels, s, t, ds, 0.0f, 0.0f, dt, /*clampT=*/true, c))
+        return missingTexture(s, t);
+    return c;
 }
 
 Color missingTexture(float s, float t) {

@@ -8,6 +8,8 @@
 
 namespace rs {
 
+class TexelSource;
+
 /// Largest texture file opened: 2 GiB (the same bound as meshes).
 inline constexpr std::uintmax_t kMaxTextureFileBytes = std::uintmax_t(2) << 30;
 /// Largest image MIP-mapped on the fly: 4096 x 4096 pixels. OpenImageIO builds the missing
@@ -24,17 +26,20 @@ inline constexpr float kDefaultTextureCacheMegabytes = 256.0f;
 /// An open texture: cheap to copy, valid for the life of the process.
 struct TextureHandle {
     void* handle = nullptr;  ///< OpenImageIO's TextureSystem::TextureHandle.
-    bool srgb = false;       ///< 8- or 16-bit integer texels, decoded from sRGB to linear.
-    int channels = 0;        ///< Channels in the file (1 grey, 2 grey + alpha, 3 RGB, 4 RGBA).
+    /// The file's MIP pyramid as the lookups read it (texel_cache.h); one per version of the
+    /// file opened, never freed.
+    const TexelSource* texels = nullptr;
+    bool srgb = false;  ///< 8- or 16-bit integer texels, decoded from sRGB to linear.
+    int channels = 0;   ///< Channels in the file (1 grey, 2 grey + alpha, 3 RGB, 4 RGBA).
     explicit operator bool() const { return handle != nullptr; }
 };
 
-/// The texture cache. Every call is thread-safe. Lookups take no lock of ours and may run
-/// from many threads: each thread fetches its OpenImageIO per-thread record (with its
-/// micro-cache of recent tiles) once and keeps it. Measured on one core of the 2-core
-/// development machine: about 260 ns a lookup sweeping a 1024^2 PNG coherently, 450-500 ns
-/// at random places, 2.8 us for random directions in a 16k x 8k tiled environment.
-/// Nothing is printed: errors come back to the caller.
+/// The texture cache. Every call is thread-safe. OpenImageIO's TextureSystem opens the files,
+/// builds missing MIP levels and holds the decoded tiles; lookups filter with
+/// filteredLookup (texel_cache.h) over texels copied out of it, whole small levels shared
+/// by all threads and blocks of larger ones per thread, taking no lock. (A TextureSystem
+/// texture() call per lookup cost 260-600 ns on the 2-core development machine, more than
+/// tracing the ray.) Nothing is printed: errors come back to the caller.
 ///
 /// Colours: 8- and 16-bit integer files are sRGB and are decoded to linear as their tiles
 /// enter the cache (exact sRGB EOTF), so filtering and MIP levels average linear values;
@@ -42,8 +47,10 @@ struct TextureHandle {
 /// (never premultiplied into the colour).
 ///
 /// Memory: the cache holds at most cacheMegabytes() of decoded tiles (kMaxAutoMipPixels says
-/// when OpenImageIO may exceed that). Plain PNG/JPEG/... images are MIP-mapped on the fly
-/// (OpenImageIO's automip) and read as 64-row tiles (autotile); open() reads headers only.
+/// when OpenImageIO may exceed that); whole levels copied out for lookups take at most half
+/// as much again, and each rendering thread 3 MiB of blocks. Plain PNG/JPEG/... images are
+/// MIP-mapped on the fly (OpenImageIO's automip) and read as 64-row tiles (autotile); open() reads
+/// headers only.
 class TextureStore {
 public:
     static TextureStore& shared();
@@ -60,7 +67,7 @@ public:
     /// it was last opened is read afresh.
     TextureHandle open(const std::string& path, std::string& error);
 
-    /// Filtered, MIP-mapped lookup (bilinear within a level, anisotropic across levels) at
+    /// Filtered, MIP-mapped lookup (trilinear, anisotropic: filteredLookup) at
     /// (s, t), with the footprint's derivatives along the two screen axes; s and t wrap
     /// periodically, t = 0 is the image's TOP row (so callers pass t = 1 - v). Zero
     /// derivatives give the bilinear interpolation of the full-resolution level, exactly the

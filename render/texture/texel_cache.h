@@ -1,0 +1,70 @@
+// Filtered texture lookups over blocks of texels each thread keeps near at hand.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <memory>
+#include <mutex>
+
+#include "core/math.h"
+
+namespace rs {
+
+/// Most MIP levels a texture has (a 2^31-wide image has 32).
+inline constexpr int kMaxMipLevels = 32;
+/// Most samples one lookup takes along the long axis of an elongated footprint.
+inline constexpr int kMaxAnisotropy = 8;
+
+/// Where the texels come from: one open texture's MIP pyramid (level 0 the full image, each
+/// further level half the size). Immutable after construction; fetch() is thread-safe.
+class TexelSource {
+public:
+    virtual ~TexelSource() = default;
+    /// Copies the texels [x0, x1) x [y0, y1) of `level` into `out` as linear RGB floats,
+    /// row by row, the top row first. False when they cannot be read.
+    virtual bool fetch(int level, int x0, int x1, int y0, int y1, float* out) const = 0;
+
+    int levels = 0;
+    std::array<int, kMaxMipLevels> width{}, height{};
+
+    /// Level `level` whole, when it is small enough and the budget allows (see
+    /// filteredLookup), fetched on the first call; else null.
+    const float* residentLevel(int level) const;
+
+private:
+    enum : unsigned char { kUntried, kResident, kRefused };
+    mutable std::array<std::atomic<unsigned char>, kMaxMipLevels> state_{};
+    mutable std::array<std::unique_ptr<float[]>, kMaxMipLevels> whole_;
+    mutable std::mutex mutex_;
+};
+
+/// Largest level kept whole: 1024 x 1024 texels (12 MiB as RGB floats).
+inline constexpr std::size_t kMaxResidentTexels = std::size_t(1) << 20;
+/// Sets how many bytes all whole levels together may take (default 128 MiB); levels already
+/// kept stay. TextureStore keeps it at half its cache's bound.
+void setResidentTexelBudget(std::size_t bytes);
+
+/// The texture filter every image lookup goes through: trilinear (bilinear within the two
+/// MIP levels whose texels are nearest half the footprint's width, blended by the fraction),
+/// taking up to kMaxAnisotropy such samples spread along the long axis of an elongated
+/// footprint, as OpenImageIO's anisotropic mode does. (s, t) in [0, 1)^2 covers the image
+/// with t = 0 its top row; texel centres lie at ((i + 0.5) / width, (j + 0.5) / height), so a
+/// lookup there with zero derivatives returns the texel exactly. s always wraps periodically;
+/// t wraps periodically, or is clamped to the first and last rows when `clampT` (latitude-
+/// longitude environments). The derivatives are the footprint's two axes in (s, t).
+///
+/// Texels are read from memory the lookup owns, so it takes no lock and makes no call into
+/// the source once they are at hand: a few tens of nanoseconds where a TextureSystem::texture()
+/// call cost 300-600. Levels of up to kMaxResidentTexels are fetched whole on first use and
+/// kept, shared by all threads, while the resident budget lasts (what footprint-filtered
+/// lookups mostly read: a 4096^2 texture seen across 300 pixels is read at its 512^2 and
+/// 256^2 levels). Larger levels come in blocks of 16 x 16 that each thread keeps in its own
+/// direct-mapped table of 1024 blocks (3 MiB a thread). Blocks are keyed by the source's
+/// address and sources are never freed, so a block is never mistaken for another texture's.
+///
+/// Returns false (and leaves `out` alone) when a block could not be fetched.
+bool filteredLookup(const TexelSource& source, float s, float t, float dsdx, float dtdx, float dsdy,
+                    float dtdy, bool clampT, Color& out);
+
+}  // namespace rs
