@@ -476,7 +476,12 @@ Color TraceKernel::transmission(const Vec3& origin, const Vec3& dir, float tmax)
         const CompiledMaterial& m = scene_.materials()[mi];
         if (!(m.transparency > 0.0f)) return Color(0.0f);
         const Vec3 p = o + dir * hit.t;
-        kept *= m.transparency * surfaceColor(m, hit.slot, p, hit.n, Footprint{});
+        // The tint is filtered as finely as the camera sees that point of the glass: a pixel's
+        // cone there (a shadow carries no cone of its own, and point samples of a texture
+        // alias and read its finest level at random).
+        const float width = originWidth_ + spread_ * glm::length(p - scene_.camera().origin());
+        kept *=
+            m.transparency * surfaceColor(m, hit.slot, p, hit.n, footprintAt(dir, hit.n, width));
         if (kept == Color(0.0f)) return kept;
         o = p + dir * eps_;
         left -= hit.t + eps_;
