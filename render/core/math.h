@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <limits>
@@ -28,6 +29,20 @@ inline Vec3 divide(const Vec3& v, float s) {
 inline Vec3 reciprocal(const Vec3& v) {
     const Float4 q = Float4{1.0f, 1.0f, 1.0f, 1.0f} / Float4{v.x, v.y, v.z, 1.0f};
     return Vec3(q[0], q[1], q[2]);
+}
+
+/// floor(x) without a library call (std::floor is one on the baseline x86-64 the project
+/// builds for, which lacks SSE4.1's rounding instruction): the same value as std::floor for
+/// every x (a zero may come back as +0), NaN and infinities included.
+inline double floorInline(double x) {
+    if (!(std::abs(x) < 4.0e15)) return std::floor(x);  // an integer already, or not finite
+    const double t = double(static_cast<long long>(x));
+    return t > x ? t - 1.0 : t;
+}
+inline float floorInline(float x) {
+    if (!(std::abs(x) < 8.0e6f)) return std::floor(x);
+    const float t = float(static_cast<int>(x));
+    return t > x ? t - 1.0f : t;
 }
 
 inline constexpr float kInfinity = std::numeric_limits<float>::infinity();

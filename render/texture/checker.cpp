@@ -15,14 +15,14 @@ constexpr double kFlatHalfWidth = 1e6;
 
 /// The +-1 square wave: +1 on cells with an even floor, -1 on odd ones.
 double squareWave(double c) {
-    const double cell = std::floor(c);
-    const double parity = cell - 2.0 * std::floor(0.5 * cell);  // 0 or 1, exact in double
+    const double cell = floorInline(c);
+    const double parity = cell - 2.0 * floorInline(0.5 * cell);  // 0 or 1, exact in double
     return 1.0 - 2.0 * parity;
 }
 
 /// The integral of the square wave from 0 to c: a triangle wave of period 2 between 0 and 1.
 double squareIntegral(double c) {
-    const double m = c - 2.0 * std::floor(0.5 * c);  // in [0, 2)
+    const double m = c - 2.0 * floorInline(0.5 * c);  // in [0, 2)
     return 1.0 - std::abs(m - 1.0);
 }
 

@@ -71,16 +71,9 @@ BlockTable& table() {
     return blocks;
 }
 
-/// floor(x) for |x| < 2^31, inline (std::floor is a library call without SSE4.1).
-inline float floorOf(float x) {
-    const float truncated = float(int(x));
-    return truncated > x ? truncated - 1.0f : truncated;
-}
-
-/// x - floor(x): the fraction that wraps a texture coordinate into [0, 1]; coordinates too
-/// large for an int (no texture repeats that often) go through std::floor.
+/// x - floor(x): the fraction that wraps a texture coordinate into [0, 1].
 inline float wrapped(float x) {
-    return std::abs(x) < 2.0e9f ? x - floorOf(x) : x - std::floor(x);
+    return x - floorInline(x);
 }
 
 /// Bilinear interpolation of the four texels around (s, t) at one level; s (and t unless
@@ -88,7 +81,7 @@ inline float wrapped(float x) {
 bool bilinear(const TexelSource& source, int level, float s, float t, bool clampT, Color& out) {
     const int w = source.width[std::size_t(level)], h = source.height[std::size_t(level)];
     const float x = s * float(w) - 0.5f, y = t * float(h) - 0.5f;
-    const float fx = floorOf(x), fy = floorOf(std::clamp(y, -1.0f, float(h)));
+    const float fx = floorInline(x), fy = floorInline(std::clamp(y, -1.0f, float(h)));
     const float ax = x - fx, ay = y - fy;
     // fx is in [-1, w - 1] for s in [0, 1]: the texel left of the first is the last.
     const int x0 = fx < 0.0f ? w - 1 : std::min(int(fx), w - 1);
