@@ -91,6 +91,7 @@ bool MainWindow::openFile(const QString& path) {
                         .arg(path, QString::fromStdString(result.errorText())));
         return false;
     }
+    anchorSunGlyphs(result.document);
     editor_->resetDocument(std::move(result.document), QFileInfo(path).absoluteFilePath());
     addRecentFile(QFileInfo(path).absoluteFilePath());
     if (result.warnings.empty()) {

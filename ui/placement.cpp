@@ -92,4 +92,17 @@ float fitScale(const Aabb& bounds, const Camera& view, float distance) {
     return range ? std::clamp(factor, float(range->softMin), float(range->softMax)) : factor;
 }
 
+void anchorSunGlyphs(SceneDocument& doc) {
+    Aabb bounds;
+    for (const Object& o : doc.objects) bounds.expand(worldBounds(doc, o.id));
+    const Vec3 centre = bounds.empty() ? Vec3(0.0f) : bounds.center();
+    const float radius = bounds.empty() ? 0.0f : 0.5f * glm::length(bounds.extent());
+    for (Light& l : doc.lights) {
+        if (l.type != LightType::Directional || l.position != Vec3(0.0f)) continue;
+        const float length = glm::length(l.direction);
+        const Vec3 toward = length > 0.0f ? l.direction / length : Vec3(0.0f, -1.0f, 0.0f);
+        l.position = centre - toward * (radius + 1.0f);
+    }
+}
+
 }  // namespace rs::ui

@@ -47,4 +47,11 @@ inline constexpr float kMinViewShare = 0.02f;
 inline constexpr float kMaxViewShare = 1.0f;
 inline constexpr float kFitViewShare = 0.5f;
 
+/// Gives each sun light read from a file a place to draw its glyph: a sun has no position
+/// (the file has none for it, so it reads as the origin, often inside the scene or out of
+/// view), so its glyph goes upstream of the scene, against its direction from the centre
+/// of the objects' bounds by their radius plus one unit, where the light comes from. Suns
+/// with a position other than the origin (placed in this run of the designer) keep it.
+void anchorSunGlyphs(SceneDocument& doc);
+
 }  // namespace rs::ui

@@ -48,6 +48,7 @@ private Q_SLOTS:
     void materials_DeleteRefusedWhileUsed_RenameFollowsUsers_NamesValidated();
     void placement_RestsOnTheSurfaceHit_OrSnapsToTheFloorBelow();
     void fitScale_ScalesOnlyMeshesThatDoNotFitTheView();
+    void sunGlyph_FromAFile_GoesUpstreamOfTheScene();
     void displayAutomatic_PicksSoftwareOnSoftwareGL_OpenGLOnAGpu();
     void scaleAlongWorldX_StretchesTheAxisOfARotatedObjectThatLiesAlongX();
     void scaleAlongLocalAxes_MovesOtherObjectsAlongThoseAxes();
@@ -122,6 +123,28 @@ void UiLogicTest::fitScale_ScalesOnlyMeshesThatDoNotFitTheView() {
     // A factor the Scale field could not show is clamped to its range.
     QCOMPARE(fitScale(cube(1e9f), view, 10.0f),
              float(findParameter(ParamKind::Transform, "scale")->softMin));
+}
+
+void UiLogicTest::sunGlyph_FromAFile_GoesUpstreamOfTheScene() {
+    SceneDocument doc;
+    Object ball;
+    ball.geometry = SphereGeometry{Vec3(4.0f, 1.0f, 0.0f), 1.0f};  // bounds (3..5, 0..2, -1..1)
+    doc.addObject(ball);
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = Vec3(0.0f, -2.0f, 0.0f);  // straight down, any length
+    const ObjectId read = doc.addLight(sun);
+    sun.position = Vec3(7.0f, 7.0f, 7.0f);  // placed by the user in this run: kept
+    const ObjectId placed = doc.addLight(sun);
+    Light lamp;
+    const ObjectId point = doc.addLight(lamp);  // a point light at the origin: not a sun
+    anchorSunGlyphs(doc);
+    // Bounds centre (4, 1, 0), radius half the diagonal, sqrt(12) / 2; the glyph goes up
+    // (against the light) from the centre by that radius plus one unit.
+    const Vec3 expected(4.0f, 1.0f + std::sqrt(3.0f) + 1.0f, 0.0f);
+    QVERIFY(glm::length(doc.findLight(read)->position - expected) < 1e-5f);
+    QCOMPARE(doc.findLight(placed)->position, Vec3(7.0f, 7.0f, 7.0f));
+    QCOMPARE(doc.findLight(point)->position, Vec3(0.0f));
 }
 
 void UiLogicTest::duplicate_CountsOnFromTheCopysNumber() {
