@@ -94,34 +94,29 @@ bool bilinear(const TexelSource& source, int level, float s, float t, bool clamp
         y0 = fy < 0.0f ? h - 1 : std::min(int(fy), h - 1);
         y1 = y0 + 1 == h ? 0 : y0 + 1;
     }
-    const int xs[2] = {x0, x1}, ys[2] = {y0, y1};
-    Color texel[2][2];
+    const float* p[4];  // (x0, y0), (x1, y0), (x0, y1), (x1, y1)
     if (const float* whole = source.residentLevel(level)) {
-        for (int j = 0; j < 2; ++j) {
-            const float* row = whole + std::size_t(ys[j]) * std::size_t(w) * 3;
-            for (int i = 0; i < 2; ++i) {
-                const float* p = row + std::size_t(xs[i]) * 3;
-                texel[j][i] = Color(p[0], p[1], p[2]);
-            }
-        }
+        const float* row0 = whole + std::size_t(y0) * std::size_t(w) * 3;
+        const float* row1 = whole + std::size_t(y1) * std::size_t(w) * 3;
+        p[0] = row0 + x0 * 3, p[1] = row0 + x1 * 3, p[2] = row1 + x0 * 3, p[3] = row1 + x1 * 3;
     } else {
         BlockTable& blocks = table();
         const Block* last = nullptr;
-        for (int j = 0; j < 2; ++j)
-            for (int i = 0; i < 2; ++i) {
-                const int tx = xs[i], ty = ys[j];
-                if (!last || last->bx != tx >> kBlockBits || last->by != ty >> kBlockBits) {
-                    last = blocks.find(source, level, tx, ty);
-                    if (!last) return false;
-                }
-                const float* p =
-                    last->texels + ((ty & kBlockMask) * kBlock + (tx & kBlockMask)) * 3;
-                texel[j][i] = Color(p[0], p[1], p[2]);
+        const int xs[2] = {x0, x1}, ys[2] = {y0, y1};
+        for (int k = 0; k < 4; ++k) {
+            const int tx = xs[k & 1], ty = ys[k >> 1];
+            if (!last || last->bx != tx >> kBlockBits || last->by != ty >> kBlockBits) {
+                last = blocks.find(source, level, tx, ty);
+                if (!last) return false;
             }
+            p[k] = last->texels + ((ty & kBlockMask) * kBlock + (tx & kBlockMask)) * 3;
+        }
     }
-    const Color top = texel[0][0] + (texel[0][1] - texel[0][0]) * ax;
-    const Color bottom = texel[1][0] + (texel[1][1] - texel[1][0]) * ax;
-    out = top + (bottom - top) * ay;
+    const float w1 = ax * ay, w0 = ay - w1, w3 = ax - w1;  // (x1,y1), (x0,y1), (x1,y0)
+    const float w2 = 1.0f - ax - w0;                       // (x0, y0)
+    out = Color(w2 * p[0][0] + w3 * p[1][0] + w0 * p[2][0] + w1 * p[3][0],
+                w2 * p[0][1] + w3 * p[1][1] + w0 * p[2][1] + w1 * p[3][1],
+                w2 * p[0][2] + w3 * p[1][2] + w0 * p[2][2] + w1 * p[3][2]);
     return true;
 }
 
