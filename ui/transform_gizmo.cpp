@@ -147,8 +147,12 @@ std::optional<GizmoHandle> TransformGizmo::handleAt(const QPointF& p) const {
 
 QRectF TransformGizmo::bounds() const {
     if (!valid_) return {};
-    QRectF r(centre_, QSizeF(0.0, 0.0));
-    const auto add = [&r](const QPointF& p) { r = r.united(QRectF(p, QSizeF(0.0, 0.0))); };
+    // By coordinates: QRectF::united ignores a rectangle of no size, i.e. every point.
+    double x0 = centre_.x(), y0 = centre_.y(), x1 = x0, y1 = y0;
+    const auto add = [&](const QPointF& p) {
+        x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
+        x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
+    };
     for (const Axis& a : axes_) {
         if (a.shown) add(a.tip), add(a.scaleBox);
         for (const QPointF& p : a.planeSquare) add(p);
@@ -156,7 +160,7 @@ QRectF TransformGizmo::bounds() const {
     }
     // Scale boxes, arrow heads and pens reach past the points above.
     constexpr double kReach = 12.0;
-    return r.adjusted(-kReach, -kReach, kReach, kReach);
+    return QRectF(QPointF(x0, y0), QPointF(x1, y1)).adjusted(-kReach, -kReach, kReach, kReach);
 }
 
 std::optional<QPointF> TransformGizmo::grabPoint(const GizmoHandle& h) const {

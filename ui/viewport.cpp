@@ -40,7 +40,13 @@ Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* par
     : QWidget(parent),
       editor_(editor),
       session_(session),
-      overlay_(new ViewportOverlay([this](QPainter& p) { paintOverlay(p); }, this)) {
+      overlay_(new ViewportOverlay(
+          [this](QPainter& p) {
+              // Any paint, a tile's too, draws the overlay as it is at that moment.
+              overlayShown_ += overlayRegion();
+              paintOverlay(p);
+          },
+          this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     installFrameView(createFrameView(this, display));

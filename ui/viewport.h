@@ -178,8 +178,10 @@ private:
     FrameView* view_;
     ViewportOverlay* overlay_;
     std::vector<LightGlyph> glyphs_;
-    QRegion overlayShown_;  ///< overlayRegion() when the overlay was last repainted.
-    QRectF outputShown_;    ///< The passepartout's output frame then.
+    /// Everywhere the overlay may be on screen: overlayRegion() at the last repaintOverlay()
+    /// and at every paint since (a repaint of frame tiles draws the overlay of that moment).
+    QRegion overlayShown_;
+    QRectF outputShown_;  ///< The passepartout's output frame then.
     std::shared_ptr<const DisplayFrame> frame_;
     ViewMode mode_ = ViewMode::Color;
     RepaintPacing pacing_;
