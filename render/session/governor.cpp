@@ -66,6 +66,8 @@ namespace {
 /// When no level meets the target, a deeper measured one is taken over the fastest so far
 /// only if it is this much faster (not the blocks or the box for a few percent).
 constexpr double kClearlyFaster = 0.8;
+/// A less-reduced level not measured yet is tried when predicted within this many targets.
+constexpr double kProbeReach = 2.0;
 }  // namespace
 
 int Governor::choose(const InteractionPolicy& base, std::size_t stalePixels,
@@ -73,12 +75,25 @@ int Governor::choose(const InteractionPolicy& base, std::size_t stalePixels,
     int fastest = 0;
     double fastestMs = 0.0;
     InteractionPolicy previous;
+    // The nearest less-reduced level not measured yet, and its prediction.
+    int unmeasured = -1;
+    double unmeasuredMs = 0.0;
     for (int level = 0; level < kLevels; ++level) {
         const InteractionPolicy p = policyForLevel(base, level);
         if (level > 0 && p == previous) continue;  // Nothing more turned down.
         previous = p;
         const double ms = tracedPixels(p, stalePixels) * predictedMsPerPixel(base, level);
-        if (ms <= targetMs) return level;
+        if (ms <= targetMs) {
+            // Predictions of a level from another's measurement scale by pixel counts and
+            // the thesis's ratios, which overstate what a finer level costs (every pass
+            // also fills and commits its pixels): a less-reduced level predicted within
+            // reach is tried, and its own measurement decides from then on.
+            if (unmeasured >= 0 && measured_[std::size_t(level)] &&
+                unmeasuredMs <= kProbeReach * targetMs)
+                return unmeasured;
+            return level;
+        }
+        if (!measured_[std::size_t(level)]) unmeasured = level, unmeasuredMs = ms;
         // A level measured to change the picture more must be clearly faster to be worth it
         // (one only predicted is tried when faster at all: then it is measured).
         const double margin = measured_[std::size_t(level)] ? kClearlyFaster : 1.0;

@@ -30,7 +30,11 @@ public:
 
     /// Picks the least-reduced level whose predicted frame time meets `targetMs`; when none
     /// does, the level predicted fastest (a deeper level that measured no faster, because
-    /// it still fills and commits every pixel, is not taken for nothing).
+    /// it still fills and commits every pixel, is not taken for nothing). When the level
+    /// that meets the target was measured and a less-reduced one was not, but is predicted
+    /// within twice the target, that one is taken instead, to be measured: quality comes
+    /// back as soon as the machine allows (a level measured too slow is tried again only
+    /// once forgotten, kForgetAfter passes later).
     int choose(const InteractionPolicy& base, std::size_t stalePixels, double targetMs) const;
     /// Feeds back an interactive pass at `level`: `ms` to its end, or to the edit that cut it,
     /// and the pixels it traced by then (a cut pass costs what it traced before the cut).

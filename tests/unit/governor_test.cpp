@@ -1,6 +1,9 @@
 // The interaction policy's file form and the governor's choice of levels.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "session_test_support.h"
 
 namespace rs {
@@ -130,6 +133,49 @@ TEST(Governor, ALevelMeasuredSlowIsTriedAgainOnceOthersHaveRunForAWhile) {
     EXPECT_GT(g.choose(defaults, 15000, 100.0), 0);
     g.record(2, 0.375, 3750);  // Level 0 forgotten: predicted from level 2's load now.
     EXPECT_EQ(g.choose(defaults, 15000, 100.0), 0);
+}
+
+/// Passes of a machine where a pass costs `fixedMs` plus `msPerPixel` a traced pixel at
+/// every level, `passes` times over a frame of `pixels`; returns the level of each pass.
+std::vector<int> drive(Governor& g, double fixedMs, double msPerPixel, std::size_t pixels,
+                       double targetMs, int passes) {
+    const InteractionPolicy defaults;
+    std::vector<int> levels;
+    for (int i = 0; i < passes; ++i) {
+        const int level = g.choose(defaults, pixels, targetMs);
+        const double traced =
+            Governor::tracedPixels(Governor::policyForLevel(defaults, level), pixels);
+        g.record(level, fixedMs + msPerPixel * traced, std::size_t(traced));
+        levels.push_back(level);
+    }
+    return levels;
+}
+
+TEST(Governor, ADragThatFitsTheBudgetAtFullQualityGetsFullQualityBack) {
+    // A 1 Mpixel step costs 4 ms plus 16 ms of pixels at full quality: well within 30 ms.
+    // The calibration (a still pass with its supersamples) predicts 45 ms, so the first
+    // pass is turned down; measuring the finer level then brings it back for good.
+    Governor g;
+    g.calibrate(1e-4);
+    const std::vector<int> levels = drive(g, 4.0, 1.6e-5, 1000000, 30.0, 40);
+    EXPECT_GT(levels.front(), 0);
+    const auto firstFull = std::find(levels.begin(), levels.end(), 0);
+    ASSERT_NE(firstFull, levels.end());
+    EXPECT_LE(firstFull - levels.begin(), 3);
+    EXPECT_TRUE(std::all_of(firstFull, levels.end(), [](int l) { return l == 0; }));
+}
+
+TEST(Governor, ALevelTooSlowIsProbedOnlyOnceItIsForgotten) {
+    // Full quality really costs 56 ms: half resolution measures 14 ms, which predicts 56
+    // within reach, so full quality is tried; after that probe half resolution stays, and
+    // full quality is tried again only every kForgetAfter passes.
+    Governor g;
+    g.calibrate(1e-4);
+    const std::vector<int> levels = drive(g, 0.0, 5.6e-5, 1000000, 30.0, 200);
+    const long full = std::count(levels.begin(), levels.end(), 0);
+    EXPECT_GE(full, 1);
+    EXPECT_LE(full, 200 / Governor::kForgetAfter + 1);
+    EXPECT_EQ(levels.back() == 0 ? levels[levels.size() - 2] : levels.back(), 2);
 }
 
 }  // namespace
