@@ -408,9 +408,9 @@ void Viewport::finishBox(const QRect& box, bool add) {
 
 void Viewport::wheelEvent(QWheelEvent* e) {
     pacing_.input(paceClock_.elapsed());  // More steps may follow: show them as they come.
-    Camera c = viewCamera_;
-    dolly(c, e->angleDelta().y() / 120.0f * 0.1f);
-    setView(c);
+    const float clicks = e->angleDelta().y() / 120.0f;
+    if (clicks == 0.0f) return;
+    setView(dollied(clicks, e->position()));
 }
 
 void Viewport::keyPressEvent(QKeyEvent* e) {

@@ -161,6 +161,12 @@ private:
     void orbitView(const QPoint& delta);
     /// How far from `from` along unit `dir` the first surface not of `ignore` lies.
     float freeDistance(const Vec3& from, const Vec3& dir, ObjectId ignore) const;
+    /// The view camera after `clicks` wheel clicks (positive: in) at widget point `cursor`:
+    /// in by a tenth a click of the distance to the surface under the cursor, out by a tenth
+    /// of the distance to the target, never through a surface (stopping short, as orbit).
+    Camera dollied(float clicks, const QPointF& cursor) const;
+    /// How far a dolly may go toward a surface `free` away.
+    float dollyRoom(float free) const;
 
     // viewport_gesture.cpp
     bool startGesture(TransformKind kind, const QPointF& cursor,

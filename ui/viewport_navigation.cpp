@@ -14,6 +14,11 @@ namespace rs::ui {
 namespace {
 /// How far short of the first surface behind the view F stops, as a share of its distance.
 constexpr float kWallClearance = 0.9f;
+/// Share of the distance a wheel click dollies the view.
+constexpr float kDollyShare = 0.1f;
+/// The least a dolly keeps from a surface, as a share of the scene camera's distance to its
+/// target.
+constexpr float kDollyGap = 0.02f;
 /// Surfaces of the selection itself a framing ray passes through before it finds a wall.
 constexpr int kMaxSelfHits = 8;
 /// A plane nearer than this to a cast's start is the one it starts on.
@@ -167,6 +172,50 @@ float Viewport::freeDistance(const Vec3& from, const Vec3& dir, ObjectId ignore)
         if (t > kOnPlane) free = std::min(free, t);
     }
     return free;
+}
+
+float Viewport::dollyRoom(float free) const {
+    // Short of the surface by a share of the way and by a gap of the scene's scale (the
+    // scene camera's distance to its target): without the gap, click after click would
+    // creep up to a wall until it counted as the plane the view stands on, and pass it.
+    const Camera& scene = editor_->document().camera;
+    const float gap = kDollyGap * glm::length(scene.target - scene.position);
+    return std::max(0.0f, std::min(free * kWallClearance, free - gap));
+}
+
+Camera Viewport::dollied(float clicks, const QPointF& cursor) const {
+    Camera c = viewCamera_;
+    if (c.projection == Projection::Orthographic) {
+        dolly(c, clicks * kDollyShare);
+        return c;
+    }
+    const Vec3 forward = c.target - c.position;
+    const float toTarget = glm::length(forward);
+    if (!(toTarget > 1e-6f)) return c;
+    const Vec3 dir = forward / toTarget;
+    if (clicks > 0.0f) {
+        // In: a share of the distance to what is under the cursor (the target's without a
+        // surface there), stopping short of the first surface ahead.
+        float under = toTarget;
+        if (const auto snapshot = session_->session().snapshot()) {
+            const Ray ray = projection().rayThrough(cursor);
+            SurfaceHit hit;
+            if (snapshot->intersect(ray, kInfinity, hit)) under = hit.t;
+        }
+        const float ahead = dollyRoom(freeDistance(c.position, dir, kNoObject));
+        const float step = std::min(std::min(clicks * kDollyShare, 0.9f) * under, ahead);
+        if (!(step > 0.0f)) return c;
+        c.position += dir * step;
+        // Never onto or past the target: it moves on ahead of the view.
+        if (toTarget - step < kDollyShare * under)
+            c.target = c.position + dir * (kDollyShare * under);
+        return c;
+    }
+    // Out: a share of the distance to the target, stopping short of the surface behind.
+    const float behind = dollyRoom(freeDistance(c.position, -dir, kNoObject));
+    const float step = std::min(-clicks * kDollyShare * toTarget, behind);
+    if (step > 0.0f) c.position -= dir * step;
+    return c;
 }
 
 void Viewport::orbitView(const QPoint& delta) {

@@ -65,6 +65,7 @@ private Q_SLOTS:
     void sceneCameraFromView_IsOneUndoStep_AndThroughSceneCameraFollowsIt();
     void axisViews_LookAlongTheWorldAxes();
     void frameSelection_InTheReferenceRoom_KeepsTheViewInsideTheWalls();
+    void wheel_DollyStopsShortOfTheWalls_AndStepsByWhatIsUnderTheCursor();
     void rotateZ45Enter_RotatesByFortyFiveDegrees_InOneUndoStep();
     void scale2Enter_DoublesTheScale_InPlace();
     void moveX1Enter_MovesByOneAlongX();
@@ -266,6 +267,50 @@ void EditingTest::frameSelection_InTheReferenceRoom_KeepsTheViewInsideTheWalls()
     }
     QVERIFY(doc().sameContent(before));
     QCOMPARE(window_->editor()->undoStack()->count(), 0);
+}
+
+void EditingTest::wheel_DollyStopsShortOfTheWalls_AndStepsByWhatIsUnderTheCursor() {
+    Viewport* v = viewport();
+    auto wheel = [&](int clicks, const QPoint& at) {
+        for (int i = 0; i < std::abs(clicks); ++i) {
+            QWheelEvent e(at, v->mapToGlobal(at), QPoint(), QPoint(0, clicks > 0 ? 120 : -120),
+                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+            QApplication::sendEvent(v, &e);
+        }
+    };
+    const QPoint centre = v->rect().center();
+    QString wall;
+    // Out, far more than the room is deep: the view stays inside, short of the front wall.
+    const Vec3 start = v->viewCamera().position;
+    wheel(-40, centre);
+    QVERIFY2(insideWalls(doc(), v->viewCamera().position, &wall),
+             qPrintable("out: behind " + wall + " at " + str(v->viewCamera().position)));
+    QVERIFY(glm::length(v->viewCamera().position - start) > 0.1f);  // It did move out.
+    // In, far more than the room is deep: short of the back wall.
+    wheel(60, centre);
+    QVERIFY2(insideWalls(doc(), v->viewCamera().position, &wall),
+             qPrintable("in: behind " + wall + " at " + str(v->viewCamera().position)));
+
+    // One click in over a ball moves a tenth of the way to its surface; over the back wall,
+    // a tenth of the way to the wall: further.
+    const ObjectId ball = idOf(*window_, "orange ball");
+    v->viewThroughSceneCamera();
+    QVERIFY(settle(*window_));
+    const auto [bx, by] = pixelOf(*v->frame(), ball);
+    const Vec3 eye = v->viewCamera().position;
+    wheel(1, v->widgetPointOf(bx, by));
+    const float towardBall = glm::length(v->viewCamera().position - eye);
+    // The surface under the cursor is nearer than the ball's centre.
+    const float toSurfaceAtMost = glm::length(*entityCentre(doc(), ball) - eye);
+    QVERIFY(towardBall > 0.0f);
+    QVERIFY2(towardBall <= 0.1f * toSurfaceAtMost + 1e-4f, qPrintable(QString::number(towardBall)));
+    v->viewThroughSceneCamera();
+    QVERIFY(settle(*window_));
+    const auto [wx, wy] = pixelOf(*v->frame(), idOf(*window_, "back wall"));
+    wheel(1, v->widgetPointOf(wx, wy));
+    const float towardWall = glm::length(v->viewCamera().position - eye);
+    QVERIFY2(towardWall > towardBall,
+             qPrintable(QString::number(towardWall) + " vs " + QString::number(towardBall)));
 }
 
 void EditingTest::rotateZ45Enter_RotatesByFortyFiveDegrees_InOneUndoStep() {
