@@ -142,10 +142,11 @@ void MainWindow::createActions() {
 
     // Placement (issue 11): new objects rest on the surface under the view centre, or with
     // this on, on the floor below that point. Kept across sessions.
-    snapToFloorAct_ = new QAction(tr("Snap New Objects to &Floor"), this);
+    snapToFloorAct_ = new QAction(tr("Snap Dropped Meshes to &Floor"), this);
     snapToFloorAct_->setObjectName(QStringLiteral("snapToFloor"));
     snapToFloorAct_->setCheckable(true);
-    snapToFloorAct_->setStatusTip(tr("New objects rest on the surface below where you look"));
+    snapToFloorAct_->setStatusTip(
+        tr("A mesh dropped on the viewport drops onto the surface below"));
     snapToFloorAct_->setChecked(
         QSettings().value(QStringLiteral("placement/snapToFloor")).toBool());
     connect(snapToFloorAct_, &QAction::toggled, this,
@@ -178,24 +179,13 @@ void MainWindow::createDocks() {
 }
 
 void MainWindow::addAimedLightAction(LightType type) {
-    // A spot goes above the point the view looks at, aimed at it; a sun (no position) has
-    // its glyph drawn there.
+    // A spot hangs in front of the view above the floor, aimed at the floor below it; a sun
+    // (no position) has its glyph drawn there.
     SceneDocument doc = editor_->document();
-    const Placement place = placementAt(std::nullopt);
-    const ObjectId id = addLight(doc, type, place.point);
+    const ObjectId id = addLight(doc, type, Vec3(0.0f));
+    const Vec3 ground = placeNewInView(doc, id);
     Light* l = doc.findLight(id);
-    if (type == LightType::Spot) {
-        const float len = glm::length(doc.camera.up);
-        const Vec3 up = len > 1e-6f ? doc.camera.up / len : Vec3(0.0f, 1.0f, 0.0f);
-        float height = std::clamp(0.5f * place.distance, 1.0f, 5.0f);
-        // Below a ceiling, if there is one: a spot above it would light nothing.
-        const auto snapshot = session_->session().snapshot();
-        const Placement above =
-            placeAlong(snapshot.get(), Ray::make(place.point + up * 1e-3f, up), height / 0.8f);
-        if (above.onSurface) height = std::min(height, 0.8f * above.distance);
-        l->target = place.point;
-        l->position = place.point + up * height;
-    }
+    if (type == LightType::Spot) l->target = ground;  // Hung above the floor, aimed at it.
     const QString text = tr("Add %1").arg(QString::fromStdString(l->name));
     editor_->edit(text, std::move(doc));
     editor_->setSelection(id);

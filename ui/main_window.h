@@ -127,6 +127,9 @@ private:
     /// Places new object or light `id` of `doc` at `at`: resting on the surface there, or
     /// on the floor below it with Add -> Snap to Floor.
     void placeNew(SceneDocument& doc, ObjectId id, const Placement& at) const;
+    /// Places new `id` in front of the view, on the floor, clear of other objects
+    /// (placeInView); returns the floor point under it.
+    Vec3 placeNewInView(SceneDocument& doc, ObjectId id) const;
     void onSessionError(const QString& message);
     void addShapeAction(ShapeKind kind);
     void addLightAction(LightType type);

@@ -166,9 +166,14 @@ void MainWindow::importMesh(const QString& path, std::optional<QPoint> at) {
             addMesh(doc, QFileInfo(path).absoluteFilePath().toStdString(), r.mesh, place.point);
         // A mesh at its file's own size can swallow the view (a 150-unit spider) or vanish
         // in it: scale it to fit, and say so; Transform -> Scale in Properties edits it.
-        const float factor = fitScale(r.mesh->bounds(), viewport_->viewCamera(), place.distance);
+        const float distance = at ? place.distance : fallbackDistance(viewport_->viewCamera());
+        const float factor = fitScale(r.mesh->bounds(), viewport_->viewCamera(), distance);
         doc.findObject(id)->transform.scale = Vec3(factor);
-        placeNew(doc, id, place);
+        // Dropped on a point: there; from the menu: in front of the view, on the floor.
+        if (at)
+            placeNew(doc, id, place);
+        else
+            placeNewInView(doc, id);
         const QString name = QString::fromStdString(doc.findObject(id)->name);
         editor_->edit(tr("Import %1").arg(name), std::move(doc));
         editor_->setSelection(id);
@@ -335,11 +340,20 @@ void MainWindow::placeNew(SceneDocument& doc, ObjectId id, const Placement& at) 
     snapToFloor(doc, id, snapshot.get(), len > 1e-6f ? up / len : Vec3(0.0f, 1.0f, 0.0f));
 }
 
+Vec3 MainWindow::placeNewInView(SceneDocument& doc, ObjectId id) const {
+    const float len = glm::length(doc.camera.up);
+    const Vec3 up = len > 1e-6f ? doc.camera.up / len : Vec3(0.0f, 1.0f, 0.0f);
+    session_->flushUpdate();  // The snapshot's surfaces must be the document's.
+    const auto snapshot = session_->session().snapshot();
+    const QSize size = viewport_->size();
+    const float aspect = size.height() > 0 ? float(size.width()) / float(size.height()) : 1.0f;
+    return placeInView(doc, id, snapshot.get(), viewport_->viewCamera(), up, aspect);
+}
+
 void MainWindow::addShapeAction(ShapeKind kind) {
     SceneDocument doc = editor_->document();
-    const Placement place = placementAt(std::nullopt);
-    const ObjectId id = addShape(doc, kind, place.point);
-    placeNew(doc, id, place);
+    const ObjectId id = addShape(doc, kind, Vec3(0.0f));
+    placeNewInView(doc, id);
     const QString text = tr("Add %1").arg(QString::fromStdString(doc.findObject(id)->name));
     editor_->edit(text, std::move(doc));
     editor_->setSelection(id);
@@ -347,9 +361,8 @@ void MainWindow::addShapeAction(ShapeKind kind) {
 
 void MainWindow::addLightAction(LightType type) {
     SceneDocument doc = editor_->document();
-    const Placement place = placementAt(std::nullopt);
-    const ObjectId id = addLight(doc, type, place.point);
-    placeNew(doc, id, place);
+    const ObjectId id = addLight(doc, type, Vec3(0.0f));
+    placeNewInView(doc, id);
     const QString text = tr("Add %1").arg(QString::fromStdString(doc.findLight(id)->name));
     editor_->edit(text, std::move(doc));
     editor_->setSelection(id);

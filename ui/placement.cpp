@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "scene/parameters.h"
 #include "scene_edits.h"
@@ -90,6 +91,122 @@ float fitScale(const Aabb& bounds, const Camera& view, float distance) {
     const ParamDescriptor* range = findParameter(ParamKind::Transform, "scale");
     const float factor = twoSignificantDigits(kFitViewShare / share);
     return range ? std::clamp(factor, float(range->softMin), float(range->softMax)) : factor;
+}
+
+namespace {
+
+/// The first surface from `from` along unit `dir`, or nullopt.
+std::optional<float> surfaceAlong(const CompiledScene* scene, const Vec3& from, const Vec3& dir) {
+    SurfaceHit hit;
+    if (!scene || !scene->intersect(Ray::make(from, dir), kInfinity, hit) || !std::isfinite(hit.t))
+        return std::nullopt;
+    return hit.t;
+}
+
+bool overlapsAny(const SceneDocument& doc, ObjectId id, const Aabb& b) {
+    for (const Object& o : doc.objects) {
+        if (o.id == id || !o.visible) continue;
+        const Aabb other = worldBounds(doc, o.id);
+        if (!other.empty() && other.overlaps(b)) return true;
+    }
+    return false;
+}
+
+/// Whether every corner of `b` lies inside the view's frustum (perspective; an orthographic
+/// view sees whatever is in front).
+bool inSight(const Aabb& b, const Camera& view, float aspect) {
+    const Vec3 forward = glm::normalize(view.target - view.position);
+    const Vec3 right = glm::normalize(glm::cross(forward, view.up));
+    const Vec3 up = glm::cross(right, forward);
+    const float tanY = std::tan(glm::radians(view.fovY) * 0.5f), tanX = tanY * aspect;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 c((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                     (corner & 4) ? b.max.z : b.min.z);
+        const Vec3 d = c - view.position;
+        const float z = glm::dot(d, forward);
+        if (!(z > 0.0f)) return false;
+        if (view.projection == Projection::Orthographic) continue;
+        if (std::abs(glm::dot(d, right)) > z * tanX || std::abs(glm::dot(d, up)) > z * tanY)
+            return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+Vec3 placeInView(SceneDocument& doc, ObjectId id, const CompiledScene* scene, const Camera& view,
+                 const Vec3& up, float aspect) {
+    const Vec3 toTarget = view.target - view.position;
+    const Vec3 dir = glm::length(toTarget) > 1e-6f ? glm::normalize(toTarget) : Vec3(0, 0, -1);
+    float distance = fallbackDistance(view);
+    if (const auto ahead = surfaceAlong(scene, view.position, dir))
+        distance = std::min(distance, 0.5f * *ahead);
+    const Vec3 front = view.position + dir * distance;
+    const auto below = surfaceAlong(scene, front, -up);
+    const Vec3 ground = below ? front - up * *below : front;
+
+    if (Light* l = doc.findLight(id)) {
+        const auto above = surfaceAlong(scene, ground + up * 1e-3f, up);
+        const float lift = above ? *above / 3.0f : distance / 3.0f;
+        l->position = ground + up * lift;
+        return ground;
+    }
+    Object* o = doc.findObject(id);
+    if (!o) return ground;
+    if (auto* plane = std::get_if<PlaneGeometry>(&o->geometry)) {
+        float lowest = kInfinity;
+        for (const Object& other : doc.objects) {
+            const Aabb b = other.id == id ? Aabb{} : worldBounds(doc, other.id);
+            if (b.empty()) continue;
+            for (int corner = 0; corner < 8; ++corner) {
+                const Vec3 c((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                             (corner & 4) ? b.max.z : b.min.z);
+                lowest = std::min(lowest, glm::dot(c, up));
+            }
+        }
+        plane->normal = up;
+        plane->point =
+            std::isfinite(lowest) ? ground + up * (lowest - glm::dot(ground, up)) : ground;
+        return plane->point;
+    }
+    const Aabb start = worldBounds(doc, id);
+    if (start.empty()) return ground;
+    // Across the view (right, left, twice as far right, ...) by a bit more than its width;
+    // then the same a step further out (a big import on the floor near the view shows only
+    // its top), never past most of the way to the surface ahead.
+    const Vec3 across = glm::length(glm::cross(dir, up)) > 1e-6f
+                            ? glm::normalize(glm::cross(dir, up))
+                            : Vec3(1.0f, 0.0f, 0.0f);
+    const float stride = 1.25f * 2.0f * halfDepth(start, across);
+    const auto ahead = surfaceAlong(scene, view.position, dir);
+    const float farthest = ahead ? 0.8f * *ahead - halfDepth(start, dir) : kInfinity;
+    // Touching counts: resting on top of another object is not clear of it.
+    const Vec3 margin = 0.01f * start.extent();
+    std::optional<Vec3> firstSeen;
+    Vec3 firstRest(0.0f);
+    for (const float depth : {1.0f, 1.4f, 2.0f, 2.8f}) {
+        const float d = depth == 1.0f ? distance : std::min(distance * depth, farthest);
+        if (depth > 1.0f && !(d > distance)) break;
+        for (int k = 0; k < kPlacementTries; ++k) {
+            const float side = float((k + 1) / 2) * (k % 2 ? 1.0f : -1.0f);
+            const Vec3 at = view.position + dir * d + across * (side * stride);
+            Vec3 rest = at;
+            if (const auto floor = surfaceAlong(scene, at, -up))
+                rest = at - up * (*floor - halfDepth(start, up));
+            if (depth == 1.0f && k == 0) firstRest = rest;
+            moveBy(doc, id, rest - worldBounds(doc, id).center());
+            Aabb now = worldBounds(doc, id);
+            if (!inSight(now, view, aspect)) continue;  // Only where it can be seen.
+            if (!firstSeen) firstSeen = rest;
+            now.min -= margin;
+            now.max += margin;
+            if (!overlapsAny(doc, id, now)) return rest - up * halfDepth(start, up);
+        }
+    }
+    // Crowded all round: in sight if it can be, else straight ahead.
+    const Vec3 rest = firstSeen.value_or(firstRest);
+    moveBy(doc, id, rest - worldBounds(doc, id).center());
+    return rest - up * halfDepth(start, up);
 }
 
 void anchorSunGlyphs(SceneDocument& doc) {

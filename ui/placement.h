@@ -47,6 +47,23 @@ inline constexpr float kMinViewShare = 0.02f;
 inline constexpr float kMaxViewShare = 1.0f;
 inline constexpr float kFitViewShare = 0.5f;
 
+/// Places new object or light `id` (in `doc`, not yet in `scene`) as a Blender user expects
+/// when no place was pointed at: in front of `view` at a comfortable distance (half the way
+/// to the surface ahead, at most fallbackDistance()), and
+/// - an object rests on the surface below that point (the floor), moved sideways across the
+///   view, a little further each try, until its bounds clear every other object's;
+/// - a plane becomes a floor under the scene: facing up, through the lowest point of the
+///   objects' bounds (through that surface below, when there are none);
+/// - a light hangs above that point, a third of the way to the ceiling (or of the distance
+///   when nothing is above).
+/// `up` is the scene's up (unit), `aspect` the view's width over its height: a place is
+/// taken only where the object's bounds are in sight. Returns the point the object rests on
+/// (a light's is the one below it), which a spot is aimed at.
+Vec3 placeInView(SceneDocument& doc, ObjectId id, const CompiledScene* scene, const Camera& view,
+                 const Vec3& up, float aspect);
+/// Tries across the view before a new object is left overlapping another.
+inline constexpr int kPlacementTries = 12;
+
 /// Gives each sun light read from a file a place to draw its glyph: a sun has no position
 /// (the file has none for it, so it reads as the origin, often inside the scene or out of
 /// view), so its glyph goes upstream of the scene, against its direction from the centre

@@ -76,8 +76,8 @@ private Q_SLOTS:
     void init();
     void cleanup();
 
-    void newSphere_LandsOnTheSurfaceUnderTheViewCentre();
-    void snapToFloor_NewBoxRestsOnTheFloorBelowTheViewCentre();
+    void newSphere_RestsOnTheFloorInFront_ClearOfTheOthers();
+    void snapToFloor_AMeshDroppedOnTheBackWallRestsOnTheFloorBelow();
     void largeMeshImport_IsScaledToFitTheView_AndTheFactorIsEditable();
     void meshImportedAtTheCursor_LandsOnTheSurfaceUnderIt_Unscaled();
     void newAndDuplicateMaterial_EachOneUndoStep();
@@ -185,42 +185,49 @@ void MaterialsTest::withColourDialog(const std::function<void(QColorDialog*)>& i
     QVERIFY(ran);
 }
 
-void MaterialsTest::newSphere_LandsOnTheSurfaceUnderTheViewCentre() {
-    // Where the view centre's ray meets the room (the back wall, seen from the door).
-    const ViewProjection view = window_->viewport()->projection();
-    const Ray ray = view.rayThrough(QPointF(window_->viewport()->rect().center()));
-    const auto scene = window_->session()->session().snapshot();
-    const Placement hit = placeAlong(scene.get(), ray, 1.0f);
-    QVERIFY(hit.onSurface);
-
-    clickAdd(QStringLiteral("add Sphere"));
-    const ObjectId id = idOf(*window_, "sphere");
-    QVERIFY(id != kNoObject);
-    QCOMPARE(window_->editor()->selection(), id);
-    QCOMPARE(undoCount(), 1);
-    const Object& sphere = *doc().findObject(id);
-    const float r = std::get<SphereGeometry>(sphere.geometry).radius;
-    // It touches the surface from the viewer's side: centre one radius off the hit point.
-    const Vec3 expected = hit.point + hit.normal * r;
-    QVERIFY2(glm::length(sphere.transform.translate - expected) < 1e-3f,
-             qPrintable(str(sphere.transform.translate) + " vs " + str(expected)));
-    // And it is what the view centre shows.
-    QVERIFY(settle(*window_));
-    const DisplayFrame& f = *window_->viewport()->frame();
-    QCOMPARE(f.idAt(f.width / 2, f.height / 2), id);
+void MaterialsTest::newSphere_RestsOnTheFloorInFront_ClearOfTheOthers() {
+    // Two adds in a row: each on the floor (y = 0) in front of the view, in sight, and
+    // neither inside nor on top of another object (the room's balls, or each other).
+    for (const char* kind : {"Sphere", "Box"}) {
+        clickAdd(QStringLiteral("add %1").arg(QString::fromLatin1(kind)));
+        const ObjectId id = window_->editor()->selection();
+        QVERIFY(id != kNoObject);
+        const Aabb b = worldBounds(doc(), id);
+        QVERIFY2(std::abs(b.min.y) < 1e-3f, qPrintable(str(b.min)));
+        for (const Object& o : doc().objects)
+            if (o.id != id && !std::holds_alternative<PlaneGeometry>(o.geometry))
+                QVERIFY2(!worldBounds(doc(), o.id).overlaps(b), o.name.c_str());
+        QVERIFY(settle(*window_));
+        QVERIFY2(pixelOf(*window_->viewport()->frame(), id).first >= 0, kind);  // In sight.
+    }
+    QCOMPARE(undoCount(), 2);
 }
 
-void MaterialsTest::snapToFloor_NewBoxRestsOnTheFloorBelowTheViewCentre() {
+void MaterialsTest::snapToFloor_AMeshDroppedOnTheBackWallRestsOnTheFloorBelow() {
     QAction* snap = window_->findChild<QAction*>(QStringLiteral("snapToFloor"));
     QVERIFY(snap && snap->isCheckable() && !snap->isChecked());
     snap->trigger();
     QVERIFY(snap->isChecked());
-    clickAdd(QStringLiteral("add Box"));
-    const ObjectId id = idOf(*window_, "box");
-    QVERIFY(id != kNoObject);
-    const Aabb b = worldBounds(doc(), id);
-    // The floor plane is at y = 0: the box stands on it, below where the view centre looks
-    // (the back wall), and touching that wall.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("crate.obj"));
+    QVERIFY(writeCube(path, 0.6f));
+    // A pixel of the back wall with back wall all round it, up the middle of the frame.
+    const DisplayFrame& f = *window_->viewport()->frame();
+    const ObjectId wall = idOf(*window_, "back wall");
+    const int x = f.width / 2;
+    int y = -1;
+    for (int row = 4; row < f.height - 4 && y < 0; ++row) {
+        bool all = true;
+        for (int dy = -3; dy <= 3; ++dy)
+            for (int dx = -3; dx <= 3; ++dx) all = all && f.idAt(x + dx, row + dy) == wall;
+        if (all) y = row;
+    }
+    QVERIFY(y >= 0);
+    window_->importMesh(path, window_->viewport()->widgetPointOf(x, y));
+    QTRY_VERIFY_WITH_TIMEOUT(idOf(*window_, "crate") != kNoObject, 20000);
+    const Aabb b = worldBounds(doc(), idOf(*window_, "crate"));
+    // Against the wall where it was dropped (z = -12), and down on the floor (y = 0).
     QVERIFY2(std::abs(b.min.y) < 1e-3f, qPrintable(str(b.min)));
     QVERIFY2(std::abs(b.min.z - -12.0f) < 1e-3f, qPrintable(str(b.min)));
     QCOMPARE(undoCount(), 1);

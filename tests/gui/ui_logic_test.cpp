@@ -47,6 +47,7 @@ private Q_SLOTS:
     void defaultScene_Installed_PrefersShareNextToTheExecutable();
     void materials_DeleteRefusedWhileUsed_RenameFollowsUsers_NamesValidated();
     void placement_RestsOnTheSurfaceHit_OrSnapsToTheFloorBelow();
+    void placeInView_OnTheFloorInFront_ClearOfOthers_PlaneUnder_LightBelowTheCeiling();
     void fitScale_ScalesOnlyMeshesThatDoNotFitTheView();
     void sunGlyph_FromAFile_GoesUpstreamOfTheScene();
     void displayAutomatic_PicksSoftwareOnSoftwareGL_OpenGLOnAGpu();
@@ -104,6 +105,66 @@ void UiLogicTest::placement_RestsOnTheSurfaceHit_OrSnapsToTheFloorBelow() {
     const Placement miss = placeAlong(&scene, Ray::make(Vec3(0.0f), Vec3(0, 1, 0)), 3.0f);
     QVERIFY(!miss.onSurface);
     QVERIFY(miss.point == Vec3(0.0f, 3.0f, 0.0f));
+}
+
+void UiLogicTest::placeInView_OnTheFloorInFront_ClearOfOthers_PlaneUnder_LightBelowTheCeiling() {
+    // A room: floor y = 0, ceiling y = 6, back wall z = -12; a ball right where the view's
+    // centre ray meets the floor's stand-in point (front of the view, 5 units).
+    SceneDocument doc;
+    const auto plane = [&](const char* name, Vec3 point, Vec3 normal) {
+        Object o;
+        o.name = name;
+        o.geometry = PlaneGeometry{point, normal};
+        doc.addObject(o);
+    };
+    plane("floor", Vec3(0.0f), Vec3(0, 1, 0));
+    plane("ceiling", Vec3(0, 6, 0), Vec3(0, -1, 0));
+    plane("back", Vec3(0, 0, -12), Vec3(0, 0, 1));
+    Camera view;
+    view.position = Vec3(0, 3, 2.5f);
+    view.target = Vec3(0, 3, -6);  // 8.5 away: a new thing goes 5 units ahead
+    Object ball;
+    ball.name = "ball";
+    ball.geometry = SphereGeometry{Vec3(0, 0.5f, -2.5f), 0.5f};
+    const ObjectId ballId = doc.addObject(ball);
+    const Vec3 up(0, 1, 0);
+    auto placeNew = [&](ShapeKind kind) {
+        const CompiledScene scene(doc);  // without the new object
+        const ObjectId id = addShape(doc, kind, Vec3(0.0f));
+        placeInView(doc, id, &scene, view, up, 16.0f / 9.0f);
+        return id;
+    };
+    auto inFront = [&](const Vec3& p) {
+        const Vec3 d = p - view.position;
+        const float along = -d.z;  // the view looks along -Z
+        const float halfFov = glm::radians(view.fovY) * 0.5f;
+        return along > 0.0f && std::abs(d.x) < along * std::tan(halfFov) * 1.8f &&
+               std::abs(d.y) < along * std::tan(halfFov);
+    };
+    const ObjectId first = placeNew(ShapeKind::Sphere);
+    Aabb a = worldBounds(doc, first);
+    QVERIFY(std::abs(a.min.y) < 1e-4f);  // resting on the floor
+    QVERIFY(inFront(a.center()));
+    QVERIFY(!a.overlaps(worldBounds(doc, ballId)));          // not inside or on the ball
+    QVERIFY(a.min.z > -12.0f && a.max.z < view.position.z);  // between the view and the wall
+    const ObjectId second = placeNew(ShapeKind::Box);
+    const Aabb b = worldBounds(doc, second);
+    QVERIFY(std::abs(b.min.y) < 1e-4f);
+    QVERIFY(inFront(b.center()));
+    QVERIFY(!b.overlaps(a) && !b.overlaps(worldBounds(doc, ballId)));  // no stacking
+    // A plane: a floor under the scene, not a cut through it at eye height.
+    const ObjectId floor = placeNew(ShapeKind::Plane);
+    const auto& p = std::get<PlaneGeometry>(doc.findObject(floor)->geometry);
+    QVERIFY(p.normal == up);
+    QVERIFY(std::abs(p.point.y) < 1e-4f);
+    // A light: above what is below the point in front (the ball's top, y = 1), a third of
+    // the way from there to the ceiling.
+    const CompiledScene scene(doc);
+    const ObjectId lamp = addLight(doc, LightType::Point, Vec3(0.0f));
+    const Vec3 ground = placeInView(doc, lamp, &scene, view, up, 16.0f / 9.0f);
+    QVERIFY(std::abs(ground.y - 1.0f) < 1e-4f);
+    QVERIFY(std::abs(doc.findLight(lamp)->position.y - (1.0f + 5.0f / 3.0f)) < 1e-3f);
+    QVERIFY(inFront(doc.findLight(lamp)->position));
 }
 
 void UiLogicTest::fitScale_ScalesOnlyMeshesThatDoNotFitTheView() {

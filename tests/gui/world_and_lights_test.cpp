@@ -52,7 +52,7 @@ private Q_SLOTS:
     void init();
     void cleanup();
 
-    void addSpot_AboveTheViewPointAimedAtIt_UndoRemovesIt();
+    void addSpot_InFrontAboveTheFloorAimedDown_UndoRemovesIt();
     void addSun_SlantsDown_UndoRemovesIt();
     void outliner_NamesSpotAndSunLights();
     void glyphs_ShowTheSpotsConeAndTheSunsArrows();
@@ -98,7 +98,7 @@ QDoubleSpinBox* WorldAndLightsTest::spinOf(const char* key) const {
     return editor ? editor->findChild<QDoubleSpinBox*>() : nullptr;
 }
 
-void WorldAndLightsTest::addSpot_AboveTheViewPointAimedAtIt_UndoRemovesIt() {
+void WorldAndLightsTest::addSpot_InFrontAboveTheFloorAimedDown_UndoRemovesIt() {
     const std::size_t lights = doc().lights.size();
     const ObjectId id = add("Spot light");
     QVERIFY(id != kNoObject);
@@ -111,12 +111,14 @@ void WorldAndLightsTest::addSpot_AboveTheViewPointAimedAtIt_UndoRemovesIt() {
     const Vec3 axis = l->target - l->position;
     QVERIFY2(glm::length(axis) > 0.5f, qPrintable(str(axis)));
     QVERIFY2(angleBetween(axis, Vec3(0, -1, 0)) < 1e-3, qPrintable(str(axis)));
-    // Aimed at the point the view looks at: the target appears at the viewport's centre.
-    const auto at = viewport()->projection().project(l->target);
-    QVERIFY(at);
-    const QPointF centre = QRectF(viewport()->rect()).center();
-    QVERIFY2(std::hypot(at->x() - centre.x(), at->y() - centre.y()) < 2.0,
-             qPrintable(QStringLiteral("%1,%2").arg(at->x()).arg(at->y())));
+    // Hung in front of the view, below the ceiling (y = 6), aimed at what is below it; both
+    // the lamp and the lit spot in sight.
+    QVERIFY2(l->position.y < 6.0f && l->position.y > l->target.y, qPrintable(str(l->position)));
+    const QRectF shown(viewport()->rect());
+    for (const Vec3& p : {l->position, l->target}) {
+        const auto at = viewport()->projection().project(p);
+        QVERIFY2(at && shown.contains(*at), qPrintable(str(p)));
+    }
     window_->editor()->undoStack()->undo();
     QCOMPARE(doc().lights.size(), lights);
     QVERIFY(!doc().findLight(id));
@@ -175,10 +177,11 @@ void WorldAndLightsTest::glyphs_ShowTheSpotsConeAndTheSunsArrows() {
     // What the raster view repaints for it reaches the cone's far end, not only the disc.
     QVERIFY(glyphRegion(*s, 4).contains(target.toPoint()));
     QVERIFY(QLineF(s->centre, target).length() > 20.0);
-    // The falloff circle is wider than the radius circle, by tan 45 / tan 30 across the view.
+    // The falloff circle is wider than the radius circle, by tan 45 / tan 30 across the view
+    // (give or take perspective: the circles lie on the floor a few units in front).
     const double r0 = s->loops[0].boundingRect().width(), r1 = s->loops[1].boundingRect().width();
     const double ratio = std::tan(45.0 * M_PI / 180.0) / std::tan(30.0 * M_PI / 180.0);
-    QVERIFY2(std::abs(r1 / r0 - ratio) < 0.05 * ratio, qPrintable(QString::number(r1 / r0)));
+    QVERIFY2(std::abs(r1 / r0 - ratio) < 0.1 * ratio, qPrintable(QString::number(r1 / r0)));
     // The sun: three parallel arrows, each with a two-stroke head, pointing the way its light
     // goes on screen.
     const LightGlyph* g = glyphOf(sun);
