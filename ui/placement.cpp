@@ -132,6 +132,15 @@ bool inSight(const Aabb& b, const Camera& view, float aspect) {
     return true;
 }
 
+/// Whether something of `scene` lies between `eye` and the centre of `b` (short of b).
+bool hidden(const CompiledScene* scene, const Vec3& eye, const Aabb& b) {
+    const Vec3 to = b.center() - eye;
+    const float distance = glm::length(to);
+    if (!(distance > 0.0f)) return false;
+    const auto blocked = surfaceAlong(scene, eye, to / distance);
+    return blocked && *blocked < distance - 0.5f * glm::length(b.extent());
+}
+
 }  // namespace
 
 Vec3 placeInView(SceneDocument& doc, ObjectId id, const CompiledScene* scene, const Camera& view,
@@ -196,7 +205,8 @@ Vec3 placeInView(SceneDocument& doc, ObjectId id, const CompiledScene* scene, co
             if (depth == 1.0f && k == 0) firstRest = rest;
             moveBy(doc, id, rest - worldBounds(doc, id).center());
             Aabb now = worldBounds(doc, id);
-            if (!inSight(now, view, aspect)) continue;  // Only where it can be seen.
+            // Only where it can be seen: in the frame, its centre not behind anything.
+            if (!inSight(now, view, aspect) || hidden(scene, view.position, now)) continue;
             if (!firstSeen) firstSeen = rest;
             now.min -= margin;
             now.max += margin;

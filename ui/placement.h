@@ -51,13 +51,13 @@ inline constexpr float kFitViewShare = 0.5f;
 /// when no place was pointed at: in front of `view` at a comfortable distance (half the way
 /// to the surface ahead, at most fallbackDistance()), and
 /// - an object rests on the surface below that point (the floor), moved sideways across the
-///   view, a little further each try, until its bounds clear every other object's;
+///   view, a little further each try (then further out), until its bounds clear every other
+///   object's where it can be seen: in the frame, its centre not behind a surface;
 /// - a plane becomes a floor under the scene: facing up, through the lowest point of the
 ///   objects' bounds (through that surface below, when there are none);
 /// - a light hangs above that point, a third of the way to the ceiling (or of the distance
 ///   when nothing is above).
-/// `up` is the scene's up (unit), `aspect` the view's width over its height: a place is
-/// taken only where the object's bounds are in sight. Returns the point the object rests on
+/// `up` is the scene's up (unit), `aspect` the view's width over its height. Returns the point the object rests on
 /// (a light's is the one below it), which a spot is aimed at.
 Vec3 placeInView(SceneDocument& doc, ObjectId id, const CompiledScene* scene, const Camera& view,
                  const Vec3& up, float aspect);
