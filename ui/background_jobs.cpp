@@ -115,7 +115,8 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
 
 QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QString& path,
                            int threads, EngineKind engine,
-                           std::shared_ptr<std::atomic<bool>> cancel, RenderReport report) {
+                           std::shared_ptr<std::atomic<bool>> cancel,
+                           std::shared_ptr<const std::atomic<bool>> hold, RenderReport report) {
     const GuiMailbox toGui(receiver);
     return startWorker(receiver, cancel, [=, file = path.toStdString()] {
         std::string error = imageSizeError(doc.render.width, doc.render.height);
@@ -126,6 +127,7 @@ QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QS
                 RenderOptions options;
                 options.threads = threads;
                 options.cancel = cancel.get();
+                options.hold = hold.get();
                 options.ids = false;  // Only the image is written.
                 if (report.progress)
                     options.progress = [toGui, progress = report.progress](int d, int total) {

@@ -35,11 +35,13 @@ struct RenderReport {
 };
 
 /// Renders `doc` at full quality in a worker thread, then writes it to `path` unless `cancel`
-/// was set first. Reports go to `receiver`'s thread; when it is destroyed the render is
-/// cancelled and waited for. Returns the worker (it deletes itself when done).
+/// was set first; while `hold` is set its workers wait between tiles (RenderOptions::hold).
+/// Reports go to `receiver`'s thread; when it is destroyed the render is cancelled and
+/// waited for. Returns the worker (it deletes itself when done).
 QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QString& path,
                            int threads, EngineKind engine,
-                           std::shared_ptr<std::atomic<bool>> cancel, RenderReport report);
+                           std::shared_ptr<std::atomic<bool>> cancel,
+                           std::shared_ptr<const std::atomic<bool>> hold, RenderReport report);
 
 /// Cancels every job started with `parent` and waits until their threads have stopped (a
 /// closing window): no result is delivered. Returns within a tile of a render.

@@ -351,6 +351,9 @@ void MainWindow::createStatusBar() {
 
 void MainWindow::createRenderQueue() {
     renders_ = new RenderQueue(this);
+    // The viewport first: while the user drags or orbits, Render Image waits between tiles.
+    connect(session_.get(), &SessionController::interactionChanged, renders_,
+            &RenderQueue::setHeld);
     renderWindow_ = new RenderWindow(this);
     connect(renders_, &RenderQueue::started, this, [this](const QString& path, int w, int h) {
         renderWindow_->begin(path, w, h);

@@ -20,6 +20,16 @@ void RenderQueue::enqueue(const SceneDocument& doc, const QString& path, int thr
     if (!running_) startNext();
 }
 
+void RenderQueue::setHeld(bool held) {
+    if (held == hold_->load()) return;
+    hold_->store(held);
+    if (held) {
+        heldSince_.start();
+    } else if (running_ && heldSince_.isValid()) {
+        running_->heldMs += heldSince_.elapsed();
+    }
+}
+
 void RenderQueue::cancelCurrent() {
     if (running_) *running_->cancel = true;
 }
@@ -55,7 +65,9 @@ void RenderQueue::startNext() {
         if (!isCurrent(self)) return;  // A cancelled render's late report.
         // Linear in tiles: tiles of one image cost alike on average, and the estimate
         // settles as more of them are done.
-        const double seconds = double(running_->clock.elapsed()) / 1000.0;
+        const qint64 holding = hold_->load() && heldSince_.isValid() ? heldSince_.elapsed() : 0;
+        const double seconds =
+            double(running_->clock.elapsed() - running_->heldMs - holding) / 1000.0;
         const double left = done > 0 ? seconds * double(total - done) / double(done) : -1.0;
         Q_EMIT progressed(done, total, left);
     };
@@ -64,7 +76,7 @@ void RenderQueue::startNext() {
     };
     report.done = [this, self](bool ok, const QString& error) { onDone(self, ok, error); };
     running_->thread = renderToFileAsync(this, job.doc, job.path, job.threads, job.engine,
-                                         running_->cancel, std::move(report));
+                                         running_->cancel, hold_, std::move(report));
 }
 
 void RenderQueue::onDone(quint64 serial, bool ok, const QString& error) {

@@ -38,6 +38,11 @@ public:
     void cancelAll();
 
     bool busy() const { return running_ != nullptr; }
+    /// Holds the renders (their workers wait between tiles) while the user edits in the
+    /// viewport, which then has the cores; released, they go on where they were. The time
+    /// held is left out of the estimate of the time left.
+    void setHeld(bool held);
+    bool held() const { return hold_->load(); }
     /// Renders waiting behind the running one.
     int queued() const { return int(waiting_.size()); }
 
@@ -66,7 +71,10 @@ private:
         std::shared_ptr<std::atomic<bool>> cancel;
         QPointer<QThread> thread;
         QElapsedTimer clock;
+        qint64 heldMs = 0;  ///< Time held so far, not counting a hold that runs now.
     };
+    std::shared_ptr<std::atomic<bool>> hold_ = std::make_shared<std::atomic<bool>>(false);
+    QElapsedTimer heldSince_;
     void startNext();
     bool isCurrent(quint64 serial) const { return running_ && running_->serial == serial; }
     void onDone(quint64 serial, bool ok, const QString& error);

@@ -83,12 +83,14 @@ void SessionController::beginInteraction(ObjectId moving) {
     flushUpdate();
     interacting_ = true;
     session_->beginInteraction(moving);
+    Q_EMIT interactionChanged(true);
 }
 
 void SessionController::endInteraction() {
     flushUpdate();
     interacting_ = false;
     session_->endInteraction();
+    Q_EMIT interactionChanged(false);
 }
 
 std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wait) {

@@ -92,6 +92,8 @@ Q_SIGNALS:
     void frameHandedOver(quint64 serial, bool whole);
     /// updatesPerSecond() changed (checked once a second, including the fall to 0).
     void updateRateChanged(double updatesPerSecond);
+    /// beginInteraction (true) or endInteraction (false) was called.
+    void interactionChanged(bool interacting);
 
 public:
     /// Shortest time between two frameUpdated signals.

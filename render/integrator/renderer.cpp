@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <mutex>
+#include <thread>
 
 #include "core/parallel.h"
 #include "core/scratch_arena.h"
@@ -99,6 +100,13 @@ bool needsSupersampling(const Color* colors, const ObjectId* ids, const Vec3* no
 
 namespace {
 
+/// Waits while `options.hold` is set (and the render is not cancelled).
+void waitWhileHeld(const RenderOptions& options) {
+    while (options.hold && options.hold->load(std::memory_order_relaxed) &&
+           !(options.cancel && options.cancel->load(std::memory_order_relaxed)))
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+}
+
 /// Runs `body(x0, y0, x1, y1, counters)` over all tiles of rows [rowBegin, rowEnd) in
 /// parallel, with cancellation and progress; returns false when cancelled.
 template <class Body>
@@ -113,6 +121,7 @@ bool forEachTile(int width, int rowBegin, int rowEnd, const RenderOptions& optio
     parallelFor(tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1), [&](const auto& r) {
         for (int ty = r.rows().begin(); ty != r.rows().end(); ++ty) {
             for (int tx = r.cols().begin(); tx != r.cols().end(); ++tx) {
+                waitWhileHeld(options);
                 TraceCounters counters;
                 const int x0 = tx * ts, y0 = rowBegin + ty * ts;
                 body(x0, y0, std::min(width, x0 + ts), std::min(rowEnd, y0 + ts), counters);

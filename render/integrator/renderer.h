@@ -20,6 +20,9 @@ struct RenderOptions {
     int threads = 0;                            ///< Worker threads; 0 = all cores.
     int tileSize = 32;                          ///< Tile edge in pixels.
     const std::atomic<bool>* cancel = nullptr;  ///< Polled between ray-tree levels; may be null.
+    /// While true, each worker waits before starting its next tile (the designer's viewport
+    /// has the cores while the user edits); the image is the same. May be null.
+    const std::atomic<bool>* hold = nullptr;
     /// Fill RenderResult::ids (picking); renders that only write an image leave it off.
     bool ids = true;
     /// Called (serialised) after each tile with tiles done and total; may be empty.

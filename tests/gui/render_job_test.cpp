@@ -55,6 +55,7 @@ private Q_SLOTS:
     void cleanup();
 
     void dragWhileRendering_IsAppliedAndUndoable_AndTheViewportRenders();
+    void whileTheUserDrags_TheRenderWaits_ThenGoesOn();
     void editsWhileRendering_RenderShowsTheDocumentAsItWasWhenStarted();
     void twoQueuedRenders_BothFinishAndWriteTheirFiles();
     void cancelFromStatusBar_StopsPromptly_AndWritesNothing();
@@ -143,6 +144,35 @@ void RenderJobTest::dragWhileRendering_IsAppliedAndUndoable_AndTheViewportRender
     window_->renderQueue()->cancelAll();
     QVERIFY(!QFileInfo::exists(path));
     QVERIFY(!window_->renderStatus()->isVisible());
+    QVERIFY(errors_.isEmpty());
+}
+
+void RenderJobTest::whileTheUserDrags_TheRenderWaits_ThenGoesOn() {
+    makeRendersSlow();
+    QVERIFY(settle(*window_));
+    const QString path = dir_.filePath(QStringLiteral("held.png"));
+    QVERIFY(window_->renderImage(path, 960, 540));
+    RenderQueue* queue = window_->renderQueue();
+    QVERIFY(queue->busy() && !queue->held());
+    int done = 0;
+    connect(queue, &RenderQueue::progressed, this, [&](int d, int, double) { done = d; });
+    QTRY_VERIFY_WITH_TIMEOUT(done > 0, 60000);
+    // A drag begins: the render's workers wait between tiles, at most the tiles already
+    // started finish (one a thread), and the viewport has the cores.
+    window_->session()->beginInteraction(idOf(*window_, "blue ball"));
+    QVERIFY(queue->held());
+    for (int i = 0, before = -1; i < 40 && done != before; ++i) {  // Tiles under way finish.
+        before = done;
+        QTest::qWait(700);
+    }
+    const int atHold = done;
+    QTest::qWait(1000);
+    QCOMPARE(done, atHold);
+    // Let go: it goes on.
+    window_->session()->endInteraction();
+    QVERIFY(!queue->held());
+    QTRY_VERIFY_WITH_TIMEOUT(done > atHold, 60000);
+    queue->cancelAll();
     QVERIFY(errors_.isEmpty());
 }
 

@@ -139,6 +139,36 @@ TEST(Renderer, CancelFlag_StopsTheRenderAndSaysSo) {
     }
 }
 
+TEST(Renderer, HoldFlag_NoTileStartsWhileHeld_ThenTheSameImage) {
+    SceneDocument doc = test::smallRoom(64, 48);
+    const CompiledScene scene(doc);
+    const RenderResult free = renderImage(scene);
+    std::atomic<bool> hold{true};
+    std::atomic<int> tiles{0};
+    RenderOptions options;
+    options.threads = 2;
+    options.hold = &hold;
+    options.progress = [&](int done, int) { tiles = done; };
+    RenderResult held;
+    std::thread render([&] { held = renderImage(scene, options); });
+    std::this_thread::sleep_for(std::chrono::milliseconds(150));
+    EXPECT_EQ(tiles.load(), 0);  // Held from the start: not one tile traced.
+    hold = false;
+    render.join();
+    EXPECT_FALSE(held.cancelled);
+    EXPECT_EQ(tiles.load(), 4);  // 64 x 48 in 32-pixel tiles
+    EXPECT_EQ(held.image.pixels, free.image.pixels);
+    // Cancelled while held: it returns rather than waiting on.
+    std::atomic<bool> cancel{false};
+    hold = true;
+    options.cancel = &cancel;
+    std::thread cancelled([&] { held = renderImage(scene, options); });
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    cancel = true;
+    cancelled.join();
+    EXPECT_TRUE(held.cancelled);
+}
+
 TEST(Renderer, SameImageForAnyThreadCount_PointLights) {
     // Centre samples and supersampled, with each engine.
     for (EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
