@@ -40,8 +40,10 @@ QDoubleSpinBox* makeSpin(const ParamDescriptor& d, QWidget* parent) {
     spin->setDecimals(decimalsFor(d.step));
     spin->setKeyboardTracking(false);
     spin->setAccelerated(true);
-    // The ±1e6 ranges would make the size hint huge; let the form share the width instead.
-    spin->setMinimumWidth(56);
+    // The ±1e6 ranges would make the size hint huge; let the form share the width instead,
+    // but never below what a value of a few digits needs (with the arrows and the frame).
+    const QString typical = QStringLiteral("-0000.") + QString(spin->decimals(), QLatin1Char('0'));
+    spin->setMinimumWidth(spin->fontMetrics().horizontalAdvance(typical) + 36);
     spin->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     return spin;
 }

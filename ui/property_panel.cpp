@@ -6,6 +6,7 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
@@ -42,7 +43,7 @@ void reloadMeshIfNeeded(Geometry& g, const std::string& key) {
 PropertyPanel::PropertyPanel(SceneEditor* editor, QWidget* parent)
     : QScrollArea(parent), editor_(editor) {
     setWidgetResizable(true);
-    setMinimumWidth(340);
+    setMinimumWidth(kMinimumWidth);
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     connect(editor_, &SceneEditor::documentChanged, this, &PropertyPanel::onDocumentChanged);
     connect(editor_, &SceneEditor::selectionChanged, this, &PropertyPanel::rebuild);
@@ -326,6 +327,10 @@ void PropertyPanel::rebuild() {
     }
     layout_->addStretch(1);
     setWidget(content_);
+    // As wide as the fields need (a row of three coordinates), never cutting a value off.
+    setMinimumWidth(std::max(kMinimumWidth, content_->minimumSizeHint().width() +
+                                                verticalScrollBar()->sizeHint().width() +
+                                                2 * frameWidth()));
     signature_ = signature();
     refresh();
 }

@@ -22,6 +22,8 @@ class SceneEditor;
 class PropertyPanel : public QScrollArea {
     Q_OBJECT
 public:
+    /// The least width the panel takes; more when its fields need it.
+    static constexpr int kMinimumWidth = 340;
     explicit PropertyPanel(SceneEditor* editor, QWidget* parent = nullptr);
 
     /// Applies a parameter edit as the widgets do (tests use it): `section` is one of

@@ -4,6 +4,7 @@
 #include "property_panel.h"
 
 #include <QDoubleSpinBox>
+#include <QLineEdit>
 #include <QSpinBox>
 #include <QtTest>
 #include <cmath>
@@ -25,6 +26,7 @@ private Q_SLOTS:
         window_.reset();
     }
     void showsAndKeepsFileValuesBeyondItsEditorsRange();
+    void onFirstRun_EveryValueOfASelectedObjectFitsItsField();
 
 private:
     std::unique_ptr<MainWindow> window_;
@@ -154,4 +156,29 @@ void PropertyPanelTest::showsAndKeepsFileValuesBeyondItsEditorsRange() {
 }
 
 QTEST_MAIN(PropertyPanelTest)
+void PropertyPanelTest::onFirstRun_EveryValueOfASelectedObjectFitsItsField() {
+    // No saved layout (isolated settings): the docks as a new user first sees them. Every
+    // value shown, a four-digit negative one too, fits the text field of its spin box.
+    SceneDocument doc = window_->editor()->document();
+    const ObjectId blue = idOf(*window_, "blue ball");
+    doc.findObject(blue)->transform.translate = Vec3(-1234.567f, -2.472f, 100.0f);
+    window_->editor()->edit(QStringLiteral("Move"), std::move(doc));
+    window_->editor()->setSelection(blue);
+    QTest::qWait(50);
+    int checked = 0;
+    for (QAbstractSpinBox* spin : window_->propertyPanel()->findChildren<QAbstractSpinBox*>()) {
+        if (!spin->isVisibleTo(window_.get())) continue;
+        const QLineEdit* field = spin->findChild<QLineEdit*>();
+        QVERIFY(field);
+        ++checked;
+        const int needed = field->fontMetrics().horizontalAdvance(spin->text()) + 4;
+        QVERIFY2(field->contentsRect().width() >= needed,
+                 qPrintable(QStringLiteral("%1: %2 < %3")
+                                .arg(spin->text())
+                                .arg(field->contentsRect().width())
+                                .arg(needed)));
+    }
+    QVERIFY(checked >= 9);  // centre, radius, translate, rotate, scale...
+}
+
 #include "property_panel_test.moc"
