@@ -326,22 +326,34 @@ void MainWindow::createMenus() {
 }
 
 void MainWindow::createStatusBar() {
-    auto label = [this](const QString& tip) {
+    // Each field as wide as its widest text, fixed: neighbours do not jump sideways and no
+    // text is cut as the numbers change.
+    auto label = [this](const QString& tip, const QString& widest) {
         auto* l = new QLabel(this);
         l->setToolTip(tip);
-        l->setMinimumWidth(90);
+        l->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        l->setFixedWidth(l->fontMetrics().horizontalAdvance(widest) + 2 * l->margin() + 12);
         statusBar()->addPermanentWidget(l);
         return l;
     };
-    statusFrame_ = label(tr("Wall time of the last pass"));
-    statusUps_ = label(tr("Document updates sent to the renderer per second"));
-    statusRetraced_ = label(tr("Share of the frame's pixels the last pass re-traced"));
-    statusPass_ = label(tr("Kind of the last pass (interactive, base, supersampling)"));
-    statusRays_ = label(tr("Rays per second in the last pass"));
-    statusGovernor_ =
-        label(tr("What the governor turned down in the last interactive pass to "
-                 "keep its frame rate; \"as set\" once the frame refines at the "
-                 "scene's settings (Preferences)"));
+    statusFrame_ = label(tr("Wall time of the last pass"), tr("%1 ms").arg(9999.9, 0, 'f', 1));
+    statusUps_ =
+        label(tr("Document updates sent to the renderer per second"), tr("%1 upd/s").arg(999));
+    statusRetraced_ = label(tr("Share of the frame's pixels the last pass re-traced"),
+                            tr("%1% re-traced").arg(100.0, 0, 'f', 1));
+    statusPass_ = label(tr("Kind of the last pass (interactive, base, supersampling)"),
+                        tr("pass: %1%2").arg(QStringLiteral("interactive"), tr(" (cut short)")));
+    statusRays_ =
+        label(tr("Rays per second in the last pass"), tr("%1 Mrays/s").arg(999.99, 0, 'f', 2));
+    QString widestLevel;
+    for (int level = 0; level < Governor::kLevels; ++level) {
+        const QString name = QString::fromLatin1(Governor::levelName(level));
+        if (name.size() > widestLevel.size()) widestLevel = name;
+    }
+    statusGovernor_ = label(tr("What the governor turned down in the last interactive pass to "
+                               "keep its frame rate; \"as set\" once the frame refines at the "
+                               "scene's settings (Preferences)"),
+                            tr("governor: %1").arg(widestLevel));
     statusGovernor_->setObjectName(QStringLiteral("statusGovernor"));
     // Leftmost of the permanent widgets: a running render is what the user looks for first.
     renderStatus_ = new RenderStatus(renders_, this);

@@ -46,6 +46,7 @@ private Q_SLOTS:
     void dragWithAxisLock_MovesAlongThatAxisOnly_AndEscapeCancels();
     void updateRate_FallsToZeroInTheStatusBarOnceTheUserStops();
     void governorLabel_SaysAsSetOnceTheFrameRefines();
+    void statusFields_StayInPlace_AndShowTheirWholeText();
     void propertyEdit_ReRendersFrame_AndSharedMaterialIsShown();
     void outOfRangeProperty_IsRejectedWithMessage();
     void saveAndReopen_GiveTheSameScene();
@@ -186,6 +187,41 @@ void DesignerTest::updateRate_FallsToZeroInTheStatusBarOnceTheUserStops() {
     QVERIFY(highest > 0.0);
     // Idle: the session stops passing and the label must still come down.
     QTRY_COMPARE_WITH_TIMEOUT(rate->text(), QStringLiteral("0 upd/s"), 5000);
+}
+
+void DesignerTest::statusFields_StayInPlace_AndShowTheirWholeText() {
+    // Passes whose numbers and words differ most in length: every field keeps its place and
+    // width, and shows its whole text.
+    QList<QLabel*> fields;
+    for (QLabel* l : window_->statusBar()->findChildren<QLabel*>())
+        if (!l->toolTip().isEmpty() && l->isVisible()) fields << l;
+    QVERIFY(fields.size() >= 6);
+    PassInfo small;
+    small.kind = PassKind::Base;
+    small.ms = 0.5;
+    small.rays = 10;
+    small.tracedPixels = 1;
+    small.totalPixels = 1000;
+    PassInfo big;
+    big.kind = PassKind::Interactive;
+    big.cancelled = true;
+    big.governorLevel = 3;  // diffuse mirrors and glass
+    big.ms = 2345.6;
+    big.rays = 900000000;
+    big.tracedPixels = big.totalPixels = 1000;
+    QList<QRect> where;
+    for (const PassInfo& pass : {small, big, small}) {
+        Q_EMIT window_->session()->passFinished(pass);
+        QApplication::processEvents();
+        QList<QRect> now;
+        for (QLabel* l : fields) {
+            now << l->geometry();
+            QVERIFY2(l->fontMetrics().horizontalAdvance(l->text()) <= l->contentsRect().width(),
+                     qPrintable(l->text()));
+        }
+        if (!where.isEmpty()) QCOMPARE(now, where);
+        where = now;
+    }
 }
 
 void DesignerTest::governorLabel_SaysAsSetOnceTheFrameRefines() {
