@@ -22,6 +22,11 @@ QString timeLeftText(double seconds) {
     return QObject::tr("about %1 h left").arg(seconds / 3600.0, 0, 'f', 1);
 }
 
+namespace {
+/// Room for this many wide characters of the file's name; longer names are elided.
+constexpr int kShownNameChars = 14;
+}  // namespace
+
 RenderStatus::RenderStatus(RenderQueue* queue, QWidget* parent)
     : QWidget(parent),
       queue_(queue),
@@ -35,6 +40,12 @@ RenderStatus::RenderStatus(RenderQueue* queue, QWidget* parent)
     layout->addWidget(bar_);
     layout->addWidget(cancel_);
     bar_->setMaximumWidth(160);
+    // A fixed width for the words, so the bar and Cancel stay put as they change (a moving
+    // button misses clicks); a long file name is elided in the middle.
+    label_->setFixedWidth(label_->fontMetrics().horizontalAdvance(
+                              tr("Rendering %1: about 59 min left (99 queued)")
+                                  .arg(QString(kShownNameChars, QLatin1Char('M')))) +
+                          8);
     bar_->setRange(0, 1);
     bar_->setValue(0);
     cancel_->setObjectName(QStringLiteral("cancelRender"));
@@ -68,10 +79,14 @@ void RenderStatus::onProgress(int done, int total, double secondsLeft) {
 }
 
 void RenderStatus::updateText() {
-    QString text = tr("Rendering %1").arg(name_);
+    const QString name = label_->fontMetrics().elidedText(
+        name_, Qt::ElideMiddle,
+        label_->fontMetrics().horizontalAdvance(QString(kShownNameChars, QLatin1Char('M'))));
+    QString text = tr("Rendering %1").arg(name);
     if (!left_.isEmpty()) text += QStringLiteral(": ") + left_;
     if (const int n = queue_->queued()) text += tr(" (%1 queued)").arg(n);
     label_->setText(text);
+    label_->setToolTip(name_);
 }
 
 }  // namespace rs::ui

@@ -246,6 +246,13 @@ void RenderJobTest::cancelFromStatusBar_StopsPromptly_AndWritesNothing() {
              qPrintable(status->text()));
     QPushButton* cancel = status->cancelButton();
     QVERIFY(cancel->isVisible());
+    // Cancel stays put while the words beside it change (a moving button misses clicks).
+    const QPoint at = cancel->mapTo(window_.get(), QPoint(0, 0));
+    for (const double left : {1.0, 3000.0, 20000.0, 45.0}) {
+        Q_EMIT window_->renderQueue()->progressed(3, 100, left);
+        QApplication::processEvents();
+        QCOMPARE(cancel->mapTo(window_.get(), QPoint(0, 0)), at);
+    }
 
     QElapsedTimer timer;
     timer.start();
