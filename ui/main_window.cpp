@@ -369,11 +369,7 @@ void MainWindow::createRenderQueue() {
     renderWindow_ = new RenderWindow(this);
     connect(renders_, &RenderQueue::started, this, [this](const QString& path, int w, int h) {
         renderWindow_->begin(path, w, h);
-        if (!renderWindow_->isVisible()) {
-            renderWindow_->resize(renderWindow_->sizeHint());
-            renderWindow_->show();  // Without activating it (RenderWindow), but on top.
-            renderWindow_->raise();
-        }
+        if (!renderWindow_->isVisible()) renderWindow_->showOver(this);
     });
     connect(renders_, &RenderQueue::tileReady, renderWindow_, &RenderWindow::putTile);
     connect(renders_, &RenderQueue::finished, this,

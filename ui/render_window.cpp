@@ -3,6 +3,8 @@
 
 #include <QFileInfo>
 #include <QPainter>
+#include <QScreen>
+#include <algorithm>
 
 namespace rs::ui {
 
@@ -39,6 +41,27 @@ void RenderWindow::putTile(const QImage& tile, const QRect& where) {
 
 void RenderWindow::end(const QString& outcome) {
     setWindowTitle(tr("Render - %1 (%2)").arg(QFileInfo(path_).fileName(), outcome));
+}
+
+void RenderWindow::showOver(QWidget* owner) {
+    QScreen* screen = owner->screen();
+    const QRect area = screen ? screen->availableGeometry() : QRect(0, 0, 1280, 800);
+    resize(sizeHint().boundedTo(area.size() * 0.8));
+    // The title bar and borders the window manager adds (known once shown; a guess before).
+    const QMargins frame = isVisible() ? QMargins(frameGeometry().left() - geometry().left(),
+                                                  frameGeometry().top() - geometry().top(),
+                                                  frameGeometry().right() - geometry().right(),
+                                                  frameGeometry().bottom() - geometry().bottom())
+                                       : QMargins(4, 30, 4, 4);
+    QRect outer = QRect(QPoint(0, 0), size()).marginsAdded(frame);
+    outer.moveCenter(owner->frameGeometry().center());
+    outer.moveLeft(std::clamp(outer.left(), area.left(),
+                              std::max(area.left(), area.right() - outer.width() + 1)));
+    outer.moveTop(std::clamp(outer.top(), area.top(),
+                             std::max(area.top(), area.bottom() - outer.height() + 1)));
+    move(outer.topLeft());  // A top-level widget's position is its frame's corner.
+    show();
+    raise();
 }
 
 QSize RenderWindow::sizeHint() const {

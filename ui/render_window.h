@@ -18,6 +18,9 @@ public:
     void putTile(const QImage& tile, const QRect& where);
     /// Notes in the title how the render ended; the image stays.
     void end(const QString& outcome);
+    /// Shows the window at its size hint (at most 80 % of the screen), centred over `owner`
+    /// and moved wholly onto `owner`'s screen; on top, without taking the focus.
+    void showOver(QWidget* owner);
     /// What the window shows, at the render's size.
     const QImage& image() const { return image_; }
 

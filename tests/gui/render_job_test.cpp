@@ -9,6 +9,7 @@
 #include <QImage>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -60,6 +61,7 @@ private Q_SLOTS:
     void twoQueuedRenders_BothFinishAndWriteTheirFiles();
     void cancelFromStatusBar_StopsPromptly_AndWritesNothing();
     void renderWindow_ShowsThePartialImageTileByTile();
+    void renderWindow_OpensWhollyOnTheScreen_EvenFromAWindowAtItsEdge();
     void closingDuringARender_AsksFirst_ThenCancelsPromptly();
     void unsavedChangesPrompt_IsAnswerableWhileRendering();
 
@@ -228,6 +230,34 @@ void RenderJobTest::twoQueuedRenders_BothFinishAndWriteTheirFiles() {
     QVERIFY(!window_->renderQueue()->busy());
     QTRY_VERIFY(!window_->renderStatus()->isVisible());
     QVERIFY(errors_.isEmpty());
+}
+
+void RenderJobTest::renderWindow_OpensWhollyOnTheScreen_EvenFromAWindowAtItsEdge() {
+    // The main window pushed against the screen's bottom-right corner; a wide render.
+    const QRect area = window_->screen()->availableGeometry();
+    window_->move(area.right() - window_->frameGeometry().width() / 3,
+                  area.bottom() - window_->frameGeometry().height() / 3);
+    QApplication::processEvents();
+    makeRendersSlow();
+    QVERIFY(window_->renderImage(dir_.filePath(QStringLiteral("edge.png")), 3840, 1080));
+    QWidget* shown = nullptr;
+    QTRY_VERIFY_WITH_TIMEOUT(
+        [&] {
+            for (QWidget* w : QApplication::topLevelWidgets())
+                if (w != window_.get() && w->isVisible() && w->inherits("rs::ui::RenderWindow"))
+                    shown = w;
+            return shown != nullptr;
+        }(),
+        10000);
+    QVERIFY2(area.contains(shown->frameGeometry()),
+             qPrintable(QStringLiteral("%1,%2 %3x%4 outside %5x%6")
+                            .arg(shown->frameGeometry().x())
+                            .arg(shown->frameGeometry().y())
+                            .arg(shown->frameGeometry().width())
+                            .arg(shown->frameGeometry().height())
+                            .arg(area.width())
+                            .arg(area.height())));
+    window_->renderQueue()->cancelAll();
 }
 
 void RenderJobTest::cancelFromStatusBar_StopsPromptly_AndWritesNothing() {
