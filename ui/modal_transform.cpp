@@ -196,7 +196,7 @@ SceneDocument ModalTransform::result(const ViewProjection& view) const {
     return doc;
 }
 
-QString ModalTransform::describe() const {
+QString ModalTransform::describe(const ViewProjection& view) const {
     static const char* const kinds[] = {"Move", "Rotate", "Scale"};
     QString s = QString::fromLatin1(kinds[int(kind_)]);
     if (axis_ >= 0 && plane_)
@@ -205,6 +205,30 @@ QString ModalTransform::describe() const {
     else if (axis_ >= 0)
         s += QLatin1Char(' ') + QLatin1String(kAxisNames[axis_]);
     if (!typed_.isEmpty()) s += QLatin1Char(' ') + typed_;
+    // What the gesture does so far, as Blender's header shows it.
+    const auto number = [](float v, int decimals) { return QString::number(v, 'f', decimals); };
+    switch (kind_) {
+        case TransformKind::Move: {
+            const Vec3 d = moveDelta(view);
+            s +=
+                QStringLiteral("   D %1 %2 %3 (%4)")
+                    .arg(number(d.x, 3), number(d.y, 3), number(d.z, 3), number(glm::length(d), 3));
+            break;
+        }
+        case TransformKind::Rotate: {
+            Vec3 axis;
+            s += QStringLiteral("   %1°").arg(number(rotateDegrees(view, axis), 1));
+            break;
+        }
+        case TransformKind::Scale: {
+            const Vec3 f = scaleFactors(view);
+            s += f.x == f.y && f.y == f.z
+                     ? QStringLiteral("   %1").arg(number(f.x, 3))
+                     : QStringLiteral("   %1 %2 %3")
+                           .arg(number(f.x, 3), number(f.y, 3), number(f.z, 3));
+            break;
+        }
+    }
     // A sun light is everywhere at once: moving it moves only where its glyph is drawn.
     if (kind_ != TransformKind::Rotate)
         for (ObjectId id : ids_)

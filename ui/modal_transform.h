@@ -41,8 +41,9 @@ public:
     void setSnap(bool snap) { snap_ = snap; }
     /// The start document with the gesture applied, as seen through `view`.
     SceneDocument result(const ViewProjection& view) const;
-    /// A status line: "Rotate Z 45" and the like.
-    QString describe() const;
+    /// A status line with what the gesture does so far, as seen through `view`: "Move X
+    /// D 1.250 (1.250)", "Move D 0.500 0.000 -0.250 (0.559)", "Rotate Z 45.0°", "Scale 1.250".
+    QString describe(const ViewProjection& view) const;
 
     TransformKind kind() const { return kind_; }
     const SceneDocument& start() const { return start_; }

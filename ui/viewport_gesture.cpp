@@ -50,7 +50,7 @@ bool Viewport::startGesture(TransformKind kind, const QPointF& cursor,
     // A gizmo drag holds a button, which tracks the mouse anyway.
     if (!handle) setMouseTracking(true);
     session_->beginInteraction(gesture_->ids().front());
-    Q_EMIT statusMessage(gesture_->describe());
+    Q_EMIT statusMessage(gesture_->describe(projection()));
     repaintOverlay();
     syncModal();
     return true;
@@ -63,7 +63,7 @@ void Viewport::updateGesture() {
     const SceneDocument moved = gesture_->result(projection());
     SceneDocument doc = editor_->document();
     for (ObjectId id : gesture_->ids()) restoreEntity(doc, moved, id);
-    Q_EMIT statusMessage(gesture_->describe());
+    Q_EMIT statusMessage(gesture_->describe(projection()));
     if (doc.sameContent(editor_->document())) return;
     dragEdit(gestureText(gesture_->kind()), std::move(doc), kGestureMergeKey);
 }

@@ -2,6 +2,7 @@
 // G / R / S gestures with axis locks and typed values, and lights as pickable glyphs.
 #include <QAction>
 #include <QApplication>
+#include <QStatusBar>
 #include <QWheelEvent>
 #include <QtTest>
 #include <cmath>
@@ -69,6 +70,7 @@ private Q_SLOTS:
     void rotateZ45Enter_RotatesByFortyFiveDegrees_InOneUndoStep();
     void scale2Enter_DoublesTheScale_InPlace();
     void moveX1Enter_MovesByOneAlongX();
+    void freeMove_TheStatusBarShowsTheDistanceMoved();
     void escape_RestoresTheSelection_AndLeavesNoUndoStep();
     void ctrlWhileMoving_SnapsToTheGrid();
     void lightGlyph_IsPickedByClicking_AndMovesWithG();
@@ -361,6 +363,29 @@ void EditingTest::moveX1Enter_MovesByOneAlongX() {
     QVERIFY2(near(doc().findObject(id)->transform.translate, before + Vec3(1, -0.5f, 0)),
              qPrintable(str(doc().findObject(id)->transform.translate)));
     QCOMPARE(window_->editor()->undoStack()->count(), 2);
+}
+
+void EditingTest::freeMove_TheStatusBarShowsTheDistanceMoved() {
+    clickObject("blue ball");
+    const ObjectId id = idOf(*window_, "blue ball");
+    const Vec3 before = doc().findObject(id)->transform.translate;
+    Viewport* v = viewport();
+    const QPoint start = v->rect().center();
+    QTest::mouseMove(v, start);
+    QTest::keyClick(v, Qt::Key_G);
+    QTest::mouseMove(v, start + QPoint(40, -10));
+    const Vec3 d = doc().findObject(id)->transform.translate - before;
+    QVERIFY(glm::length(d) > 0.01f);
+    // Blender's header: the move along each axis and its length, as the document has it.
+    const QString shown = window_->statusBar()->currentMessage();
+    const QString expected = QStringLiteral("D %1 %2 %3 (%4)")
+                                 .arg(double(d.x), 0, 'f', 3)
+                                 .arg(double(d.y), 0, 'f', 3)
+                                 .arg(double(d.z), 0, 'f', 3)
+                                 .arg(double(glm::length(d)), 0, 'f', 3);
+    QVERIFY2(shown.startsWith(QStringLiteral("Move")) && shown.contains(expected),
+             qPrintable(shown + " / " + expected));
+    QTest::keyClick(v, Qt::Key_Escape);
 }
 
 void EditingTest::escape_RestoresTheSelection_AndLeavesNoUndoStep() {
