@@ -189,9 +189,30 @@ void MainWindow::importMesh(const QString& path, std::optional<QPoint> at) {
 bool MainWindow::exportFrame(const QString& path) {
     const auto frame = viewport_->frame();
     if (!frame || frame->empty()) return false;
-    ImageRgb image = ImageRgb::uninitialized(frame->width, frame->height);
-    if (frame->color.size() != image.pixels.size()) return false;
-    std::copy(frame->color.begin(), frame->color.end(), image.pixels.begin());
+    if (frame->color.size() != std::size_t(frame->width) * std::size_t(frame->height)) return false;
+    // Through the scene camera, only what lies inside its output frame (the rest is the
+    // dimmed margin around it).
+    QRect keep(0, 0, frame->width, frame->height);
+    const ViewProjection view = viewport_->projection();
+    if (viewport_->throughSceneCamera() && view.valid()) {
+        const QRectF image(view.imageRect()), output = view.outputRect();
+        const double sx = frame->width / image.width(), sy = frame->height / image.height();
+        keep = QRect(QPoint(int(std::lround((output.left() - image.left()) * sx)),
+                            int(std::lround((output.top() - image.top()) * sy))),
+                     QSize(int(std::lround(output.width() * sx)),
+                           int(std::lround(output.height() * sy)))) &
+               keep;
+        if (keep.isEmpty()) keep = QRect(0, 0, frame->width, frame->height);
+    }
+    ImageRgb image = ImageRgb::uninitialized(keep.width(), keep.height());
+    for (int y = 0; y < keep.height(); ++y) {
+        const auto row = frame->color.begin() +
+                         std::ptrdiff_t(std::size_t(keep.top() + y) * std::size_t(frame->width) +
+                                        std::size_t(keep.left()));
+        std::copy(
+            row, row + keep.width(),
+            image.pixels.begin() + std::ptrdiff_t(std::size_t(y) * std::size_t(keep.width())));
+    }
     std::string error;
     if (!writeImage(path.toStdString(), image, frame->tonemap, frame->exposure, error)) {
         reportError(this, tr("Cannot export image"), QString::fromStdString(error));
@@ -200,8 +221,8 @@ bool MainWindow::exportFrame(const QString& path) {
     statusBar()->showMessage(tr("Exported %1 (%2x%3, the viewport's frame; Render Image renders "
                                 "%4x%5)")
                                  .arg(path)
-                                 .arg(frame->width)
-                                 .arg(frame->height)
+                                 .arg(keep.width())
+                                 .arg(keep.height())
                                  .arg(editor_->document().render.width)
                                  .arg(editor_->document().render.height),
                              5000);

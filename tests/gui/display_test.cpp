@@ -35,6 +35,7 @@ private Q_SLOTS:
     void toneMapRect_CopiesOnlyRowsEqualToTheOneAbove();
     void handover_WhileTheFrameLockIsHeld_ReturnsAtOnce_AndCatchesUpAfter();
     void exposureEdit_ChangesShownImageAndExport_UndoRestoresThem();
+    void export_ThroughTheSceneCamera_IsItsOutputFrameOnly();
     void toneMapEdit_ChangesShownImage_UndoRestoresIt();
     void repaintPacing_StillAtItsPace_InteractionInputAndPassEndsAtOnce();
     void stillFrame_TilesWaitForThePace_ThePassEndShowsThemAtOnce();
@@ -388,6 +389,25 @@ void DisplayTest::handover_WhileTheFrameLockIsHeld_ReturnsAtOnce_AndCatchesUpAft
     QTRY_VERIFY(w.viewport()->frame()->serial != shownSerial &&
                 sameBits(w.viewport()->frame()->color, full.color) &&
                 sameBits(w.viewport()->frame()->id, full.id));
+}
+
+void DisplayTest::export_ThroughTheSceneCamera_IsItsOutputFrameOnly() {
+    // A square output in a 320 x 180 viewport: the viewport shows a 180 x 180 frame with a
+    // dimmed margin either side; the export is that square alone, the frame's middle.
+    SceneDocument doc = window_->editor()->document();
+    doc.render.width = doc.render.height = 400;
+    window_->editor()->edit(QStringLiteral("Square"), std::move(doc));
+    QVERIFY(settle(*window_));
+    QVERIFY(window_->viewport()->throughSceneCamera());
+    const QImage whole = shownImage();
+    QCOMPARE(whole.size(), QSize(320, 180));
+    const QImage square = exported(QStringLiteral("square.png"));
+    QCOMPARE(square.size(), QSize(180, 180));
+    QCOMPARE(maxDifference(square, whole.copy(70, 0, 180, 180)), 0);
+    // Looking through a view of one's own there is no output frame: all of it.
+    window_->viewport()->setAxisView(AxisView::Front);
+    QVERIFY(settle(*window_));
+    QCOMPARE(exported(QStringLiteral("view.png")).size(), QSize(320, 180));
 }
 
 void DisplayTest::exposureEdit_ChangesShownImageAndExport_UndoRestoresThem() {
