@@ -33,16 +33,19 @@ void compact(MeshData& mesh) {
     constexpr uint32_t kUnused = std::numeric_limits<uint32_t>::max();
     std::vector<uint32_t> remap(mesh.positions.size(), kUnused);
     std::vector<Vec3> positions, normals;
+    std::vector<glm::vec2> uvs;
     for (uint32_t& index : mesh.indices) {
         if (remap[index] == kUnused) {
             remap[index] = static_cast<uint32_t>(positions.size());
             positions.push_back(mesh.positions[index]);
             if (!mesh.normals.empty()) normals.push_back(mesh.normals[index]);
+            if (!mesh.uvs.empty()) uvs.push_back(mesh.uvs[index]);
         }
         index = remap[index];
     }
     mesh.positions = std::move(positions);
     mesh.normals = std::move(normals);
+    mesh.uvs = std::move(uvs);
 }
 
 // Files can carry unnormalised, zero or NaN normals; shading needs unit ones. Broken ones
@@ -94,15 +97,25 @@ MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals)
 
     auto mesh = std::make_shared<MeshData>();
     mesh->sourcePath = file;
+    // The first UV channel, (0, 0) for vertices of sub-meshes without one; kept only when
+    // some sub-mesh has one.
+    bool anyUvs = false;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         const aiMesh* in = scene->mMeshes[m];
         const auto base = static_cast<uint32_t>(mesh->positions.size());
+        anyUvs = anyUvs || in->HasTextureCoords(0);
         for (unsigned v = 0; v < in->mNumVertices; ++v) {
             const aiVector3D& p = in->mVertices[v];
             if (!isFinite(p))
                 return fail("vertex " + std::to_string(v) + " of mesh " + std::to_string(m) +
                             " is not a finite number (NaN or infinity)");
             mesh->positions.emplace_back(p.x, p.y, p.z);
+            const aiVector3D uv =
+                in->HasTextureCoords(0) ? in->mTextureCoords[0][v] : aiVector3D(0, 0, 0);
+            if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
+                return fail("texture coordinate " + std::to_string(v) + " of mesh " +
+                            std::to_string(m) + " is not a finite number (NaN or infinity)");
+            mesh->uvs.emplace_back(uv.x, uv.y);
             if (smoothNormals) {
                 const aiVector3D n = in->HasNormals() ? in->mNormals[v] : aiVector3D(0, 0, 0);
                 mesh->normals.emplace_back(n.x, n.y, n.z);
@@ -130,6 +143,7 @@ MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals)
                         " triangles are degenerate (zero area)");
         return fail("contains no triangles");
     }
+    if (!anyUvs) mesh->uvs.clear();
     compact(*mesh);
     if (smoothNormals) repairNormals(*mesh);
     result.mesh = std::move(mesh);

@@ -10,13 +10,14 @@
 namespace rs {
 
 namespace {
-constexpr char kMagic[8] = {'R', 'S', 'M', 'E', 'S', 'H', '1', '\n'};
+constexpr char kMagic[8] = {'R', 'S', 'M', 'E', 'S', 'H', '2', '\n'};
 constexpr std::uint64_t kMeshMarker = 0;
 constexpr std::uint64_t kErrorMarker = 1;
 /// Longest error message accepted back: far more than any message, far less than memory.
 constexpr std::uint64_t kMaxErrorBytes = 1 << 16;
 
 static_assert(sizeof(Vec3) == 3 * sizeof(float) && std::is_trivially_copyable_v<Vec3>);
+static_assert(sizeof(glm::vec2) == 2 * sizeof(float) && std::is_trivially_copyable_v<glm::vec2>);
 
 void putCount(std::string& out, std::uint64_t value) {
     out.append(reinterpret_cast<const char*>(&value), sizeof value);
@@ -79,8 +80,9 @@ bool writeMeshWire(int fd, const MeshData& mesh) {
     putCount(header, mesh.normals.size());
     putCount(header, mesh.indices.size());
     putCount(header, mesh.droppedDegenerate);
+    putCount(header, mesh.uvs.size());
     return writeAllTo(fd, header.data(), header.size()) && writeArray(fd, mesh.positions) &&
-           writeArray(fd, mesh.normals) && writeArray(fd, mesh.indices);
+           writeArray(fd, mesh.normals) && writeArray(fd, mesh.indices) && writeArray(fd, mesh.uvs);
 }
 
 bool writeMeshWireError(int fd, const std::string& error) {
@@ -106,14 +108,17 @@ MeshLoadResult decodeMeshWire(const std::string& bytes, const std::string& sourc
         return result;
     }
     if (marker != kMeshMarker) return malformed("an unknown kind of result");
-    std::uint64_t positions = 0, normals = 0, indices = 0, dropped = 0;
-    if (!in.count(positions) || !in.count(normals) || !in.count(indices) || !in.count(dropped))
+    std::uint64_t positions = 0, normals = 0, indices = 0, dropped = 0, uvs = 0;
+    if (!in.count(positions) || !in.count(normals) || !in.count(indices) || !in.count(dropped) ||
+        !in.count(uvs))
         return malformed("a cut header");
     if (normals != 0 && normals != positions) return malformed("normals that are not per vertex");
+    if (uvs != 0 && uvs != positions)
+        return malformed("texture coordinates that are not per vertex");
     if (indices == 0 || indices % 3 != 0) return malformed("no whole triangles");
     auto mesh = std::make_shared<MeshData>();
     if (!in.array(positions, mesh->positions) || !in.array(normals, mesh->normals) ||
-        !in.array(indices, mesh->indices))
+        !in.array(indices, mesh->indices) || !in.array(uvs, mesh->uvs))
         return malformed("counts that the bytes do not hold");
     if (in.left() != 0) return malformed("bytes after the mesh");
     for (std::uint32_t index : mesh->indices)

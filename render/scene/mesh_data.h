@@ -1,4 +1,5 @@
-// Triangle mesh data as loaded from a file: object-space positions, optional normals, indices.
+// Triangle mesh data as loaded from a file: object-space positions, optional normals and
+// texture coordinates, indices.
 #pragma once
 
 #include <atomic>
@@ -15,7 +16,10 @@ namespace rs {
 /// An indexed triangle mesh in object space. Immutable once loaded; shared between snapshots.
 struct MeshData {
     std::vector<Vec3> positions;
-    std::vector<Vec3> normals;          ///< Per-vertex normals, same size as positions, or empty.
+    std::vector<Vec3> normals;  ///< Per-vertex normals, same size as positions, or empty.
+    /// The file's first texture-coordinate channel (u, v), one per vertex, or empty when the
+    /// file has none (textures then see (0, 0) everywhere).
+    std::vector<glm::vec2> uvs;
     std::vector<uint32_t> indices;      ///< Three per triangle.
     std::size_t droppedDegenerate = 0;  ///< Zero-area triangles removed while loading.
     std::string sourcePath;             ///< The file it came from (absolute), for messages.
