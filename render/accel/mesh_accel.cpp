@@ -1,6 +1,7 @@
 // Triangle mesh acceleration: bounds, the normal rule, and the lazily built triangle BVH.
 #include "accel/mesh_accel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -70,24 +71,38 @@ Vec3 MeshAccel::normal(uint32_t tri, float b1, float b2) const {
     return len2 > 0.0f ? n / std::sqrt(len2) : geometric;
 }
 
-bool MeshAccel::intersect(const Ray& ray, float tmin, float& tmax, ShapeHit& hit) const {
+bool MeshAccel::closestTriangle(const Ray& ray, float tmin, float& tmax, uint32_t& tri, float& b1,
+                                float& b2) const {
     ensureBvh();
-    // Remember the winner and its barycentrics; the normal is worked out once, at the end.
-    uint32_t hitTri = 0;
-    float hitB1 = 0.0f, hitB2 = 0.0f;
-    const bool found = bvh_.closestHit(ray, tmin, tmax, [&](uint32_t tri, float& tFar) {
-        float t, b1, b2;
-        if (!rs::intersect(triangles_[tri], ray, tmin, tFar, t, b1, b2)) return false;
+    // Remember the winner and its barycentrics.
+    return bvh_.closestHit(ray, tmin, tmax, [&](uint32_t candidate, float& tFar) {
+        float t, c1, c2;
+        if (!rs::intersect(triangles_[candidate], ray, tmin, tFar, t, c1, c2)) return false;
         tFar = t;
-        hitTri = tri;
-        hitB1 = b1;
-        hitB2 = b2;
+        tri = candidate;
+        b1 = c1;
+        b2 = c2;
         return true;
     });
-    if (!found) return false;
+}
+
+bool MeshAccel::intersect(const Ray& ray, float tmin, float& tmax, ShapeHit& hit) const {
+    // The normal is worked out once, at the end.
+    uint32_t hitTri = 0;
+    float hitB1 = 0.0f, hitB2 = 0.0f;
+    if (!closestTriangle(ray, tmin, tmax, hitTri, hitB1, hitB2)) return false;
     hit.t = tmax;
     hit.n = normal(hitTri, hitB1, hitB2);
     return true;
+}
+
+bool MeshAccel::triangleAt(const Vec3& p, const Vec3& n, uint32_t& tri, float& b1,
+                           float& b2) const {
+    if (!data_ || bounds_.empty()) return false;
+    const float eps = std::max(1e-4f * glm::length(bounds_.max - bounds_.min), 1e-6f);
+    // From p + eps n back through p to p - eps n: the surface at p lies halfway.
+    float tmax = 2.0f * eps;
+    return closestTriangle(Ray::make(p + eps * n, -n), 0.0f, tmax, tri, b1, b2);
 }
 
 bool MeshAccel::occluded(const Ray& ray, float tmin, float tmax) const {

@@ -26,6 +26,15 @@ public:
 
     /// Closest hit in (tmin, tmax); on a hit shrinks tmax and fills `hit` (object space normal).
     bool intersect(const Ray& ray, float tmin, float& tmax, ShapeHit& hit) const;
+    /// Closest hit in (tmin, tmax) through the triangle BVH: on a hit shrinks tmax and gives
+    /// the triangle's index and barycentrics (b1 weighs its second vertex, b2 its third).
+    bool closestTriangle(const Ray& ray, float tmin, float& tmax, uint32_t& tri, float& b1,
+                         float& b2) const;
+    /// The triangle under object-space point `p` on the surface, with unit normal `n` there:
+    /// the closest along the short segment p + n s, s in (-eps, eps), eps = 1e-4 of the
+    /// bounds' diagonal (at least 1e-6). Every engine reports a hit as its point and normal,
+    /// so texture coordinates found this way agree between engines. Builds the BVH (ensureBvh).
+    bool triangleAt(const Vec3& p, const Vec3& n, uint32_t& tri, float& b1, float& b2) const;
     /// Any hit in (tmin, tmax).
     bool occluded(const Ray& ray, float tmin, float tmax) const;
 

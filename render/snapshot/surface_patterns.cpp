@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 
 #include "texture/checker.h"
 #include "texture/shape_uv.h"
@@ -18,9 +20,42 @@ PatternSurface identitySurface(PatternSurface::Shape shape) {
     return s;
 }
 
+/// One triangle accel per mesh data with texture coordinates, kept while something uses it,
+/// so a snapshot rebuilt on every move does not rebuild the mesh's BVH.
+std::shared_ptr<const MeshAccel> uvAccelFor(const std::shared_ptr<const MeshData>& data) {
+    static std::mutex mutex;
+    static std::map<const MeshData*,
+                    std::pair<std::weak_ptr<const MeshData>, std::weak_ptr<const MeshAccel>>>
+        known;
+    std::lock_guard lock(mutex);
+    std::erase_if(known, [](const auto& entry) { return entry.second.second.expired(); });
+    auto& slot = known[data.get()];
+    if (slot.first.lock() == data)
+        if (auto accel = slot.second.lock()) return accel;
+    auto accel = std::make_shared<const MeshAccel>(data, false);
+    slot = {data, accel};
+    return accel;
+}
+
 /// Half-widths along the object's axes of the box that holds the footprint's ellipse.
 Vec3 boxHalfWidths(const Vec3& a1, const Vec3& a2) {
     return glm::sqrt(a1 * a1 + a2 * a2);
+}
+
+/// The file's first UV channel at object-space point `po` (world normal `n`), interpolated
+/// over the triangle under it; (0, 0) with no gradient when the mesh has no texture
+/// coordinates or no triangle lies there.
+ShapeUV meshUV(const PatternSurface& surface, const Vec3& po, const Vec3& n) {
+    ShapeUV uv{0.0f, 0.0f, Vec3(0.0f), Vec3(0.0f)};
+    if (!surface.mesh) return uv;
+    const Vec3 no = glm::normalize(surface.normalToObject * n);
+    uint32_t tri = 0;
+    float b1 = 0.0f, b2 = 0.0f;
+    if (!surface.mesh->triangleAt(po, no, tri, b1, b2)) return uv;
+    const MeshData& data = *surface.mesh->data();
+    const uint32_t* i = &data.indices[3 * std::size_t(tri)];
+    return triangleUV(data.positions[i[0]], data.positions[i[1]], data.positions[i[2]],
+                      data.uvs[i[0]], data.uvs[i[1]], data.uvs[i[2]], b1, b2);
 }
 
 }  // namespace
@@ -49,6 +84,10 @@ PatternSurface SurfacePatterns::surfaceOf(const Object& o) {
         s.a = box->min, s.b = box->max;
     } else {
         s.shape = PatternSurface::Shape::Mesh;
+        const auto* mesh = std::get_if<MeshGeometry>(&o.geometry);
+        if (mesh && mesh->data && !mesh->data->uvs.empty() &&
+            mesh->data->uvs.size() == mesh->data->positions.size())
+            s.mesh = uvAccelFor(mesh->data);
     }
     return s;
 }
@@ -86,7 +125,8 @@ Color patternColor(const MaterialPattern& pattern, const PatternSurface& surface
         case PatternSurface::Shape::Box:
             uv = boxUV(po, glm::normalize(surface.normalToObject * n), surface.a, surface.b);
             break;
-        case PatternSurface::Shape::Mesh:  // The file's UVs are not read yet: uv (0, 0).
+        case PatternSurface::Shape::Mesh:
+            uv = meshUV(surface, po, n);
             break;
     }
     // Texture coordinates (s, t) with t = 0 the image's top row; a pixel's derivatives are

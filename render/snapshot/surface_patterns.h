@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "accel/mesh_accel.h"
 #include "accel/ray_engine.h"
 #include "core/math.h"
 #include "scene/document.h"
@@ -36,6 +37,10 @@ struct PatternSurface {
     /// edges b, c. Box: min a, max b.
     Vec3 a{0.0f}, b{0.0f}, c{0.0f};
     float r = 0.0f;
+    /// Mesh with texture coordinates: its triangles, to find the one under a hit (shared by
+    /// every snapshot showing that mesh data); null for a mesh without them, whose texture
+    /// coordinates are (0, 0) everywhere.
+    std::shared_ptr<const MeshAccel> mesh;
 };
 
 /// The pattern surfaces of a snapshot, by engine slot (primitive index, or plane index with

@@ -1,4 +1,5 @@
-// Texture coordinates of spheres, planes, rectangles and boxes, with their gradients.
+// Texture coordinates of spheres, planes, rectangles, boxes and mesh triangles, with their
+// gradients.
 #include "texture/shape_uv.h"
 
 #include <cmath>
@@ -109,6 +110,28 @@ ShapeUV boxUV(const Vec3& p, const Vec3& n, const Vec3& min, const Vec3& max) {
     ShapeUV uv;
     faceCoordinate(p, min, max, uAxis, uRising, uv.u, uv.dudp);
     faceCoordinate(p, min, max, vAxis, vRising, uv.v, uv.dvdp);
+    return uv;
+}
+
+ShapeUV triangleUV(const Vec3& p0, const Vec3& p1, const Vec3& p2, const glm::vec2& t0,
+                   const glm::vec2& t1, const glm::vec2& t2, float b1, float b2) {
+    ShapeUV uv;
+    const glm::vec2 t = (1.0f - b1 - b2) * t0 + b1 * t1 + b2 * t2;
+    uv.u = t.x;
+    uv.v = t.y;
+    // g = a e1 + b e2 with the Gram system [e1.e1 e1.e2; e1.e2 e2.e2] (a, b) = (d1, d2).
+    const Vec3 e1 = p1 - p0, e2 = p2 - p0;
+    const float g11 = glm::dot(e1, e1), g12 = glm::dot(e1, e2), g22 = glm::dot(e2, e2);
+    const float det = g11 * g22 - g12 * g12;
+    if (!(det > 0.0f) || !std::isfinite(det)) return uv;
+    const glm::vec2 d1 = t1 - t0, d2 = t2 - t0;
+    auto gradient = [&](float c1, float c2) {
+        const float a = (g22 * c1 - g12 * c2) / det;
+        const float b = (g11 * c2 - g12 * c1) / det;
+        return a * e1 + b * e2;
+    };
+    uv.dudp = gradient(d1.x, d2.x);
+    uv.dvdp = gradient(d1.y, d2.y);
     return uv;
 }
 

@@ -1,4 +1,4 @@
-// Texture coordinates of the analytic shapes and their gradients, in each shape's own space.
+// Texture coordinates of the shapes and their gradients, in each shape's own space.
 #pragma once
 
 #include "core/math.h"
@@ -51,5 +51,15 @@ ShapeUV rectangleUV(const Vec3& p, const Vec3& center, const Vec3& u, const Vec3
 /// The gradients are the constant coefficients of x, y, z above. A zero extent on an axis
 /// gives 0 for that coordinate and its gradient.
 ShapeUV boxUV(const Vec3& p, const Vec3& n, const Vec3& min, const Vec3& max);
+
+/// A mesh triangle (p0, p1, p2) with vertex texture coordinates (t0, t1, t2), at barycentrics
+/// (b1, b2) (weights 1 - b1 - b2, b1, b2 of the three vertices):
+///   (u, v) = (1 - b1 - b2) t0 + b1 t1 + b2 t2.
+/// The gradients are the in-plane vectors g with g . (p1 - p0) = du1 and g . (p2 - p0) = du2
+/// (du_k the change of u, resp. v, from vertex 0 to vertex k), so the footprint maps into
+/// texture space through the triangle's own linear map; a degenerate triangle or UV-less
+/// data gives zero gradients.
+ShapeUV triangleUV(const Vec3& p0, const Vec3& p1, const Vec3& p2, const glm::vec2& t0,
+                   const glm::vec2& t1, const glm::vec2& t2, float b1, float b2);
 
 }  // namespace rs
