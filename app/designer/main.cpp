@@ -12,6 +12,7 @@
 #include "drag_measurement.h"
 #include "main_window.h"
 #include "raystudio_version.h"
+#include "scene_editor.h"
 
 namespace {
 int usageError(const char* message) {
@@ -33,6 +34,11 @@ struct Options {
     QCommandLineOption opened{
         QStringLiteral("print-opened-scene"),
         QStringLiteral("Open the scene (or the default one), print its path and exit.")};
+    // For scripted sessions (tests/bench/window-frames.sh): start with an object selected,
+    // as a click in the outliner would.
+    QCommandLineOption select{QStringLiteral("select"),
+                              QStringLiteral("Select the object or light named NAME on opening."),
+                              QStringLiteral("NAME")};
 };
 
 void describe(QCommandLineParser& parser, const Options& options) {
@@ -48,6 +54,7 @@ void describe(QCommandLineParser& parser, const Options& options) {
     parser.addOption(options.autosave);
     parser.addOption(options.recover);
     parser.addOption(options.opened);
+    parser.addOption(options.select);
 }
 }  // namespace
 
@@ -118,6 +125,20 @@ int main(int argc, char* argv[]) {
         if (!opened) return 1;
         std::printf("%s\n", qPrintable(QFileInfo(scene).canonicalFilePath()));
         return 0;
+    }
+    if (parser.isSet(options.select) && opened) {
+        const std::string name = parser.value(options.select).toStdString();
+        const rs::SceneDocument& doc = window.editor()->document();
+        rs::ObjectId id = rs::kNoObject;
+        for (const rs::Object& o : doc.objects)
+            if (o.name == name) id = o.id;
+        for (const rs::Light& l : doc.lights)
+            if (id == rs::kNoObject && l.name == name) id = l.id;
+        if (id == rs::kNoObject)
+            std::fprintf(stderr, "raystudio: --select: %s has no object or light named '%s'\n",
+                         qPrintable(scene), name.c_str());
+        else
+            window.editor()->setSelection(id);
     }
     window.offerRecovery(answer);
     return app.exec();

@@ -27,7 +27,7 @@ built, the load average before and after, and then
   --full         7 runs each, the designer 3 times, and the four tables: 5-10 minutes
                  (the 1M-triangle and 100,000-sphere scenes are generated and loaded often)
   --threads N    render threads (default 2)
-  --skip LIST    comma-separated rows to leave out: povray, embree, designer, looks
+  --skip LIST    comma-separated rows to leave out: povray, embree, designer, window, looks
                  (written as "not measured" in the file)
   --display N    the X display measure-designer.sh gives Xvfb (default: a free one)
   --output FILE  write FILE instead of tests/bench/RESULTS.md
@@ -65,7 +65,7 @@ done
 [[ "${threads}" =~ ^[1-9][0-9]*$ ]] || { echo "results.sh: --threads needs a positive number, not '${threads}'" >&2; exit 2; }
 [[ -n "${output}" ]] || { echo "results.sh: --output needs a file name" >&2; exit 2; }
 for s in ${skip//,/ }; do
-    [[ "${s}" =~ ^(povray|embree|designer|looks)$ ]] || { echo "results.sh: --skip knows povray, embree, designer and looks, not '${s}'" >&2; exit 2; }
+    [[ "${s}" =~ ^(povray|embree|designer|window|looks)$ ]] || { echo "results.sh: --skip knows povray, embree, designer, window and looks, not '${s}'" >&2; exit 2; }
 done
 skipped() { [[ "${skip}" == *",$1,"* ]]; }
 if [[ "${mode}" == full ]]; then runs=7; designer_runs=3; else runs=3; designer_runs=1; fi
@@ -80,6 +80,11 @@ if ! skipped designer; then
     [[ -x "${gui}" ]] || missing+=("${gui} is not built (cmake --build build/release --target raystudio), or pass --skip designer")
     for tool in Xvfb openbox; do
         command -v "${tool}" >/dev/null 2>&1 || missing+=("${tool} not found (apt-get install xvfb openbox), or pass --skip designer")
+    done
+fi
+if ! skipped window; then
+    for tool in Xvfb openbox xdotool ffmpeg; do
+        command -v "${tool}" >/dev/null 2>&1 || missing+=("${tool} not found (apt-get install xvfb openbox xdotool ffmpeg), or pass --skip window")
     done
 fi
 skipped povray || command -v povray >/dev/null 2>&1 || missing+=("povray not found (apt-get install povray), or pass --skip povray")
@@ -191,6 +196,29 @@ PY
         [[ "${kind}" == orbit ]] && what="orbiting the reference room's camera"
         headline+=("| designer in a window (Xvfb, Mesa llvmpipe, ${view} view, viewport ${viewport}), ${what}, 240 mouse moves at 60 Hz | **${whole} whole frames/s** (${shown} shown), input to a whole frame ${latency} ms, longest GUI stall ${stall} ms | | viewport full frame ${full}x \`renderImage\` | \`bash tests/bench/measure-designer.sh --json\`, median of ${designer_runs} |")
     done <"${work}/designer.rows"
+fi
+
+if skipped window; then
+    headline+=("| designer seen from outside (x11grab), G-moving a ball and orbiting | not measured (--skip window) | | | |")
+else
+    run_stage "designer from outside" "${work}/window" bash "${root}/tests/bench/window-frames.sh" --json
+    python3 - "${work}/window" >"${work}/window.rows" <<'PY'
+import json, sys
+lines = [l for l in open(sys.argv[1]) if l.startswith("{")]
+if not lines:
+    sys.exit("window-frames.sh gave no result")
+r = json.loads(lines[-1])
+for kind in ("drag", "orbit"):
+    e, own = r[kind], r[kind].get("designer_own", {})
+    print(kind, r["screen"], e["distinct_frames_per_s"], e["median_gap_ms"], e["longest_gap_ms"],
+          e["input_to_screen_ms"], "%.1f" % float(own.get("frames_per_s", "nan")),
+          "%.1f" % float(own.get("latency_median_ms", "nan")))
+PY
+    while read -r kind screen fps gap longest latency own_fps own_latency; do
+        what="G-moving the reference room's blue ball"
+        [[ "${kind}" == orbit ]] && what="orbiting the reference room's camera"
+        headline+=("| designer seen from outside (Xvfb ${screen} + openbox, maximised; one xdotool process at 60 Hz; ffmpeg x11grab + mpdecimate of the viewport's middle), ${what}, 240 moves | **${fps} distinct frames/s** on screen, median gap ${gap} ms, longest ${longest} ms, first input to screen ${latency} ms | the designer's own (\`--measure-${kind}\`): ${own_fps} frames/s, latency ${own_latency} ms | | \`bash tests/bench/window-frames.sh --json\` |")
+    done <"${work}/window.rows"
 fi
 
 tables=()
