@@ -60,6 +60,7 @@ private Q_SLOTS:
     void ctrlZ_DuringAKeyGesture_CancelsIt();
     void undoFromTheMenu_DuringADrag_EndsTheDrag();
     void orbitAboutAFarWall_KeepsTheViewInsideTheRoom();
+    void aLightSelectedFirst_ShowsAFullSizeGizmo();
 
 private:
     Viewport* viewport() { return window_->viewport(); }
@@ -85,6 +86,20 @@ void GizmoTest::cleanup() {
     if (!window_) return;
     editor()->undoStack()->setClean();  // No save prompt on close.
     window_.reset();
+}
+
+void GizmoTest::aLightSelectedFirst_ShowsAFullSizeGizmo() {
+    // The first thing selected is a light, from the outliner (no object was selected before).
+    QVERIFY(!doc().lights.empty());
+    const ObjectId light = doc().lights.front().id;
+    editor()->setSelection(light);
+    const auto g = viewport()->gizmo();
+    QVERIFY(g);
+    // Its arrows are kArrowPx long on screen, whatever the light's distance: the gizmo spans
+    // at least one arrow's length, not a few pixels.
+    const QRectF b = g->bounds();
+    QVERIFY2(std::max(b.width(), b.height()) > TransformGizmo::kArrowPx,
+             qPrintable(QStringLiteral("%1 x %2").arg(b.width()).arg(b.height())));
 }
 
 void GizmoTest::click(const std::string& name, Qt::KeyboardModifiers mods) {
