@@ -15,6 +15,7 @@ constexpr double kPlaneNearPx = 24.0, kPlaneFarPx = 40.0;
 constexpr double kScaleBoxPx = 5.0;  ///< Half the scale box's side.
 constexpr double kGrabPx = 6.0;      ///< How near a line a press grabs it.
 constexpr int kRingSegments = 64;
+constexpr double kRingMarginPx = 4.0;  ///< Kept between a ring and the frame's edge.
 /// An axis whose arrow is shorter than this share of its length points at the viewer.
 constexpr double kMinForeshortening = 0.15;
 
@@ -84,6 +85,13 @@ TransformGizmo::TransformGizmo(const ViewProjection& view, const Vec3& pivot, co
     valid_ = true;
     centre_ = *c;
     const float unit = 1.0f / pxPerUnit;  // World length of one widget pixel at the pivot.
+    // The rings stay inside the frame while the pivot is well inside it (near an edge they
+    // shrink, down to just outside the scale boxes).
+    const QRectF frame(view.imageRect());
+    const double room = std::min({centre_.x() - frame.left(), frame.right() - centre_.x(),
+                                  centre_.y() - frame.top(), frame.bottom() - centre_.y()}) -
+                        kRingMarginPx;
+    const double ringPx = std::clamp(room, kScalePx + 2.0 * kScaleBoxPx, kRingPx);
     for (int i = 0; i < 3; ++i) {
         Axis& a = axes_[i];
         const auto end = view.project(pivot + axes[i] * float(kArrowPx) * unit);
@@ -106,11 +114,35 @@ TransformGizmo::TransformGizmo(const ViewProjection& view, const Vec3& pivot, co
             if (const auto q = view.project(pivot + k * unit)) a.planeSquare << *q;
         // Seen edge-on, the square is a sliver nobody could aim at.
         if (a.planeSquare.size() != 4 || area(a.planeSquare) < 16.0) a.planeSquare.clear();
-        for (int s = 0; s <= kRingSegments; ++s) {
-            const float t = 2.0f * float(M_PI) * float(s) / kRingSegments;
-            const Vec3 p = pivot + (u * std::cos(t) + v * std::sin(t)) * float(kRingPx) * unit;
-            if (const auto q = view.project(p)) a.ring.push_back(*q);
+    }
+    // Rings of `radius` pixels at the pivot; a ring towards the viewer projects a little wider,
+    // so what reaches past the frame shrinks them once more.
+    const auto makeRings = [&](double radius) {
+        double overshoot = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            const Vec3 u = axes[(i + 1) % 3], v = axes[(i + 2) % 3];
+            Axis& a = axes_[i];
+            a.ring.clear();
+            for (int s = 0; s <= kRingSegments; ++s) {
+                const float t = 2.0f * float(M_PI) * float(s) / kRingSegments;
+                const Vec3 p = pivot + (u * std::cos(t) + v * std::sin(t)) * float(radius) * unit;
+                const auto q = view.project(p);
+                if (!q) continue;
+                a.ring.push_back(*q);
+                overshoot = std::max({overshoot, frame.left() + kRingMarginPx - q->x(),
+                                      q->x() - frame.right() + kRingMarginPx,
+                                      frame.top() + kRingMarginPx - q->y(),
+                                      q->y() - frame.bottom() + kRingMarginPx});
+            }
         }
+        return overshoot;
+    };
+    double radius = ringPx;
+    for (int round = 0; round < 3; ++round) {
+        const double overshoot = makeRings(radius);
+        const double smaller = std::max(kScalePx + 2.0 * kScaleBoxPx, radius - overshoot - 1.0);
+        if (overshoot <= 0.0 || smaller >= radius) break;
+        radius = smaller;
     }
 }
 

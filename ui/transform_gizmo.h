@@ -33,7 +33,8 @@ class TransformGizmo {
 public:
     static constexpr double kArrowPx = 70.0;  ///< Length of a move arrow.
     static constexpr double kScalePx = 92.0;  ///< Distance of a scale box from the centre.
-    static constexpr double kRingPx = 115.0;  ///< Radius of a rotate ring.
+    /// Radius of a rotate ring; less for a pivot nearer the frame's edge than that.
+    static constexpr double kRingPx = 115.0;
 
     /// The gizmo about `pivot` with `axes` (columns) seen through `view`.
     TransformGizmo(const ViewProjection& view, const Vec3& pivot, const Mat3& axes);

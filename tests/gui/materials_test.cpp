@@ -30,6 +30,7 @@
 #include "property_panel.h"
 #include "snapshot/compiled_scene.h"
 #include "transform_edits.h"
+#include "transform_gizmo.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -131,11 +132,20 @@ void MaterialsTest::clickAdd(const QString& name) {
 }
 
 void MaterialsTest::clickObject(const std::string& name) {
+    // A pixel of the object that no handle of the gizmo shown now covers (a click there
+    // would grab the handle, as in Blender).
     const ObjectId id = idOf(*window_, name);
-    const auto [x, y] = pixelOf(*window_->viewport()->frame(), id);
-    QVERIFY2(x >= 0, name.c_str());
-    QTest::mouseClick(window_->viewport(), Qt::LeftButton, {},
-                      window_->viewport()->widgetPointOf(x, y));
+    const DisplayFrame& f = *window_->viewport()->frame();
+    const auto gizmo = window_->viewport()->gizmo();
+    QPoint at(-1, -1);
+    for (int y = 0; y < f.height && at.x() < 0; ++y)
+        for (int x = 0; x < f.width && at.x() < 0; ++x) {
+            if (f.idAt(x, y) != id) continue;
+            const QPoint p = window_->viewport()->widgetPointOf(x, y);
+            if (!gizmo || !gizmo->handleAt(QPointF(p))) at = p;
+        }
+    QVERIFY2(at.x() >= 0, name.c_str());
+    QTest::mouseClick(window_->viewport(), Qt::LeftButton, {}, at);
     QCOMPARE(window_->editor()->selection(), id);
 }
 

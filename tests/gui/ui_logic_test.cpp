@@ -17,6 +17,8 @@
 #include "scene_edits.h"
 #include "snapshot/compiled_scene.h"
 #include "transform_edits.h"
+#include "transform_gizmo.h"
+#include "view_projection.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -50,6 +52,7 @@ private Q_SLOTS:
     void placeInView_OnTheFloorInFront_ClearOfOthers_PlaneUnder_LightBelowTheCeiling();
     void fitScale_ScalesOnlyMeshesThatDoNotFitTheView();
     void sunGlyph_FromAFile_GoesUpstreamOfTheScene();
+    void gizmoRings_StayInsideTheFrame_NearItsEdge();
     void displayAutomatic_PicksSoftwareOnSoftwareGL_OpenGLOnAGpu();
     void scaleAlongWorldX_StretchesTheAxisOfARotatedObjectThatLiesAlongX();
     void scaleAlongLocalAxes_MovesOtherObjectsAlongThoseAxes();
@@ -184,6 +187,32 @@ void UiLogicTest::fitScale_ScalesOnlyMeshesThatDoNotFitTheView() {
     // A factor the Scale field could not show is clamped to its range.
     QCOMPARE(fitScale(cube(1e9f), view, 10.0f),
              float(findParameter(ParamKind::Transform, "scale")->softMin));
+}
+
+void UiLogicTest::gizmoRings_StayInsideTheFrame_NearItsEdge() {
+    // A 960 x 540 view; pivots from the middle up to 125 pixels from the top edge (nearer,
+    // the rings would have to cross the scale boxes to fit).
+    Camera view;
+    view.position = Vec3(0, 0, 5);
+    view.target = Vec3(0, 0, 0);
+    const QSize size(960, 540);
+    const ViewProjection projection(view, size, size, size);
+    const QRectF frame(projection.imageRect());
+    for (const double fromTop : {270.0, 180.0, 140.0, 125.0}) {
+        const Ray ray = projection.rayThrough(QPointF(480.0, fromTop));
+        const Vec3 pivot = ray.origin + ray.dir * (5.0f / -ray.dir.z);  // on the plane z = 0
+        const TransformGizmo g(projection, pivot, Mat3(1.0f));
+        QVERIFY(g.valid());
+        // bounds() reaches 12 pixels past the shapes; the rings themselves stay inside.
+        const QRectF shapes = g.bounds().adjusted(12, 12, -12, -12);
+        QVERIFY2(frame.contains(shapes),
+                 qPrintable(QStringLiteral("pivot %1 px from the top: rings reach y %2")
+                                .arg(fromTop)
+                                .arg(shapes.top())));
+    }
+    // In the middle the rings keep their full size.
+    const TransformGizmo middle(projection, Vec3(0.0f), Mat3(1.0f));
+    QVERIFY(middle.bounds().height() >= 2 * TransformGizmo::kRingPx);
 }
 
 void UiLogicTest::sunGlyph_FromAFile_GoesUpstreamOfTheScene() {
