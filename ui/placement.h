@@ -57,8 +57,8 @@ inline constexpr float kFitViewShare = 0.5f;
 ///   objects' bounds (through that surface below, when there are none);
 /// - a light hangs above that point, a third of the way to the ceiling (or of the distance
 ///   when nothing is above).
-/// `up` is the scene's up (unit), `aspect` the view's width over its height. Returns the point the object rests on
-/// (a light's is the one below it), which a spot is aimed at.
+/// `up` is the scene's up (unit), `aspect` the view's width over its height. Returns the point the
+/// object rests on (a light's is the one below it), which a spot is aimed at.
 Vec3 placeInView(SceneDocument& doc, ObjectId id, const CompiledScene* scene, const Camera& view,
                  const Vec3& up, float aspect);
 /// Tries across the view before a new object is left overlapping another.
