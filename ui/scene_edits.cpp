@@ -111,7 +111,7 @@ ObjectId duplicate(SceneDocument& doc, ObjectId id) {
 
 bool remove(SceneDocument& doc, ObjectId id) {
     auto byId = [id](const auto& e) { return e.id == id; };
-    const auto objs = std::erase_if(doc.objects, byId);
+    const auto objs = doc.objects.eraseIf(byId);
     const auto lights = std::erase_if(doc.lights, byId);
     return objs + lights > 0;
 }
@@ -200,7 +200,7 @@ std::string renameMaterial(SceneDocument& doc, const std::string& from, const st
     if (!m) return "there is no material \"" + from + "\"";
     if (std::string error = materialNameError(doc, from, to); !error.empty()) return error;
     m->name = to;
-    for (Object& o : doc.objects)
+    for (Object& o : doc.objects.editable())
         if (o.material == from) o.material = to;
     return {};
 }

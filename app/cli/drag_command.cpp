@@ -115,7 +115,7 @@ int runDrag(int argc, char** argv) {
     if (!loadSceneOrReport(args.positional()[0], doc)) return 2;
     applyRenderOverrides(args, doc.render);
     Object* object = nullptr;
-    for (Object& o : doc.objects)
+    for (Object& o : doc.objects.editable())
         if (o.name == *objectName) object = &o;
     if (!object) throw UsageError{"--object: the scene has no object named '" + *objectName + "'"};
     if (std::holds_alternative<PlaneGeometry>(object->geometry))

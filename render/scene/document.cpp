@@ -1,7 +1,9 @@
 // Document bookkeeping: id assignment, look-ups, content comparison and the image size limits.
 #include "scene/document.h"
 
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
+#include <utility>
 
 #include "core/id_search.h"
 
@@ -28,9 +30,9 @@ ObjectId SceneDocument::addLight(Light l) {
 }
 
 namespace {
-template <class T>
-T* findById(std::vector<T>& list, ObjectId id) {
-    const std::ptrdiff_t i = indexById(list, id, [](const T& e) { return e.id; });
+template <class List>
+auto* findById(List& list, ObjectId id) {
+    const std::ptrdiff_t i = indexById(std::as_const(list), id, [](const auto& e) { return e.id; });
     return i < 0 ? nullptr : &list[std::size_t(i)];
 }
 }  // namespace
@@ -59,12 +61,24 @@ const Material* SceneDocument::findMaterial(const std::string& name) const {
 
 namespace {
 template <class T>
-bool sameIgnoringIds(const std::vector<T>& a, const std::vector<T>& b) {
+bool sameIgnoringId(const T& a, const T& b) {
+    if (a.id == b.id) return a == b;
+    T x = a;
+    x.id = b.id;
+    return x == b;
+}
+bool sameIgnoringIds(const std::vector<Light>& a, const std::vector<Light>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), sameIgnoringId<Light>);
+}
+bool sameIgnoringIds(const SharedList<Object>& a, const SharedList<Object>& b) {
     if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        T x = a[i];
-        x.id = b[i].id;
-        if (!(x == b[i])) return false;
+    // Shared chunks hold the same objects: only the chunks an edit wrote are compared.
+    for (std::size_t c = 0; c < a.chunkCount(); ++c) {
+        if (a.sharesChunk(b, c)) continue;
+        const std::size_t first = c * SharedList<Object>::kChunk;
+        const std::size_t last = std::min(a.size(), first + SharedList<Object>::kChunk);
+        for (std::size_t i = first; i < last; ++i)
+            if (!sameIgnoringId(a[i], b[i])) return false;
     }
     return true;
 }

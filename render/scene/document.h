@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "core/shared_list.h"
 #include "scene/mesh_data.h"
 
 namespace rs {
@@ -223,7 +224,8 @@ struct SceneDocument {
     RenderSettings render;
     std::vector<Material> materials;
     std::vector<Light> lights;
-    std::vector<Object> objects;
+    /// Copies of a document share the objects an edit did not touch (core/shared_list.h).
+    SharedList<Object> objects;
     Environment environment;
     Extras extras;
     ObjectId nextId = 1;

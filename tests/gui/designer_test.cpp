@@ -119,7 +119,7 @@ void DesignerTest::clickOnNothing_ClearsSelection() {
     // The frame fills the viewport (no letterbox to click on); with every object hidden the
     // viewport shows nothing but the background.
     SceneDocument doc = window_->editor()->document();
-    for (Object& o : doc.objects) o.visible = false;
+    for (Object& o : doc.objects.editable()) o.visible = false;
     window_->editor()->edit(QStringLiteral("Hide all"), std::move(doc));
     QVERIFY(settle(*window_));
     Viewport* v = window_->viewport();

@@ -37,7 +37,7 @@ void useTestNames() {
 /// The room with "blue ball" renamed: the edit the killed designer makes.
 SceneDocument editedRoom(const SceneDocument& room) {
     SceneDocument doc = room;
-    for (Object& o : doc.objects)
+    for (Object& o : doc.objects.editable())
         if (o.name == "blue ball") o.name = kRenamed;
     return doc;
 }

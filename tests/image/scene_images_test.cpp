@@ -105,7 +105,7 @@ TEST(SceneImageTolerance, MissingReflectionOrShadow_Fails) {
     const Difference same = difference(expected, renderImage(CompiledScene(doc)).image);
     EXPECT_LE(same.flipped, kMaxFlippedPixels);
     SceneDocument matte = doc;
-    for (Object& o : matte.objects)
+    for (Object& o : matte.objects.editable())
         if (o.name == "chrome ball") o.material = "chalk";
     const Difference noReflection = difference(expected, renderImage(CompiledScene(matte)).image);
     EXPECT_GT(noReflection.flipped, kMaxFlippedPixels);

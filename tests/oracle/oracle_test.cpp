@@ -362,15 +362,13 @@ TEST(OracleTolerance, SlightlyWrongTerms_Fail) {
     {
         const OracleCase& c = findCase("hard_shadow");
         SceneDocument doc = oracleDocument(c);
-        doc.objects.erase(std::remove_if(doc.objects.begin(), doc.objects.end(),
-                                         [](const Object& o) { return o.name == "low ball"; }),
-                          doc.objects.end());
+        doc.objects.eraseIf([](const Object& o) { return o.name == "low ball"; });
         EXPECT_FALSE(passes(c, doc)) << "a missing small ball and its shadow pass";
     }
     {
         const OracleCase& c = findCase("reference_room");
         SceneDocument doc = oracleDocument(c);
-        for (Object& o : doc.objects)
+        for (Object& o : doc.objects.editable())
             if (o.name == "chrome ball") o.material = "chalk";
         EXPECT_FALSE(passes(c, doc)) << "the chrome ball made matte passes";
     }

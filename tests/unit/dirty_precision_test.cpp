@@ -21,7 +21,7 @@ namespace {
 using namespace std::chrono_literals;
 
 Object& object(SceneDocument& doc, const std::string& name) {
-    for (Object& o : doc.objects)
+    for (Object& o : doc.objects.editable())
         if (o.name == name) return o;
     throw std::runtime_error("no object " + name);
 }

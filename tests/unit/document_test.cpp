@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rs {
@@ -54,7 +55,7 @@ TEST(Document, FindObject_FindsEveryIdInAnyOrder_AndNothingForAnAbsentId) {
         ids.push_back(doc.addObject(o));
         if (i % 3 == 0) doc.addLight(Light{});  // ids interleave between the two lists
     }
-    std::erase_if(doc.objects, [](const Object& o) { return o.id % 7 == 0; });  // deletions
+    doc.objects.eraseIf([](const Object& o) { return o.id % 7 == 0; });  // deletions
     for (ObjectId id : ids) {
         const Object* o = doc.findObject(id);
         if (id % 7 == 0) {
@@ -68,8 +69,11 @@ TEST(Document, FindObject_FindsEveryIdInAnyOrder_AndNothingForAnAbsentId) {
     EXPECT_EQ(doc.findObject(doc.nextId), nullptr);
     EXPECT_EQ(doc.findLight(ids[1]), nullptr);  // an object's id is no light's
     // A list someone reordered is still searched correctly (only more slowly).
-    std::reverse(doc.objects.begin(), doc.objects.end());
-    for (const Object& o : doc.objects) EXPECT_EQ(doc.findObject(o.id), &o);
+    std::vector<Object> reversed = doc.objects.toVector();
+    std::reverse(reversed.begin(), reversed.end());
+    doc.objects = SharedList<Object>(reversed);
+    for (const Object& o : std::as_const(doc).objects)
+        EXPECT_EQ(std::as_const(doc).findObject(o.id), &o);
 }
 
 }  // namespace rs

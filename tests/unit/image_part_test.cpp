@@ -222,7 +222,7 @@ TEST(RenderFingerprint, ChangesWithSettingsMeshesAndEngineOnly) {
     wider.render.width += 1;
     EXPECT_NE(renderFingerprint(wider, EngineKind::Embree), base);
     SceneDocument moved = doc;
-    for (Object& o : moved.objects) {
+    for (Object& o : moved.objects.editable()) {
         auto* mesh = std::get_if<MeshGeometry>(&o.geometry);
         if (!mesh) continue;
         auto data = std::make_shared<MeshData>(*mesh->data);

@@ -191,7 +191,7 @@ TEST(RayEngines, MovingAMeshRecommitsAndAnswersLikeARebuild) {
     SceneDocument doc = randomScene(rng);
     const CompiledScene before(doc, nullptr, EngineKind::Embree);
     ObjectId meshId = kNoObject;
-    for (Object& o : doc.objects)
+    for (Object& o : doc.objects.editable())
         if (std::holds_alternative<MeshGeometry>(o.geometry)) {
             o.transform.translate += Vec3(0.3f, 0.1f, 0.0f);
             meshId = o.id;

@@ -21,7 +21,7 @@ const std::string kScenes = RAYSTUDIO_SCENES_DIR;
 
 SceneDocument invariantRoom() {
     SceneDocument doc = test::editRoom(64, 48);
-    for (Object& o : doc.objects)
+    for (Object& o : doc.objects.editable())
         if (o.name == "mirror ball") o.transform.scale = Vec3(1.0f, 0.8f, 1.2f);  // own frame
     doc.render.supersampling = 4;
     doc.render.adaptiveSupersampling = true;
@@ -88,7 +88,7 @@ void expectMatchesFromScratch(const RenderSession& session, const SceneDocument&
 
 Object& randomBounded(SceneDocument& doc, std::mt19937& rng) {
     std::vector<Object*> bounded;
-    for (Object& o : doc.objects)
+    for (Object& o : doc.objects.editable())
         if (!std::holds_alternative<PlaneGeometry>(o.geometry)) bounded.push_back(&o);
     return *bounded[rng() % bounded.size()];
 }
@@ -122,7 +122,7 @@ void randomEdit(SceneDocument& doc, std::mt19937& rng, std::string& kind) {
             break;
         case 3:
             kind = "smooth normals";
-            for (Object& any : doc.objects)
+            for (Object& any : doc.objects.editable())
                 if (auto* m = std::get_if<MeshGeometry>(&any.geometry))
                     m->smoothNormals = !m->smoothNormals;
             break;

@@ -108,7 +108,7 @@ TEST(SessionSummaries, CountsAndSummariesFollowEdits_WithSupersampling) {
     ASSERT_TRUE(session.waitUntilComplete(60s));
     ASSERT_TRUE(summariesHold(session));
     Object* ball = nullptr;
-    for (Object& o : doc.objects)
+    for (Object& o : doc.objects.editable())
         if (o.name == "mirror ball") ball = &o;
     ASSERT_NE(ball, nullptr);
     const ObjectId id = ball->id;

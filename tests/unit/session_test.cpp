@@ -16,7 +16,7 @@ using test::testRoom;
 
 Object* randomObject(SceneDocument& doc, std::mt19937& rng) {
     std::vector<Object*> bounded;
-    for (Object& o : doc.objects)
+    for (Object& o : doc.objects.editable())
         if (!std::holds_alternative<PlaneGeometry>(o.geometry)) bounded.push_back(&o);
     return bounded.empty() ? nullptr : bounded[rng() % bounded.size()];
 }

@@ -28,7 +28,7 @@ TEST(TraceKernelInstances, AskingForBookkeepingOutputsLeavesEveryPixelsBits) {
     SceneDocument doc = test::smallRoom(40, 30);
     doc.render.background = Color(0.2f, 0.3f, 0.5f);
     doc.render.shadowSamples = 4;
-    std::erase_if(doc.objects, [](const Object& o) { return o.name == "back"; });
+    doc.objects.eraseIf([](const Object& o) { return o.name == "back"; });
     test::addSphereLight(doc, "sphere", Vec3(2, 2.5f, -4));
     for (EngineKind engine : {EngineKind::Embree, EngineKind::Builtin}) {
         const CompiledScene scene(doc, nullptr, engine);
