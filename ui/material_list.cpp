@@ -80,7 +80,7 @@ MaterialList::MaterialList(SceneEditor* editor, QWidget* parent)
         refused_.clear();
         updateButtons();
     });
-    connect(editor_, &SceneEditor::documentChanged, this, &MaterialList::rebuild);
+    connect(editor_, &SceneEditor::documentChanged, this, &MaterialList::onDocumentChanged);
     connect(previews_, &MaterialPreviews::previewReady, this, &MaterialList::onPreviewReady);
     // Queued: the view leaves its editing state after the delegate has signalled.
     connect(
@@ -123,8 +123,23 @@ void MaterialList::showMessage(const QString& text) {
     message_->setVisible(!text.isEmpty());
 }
 
+void MaterialList::onDocumentChanged() {
+    const DocumentChange& change = editor_->lastChange();
+    const uint8_t users = DocumentChange::kMaterial | DocumentChange::kName;
+    if (change.materials || change.environment || change.objectsRestructured ||
+        (change.objectFields() & users)) {
+        rebuild();
+        return;
+    }
+    if (!refused_.isEmpty()) {  // Any change ends a refused rename's message.
+        refused_.clear();
+        updateButtons();
+    }
+}
+
 void MaterialList::rebuild() {
     refused_.clear();
+    deleteErrorValid_ = false;
     // A drag edits the document many times a second without touching the list: keep it.
     const SceneDocument& doc = editor_->document();
     std::unordered_map<std::string, int> users;  // One pass: a scene may have many of both.
@@ -207,7 +222,11 @@ void MaterialList::updateButtons() {
     const bool has = !name.empty() && doc.findMaterial(name);
     duplicate_->setEnabled(has);
     rename_->setEnabled(has);
-    const std::string deleteError = has ? materialDeleteError(doc, name) : std::string();
+    if (!deleteErrorValid_ || deleteError_.first != name) {
+        deleteError_ = {name, has ? materialDeleteError(doc, name) : std::string()};
+        deleteErrorValid_ = true;
+    }
+    const std::string& deleteError = deleteError_.second;
     delete_->setEnabled(has && deleteError.empty());
     delete_->setToolTip(deleteError.empty() ? tr("Delete this material")
                                             : QString::fromStdString(deleteError));

@@ -6,6 +6,7 @@
 #include <QStringList>
 #include <QWidget>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/document.h"
@@ -53,6 +54,9 @@ public:
 
 private:
     void rebuild();
+    /// rebuild() for a document change: nothing when the change cannot touch the list (a
+    /// drag), so moving one of 100,000 objects does not count every object's material.
+    void onDocumentChanged();
     /// Gives each item its preview, or its swatch while the preview renders; asks only for
     /// materials whose content (or the environment) changed since, unless `force`.
     void refreshPreviews(bool force);
@@ -76,6 +80,10 @@ private:
     QLabel* message_;
     QString refused_;    ///< A refused rename's error, shown until the next change.
     QStringList shown_;  ///< "name/users" of each material listed.
+    /// updateButtons()'s delete refusal for the material named first, valid while the second
+    /// is true (rebuild() clears it: users may have changed).
+    std::pair<std::string, std::string> deleteError_;
+    bool deleteErrorValid_ = false;
     MaterialPreviews* previews_;
     std::vector<Material> previewed_;  ///< The materials as the icons were last asked for.
     Environment previewedEnvironment_;

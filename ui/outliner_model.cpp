@@ -21,7 +21,7 @@ std::vector<Row> rowsFor(const std::vector<Light>& lights) {
     return rows;
 }
 template <class Row>
-std::vector<Row> rowsFor(const std::vector<Object>& objects) {
+std::vector<Row> rowsFor(const SharedList<Object>& objects) {
     std::vector<Row> rows;
     rows.reserve(objects.size());
     for (const Object& o : objects) rows.push_back({o.id, o.name, o.visible});
@@ -92,6 +92,19 @@ bool OutlinerModel::update(int group, std::vector<Row>& cached, std::vector<Row>
 
 void OutlinerModel::onDocumentChanged() {
     const SceneDocument& doc = editor_->document();
+    const DocumentChange& change = editor_->lastChange();
+    if (!change.lights && !change.objectsRestructured && objectRows_.size() == doc.objects.size()) {
+        // Objects kept their places: only the rows the edit renamed, hid or showed change.
+        const QModelIndex parent = index(kObjectsRow, 0);
+        for (const DocumentChange::ObjectEdit& e : change.objects) {
+            if (!(e.fields & (DocumentChange::kName | DocumentChange::kVisible))) continue;
+            const Object& o = doc.objects[e.index];
+            objectRows_[e.index] = {o.id, o.name, o.visible};
+            const QModelIndex row = index(int(e.index), 0, parent);
+            Q_EMIT dataChanged(row, row);
+        }
+        return;
+    }
     auto lights = rowsFor<Row>(doc.lights);
     auto objects = rowsFor<Row>(doc.objects);
     if (update(kLightsRow, lightRows_, lights) && update(kObjectsRow, objectRows_, objects)) return;

@@ -17,6 +17,7 @@ void SceneEditor::edit(const QString& text, SceneDocument after, MergeKind merge
 }
 
 void SceneEditor::replaceDocument(SceneDocument doc) {
+    lastChange_ = describeChange(doc_, doc);
     doc_ = std::move(doc);
     // An undo or a delete may take selected entities away: the rest stay selected.
     std::vector<ObjectId> kept;
@@ -42,6 +43,7 @@ void SceneEditor::resetDocument(SceneDocument doc, const QString& filePath) {
     beforePreview_.reset();
     undo_.clear();
     doc_ = std::move(doc);
+    lastChange_ = DocumentChange::everything();
     selected_.clear();
     cameraSelected_ = false;
     setFilePath(filePath);

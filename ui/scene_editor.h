@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "scene/document.h"
+#include "scene/document_change.h"
 
 namespace rs::ui {
 
@@ -23,6 +24,9 @@ public:
 
     /// The current document.
     const SceneDocument& document() const { return doc_; }
+    /// What the last documentChanged() changed (everything after documentReset()), so a
+    /// listener updates what an edit touched rather than the whole scene.
+    const DocumentChange& lastChange() const { return lastChange_; }
     /// The undo stack (its clean state is the saved state).
     QUndoStack* undoStack() { return &undo_; }
 
@@ -79,6 +83,7 @@ Q_SIGNALS:
 
 private:
     SceneDocument doc_;
+    DocumentChange lastChange_ = DocumentChange::everything();
     QUndoStack undo_;
     QString filePath_;
     std::vector<ObjectId> selected_;

@@ -5,6 +5,8 @@
 #include <map>
 #include <set>
 
+#include "scene/document_change.h"
+
 namespace rs {
 
 namespace {
@@ -124,20 +126,9 @@ SceneUpdate updateScene(const SceneDocument& before,
     };
     std::set<ObjectId> reshadowed;
 
-    std::map<ObjectId, const Object*> old;
-    for (const Object& o : before.objects) old[o.id] = &o;
     std::vector<ObjectId> moved, added, removed;
     bool structural = false;
-    for (const Object& o : after.objects) {
-        auto it = old.find(o.id);
-        if (it == old.end()) {
-            added.push_back(o.id);
-            structural = true;
-            if (isPlane(o) && o.visible) edit.everything = true;
-            continue;
-        }
-        const Object& prev = *it->second;
-        old.erase(it);
+    auto compare = [&](const Object& prev, const Object& o) {
         const bool shapeChanged =
             !(prev.geometry == o.geometry) || !(prev.transform == o.transform);
         const bool kindChanged = prev.geometry.index() != o.geometry.index();
@@ -151,7 +142,7 @@ SceneUpdate updateScene(const SceneDocument& before,
             else if (materialChanged && o.visible)
                 edit.retinted.push_back(o.id);
             structural |= kindChanged || prev.visible != o.visible;
-            continue;
+            return;
         }
         if (kindChanged || prev.visible != o.visible || meshChanged(prev, o)) {
             structural = true;
@@ -165,6 +156,29 @@ SceneUpdate updateScene(const SceneDocument& before,
             moved.push_back(o.id);  // Recompiled for its material index; bounds unchanged.
             edit.retinted.push_back(o.id);
             if (castsFilteredShadow(prev, o)) reshadowed.insert(o.id);
+        }
+    };
+
+    // Objects kept in place: the document diff names the changed ones without visiting the
+    // rest, unless a material definition changed (then its users are found by walking).
+    const DocumentChange change = describeChange(before, after);
+    std::map<ObjectId, const Object*> old;
+    if (!change.objectsRestructured && changedMaterials.empty()) {
+        for (const DocumentChange::ObjectEdit& e : change.objects)
+            compare(before.objects[e.index], after.objects[e.index]);
+    } else {
+        for (const Object& o : before.objects) old[o.id] = &o;
+        for (const Object& o : after.objects) {
+            auto it = old.find(o.id);
+            if (it == old.end()) {
+                added.push_back(o.id);
+                structural = true;
+                if (isPlane(o) && o.visible) edit.everything = true;
+                continue;
+            }
+            const Object& prev = *it->second;
+            old.erase(it);
+            compare(prev, o);
         }
     }
     for (const auto& [id, o] : old) {
