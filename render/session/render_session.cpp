@@ -166,7 +166,7 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
         // the edits coalesce (the latest wins) and are applied when it ends, so the user sees
         // whole frames. Cut at every mouse move, an orbit's pass never ended: 50 frames a
         // second, each torn between cameras, none whole. Else the bump stops running tiles.
-        if (!letsThePassFinishLocked(now)) generation_.store(gen);
+        if (!letsThePassFinishLocked(now) && !passOwed_) generation_.store(gen);
         pendingDoc_ = std::move(*copy);  // A document not yet applied is dropped: the latest wins.
         pendingGeneration_ = gen;
         editTime_ = now;
@@ -247,6 +247,7 @@ void RenderSession::applyPendingLocked(std::unique_lock<std::mutex>& lock) {
             }
         }
         stats_.lastDirtyPixels = marked;
+        passOwed_ = marked > 0 && interacting_ && policy_.wholeFramesWhileMoving;
         stats_.lastEditRefitted = u.edit.refitted;
         stats_.lastUpdateMs = std::chrono::duration<double, std::milli>(markEnd - start).count();
     }
@@ -432,7 +433,7 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
     for (;;) {
         wake_.wait(lock, [&] { return stop_ || hasWorkLocked(); });
         if (stop_) return;
-        if (pendingDoc_) {
+        if (pendingDoc_ && !passOwed_) {
             applyPendingLocked(lock);
             continue;
         }
@@ -448,7 +449,9 @@ void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
         }
         plan.reset();
         const auto planStart = std::chrono::steady_clock::now();
-        if (!planLocked(plan)) continue;
+        const bool planned = planLocked(plan);
+        passOwed_ = false;  // Planned and run now, or nothing to show: the next edit applies.
+        if (!planned) continue;
         stats_.lastPassTiles = plan.tiles.size();
         const double planMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planStart)

@@ -206,6 +206,11 @@ private:
     InteractionPolicy policy_;
     Governor governor_;
     bool interacting_ = false;
+    /// While moving, an applied edit is shown before the next is applied: set by an apply
+    /// that marked pixels, cleared when a pass has run. Otherwise edits that take longer to
+    /// apply than the mouse takes to send the next (a refit of 100,000 objects) left no time
+    /// for a single pass.
+    bool passOwed_ = false;
     ObjectId moving_ = kNoObject;
     float focusX_ = -1.0f, focusY_ = -1.0f;
     int interleaveParity_ = 0;

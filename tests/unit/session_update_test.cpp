@@ -6,6 +6,7 @@
 #include <condition_variable>
 #include <future>
 #include <mutex>
+#include <thread>
 
 #include "session_test_support.h"
 
@@ -161,6 +162,35 @@ TEST(RenderSession, AFailedSnapshotBuild_IsReportedToTheObserver_AndTheNextUpdat
     ASSERT_TRUE(session.waitUntilComplete(60s));
     EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
     EXPECT_EQ(log.messages().size(), 1u);
+}
+
+TEST(RenderSession, WhileMoving_EditsSlowerToApplyThanTheMouseIsFast_StillGetPasses) {
+    // Applying each document takes 25 ms (a refit of 100,000 objects) and the mouse posts one
+    // every 5 ms: were every pending document applied before any pass, none would run until
+    // the mouse stopped.
+    SceneDocument doc = testRoom();
+    RenderSession session(2);
+    session.setSceneUpdater([](const SceneDocument& before,
+                               const std::shared_ptr<const CompiledScene>& snap,
+                               const SceneDocument& after, EngineKind engine) {
+        std::this_thread::sleep_for(25ms);
+        return updateScene(before, snap, after, engine);
+    });
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    const ObjectId ball = doc.objects[2].id;
+    session.beginInteraction(ball);
+    const uint64_t passesBefore = session.stats().passes;
+    for (int k = 0; k < 120; ++k) {
+        doc.findObject(ball)->transform.translate.x += 0.002f;
+        session.update(doc);
+        std::this_thread::sleep_for(5ms);
+    }
+    const uint64_t passesWhileMoving = session.stats().passes - passesBefore;
+    session.endInteraction();
+    EXPECT_GE(passesWhileMoving, 4u);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);  // Refined frame == full render.
 }
 
 }  // namespace
