@@ -11,14 +11,18 @@ namespace {
 
 SceneDocument manySpheres(int n) {
     SceneDocument doc;
-    doc.materials.push_back(Material{.name = "red"});
+    Material red;
+    red.name = "red";
+    doc.materials.push_back(red);
     for (int i = 0; i < n; ++i) {
         Object o;
         o.name = "ball " + std::to_string(i);
         o.geometry = SphereGeometry{Vec3(float(i), 0.0f, 0.0f), 0.4f};
         doc.addObject(o);
     }
-    doc.addLight(Light{.name = "key"});
+    Light key;
+    key.name = "key";
+    doc.addLight(key);
     return doc;
 }
 
@@ -73,7 +77,9 @@ TEST(DocumentChange, EachFieldAndPart_IsNamed) {
 TEST(DocumentChange, AddingRemovingOrReorderingObjects_IsARestructure) {
     const SceneDocument before = manySpheres(300);
     SceneDocument added = before;
-    added.addObject(Object{.name = "new"});
+    Object extra;
+    extra.name = "new";
+    added.addObject(extra);
     EXPECT_TRUE(describeChange(before, added).objectsRestructured);
     SceneDocument removed = before;
     removed.objects.erase(removed.objects.begin() + 5);

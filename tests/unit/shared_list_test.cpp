@@ -63,7 +63,8 @@ TEST(SharedList, EditsBehaveAsAVectorsDo_AndLeaveTheCopyTheyCameFromAlone) {
         const List before = l;
         const std::vector<std::string> wantBefore = want;
         const int op = int(rng() % 7);
-        const std::string v = "v" + std::to_string(step);
+        std::string v = "v";
+        v += std::to_string(step);
         const std::size_t at = want.empty() ? 0 : rng() % want.size();
         if (op <= 1 || want.empty()) {
             l.push_back(v);
@@ -94,9 +95,11 @@ TEST(SharedList, EditsBehaveAsAVectorsDo_AndLeaveTheCopyTheyCameFromAlone) {
 TEST(SharedList, EditableWritesEveryElement_AndClearEmpties) {
     const List a = numbered(2 * kChunk + 1);
     List b = a;
-    for (std::string& s : b.editable()) s += "!";
+    for (std::string& s : b.editable()) s += '!';
     for (std::size_t i = 0; i < a.size(); ++i) {
-        EXPECT_EQ(b[i], std::to_string(i) + "!");
+        std::string want = std::to_string(i);
+        want += '!';
+        EXPECT_EQ(b[i], want);
         EXPECT_EQ(a[i], std::to_string(i));
     }
     b.clear();
@@ -112,7 +115,9 @@ TEST(SharedList, CopiesWrittenOnTwoThreads_KeepTheirOwnElements) {
     auto write = [](List& l, const std::string& tag) {
         for (int round = 0; round < 50; ++round) {
             List snapshot = l;  // Shares, then the write below copies again.
-            for (std::size_t i = 0; i < l.size(); i += 17) l[i] = tag + std::to_string(round);
+            std::string value = tag;
+            value += std::to_string(round);
+            for (std::size_t i = 0; i < l.size(); i += 17) l[i] = value;
         }
     };
     std::thread ta(write, std::ref(a), "a"), tb(write, std::ref(b), "b");
