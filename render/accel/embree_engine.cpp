@@ -1,6 +1,7 @@
 // Embree 3 scenes from a SceneGeometry, the user-geometry callbacks, and packet queries.
 #include "accel/embree_engine.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <mutex>
@@ -168,6 +169,46 @@ struct EmbreeMesh {
     EmbreeMesh& operator=(const EmbreeMesh&) = delete;
 };
 
+/// World spheres in a committed scene of their own (instanced by the top level): the ones that
+/// have not moved since updated() split them off.
+struct EmbreeStillSpheres {
+    RTCScene scene = nullptr;
+    std::vector<uint32_t> prims;  ///< Primitive index of each sphere primID.
+
+    /// The world spheres of `prims` whose index is not in `moved` (sorted).
+    EmbreeStillSpheres(const std::vector<Primitive>& all, const std::vector<uint32_t>& moved) {
+        for (uint32_t i = 0; i < all.size(); ++i)
+            if (!all[i].hasFrame && std::holds_alternative<SphereShape>(all[i].shape) &&
+                !std::binary_search(moved.begin(), moved.end(), i))
+                prims.push_back(i);
+        scene = rtcNewScene(device());
+        attachSpheres(scene, all, prims);
+        rtcCommitScene(scene);
+    }
+    ~EmbreeStillSpheres() { rtcReleaseScene(scene); }
+    EmbreeStillSpheres(const EmbreeStillSpheres&) = delete;
+    EmbreeStillSpheres& operator=(const EmbreeStillSpheres&) = delete;
+
+    /// Embree's sphere primitive for each of `which`, tested in SIMD inside its BVH leaves (no
+    /// callback); returns the geometry's id in `scene`.
+    static unsigned attachSpheres(RTCScene scene, const std::vector<Primitive>& all,
+                                  const std::vector<uint32_t>& which) {
+        RTCGeometry spheres = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_SPHERE_POINT);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(spheres, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                              RTC_FORMAT_FLOAT4, 4 * sizeof(float),
+                                                              which.size()));
+        for (std::size_t k = 0; k < which.size(); ++k) {
+            const SphereShape& s = std::get<SphereShape>(all[which[k]].shape);
+            v[4 * k] = s.center.x, v[4 * k + 1] = s.center.y, v[4 * k + 2] = s.center.z;
+            v[4 * k + 3] = std::abs(s.radius);
+        }
+        rtcCommitGeometry(spheres);
+        const unsigned id = rtcAttachGeometry(scene, spheres);
+        rtcReleaseGeometry(spheres);
+        return id;
+    }
+};
+
 EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* previous)
     : geometry_(geometry) {
     const auto& prims = *geometry_.primitives;
@@ -183,6 +224,21 @@ EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* pr
         rtcCommitScene(scene_);
         return;
     }
+    buildTopLevel(previous, nullptr);
+}
+
+EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* previous,
+                           std::vector<uint32_t> moved,
+                           std::shared_ptr<const EmbreeStillSpheres> still)
+    : geometry_(geometry), still_(std::move(still)) {
+    hasPlanes_ = !geometry_.planes->empty();
+    planes_ = FlatSet(*geometry_.planes, nullptr);
+    scene_ = rtcNewScene(device());
+    buildTopLevel(previous, &moved);
+}
+
+void EmbreeEngine::buildTopLevel(const EmbreeEngine* previous, const std::vector<uint32_t>* moved) {
+    const auto& prims = *geometry_.primitives;
     std::unordered_map<const MeshAccel*, std::shared_ptr<const EmbreeMesh>> known;
     if (previous)
         for (const auto& m : previous->meshes_)
@@ -193,7 +249,10 @@ EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* pr
         if (!mesh) {
             const bool worldSphere =
                 !prims[i].hasFrame && std::holds_alternative<SphereShape>(prims[i].shape);
-            (worldSphere ? spherePrims_ : userPrims_).push_back(i);
+            if (!worldSphere)
+                userPrims_.push_back(i);
+            else if (!moved || std::binary_search(moved->begin(), moved->end(), i))
+                spherePrims_.push_back(i);
             continue;
         }
         auto& slot = known[mesh->accel.get()];
@@ -229,22 +288,23 @@ EmbreeEngine::EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* pr
         userGeomID_ = rtcAttachGeometry(scene_, user);
         rtcReleaseGeometry(user);
     }
-    if (!spherePrims_.empty()) {
-        // Embree's sphere primitive is tested in SIMD inside its BVH leaves: no callback.
-        RTCGeometry spheres = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_SPHERE_POINT);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(spheres, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                              RTC_FORMAT_FLOAT4, 4 * sizeof(float),
-                                                              spherePrims_.size()));
-        for (std::size_t k = 0; k < spherePrims_.size(); ++k) {
-            const SphereShape& s = std::get<SphereShape>(prims[spherePrims_[k]].shape);
-            v[4 * k] = s.center.x, v[4 * k + 1] = s.center.y, v[4 * k + 2] = s.center.z;
-            v[4 * k + 3] = std::abs(s.radius);
-        }
-        rtcCommitGeometry(spheres);
-        sphereGeomID_ = rtcAttachGeometry(scene_, spheres);
-        rtcReleaseGeometry(spheres);
+    if (!spherePrims_.empty())
+        sphereGeomID_ = EmbreeStillSpheres::attachSpheres(scene_, prims, spherePrims_);
+    if (still_) {
+        // Placed as it is: Embree's identity transform leaves the rays' bits as they are.
+        RTCGeometry inst = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(inst, still_->scene);
+        const Mat4 identity(1.0f);
+        rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &identity[0][0]);
+        rtcCommitGeometry(inst);
+        stillInstID_ = rtcAttachGeometry(scene_, inst);
+        rtcReleaseGeometry(inst);
     }
     rtcCommitScene(scene_);
+}
+
+std::size_t EmbreeEngine::stillSpheres() const {
+    return still_ ? still_->prims.size() : 0;
 }
 
 EmbreeEngine::~EmbreeEngine() {
@@ -252,10 +312,39 @@ EmbreeEngine::~EmbreeEngine() {
 }
 
 std::shared_ptr<const RayEngine> EmbreeEngine::updated(const SceneGeometry& geometry,
-                                                       std::span<const uint32_t>) const {
+                                                       std::span<const uint32_t> moved) const {
     // The top level holds one entry per object (mesh instances, user primitives): committing
-    // a new one is O(objects) and leaves every mesh's triangle scene as it is.
-    return std::make_shared<const EmbreeEngine>(geometry, this);
+    // a new one is O(objects) and leaves every mesh's triangle scene as it is. Many world
+    // spheres are one entry, and a tree over 100,000 of them took 20 ms to build per move:
+    // the unmoved ones stay in a scene this engine shares.
+    const auto& prims = *geometry.primitives;
+    const std::size_t spheres = spherePrims_.size() + (still_ ? still_->prims.size() : 0);
+    const auto isWorldSphere = [](const Primitive& p) {
+        return !p.hasFrame && std::holds_alternative<SphereShape>(p.shape);
+    };
+    bool split = !flatOnly_ && spheres >= kSplitSpheres && moved.size() <= kMaxMovedSpheres &&
+                 prims.size() == geometry_.primitives->size();
+    for (std::size_t k = 0; split && k < moved.size(); ++k)
+        split = moved[k] < prims.size() && isWorldSphere(prims[moved[k]]) &&
+                isWorldSphere((*geometry_.primitives)[moved[k]]);
+    if (!split) return std::make_shared<const EmbreeEngine>(geometry, this);
+
+    // The spheres moved since the shared scene was built, and these.
+    std::vector<uint32_t> apart(moved.begin(), moved.end());
+    if (still_) apart.insert(apart.end(), spherePrims_.begin(), spherePrims_.end());
+    std::sort(apart.begin(), apart.end());
+    apart.erase(std::unique(apart.begin(), apart.end()), apart.end());
+    std::shared_ptr<const EmbreeStillSpheres> still = still_;
+    if (!still_ || apart != spherePrims_) {
+        if (apart.size() > kMaxMovedSpheres) {
+            apart.assign(moved.begin(), moved.end());
+            std::sort(apart.begin(), apart.end());
+            apart.erase(std::unique(apart.begin(), apart.end()), apart.end());
+        }
+        still = std::make_shared<const EmbreeStillSpheres>(prims, apart);
+    }
+    return std::shared_ptr<const EmbreeEngine>(
+        new EmbreeEngine(geometry, this, std::move(apart), std::move(still)));
 }
 
 inline float EmbreeEngine::MeshInstance::distance(const Vec3& ng, const Vec3& v0,
@@ -305,7 +394,8 @@ void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const 
             const unsigned inst = p.rh.hit.instID[0][k];
             Vec3 normal;
             uint32_t slot;
-            if (inst != RTC_INVALID_GEOMETRY_ID) {
+            const bool stillSphere = inst != RTC_INVALID_GEOMETRY_ID && inst == stillInstID_;
+            if (inst != RTC_INVALID_GEOMETRY_ID && !stillSphere) {
                 const MeshInstance& mi = instances_[inst];
                 slot = mi.slot;
                 const uint32_t tri = p.rh.hit.primID[k];
@@ -317,9 +407,10 @@ void EmbreeEngine::closestHit(const RayBatch& rays, const HitBatch& hits) const 
                     mi.distance(ng, mi.mesh->firstVertex(tri), rays, i, p.rh.ray.tfar[k], tmax);
                 normal = mi.smooth ? mi.toWorld(mi.mesh->normal(tri, p.rh.hit.u[k], p.rh.hit.v[k]))
                                    : mi.toWorld(ng);
-            } else if (p.rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID &&
-                       p.rh.hit.geomID[k] == sphereGeomID_) {
-                slot = spherePrims_[p.rh.hit.primID[k]];
+            } else if (stillSphere || (p.rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID &&
+                                       p.rh.hit.geomID[k] == sphereGeomID_)) {
+                slot = stillSphere ? still_->prims[p.rh.hit.primID[k]]
+                                   : spherePrims_[p.rh.hit.primID[k]];
                 // The outward normal from the centre, as intersect(SphereShape) defines it.
                 const SphereShape& s = std::get<SphereShape>(prims[slot].shape);
                 const Vec3 o(rays.ox[i], rays.oy[i], rays.oz[i]),

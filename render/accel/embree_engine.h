@@ -17,6 +17,9 @@ namespace rs {
 
 /// One mesh's committed Embree triangle scene, shared by every engine that shows the mesh.
 struct EmbreeMesh;
+/// A committed Embree scene of world spheres that have not moved lately, shared by the
+/// engines of consecutive refits (embree_engine.cpp).
+struct EmbreeStillSpheres;
 
 class EmbreeEngine final : public RayEngine {
 public:
@@ -29,8 +32,17 @@ public:
     EngineKind kind() const override { return EngineKind::Embree; }
     void closestHit(const RayBatch& rays, const HitBatch& hits) const override;
     void anyHit(const RayBatch& rays, uint8_t* occluded) const override;
+    /// A scene of many world spheres keeps the ones that have not moved in a committed scene
+    /// shared with this engine, instanced once; only the moved ones (kMaxMovedSpheres at
+    /// most) and the rest of the top level are committed anew. Otherwise as the constructor.
     std::shared_ptr<const RayEngine> updated(const SceneGeometry& geometry,
                                              std::span<const uint32_t> moved) const override;
+    /// How many world spheres this engine answers through the scene updated() kept still
+    /// (0 when it did not split them).
+    std::size_t stillSpheres() const;
+    /// World spheres from which updated() keeps the unmoved ones apart.
+    static constexpr std::size_t kSplitSpheres = 4096;
+    static constexpr std::size_t kMaxMovedSpheres = 64;
 
     // For the user-geometry callbacks (embree_engine.cpp).
     const Primitive& userPrimitive(unsigned primID) const {
@@ -39,6 +51,14 @@ public:
     const std::vector<Primitive>& primitives() const { return *geometry_.primitives; }
 
 private:
+    /// updated()'s engine: the world spheres `moved` (sorted primitive indices) in the top
+    /// level, every other one in `still`.
+    EmbreeEngine(const SceneGeometry& geometry, const EmbreeEngine* previous,
+                 std::vector<uint32_t> moved, std::shared_ptr<const EmbreeStillSpheres> still);
+    /// Attaches the mesh instances, the user geometry and the world spheres the top level
+    /// holds (those in `moved` only, when `still`) to scene_, and commits it.
+    void buildTopLevel(const EmbreeEngine* previous, const std::vector<uint32_t>* moved);
+
     SceneGeometry geometry_;
     FlatSet planes_;         ///< The planes, and the spheres too when flatOnly_.
     bool flatOnly_ = false;  ///< A few world spheres only: no Embree scene is traversed.
@@ -48,6 +68,8 @@ private:
     unsigned sphereGeomID_ = RTC_INVALID_GEOMETRY_ID;
     std::vector<uint32_t> spherePrims_;  ///< Primitive index of each sphere primID.
     std::vector<uint32_t> userPrims_;    ///< Primitive index of each user-geometry primID.
+    std::shared_ptr<const EmbreeStillSpheres> still_;  ///< Null unless updated() split them.
+    unsigned stillInstID_ = RTC_INVALID_GEOMETRY_ID;   ///< still_'s instance in scene_.
     /// What a hit on one mesh instance needs, by geomID (meshes only; slot kNoSlot elsewhere).
     struct MeshInstance {
         uint32_t slot = kNoSlot;  ///< Index into the primitives.

@@ -6,6 +6,7 @@
 
 #include <random>
 
+#include "accel/embree_engine.h"
 #include "snapshot/compiled_scene.h"
 #include "test_scenes.h"
 
@@ -211,6 +212,61 @@ TEST(RayEngines, MovingAMeshRecommitsAndAnswersLikeARebuild) {
         ASSERT_EQ(a.slot, b.slot);
         ASSERT_EQ(a.t, b.t);
     }
+}
+
+TEST(RayEngines, MovingAFewOfManySpheres_KeepsTheRestStill_AndAnswersLikeARebuild) {
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    SceneDocument doc;
+    const int n = int(EmbreeEngine::kSplitSpheres) + 500;
+    for (int i = 0; i < n; ++i) {
+        Object o;
+        o.geometry = SphereGeometry{Vec3(4.0f * u(rng), 4.0f * u(rng), -6.0f + 2.0f * u(rng)),
+                                    0.04f + 0.03f * std::abs(u(rng))};
+        doc.addObject(o);
+    }
+    auto scene = std::make_shared<const CompiledScene>(doc, nullptr, EngineKind::Embree);
+    // Rounds of moves, each refitting the last: one sphere, the same again, two more, one back
+    // where it was, and more than the engine keeps apart at once.
+    const std::vector<std::vector<std::size_t>> rounds = {
+        {7}, {7}, {100, 2000}, {7}, std::vector<std::size_t>(EmbreeEngine::kMaxMovedSpheres + 6)};
+    bool split = false;
+    for (std::size_t round = 0; round < rounds.size(); ++round) {
+        std::vector<ObjectId> moved;
+        for (std::size_t k = 0; k < rounds[round].size(); ++k) {
+            const std::size_t index = round == 4 ? 300 + 11 * k : rounds[round][k];
+            Object& o = doc.objects[index];
+            o.transform.translate += Vec3(0.5f * u(rng), 0.5f * u(rng), 0.0f);
+            moved.push_back(o.id);
+        }
+        scene = std::make_shared<const CompiledScene>(scene->refitted(doc, moved));
+        const CompiledScene rebuilt(doc, nullptr, EngineKind::Embree);
+        const auto* engine = dynamic_cast<const EmbreeEngine*>(&scene->engine());
+        ASSERT_NE(engine, nullptr);
+        if (round < 4) {
+            EXPECT_GE(engine->stillSpheres(), std::size_t(n) - 4) << round;
+            split = true;
+        }
+        int hits = 0;
+        for (int r = 0; r < 20000; ++r) {
+            const Ray ray = Ray::make(Vec3(0.3f * u(rng), 0.3f * u(rng), 0.0f),
+                                      glm::normalize(Vec3(0.6f * u(rng), 0.6f * u(rng), -1.0f)));
+            EngineHit a, b;
+            const bool fa = scene->engine().closestHit(ray, kInfinity, a);
+            const bool fb = rebuilt.engine().closestHit(ray, kInfinity, b);
+            ASSERT_EQ(fa, fb) << round << " " << r;
+            hits += fa;
+            if (!fa) continue;
+            ASSERT_EQ(a.slot, b.slot) << round << " " << r;
+            ASSERT_EQ(a.t, b.t) << round << " " << r;  // Bit for bit through the instance.
+            ASSERT_EQ(a.n, b.n) << round << " " << r;
+            ASSERT_EQ(scene->engine().anyHit(ray, a.t * 1.001f), true);
+            ASSERT_EQ(scene->engine().anyHit(ray, a.t * 0.999f),
+                      rebuilt.engine().anyHit(ray, a.t * 0.999f));
+        }
+        EXPECT_GT(hits, 1000) << round;  // The rays meet spheres: a real comparison.
+    }
+    EXPECT_TRUE(split);
 }
 
 }  // namespace
