@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 
 namespace rs {
@@ -20,7 +21,7 @@ struct Block {
     const TexelSource* source = nullptr;
     int level = -1, bx = -1, by = -1;
     bool ok = false;
-    float texels[kBlock * kBlock * 3];
+    float texels[kBlock * kBlock * 4];  // RGB and a spare lane: one 16-byte load a texel
 };
 
 /// This thread's blocks, allocated on its first lookup.
@@ -55,8 +56,11 @@ private:
         if (!source.fetch(level, x0, x1, y0, y1, rows)) return false;
         const int w = x1 - x0;
         for (int y = 0; y < y1 - y0; ++y)
-            std::copy_n(rows + std::size_t(y * w * 3), std::size_t(w * 3),
-                        texels + std::size_t(y * kBlock * 3));
+            for (int x = 0; x < w; ++x) {
+                const float* from = rows + std::size_t((y * w + x) * 3);
+                float* to = texels + std::size_t((y * kBlock + x) * 4);
+                to[0] = from[0], to[1] = from[1], to[2] = from[2], to[3] = 0.0f;
+            }
         return true;
     }
 
@@ -76,47 +80,106 @@ inline float wrapped(float x) {
     return x - floorInline(x);
 }
 
-/// Bilinear interpolation of the four texels around (s, t) at one level; s (and t unless
-/// `clampT`) already wrapped into [0, 1].
-bool bilinear(const TexelSource& source, int level, float s, float t, bool clampT, Color& out) {
-    const int w = source.width[std::size_t(level)], h = source.height[std::size_t(level)];
+inline Float4 loadTexel(const float* p) {
+    Float4 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+/// A 16-bit texel's channels as floats in [0, 65535].
+inline Float4 loadTexel(const std::uint16_t* p) {
+    using U16x4 = std::uint16_t __attribute__((vector_size(8)));
+    using I32x4 = std::int32_t __attribute__((vector_size(16)));
+    U16x4 v;
+    std::memcpy(&v, p, sizeof v);
+    return __builtin_convertvector(__builtin_convertvector(v, I32x4), Float4);
+}
+
+/// One MIP level as a lookup reads it: whole in memory (as floats or, for textures in
+/// [0, 1], 16-bit fractions), or in blocks.
+struct Level {
+    const void* whole = nullptr;
+    bool sixteenBit = false;
+    int index = 0, w = 1, h = 1;
+};
+
+Level levelOf(const TexelSource& source, int index) {
+    Level l;
+    l.whole = source.residentLevel(index);
+    l.sixteenBit = source.unitRange;
+    l.index = index;
+    l.w = source.width[std::size_t(index)];
+    l.h = source.height[std::size_t(index)];
+    return l;
+}
+
+/// Where (s, t) falls among a level's texels: the columns and rows of the four around it
+/// and the weights of (x0, y0), (x1, y0), (x0, y1), (x1, y1); s (and t unless `clampT`)
+/// already wrapped into [0, 1].
+struct Footing {
+    int x0, x1, y0, y1;
+    float w00, w10, w01, w11;
+};
+
+[[gnu::always_inline]] inline Footing footing(const Level& l, float s, float t, bool clampT) {
+    const int w = l.w, h = l.h;
     const float x = s * float(w) - 0.5f, y = t * float(h) - 0.5f;
-    const float fx = floorInline(x), fy = floorInline(std::clamp(y, -1.0f, float(h)));
-    const float ax = x - fx, ay = y - fy;
-    // fx is in [-1, w - 1] for s in [0, 1]: the texel left of the first is the last.
-    const int x0 = fx < 0.0f ? w - 1 : std::min(int(fx), w - 1);
-    const int x1 = x0 + 1 == w ? 0 : x0 + 1;
-    int y0, y1;
+    // x >= -0.5 and y clamped to [-1, h]: truncation after adding one floors them.
+    const int ix = int(x + 1.0f) - 1, iy = int(std::clamp(y, -1.0f, float(h)) + 1.0f) - 1;
+    const float ax = x - float(ix), ay = y - float(iy);
+    Footing f;
+    // ix is in [-1, w - 1] for s in [0, 1]: the texel left of the first is the last.
+    f.x0 = ix < 0 ? w - 1 : std::min(ix, w - 1);
+    f.x1 = f.x0 + 1 == w ? 0 : f.x0 + 1;
     if (clampT) {
-        y0 = int(std::clamp(fy, 0.0f, float(h - 1)));
-        y1 = int(std::clamp(fy + 1.0f, 0.0f, float(h - 1)));
+        f.y0 = std::clamp(iy, 0, h - 1);
+        f.y1 = std::clamp(iy + 1, 0, h - 1);
     } else {
-        y0 = fy < 0.0f ? h - 1 : std::min(int(fy), h - 1);
-        y1 = y0 + 1 == h ? 0 : y0 + 1;
+        f.y0 = iy < 0 ? h - 1 : std::min(iy, h - 1);
+        f.y1 = f.y0 + 1 == h ? 0 : f.y0 + 1;
     }
-    const float* p[4];  // (x0, y0), (x1, y0), (x0, y1), (x1, y1)
-    if (const float* whole = source.residentLevel(level)) {
-        const float* row0 = whole + std::size_t(y0) * std::size_t(w) * 3;
-        const float* row1 = whole + std::size_t(y1) * std::size_t(w) * 3;
-        p[0] = row0 + x0 * 3, p[1] = row0 + x1 * 3, p[2] = row1 + x0 * 3, p[3] = row1 + x1 * 3;
-    } else {
-        BlockTable& blocks = table();
-        const Block* last = nullptr;
-        const int xs[2] = {x0, x1}, ys[2] = {y0, y1};
-        for (int k = 0; k < 4; ++k) {
-            const int tx = xs[k & 1], ty = ys[k >> 1];
-            if (!last || last->bx != tx >> kBlockBits || last->by != ty >> kBlockBits) {
-                last = blocks.find(source, level, tx, ty);
-                if (!last) return false;
-            }
-            p[k] = last->texels + ((ty & kBlockMask) * kBlock + (tx & kBlockMask)) * 3;
+    f.w11 = ax * ay, f.w01 = ay - f.w11, f.w10 = ax - f.w11;
+    f.w00 = 1.0f - ax - f.w01;
+    return f;
+}
+
+template <class T, int Stride>
+inline Float4 bilinearWhole(const T* whole, int w, const Footing& f) {
+    const T* row0 = whole + std::size_t(f.y0) * std::size_t(w) * Stride;
+    const T* row1 = whole + std::size_t(f.y1) * std::size_t(w) * Stride;
+    return loadTexel(row0 + f.x0 * Stride) * f.w00 + loadTexel(row0 + f.x1 * Stride) * f.w10 +
+           loadTexel(row1 + f.x0 * Stride) * f.w01 + loadTexel(row1 + f.x1 * Stride) * f.w11;
+}
+
+/// Bilinear interpolation of the four texels around (s, t) at one level; false when a block
+/// could not be fetched.
+[[gnu::always_inline]] inline bool bilinear(const TexelSource& source, const Level& l, float s,
+                                            float t, bool clampT, Float4& out) {
+    const Footing f = footing(l, s, t, clampT);
+    if (l.whole) {
+        if (l.sixteenBit) {
+            out = bilinearWhole<std::uint16_t, 4>(static_cast<const std::uint16_t*>(l.whole), l.w,
+                                                  f) *
+                  (1.0f / 65535.0f);
+        } else {
+            out = bilinearWhole<float, 4>(static_cast<const float*>(l.whole), l.w, f);
         }
+        return true;
     }
-    const float w1 = ax * ay, w0 = ay - w1, w3 = ax - w1;  // (x1,y1), (x0,y1), (x1,y0)
-    const float w2 = 1.0f - ax - w0;                       // (x0, y0)
-    out = Color(w2 * p[0][0] + w3 * p[1][0] + w0 * p[2][0] + w1 * p[3][0],
-                w2 * p[0][1] + w3 * p[1][1] + w0 * p[2][1] + w1 * p[3][1],
-                w2 * p[0][2] + w3 * p[1][2] + w0 * p[2][2] + w1 * p[3][2]);
+    BlockTable& blocks = table();
+    const Block* last = nullptr;
+    const int xs[2] = {f.x0, f.x1}, ys[2] = {f.y0, f.y1};
+    const float weights[4] = {f.w00, f.w10, f.w01, f.w11};
+    Float4 sum = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (int k = 0; k < 4; ++k) {
+        const int tx = xs[k & 1], ty = ys[k >> 1];
+        if (!last || last->bx != tx >> kBlockBits || last->by != ty >> kBlockBits) {
+            last = blocks.find(source, l.index, tx, ty);
+            if (!last) return false;
+        }
+        sum += loadTexel(last->texels + ((ty & kBlockMask) * kBlock + (tx & kBlockMask)) * 4) *
+               weights[k];
+    }
+    out = sum;
     return true;
 }
 
@@ -134,14 +197,15 @@ LevelPair levelsFor(const TexelSource& source, float width) {
     return {fine, fine >= last ? 0.0f : lod - float(fine)};
 }
 
-/// Trilinear: the two levels of `levels`, blended.
-bool trilinear(const TexelSource& source, float s, float t, LevelPair levels, bool clampT,
-               Color& out) {
-    if (!bilinear(source, levels.fine, s, t, clampT, out)) return false;
-    if (levels.blend <= 0.0f) return true;
-    Color coarse;
-    if (!bilinear(source, levels.fine + 1, s, t, clampT, coarse)) return false;
-    out += (coarse - out) * levels.blend;
+/// Trilinear: `fine` and, weighted `blend`, `coarse`.
+[[gnu::always_inline]] inline bool trilinear(const TexelSource& source, const Level& fine,
+                                             const Level& coarse, float blend, float s, float t,
+                                             bool clampT, Float4& out) {
+    if (!bilinear(source, fine, s, t, clampT, out)) return false;
+    if (blend <= 0.0f) return true;
+    Float4 c;
+    if (!bilinear(source, coarse, s, t, clampT, c)) return false;
+    out += (c - out) * blend;
     return true;
 }
 
@@ -150,7 +214,7 @@ void setResidentTexelBudget(std::size_t bytes) {
     residentBudget.store(bytes);
 }
 
-const float* TexelSource::residentLevel(int level) const {
+const void* TexelSource::residentLevel(int level) const {
     auto& state = state_[std::size_t(level)];
     const unsigned char now = state.load(std::memory_order_acquire);
     if (now == kResident) return whole_[std::size_t(level)].get();
@@ -159,17 +223,32 @@ const float* TexelSource::residentLevel(int level) const {
     if (state.load(std::memory_order_relaxed) == kUntried) {
         const std::size_t texels =
             std::size_t(width[std::size_t(level)]) * std::size_t(height[std::size_t(level)]);
-        const std::size_t bytes = texels * 3 * sizeof(float);
+        const std::size_t texelBytes = unitRange ? 4 * sizeof(std::uint16_t) : 4 * sizeof(float);
+        const std::size_t bytes = texels * texelBytes;
         std::size_t spent = residentBytes.load();
         bool granted = false;
         while (texels <= kMaxResidentTexels && spent + bytes <= residentBudget.load() &&
                !(granted = residentBytes.compare_exchange_weak(spent, spent + bytes))) {
         }
         if (granted) {
-            std::unique_ptr<float[]> texelsRead(new float[texels * 3]);
+            std::unique_ptr<float[]> rgb(new float[texels * 3]);
             if (fetch(level, 0, width[std::size_t(level)], 0, height[std::size_t(level)],
-                      texelsRead.get())) {
-                whole_[std::size_t(level)] = std::move(texelsRead);
+                      rgb.get())) {
+                std::unique_ptr<unsigned char[]> kept(new unsigned char[bytes]);
+                for (std::size_t i = 0; i < texels; ++i) {
+                    if (unitRange) {
+                        std::uint16_t q[4] = {0, 0, 0, 0};
+                        for (int c = 0; c < 3; ++c)
+                            q[c] = std::uint16_t(
+                                std::clamp(rgb[3 * i + std::size_t(c)], 0.0f, 1.0f) * 65535.0f +
+                                0.5f);
+                        std::memcpy(kept.get() + i * texelBytes, q, sizeof q);
+                    } else {
+                        const float f[4] = {rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2], 0.0f};
+                        std::memcpy(kept.get() + i * texelBytes, f, sizeof f);
+                    }
+                }
+                whole_[std::size_t(level)] = std::move(kept);
                 state.store(kResident, std::memory_order_release);
                 return whole_[std::size_t(level)].get();
             }
@@ -193,25 +272,34 @@ bool filteredLookup(const TexelSource& source, float s, float t, float dsdx, flo
     const float lenX = std::sqrt(xs * xs + xt * xt), lenY = std::sqrt(ys * ys + yt * yt);
     const bool xMajor = lenX >= lenY;
     const float major = xMajor ? lenX : lenY, minor = xMajor ? lenY : lenX;
-    if (!(major < 1e30f))  // inf, NaN: the image's mean
-        return trilinear(source, s, t, {source.levels - 1, 0.0f}, clampT, out);
-    // Each sample filters over `width`; enough of them line the long axis.
-    const float width = std::max(minor, major / float(kMaxAnisotropy));
-    const LevelPair levels = levelsFor(source, width);
-    const int samples = width > 0.0f ? std::clamp(int(major / width + 0.5f), 1, kMaxAnisotropy) : 1;
-    if (samples == 1) return trilinear(source, s, t, levels, clampT, out);
-    const float ms = xMajor ? dsdx : dsdy, mt = xMajor ? dtdx : dtdy;
-    Color sum(0.0f);
-    for (int i = 0; i < samples; ++i) {
-        const float k = (float(i) + 0.5f) / float(samples) - 0.5f;
-        float ss = s + ms * k, tt = t + mt * k;
-        ss = wrapped(ss);
-        if (!clampT) tt = wrapped(tt);
-        Color c;
-        if (!trilinear(source, ss, tt, levels, clampT, c)) return false;
-        sum += c;
+    LevelPair levels{source.levels - 1, 0.0f};  // inf, NaN: the image's mean
+    int samples = 1;
+    if (major < 1e30f) {
+        // Each sample filters over `width`; enough of them line the long axis.
+        const float width = std::max(minor, major / float(kMaxAnisotropy));
+        levels = levelsFor(source, width);
+        if (width > 0.0f) samples = std::clamp(int(major / width + 0.5f), 1, kMaxAnisotropy);
     }
-    out = sum / float(samples);
+    const Level fine = levelOf(source, levels.fine);
+    const Level coarse = levels.blend > 0.0f ? levelOf(source, levels.fine + 1) : fine;
+    Float4 sum;
+    if (samples == 1) {
+        if (!trilinear(source, fine, coarse, levels.blend, s, t, clampT, sum)) return false;
+    } else {
+        const float ms = xMajor ? dsdx : dsdy, mt = xMajor ? dtdx : dtdy;
+        sum = Float4{0.0f, 0.0f, 0.0f, 0.0f};
+        for (int i = 0; i < samples; ++i) {
+            const float k = (float(i) + 0.5f) / float(samples) - 0.5f;
+            float ss = s + ms * k, tt = t + mt * k;
+            ss = wrapped(ss);
+            if (!clampT) tt = wrapped(tt);
+            Float4 c;
+            if (!trilinear(source, fine, coarse, levels.blend, ss, tt, clampT, c)) return false;
+            sum += c;
+        }
+        sum *= 1.0f / float(samples);
+    }
+    out = Color(sum[0], sum[1], sum[2]);
     return true;
 }
 

@@ -28,18 +28,24 @@ public:
     int levels = 0;
     std::array<int, kMaxMipLevels> width{}, height{};
 
+    /// Every channel of every texel lies in [0, 1] and 16-bit fractions hold it as well as
+    /// the file does (textures decoded from 8-bit sRGB): whole levels are then kept as 16-bit
+    /// fractions, 8 bytes a texel instead of 16.
+    bool unitRange = false;
+
     /// Level `level` whole, when it is small enough and the budget allows (see
-    /// filteredLookup), fetched on the first call; else null.
-    const float* residentLevel(int level) const;
+    /// filteredLookup), fetched on the first call; else null. Texels in four lanes (RGB and a
+    /// spare), row by row: floats, or 16-bit fractions of 65535 when `unitRange`.
+    const void* residentLevel(int level) const;
 
 private:
     enum : unsigned char { kUntried, kResident, kRefused };
     mutable std::array<std::atomic<unsigned char>, kMaxMipLevels> state_{};
-    mutable std::array<std::unique_ptr<float[]>, kMaxMipLevels> whole_;
+    mutable std::array<std::unique_ptr<unsigned char[]>, kMaxMipLevels> whole_;
     mutable std::mutex mutex_;
 };
 
-/// Largest level kept whole: 1024 x 1024 texels (12 MiB as RGB floats).
+/// Largest level kept whole: 1024 x 1024 texels (16 MiB as floats, 8 MiB as 16-bit fractions).
 inline constexpr std::size_t kMaxResidentTexels = std::size_t(1) << 20;
 /// Sets how many bytes all whole levels together may take (default 128 MiB); levels already
 /// kept stay. TextureStore keeps it at half its cache's bound.
@@ -60,7 +66,7 @@ void setResidentTexelBudget(std::size_t bytes);
 /// kept, shared by all threads, while the resident budget lasts (what footprint-filtered
 /// lookups mostly read: a 4096^2 texture seen across 300 pixels is read at its 512^2 and
 /// 256^2 levels). Larger levels come in blocks of 16 x 16 that each thread keeps in its own
-/// direct-mapped table of 1024 blocks (3 MiB a thread). Blocks are keyed by the source's
+/// direct-mapped table of 1024 blocks (4 MiB a thread). Blocks are keyed by the source's
 /// address and sources are never freed, so a block is never mistaken for another texture's.
 ///
 /// Returns false (and leaves `out` alone) when a block could not be fetched.

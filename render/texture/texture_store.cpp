@@ -101,7 +101,7 @@ struct TextureStore::Impl {
     /// The MIP pyramid of the file registered as `name`, or null when its levels cannot be
     /// read. Call with registerMutex held.
     const TexelSource* pyramid(const OIIO::ustring& name, TextureSystem::TextureHandle* handle,
-                               int channels) {
+                               int channels, bool eightBitSrgb) {
         int levels = 0;
         if (!cache->get_image_info(name, 0, 0, OIIO::ustring("miplevels"), OIIO::TypeInt,
                                    &levels) ||
@@ -111,6 +111,9 @@ struct TextureStore::Impl {
         }
         auto texels = std::make_unique<OiioTexels>(system, handle, channels);
         texels->levels = std::min(levels, kMaxMipLevels);
+        // 8-bit sRGB decoded to linear: every channel in [0, 1], and 16-bit linear fractions
+        // are finer than the file's steps (its darkest, 1/255 decoded, is 20 of them).
+        texels->unitRange = eightBitSrgb;
         for (int level = 0; level < texels->levels; ++level) {
             const OIIO::ImageSpec* spec = cache->imagespec(name, 0, level);
             if (!spec || spec->width <= 0 || spec->height <= 0) {
@@ -232,7 +235,8 @@ TextureHandle TextureStore::open(const std::string& path, std::string& error) {
     }
     handle.handle = oiioHandle;
     std::lock_guard<std::mutex> lock(impl_->registerMutex);
-    handle.texels = impl_->pyramid(name, oiioHandle, handle.channels);
+    handle.texels =
+        impl_->pyramid(name, oiioHandle, handle.channels, handle.srgb && spec.format.size() == 1);
     if (!handle.texels) {
         error = describeFile(path) + " cannot be read: its MIP levels are not readable";
         return {};

@@ -48,7 +48,7 @@ struct TextureHandle {
 ///
 /// Memory: the cache holds at most cacheMegabytes() of decoded tiles (kMaxAutoMipPixels says
 /// when OpenImageIO may exceed that); whole levels copied out for lookups take at most half
-/// as much again, and each rendering thread 3 MiB of blocks. Plain PNG/JPEG/... images are
+/// as much again, and each rendering thread 4 MiB of blocks. Plain PNG/JPEG/... images are
 /// MIP-mapped on the fly (OpenImageIO's automip) and read as 64-row tiles (autotile); open() reads
 /// headers only.
 class TextureStore {
