@@ -66,6 +66,7 @@ PatternSurface SurfacePatterns::surfaceOf(const Object& o) {
         s = identitySurface(PatternSurface::Shape::Plane);
         s.a = plane->point;
         s.b = glm::normalize(plane->normal);
+        s.planeAxes = planeAxes(s.b);
         return s;
     }
     const Mat4 worldFromObject = o.transform.matrix();
@@ -117,7 +118,7 @@ Color patternColor(const MaterialPattern& pattern, const PatternSurface& surface
             uv = sphereUV(po, surface.a, surface.r);
             break;
         case PatternSurface::Shape::Plane:
-            uv = planeUV(po, surface.a, surface.b);
+            uv = planeUV(po, surface.a, surface.planeAxes);
             break;
         case PatternSurface::Shape::Rectangle:
             uv = rectangleUV(po, surface.a, surface.b, surface.c);

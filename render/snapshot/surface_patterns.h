@@ -11,6 +11,7 @@
 #include "core/math.h"
 #include "scene/document.h"
 #include "snapshot/footprint.h"
+#include "texture/shape_uv.h"
 #include "texture/texture_store.h"
 
 namespace rs {
@@ -37,6 +38,7 @@ struct PatternSurface {
     /// edges b, c. Box: min a, max b.
     Vec3 a{0.0f}, b{0.0f}, c{0.0f};
     float r = 0.0f;
+    PlaneAxes planeAxes;  ///< Plane: planeUV's axes for normal b.
     /// Mesh with texture coordinates: its triangles, to find the one under a hit (shared by
     /// every snapshot showing that mesh data); null for a mesh without them, whose texture
     /// coordinates are (0, 0) everywhere.

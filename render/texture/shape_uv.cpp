@@ -38,18 +38,15 @@ ShapeUV sphereUV(const Vec3& p, const Vec3& center, float radius) {
     return uv;
 }
 
-ShapeUV planeUV(const Vec3& p, const Vec3& point, const Vec3& normal) {
+PlaneAxes planeAxes(const Vec3& normal) {
     const Vec3 n = glm::normalize(normal);
     const Vec3 axis = std::abs(n.x) > 0.9f ? Vec3(0.0f, 0.0f, 1.0f) : Vec3(1.0f, 0.0f, 0.0f);
     const Vec3 t1 = glm::normalize(axis - n * glm::dot(n, axis));
-    const Vec3 t2 = glm::cross(n, t1);
-    const Vec3 d = p - point;
-    ShapeUV uv;
-    uv.u = glm::dot(d, t1);
-    uv.v = glm::dot(d, t2);
-    uv.dudp = t1;
-    uv.dvdp = t2;
-    return uv;
+    return {t1, glm::cross(n, t1)};
+}
+
+ShapeUV planeUV(const Vec3& p, const Vec3& point, const Vec3& normal) {
+    return planeUV(p, point, planeAxes(normal));
 }
 
 ShapeUV rectangleUV(const Vec3& p, const Vec3& center, const Vec3& u, const Vec3& v) {

@@ -31,6 +31,17 @@ ShapeUV sphereUV(const Vec3& p, const Vec3& center, float radius);
 /// For the floor n = +Y: T1 = +X, T2 = -Z, so u = x - point.x and v = point.z - z.
 ShapeUV planeUV(const Vec3& p, const Vec3& point, const Vec3& normal);
 
+/// planeUV's axes T1, T2 for a plane's normal, computed once per plane.
+struct PlaneAxes {
+    Vec3 t1{0.0f}, t2{0.0f};
+};
+PlaneAxes planeAxes(const Vec3& normal);
+/// planeUV with its axes at hand: the same values.
+inline ShapeUV planeUV(const Vec3& p, const Vec3& point, const PlaneAxes& axes) {
+    const Vec3 d = p - point;
+    return {glm::dot(d, axes.t1), glm::dot(d, axes.t2), axes.t1, axes.t2};
+}
+
 /// The rectangle c + a u + b v, a, b in [-1, 1] (u, v its half-extent edges, not necessarily
 /// orthogonal): texture u = (a + 1) / 2, v = (b + 1) / 2, so [0, 1]^2 spans it from corner
 /// c - u - v. (a, b) come from the in-plane dual basis of (u, v), as RectangleShape's test
