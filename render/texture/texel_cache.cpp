@@ -16,6 +16,8 @@ constexpr int kBlock = 1 << kBlockBits;  // texels a side
 constexpr int kBlockMask = kBlock - 1;
 constexpr int kTableBits = 10;
 constexpr std::size_t kTableSize = std::size_t(1) << kTableBits;
+/// Footprints whose long half-axis is at most this (level-0 texels) take one sample.
+constexpr float kMagnifyingHalfAxis = 0.5f;
 
 struct Block {
     const TexelSource* source = nullptr;
@@ -190,8 +192,25 @@ struct LevelPair {
     float blend = 0.0f;
 };
 
+/// log2(x) for finite x >= 1 without a library call (2.6% of a textured frame): the exponent
+/// plus ln(1 + m) / ln 2 for the mantissa 1 + m by Abramowitz and Stegun's 4.1.44, within
+/// 1.5e-5 (a blend weight off by that much changes no colour that can be seen).
+inline float log2AtLeastOne(float x) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    const int exponent = int(bits >> 23) - 127;
+    bits = (bits & 0x007FFFFFu) | 0x3F800000u;
+    float mantissa;
+    std::memcpy(&mantissa, &bits, sizeof mantissa);
+    const float m = mantissa - 1.0f;
+    const float ln =
+        m * (0.99949556f +
+             m * (-0.49190896f + m * (0.28947478f + m * (-0.13606275f + m * 0.03215845f))));
+    return float(exponent) + ln * 1.44269504f;
+}
+
 LevelPair levelsFor(const TexelSource& source, float width) {
-    const float lod = width > 1.0f ? std::log2(width) : 0.0f;
+    const float lod = width > 1.0f ? log2AtLeastOne(width) : 0.0f;
     const int last = source.levels - 1;
     const int fine = lod >= float(last) ? last : int(lod);
     return {fine, fine >= last ? 0.0f : lod - float(fine)};
@@ -278,7 +297,10 @@ bool filteredLookup(const TexelSource& source, float s, float t, float dsdx, flo
         // Each sample filters over `width`; enough of them line the long axis.
         const float width = std::max(minor, major / float(kMaxAnisotropy));
         levels = levelsFor(source, width);
-        if (width > 0.0f) samples = std::clamp(int(major / width + 0.5f), 1, kMaxAnisotropy);
+        // Within half a texel of the centre the footprint magnifies: bilinear interpolation
+        // alone is the filter, and samples along it would differ by less than a texel.
+        if (width > 0.0f && major > kMagnifyingHalfAxis)
+            samples = std::clamp(int(major / width + 0.5f), 1, kMaxAnisotropy);
     }
     const Level fine = levelOf(source, levels.fine);
     const Level coarse = levels.blend > 0.0f ? levelOf(source, levels.fine + 1) : fine;

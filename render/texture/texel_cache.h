@@ -54,9 +54,10 @@ void setResidentTexelBudget(std::size_t bytes);
 /// The texture filter every image lookup goes through: trilinear (bilinear within the two
 /// MIP levels whose texels are nearest half the footprint's width, blended by the fraction),
 /// taking up to kMaxAnisotropy such samples spread along the long axis of an elongated
-/// footprint, as OpenImageIO's anisotropic mode does. (s, t) in [0, 1)^2 covers the image
-/// with t = 0 its top row; texel centres lie at ((i + 0.5) / width, (j + 0.5) / height), so a
-/// lookup there with zero derivatives returns the texel exactly. s always wraps periodically;
+/// footprint, as OpenImageIO's anisotropic mode does; a footprint whose half-axes are both
+/// under half a level-0 texel magnifies and takes one bilinear sample. (s, t) in [0, 1)^2 covers
+/// the image with t = 0 its top row; texel centres lie at ((i + 0.5) / width, (j + 0.5) / height),
+/// so a lookup there with zero derivatives returns the texel exactly. s always wraps periodically;
 /// t wraps periodically, or is clamped to the first and last rows when `clampT` (latitude-
 /// longitude environments). The derivatives are the footprint's two axes in (s, t).
 ///
