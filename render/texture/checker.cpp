@@ -26,12 +26,17 @@ double squareIntegral(double c) {
     return 1.0 - std::abs(m - 1.0);
 }
 
-/// The square wave's average over [c - h, c + h] (cell units).
-double squareAverage(double c, double h) {
-    if (!std::isfinite(c)) return 0.0;
-    if (!(h >= kPointHalfWidth)) return squareWave(c);  // also a NaN half-width
-    if (h >= kFlatHalfWidth) return 0.0;
-    return (squareIntegral(c + h) - squareIntegral(c - h)) / (2.0 * h);
+/// The square wave's average over [c - h, c + h] (cell units) as a fraction: the average is
+/// `numerator` / `denominator`, so that a product over the axes takes one division.
+struct Average {
+    double numerator, denominator;
+};
+
+Average squareAverage(double c, double h) {
+    if (!std::isfinite(c)) return {0.0, 1.0};
+    if (!(h >= kPointHalfWidth)) return {squareWave(c), 1.0};  // also a NaN half-width
+    if (h >= kFlatHalfWidth) return {0.0, 1.0};
+    return {squareIntegral(c + h) - squareIntegral(c - h), 2.0 * h};
 }
 
 }  // namespace
@@ -39,14 +44,16 @@ double squareAverage(double c, double h) {
 float checkerOddFraction(const Vec3& p, const Vec3& halfWidth, float scale) {
     if (!(scale > 0.0f) || !std::isfinite(scale)) return 0.0f;
     const double inv = 1.0 / double(scale);
-    double product = 1.0;
+    double numerator = 1.0, denominator = 1.0;
     for (int axis = 0; axis < 3; ++axis) {
         const double c = double(p[axis]) * inv + kCheckerTolerance;
         const double h = std::abs(double(halfWidth[axis])) * inv;
-        product *= squareAverage(c, h);
-        if (product == 0.0) break;
+        const Average a = squareAverage(c, h);
+        numerator *= a.numerator;
+        denominator *= a.denominator;
+        if (numerator == 0.0) break;
     }
-    return float(0.5 - 0.5 * product);
+    return float(0.5 - 0.5 * (numerator / denominator));
 }
 
 }  // namespace rs
