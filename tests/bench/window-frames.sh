@@ -47,36 +47,18 @@ while (($#)); do
     esac
 done
 [[ $moves =~ ^[1-9][0-9]*$ && $moves -le 100000 ]] || { echo "window-frames.sh: --moves must be a count in [1, 100000]" >&2; exit 2; }
-[[ $size =~ ^([1-9][0-9]{2,4})x([1-9][0-9]{2,4})$ ]] || { echo "window-frames.sh: --size must be WxH, e.g. 1920x1080" >&2; exit 2; }
-width=${BASH_REMATCH[1]}
-height=${BASH_REMATCH[2]}
+x11_name=window-frames.sh
+# shellcheck source=tests/bench/lib/x11-session.sh
+source "$root/tests/bench/lib/x11-session.sh"
+x11_parse_size "$size"
+width=$x11_width
+height=$x11_height
 exe=$build/app/raystudio
 [[ -f $scene ]] || { echo "window-frames.sh: scene $scene not found" >&2; exit 2; }
 [[ -x $exe ]] || { echo "window-frames.sh: $exe not built (bash packaging/setup.sh test)" >&2; exit 2; }
-for tool in Xvfb openbox xdotool ffmpeg python3; do
-    command -v $tool >/dev/null || { echo "window-frames.sh: $tool not found (apt-get install xvfb openbox xdotool ffmpeg)" >&2; exit 2; }
-done
-
-tmp=$(mktemp -d)
-pids=()
-cleanup() {
-    for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
-    wait 2>/dev/null || true
-    rm -rf "$tmp"
-}
-trap cleanup EXIT
-
-Xvfb -displayfd 3 -screen 0 "${width}x${height}x24" -nolisten tcp 3>"$tmp/display" 2>"$tmp/xvfb.log" &
-pids+=($!)
-for _ in $(seq 100); do [[ -s $tmp/display ]] && break; sleep 0.05; done
-[[ -s $tmp/display ]] || { echo "window-frames.sh: Xvfb did not start" >&2; exit 1; }
-export DISPLAY=:$(cat "$tmp/display")
-openbox >/dev/null 2>&1 &
-pids+=($!)
-sleep 1
-# A home of its own: no autosave, settings or recovery of the user's are touched.
-export HOME=$tmp/home XDG_CONFIG_HOME=$tmp/home/.config XDG_DATA_HOME=$tmp/home/.local/share
-mkdir -p "$HOME"
+x11_need_tools Xvfb openbox xdotool ffmpeg python3
+tmp=$x11_tmp
+x11_start "$width" "$height"
 
 # The middle of the screen lies inside the viewport of a maximised window (the docks are at
 # the sides); the recorded region is centred there.
@@ -109,16 +91,9 @@ PY
 measure() {  # kind
     local kind=$1 select=()
     [[ $kind == drag ]] && select=(--select "$object")
-    "$exe" "${select[@]}" --autosave-seconds 0 --recover no "$scene" >"$tmp/designer-$kind.log" 2>&1 &
-    local app=$!
-    pids+=($app)
-    local win=
-    for _ in $(seq 200); do
-        win=$(xdotool search --onlyvisible --name "RayStudio" 2>/dev/null | tail -1 || true)
-        [[ -n $win ]] && break
-        sleep 0.05
-    done
-    [[ -n $win ]] || { echo "window-frames.sh: the designer's window did not appear" >&2; exit 1; }
+    x11_launch "$tmp/designer-$kind.log" "$exe" "${select[@]}" --autosave-seconds 0 --recover no "$scene"
+    local app=$x11_pid win
+    win=$(x11_wait_window "$app" 10)
     xdotool windowactivate --sync "$win" >/dev/null 2>&1 || true
     wmctrl -i -r "$win" -b add,maximized_vert,maximized_horz >/dev/null 2>&1 ||
         xdotool windowsize "$win" "$width" "$height" windowmove "$win" 0 0
@@ -132,13 +107,13 @@ measure() {  # kind
         -video_size "${rw}x${rh}" -t "$seconds" -i "$DISPLAY+$rx,$ry" -copyts \
         -vf "mpdecimate,showinfo" -f null - 2>"$tmp/$kind.ffmpeg" &
     local rec=$!
+    x11_track $rec
     sleep 0.5
     date +%s.%N >"$tmp/$kind.start"
     xdotool - <"$tmp/$kind.xdo"
     date +%s.%N >"$tmp/$kind.end"
     wait $rec || true
-    kill $app 2>/dev/null || true
-    wait $app 2>/dev/null || true
+    x11_stop $app
     grep -o ' pts: *[0-9]*' "$tmp/$kind.ffmpeg" | tr -dc '0-9\n' |
         awk 'NF {printf "%.6f\n", $1 / 1e6}' >"$tmp/$kind.kept" || true
     # The designer's own measurement of the same gesture, for the table beside it.
