@@ -18,6 +18,7 @@ built, the load average before and after, and then
              the designer in a window (Xvfb)           measure-designer.sh --json, RUNS times
              checker + sky, 4k textures vs flat        looks-cost.sh RUNS THREADS
   full only  both ray engines on every scene           engine-table.sh 5 THREADS
+             the designer at 1k, 10k and 100k spheres  designer-scale.sh --json (minutes)
              session frame against renderImage         session-frame.sh 15 THREADS
              the interaction policies                  policy-table.sh
              the cost curve (spheres, triangles)       scaling.sh 3 THREADS
@@ -27,7 +28,8 @@ built, the load average before and after, and then
   --full         7 runs each, the designer 3 times, and the four tables: 5-10 minutes
                  (the 1M-triangle and 100,000-sphere scenes are generated and loaded often)
   --threads N    render threads (default 2)
-  --skip LIST    comma-separated rows to leave out: povray, embree, designer, window, looks
+  --skip LIST    comma-separated rows to leave out: povray, embree, designer, window, looks,
+                 scale
                  (written as "not measured" in the file)
   --display N    the X display measure-designer.sh gives Xvfb (default: a free one)
   --output FILE  write FILE instead of tests/bench/RESULTS.md
@@ -65,7 +67,7 @@ done
 [[ "${threads}" =~ ^[1-9][0-9]*$ ]] || { echo "results.sh: --threads needs a positive number, not '${threads}'" >&2; exit 2; }
 [[ -n "${output}" ]] || { echo "results.sh: --output needs a file name" >&2; exit 2; }
 for s in ${skip//,/ }; do
-    [[ "${s}" =~ ^(povray|embree|designer|window|looks)$ ]] || { echo "results.sh: --skip knows povray, embree, designer, window and looks, not '${s}'" >&2; exit 2; }
+    [[ "${s}" =~ ^(povray|embree|designer|window|looks|scale)$ ]] || { echo "results.sh: --skip knows povray, embree, designer, window, looks and scale, not '${s}'" >&2; exit 2; }
 done
 skipped() { [[ "${skip}" == *",$1,"* ]]; }
 if [[ "${mode}" == full ]]; then runs=7; designer_runs=3; else runs=3; designer_runs=1; fi
@@ -82,9 +84,9 @@ if ! skipped designer; then
         command -v "${tool}" >/dev/null 2>&1 || missing+=("${tool} not found (apt-get install xvfb openbox), or pass --skip designer")
     done
 fi
-if ! skipped window; then
+if ! skipped window || { [[ "${mode}" == full ]] && ! skipped scale; }; then
     for tool in Xvfb openbox xdotool ffmpeg; do
-        command -v "${tool}" >/dev/null 2>&1 || missing+=("${tool} not found (apt-get install xvfb openbox xdotool ffmpeg), or pass --skip window")
+        command -v "${tool}" >/dev/null 2>&1 || missing+=("${tool} not found (apt-get install xvfb openbox xdotool ffmpeg), or pass --skip window,scale")
     done
 fi
 skipped povray || command -v povray >/dev/null 2>&1 || missing+=("povray not found (apt-get install povray), or pass --skip povray")
@@ -222,6 +224,36 @@ PY
 fi
 
 tables=()
+scale_what="the designer at 100,000 spheres seen from outside (Xvfb, xdotool at 60 Hz, x11grab): G-moving one, undo, redo, 100 edits, opening"
+if [[ "${mode}" != full ]]; then
+    headline+=("| ${scale_what} | not measured (--full only, or \`bash tests/bench/designer-scale.sh\`) | | | |")
+elif skipped scale; then
+    headline+=("| ${scale_what} | not measured (--skip scale) | | | |")
+else
+    run_stage "designer at scale" "${work}/scale" bash "${root}/tests/bench/designer-scale.sh" --json
+    python3 - "${work}/scale" >"${work}/scale.rows" <<'PY'
+import json, sys
+lines = [l for l in open(sys.argv[1]) if l.startswith("{")]
+if not lines:
+    sys.exit("designer-scale.sh gave no result")
+for r in json.loads(lines[-1])["runs"]:
+    own = r.get("designer_own") or {}
+    g = lambda k: "-" if r.get(k) is None else r[k]
+    print("|".join(str(v) for v in (
+        "{:,}".format(r["spheres"]), g("position_updates_per_s"),
+        "-" if own.get("generations_per_s") is None else "%.1f" % own["generations_per_s"],
+        g("distinct_frames_per_s"), g("input_to_screen_ms"), g("undo_ms"), g("redo_ms"),
+        g("rss_before_mib"), g("rss_after_mib"), g("memory_ratio"), g("open_first_frame_ms"),
+        g("open_longest_stall_ms"), sum(1 for v in r["targets"].values() if v), len(r["targets"]))))
+PY
+    tables+=("## The designer at scale" "" "\`bash tests/bench/designer-scale.sh --json\`: a floor of N spheres, one (\"ball 0\") G-moved by one xdotool process at 60 Hz (240 moves), confirmed, undone and redone, then 100 more confirmed moves; ffmpeg x11grab records a region around it. Updates/s on screen: distinct frames whose ball moved; the designer's own: \`--measure-drag\` generations_per_s. Undo/redo: key to the ball where it belongs on screen. Memory: VmRSS before and after the 100 moves. Open: launch to the first frame showing the ball; stall: the longest \`_NET_WM_PING\` answer meanwhile. Targets (issue 34, at 100,000): >= 30 updates/s and distinct frames/s, undo/redo <= 50 ms, memory <= 1.5x, first frame <= 3 s, no stall over 100 ms." "")
+    tables+=("| spheres | updates/s on screen | the designer's own updates/s | distinct frames/s | input to screen ms | undo ms | redo ms | memory before MiB | after 100 moves MiB | ratio | open to first frame ms | longest stall ms | targets met |" "|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    while IFS='|' read -r n ups own fps lat undo redo before after ratio open stall met of; do
+        tables+=("| ${n} | ${ups} | ${own} | ${fps} | ${lat} | ${undo} | ${redo} | ${before} | ${after} | ${ratio} | ${open} | ${stall} | ${met} of ${of} |")
+        [[ "${n}" == 100,000 ]] && headline+=("| ${scale_what} | **${ups} updates/s**, ${fps} distinct frames/s on screen, undo ${undo} ms, redo ${redo} ms, memory after 100 moves ${ratio}x, first frame ${open} ms, longest stall ${stall} ms | issue 34: >= 30/s, >= 30/s, <= 50 ms, <= 50 ms, <= 1.5x, <= 3000 ms, <= 100 ms | ${met} of ${of} targets met | \`bash tests/bench/designer-scale.sh --json\` |")
+    done <"${work}/scale.rows"
+    tables+=("")
+fi
 if [[ "${mode}" == full ]]; then
     run_stage "engine table" "${work}/engines" bash "${root}/tests/bench/engine-table.sh" 5 "${threads}"
     tables+=("## Both ray engines on every scene" "" "\`bash tests/bench/engine-table.sh 5 ${threads}\`: render time (\`--stats\` ms), median of 5 alternated runs." "")
