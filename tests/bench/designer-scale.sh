@@ -123,7 +123,8 @@ cpu_ticks() { awk '{print $14 + $15}' "/proc/$1/stat" 2>/dev/null || echo 0; }
 mask_filter="colorchannelmixer=rr=-2:rg=2:rb=-2:gr=-2:gg=2:gb=-2:br=-2:bg=2:bb=-2,scale=iw/4:ih/4:flags=area,format=gray"
 
 # Waits until the designer is idle: no distinct frame recorded and under 10 % of a core used
-# for `quiet` seconds. Returns 1 after max_wait seconds (the phase is then named in the result).
+# for `quiet` seconds; idle_since is then the end of its last activity. Returns 1 after
+# max_wait seconds (the phase is then named in the result).
 wait_idle() {  # pid dir phase [quiet]
     local pid=$1 dir=$2 phase=$3 quiet=${4:-1.5} start t cpu last_cpu busy kept
     start=$(now) busy=$start last_cpu=$(cpu_ticks "$pid")
@@ -134,7 +135,10 @@ wait_idle() {  # pid dir phase [quiet]
         last_cpu=$cpu
         kept=$(tail -c 3000 "$dir/record.log" 2>/dev/null | grep -o ' pts: *[0-9]*' | tail -1 | tr -dc '0-9' || true)
         [[ -n $kept ]] && busy=$(awk -v a="$busy" -v k="$kept" 'BEGIN {printf "%.6f\n", (k / 1e6 > a) ? k / 1e6 : a}')
-        awk -v t="$t" -v b="$busy" -v q="$quiet" 'BEGIN {exit !(t - b >= q)}' && return 0
+        if awk -v t="$t" -v b="$busy" -v q="$quiet" 'BEGIN {exit !(t - b >= q)}'; then
+            idle_since=$busy
+            return 0
+        fi
         if awk -v t="$t" -v s="$start" -v m="$max_wait" 'BEGIN {exit !(t - s >= m)}'; then
             not_settled+=("$phase")
             return 1
@@ -263,8 +267,7 @@ measure() {  # spheres
         echo "edits_start $(now)" >>"$dir/events"
         xdotool - <"$dir/edits.xdo"
         echo "edits_end $(now)" >>"$dir/events"
-        wait_idle "$app" "$dir" edits || true
-        echo "edits_settled $(now)" >>"$dir/events"
+        wait_idle "$app" "$dir" edits && echo "edits_settled $idle_since" >>"$dir/events"
         echo "rss_after_kib $(rss_kib "$app")" >>"$dir/events"
     fi
     x11_stop "$app"

@@ -216,8 +216,8 @@ def analyse(d):
     r["memory_ratio"] = (round(ev["rss_after_kib"] / ev["rss_before_kib"], 2)
                          if "rss_after_kib" in ev and "rss_before_kib" in ev else None)
     r["edits_seconds"] = round(ev["edits_end"] - ev["edits_start"], 1) if "edits_end" in ev else None
-    # How far the designer fell behind the edits: their last click to idle (1.5 s of it quiet).
-    r["edits_behind_s"] = (round(ev["edits_settled"] - ev["edits_end"], 1)
+    # How far the designer fell behind the edits: their last click to its last frame or CPU use.
+    r["edits_behind_s"] = (round(max(0.0, ev["edits_settled"] - ev["edits_end"]), 1)
                            if "edits_settled" in ev else None)
     r["edits_longest_stall_ms"] = longest_stall(pings, ev.get("edits_start", 0), ev.get("edits_end", 0))
     r["not_settled"] = info.get("not_settled", [])
@@ -262,7 +262,7 @@ def report(path, as_json):
                  ("longest stall (ping) during the edits", r.get("edits_longest_stall_ms"), "ms"),
                  ("memory after opening / before / after the edits",
                   f"{r.get('rss_open_mib')} / {r.get('rss_before_mib')} / {r.get('rss_after_mib')}", "MiB"),
-                 ("the edits: sending them / their last click to idle",
+                 ("the edits: sending them / their last click to the designer idle",
                   f"{r.get('edits_seconds')} / {r.get('edits_behind_s')}", "s"),
                  ("open: launch to the window mapped", r.get("open_window_ms"), "ms")]
         for label, v, unit in extra:
