@@ -103,7 +103,8 @@ measure() {  # kind
     seconds=$(python3 -c "print($moves / 60.0 + 2.5)")
     # Decimated as it is recorded: each frame that differs from the last kept one (ffmpeg's
     # mpdecimate) is logged with its wall-clock time in microseconds (showinfo's pts).
-    ffmpeg -loglevel info -f x11grab -framerate 60 -use_wallclock_as_timestamps 1 \
+    # Without the mouse pointer: it moves in the region every frame, designer or not.
+    ffmpeg -nostdin -loglevel info -f x11grab -draw_mouse 0 -framerate 60 -use_wallclock_as_timestamps 1 \
         -video_size "${rw}x${rh}" -t "$seconds" -i "$DISPLAY+$rx,$ry" -copyts \
         -vf "mpdecimate,showinfo" -f null - 2>"$tmp/$kind.ffmpeg" &
     local rec=$!
