@@ -26,6 +26,7 @@
 #include "outliner_view.h"
 #include "placement.h"
 #include "render_queue.h"
+#include "responsive_wait.h"
 #include "scene/parameters.h"
 #include "scene_editor.h"
 #include "scene_file_writer.h"
@@ -84,7 +85,15 @@ void MainWindow::open() {
 }
 
 bool MainWindow::openFile(const QString& path) {
-    SceneLoadResult result = loadScene(path.toStdString());
+    const std::string file = path.toStdString();
+    SceneLoadResult result;
+    if (QFileInfo(path).size() >= kResponsiveFileBytes) {
+        statusBar()->showMessage(tr("Opening %1…").arg(path));
+        result = runWhileResponsive([&file] { return loadScene(file); });
+        statusBar()->clearMessage();
+    } else {
+        result = loadScene(file);
+    }
     if (!result.ok()) {
         reportError(this, tr("Cannot open scene"),
                     tr("%1 could not be opened:\n\n%2")
@@ -127,7 +136,17 @@ bool MainWindow::saveAs() {
 bool MainWindow::saveFile(const QString& path) {
     const QFileInfo info(path);
     QString error;
-    if (!writeSceneFile(path, editor_->document(), error)) {
+    // The document as it is now; a large one is written while the window keeps painting.
+    const SceneDocument doc = editor_->document();
+    bool written;
+    if (doc.objects.size() >= kResponsiveObjects) {
+        statusBar()->showMessage(tr("Saving %1…").arg(path));
+        written = runWhileResponsive([&] { return writeSceneFile(path, doc, error); });
+        statusBar()->clearMessage();
+    } else {
+        written = writeSceneFile(path, doc, error);
+    }
+    if (!written) {
         reportError(this, tr("Cannot save scene"),
                     tr("%1 could not be written:\n%2").arg(path, error));
         return false;

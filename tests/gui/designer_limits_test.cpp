@@ -6,11 +6,14 @@
 #include <QProgressDialog>
 #include <QStatusBar>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QtTest>
 #include <fstream>
 
 #include "error_reporter.h"
 #include "gui_test_support.h"
+#include "io/scene_io.h"
+#include "responsive_wait.h"
 #include "user_confirmation.h"
 
 using namespace rs;
@@ -27,6 +30,7 @@ private Q_SLOTS:
     void renderImageOverBudget_AsksFirst_AndDeclineStartsNothing();
     void renderImageOverAreaLimit_IsRefusedWithMessage();
     void outOfMemory_IsReported_AndDocumentKept();
+    void largeScene_OpensAndSaves_WhileTheWindowKeepsTicking();
 
 private:
     std::unique_ptr<MainWindow> window_;
@@ -131,6 +135,54 @@ void DesignerLimitsTest::outOfMemory_IsReported_AndDocumentKept() {
     QVERIFY(traceViewport(*window_, QSize(320, 180), 2));
     QCOMPARE(window_->viewport()->frame()->width, 160);
 #endif
+}
+
+void DesignerLimitsTest::largeScene_OpensAndSaves_WhileTheWindowKeepsTicking() {
+    // 20,000 spheres: some 1.6 MB of scene file, read and written off the GUI thread.
+    const QString path = dir_.filePath(QStringLiteral("many.scene.json"));
+    {
+        std::ofstream out(path.toStdString());
+        out << R"({"format": "raystudio-scene", "version": 1, "camera": {"position": [0, 2, 8], "target": [0, 0, 0]},)"
+            << R"("lights": [{"name": "key", "type": "point", "position": [0, 5, 5]}], "objects": [)";
+        for (int i = 0; i < 20000; ++i)
+            out << (i ? "," : "") << R"({"name": "ball )" << i
+                << R"(", "type": "sphere", "center": [)" << (i % 120) * 0.1 - 6 << ", 0, "
+                << (i / 120) * -0.1 << R"(], "radius": 0.04})";
+        out << "]}";
+    }
+    QVERIFY(QFileInfo(path).size() >= kResponsiveFileBytes);
+    int ticks = 0;
+    QTimer timer;
+    timer.setInterval(1);
+    QObject::connect(&timer, &QTimer::timeout, [&] { ++ticks; });
+    timer.start();
+    QVERIFY2(window_->openFile(path), qPrintable(errors_.join(QLatin1Char('\n'))));
+    QCOMPARE(window_->editor()->document().objects.size(), std::size_t(20000));
+    QCOMPARE(window_->editor()->document().objects[19999].name, std::string("ball 19999"));
+    // The GUI thread ran its timers while the file was read.
+    QVERIFY2(ticks > 0, "no timer ran while the scene was read");
+    const int opened = ticks;
+
+    const QString saved = dir_.filePath(QStringLiteral("saved.scene.json"));
+    QVERIFY(window_->saveFile(saved));
+    QVERIFY2(ticks > opened, "no timer ran while the scene was written");
+    QVERIFY(window_->editor()->undoStack()->isClean());
+    const SceneLoadResult back = loadScene(saved.toStdString());
+    QVERIFY(back.ok());
+    QVERIFY(back.document.sameContent(window_->editor()->document()));
+
+    // A file that cannot be read is still an error, named, with the document kept.
+    const QString bad = dir_.filePath(QStringLiteral("bad.scene.json"));
+    {
+        std::ofstream out(bad.toStdString());
+        out << R"({"format": "raystudio-scene", "version": 1, "objects": [)"
+            << std::string(1 << 21, ' ') << "{]}";
+    }
+    QVERIFY(!window_->openFile(bad));
+    QCOMPARE(errors_.size(), 1);
+    QVERIFY2(errors_.first().contains(QStringLiteral("bad.scene.json")),
+             qPrintable(errors_.first()));
+    QCOMPARE(window_->editor()->document().objects.size(), std::size_t(20000));
 }
 
 QTEST_MAIN(DesignerLimitsTest)
