@@ -7,11 +7,13 @@
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QVBoxLayout>
 #include <algorithm>
 #include <tuple>
 
@@ -154,10 +156,21 @@ void MainWindow::createActions() {
 }
 
 void MainWindow::createDocks() {
-    outliner_ = new OutlinerView(editor_, {deleteAct_, duplicateAct_}, this);
+    auto* outlinerPane = new QWidget(this);
+    auto* outlinerLayout = new QVBoxLayout(outlinerPane);
+    outlinerLayout->setContentsMargins(0, 0, 0, 0);
+    outlinerLayout->setSpacing(2);
+    auto* nameFilter = new QLineEdit(outlinerPane);
+    nameFilter->setObjectName(QStringLiteral("outlinerFilter"));
+    nameFilter->setPlaceholderText(tr("Filter by name"));
+    nameFilter->setClearButtonEnabled(true);
+    outliner_ = new OutlinerView(editor_, {deleteAct_, duplicateAct_}, outlinerPane);
+    connect(nameFilter, &QLineEdit::textChanged, outliner_, &OutlinerView::setNameFilter);
+    outlinerLayout->addWidget(nameFilter);
+    outlinerLayout->addWidget(outliner_);
     auto* left = new QDockWidget(tr("Outliner"), this);
     left->setObjectName(QStringLiteral("outlinerDock"));
-    left->setWidget(outliner_);
+    left->setWidget(outlinerPane);
     addDockWidget(Qt::LeftDockWidgetArea, left);
     properties_ = new PropertyPanel(editor_, this);
     auto* right = new QDockWidget(tr("Properties"), this);

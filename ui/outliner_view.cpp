@@ -3,6 +3,7 @@
 #include "outliner_view.h"
 
 #include <QHeaderView>
+#include <QSortFilterProxyModel>
 
 #include "outliner_model.h"
 #include "scene_editor.h"
@@ -10,8 +11,15 @@
 namespace rs::ui {
 
 OutlinerView::OutlinerView(SceneEditor* editor, QList<QAction*> contextActions, QWidget* parent)
-    : QTreeView(parent), editor_(editor), model_(new OutlinerModel(editor, this)) {
-    setModel(model_);
+    : QTreeView(parent),
+      editor_(editor),
+      model_(new OutlinerModel(editor, this)),
+      filter_(new QSortFilterProxyModel(this)) {
+    filter_->setSourceModel(model_);
+    // A group row shows while one of its rows matches; an edit re-tests only its rows.
+    filter_->setRecursiveFilteringEnabled(true);
+    filter_->setFilterCaseSensitivity(Qt::CaseInsensitive);
+    setModel(filter_);
     // Every row is one line: the view need not measure 100,000 rows to lay them out.
     setUniformRowHeights(true);
     header()->hide();
@@ -20,11 +28,11 @@ OutlinerView::OutlinerView(SceneEditor* editor, QList<QAction*> contextActions, 
     setContextMenuPolicy(Qt::ActionsContextMenu);
     addActions(contextActions);
     expandAll();
-    connect(model_, &QAbstractItemModel::modelReset, this, [this] {
+    connect(filter_, &QAbstractItemModel::modelReset, this, [this] {
         expandAll();
         selectFromEditor();
     });
-    connect(model_, &QAbstractItemModel::rowsInserted, this, [this](const QModelIndex& parent) {
+    connect(filter_, &QAbstractItemModel::rowsInserted, this, [this](const QModelIndex& parent) {
         expand(parent);  // a group that was empty was never expanded
         selectFromEditor();
     });
@@ -35,21 +43,38 @@ OutlinerView::OutlinerView(SceneEditor* editor, QList<QAction*> contextActions, 
     connect(editor_, &SceneEditor::selectionChanged, this, &OutlinerView::selectFromEditor);
 }
 
+void OutlinerView::setNameFilter(const QString& text) {
+    // Rows the filter hides leave the view's selection, not the editor's.
+    syncing_ = true;
+    filter_->setFilterFixedString(text);
+    syncing_ = false;
+    expandAll();
+    selectFromEditor();
+}
+
+QModelIndex OutlinerView::indexOf(ObjectId id) const {
+    return filter_->mapFromSource(model_->indexOf(id));
+}
+
+ObjectId OutlinerView::idOf(const QModelIndex& viewIndex) const {
+    return model_->idOf(filter_->mapToSource(viewIndex));
+}
+
 void OutlinerView::selectFromEditor() {
     if (syncing_) return;
     syncing_ = true;
     QItemSelection rows;
     const ObjectId active = editor_->selection();
     if (active == SceneEditor::kCameraSelection) {
-        const QModelIndex i = model_->indexOf(active);
+        const QModelIndex i = indexOf(active);
         rows.select(i, i);
     }
     for (ObjectId id : editor_->selectedIds()) {
-        const QModelIndex i = model_->indexOf(id);
+        const QModelIndex i = indexOf(id);
         if (i.isValid()) rows.select(i, i);
     }
     selectionModel()->select(rows, QItemSelectionModel::ClearAndSelect);
-    const QModelIndex current = model_->indexOf(active);
+    const QModelIndex current = indexOf(active);
     if (current.isValid()) {
         selectionModel()->setCurrentIndex(current, QItemSelectionModel::NoUpdate);
         scrollTo(current);
@@ -64,9 +89,9 @@ void OutlinerView::onSelectionChanged() {
     syncing_ = true;
     std::vector<ObjectId> ids;
     bool camera = false;
-    const ObjectId current = model_->idOf(currentIndex());
+    const ObjectId current = idOf(currentIndex());
     for (const QModelIndex& i : selectionModel()->selectedRows()) {
-        const ObjectId id = model_->idOf(i);
+        const ObjectId id = idOf(i);
         if (id == SceneEditor::kCameraSelection)
             camera = true;
         else if (id != kNoObject && id != current)

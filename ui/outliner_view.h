@@ -3,6 +3,10 @@
 
 #include <QTreeView>
 
+#include "scene/document.h"
+
+class QSortFilterProxyModel;
+
 namespace rs::ui {
 
 class OutlinerModel;
@@ -14,8 +18,15 @@ class OutlinerView : public QTreeView {
     Q_OBJECT
 public:
     OutlinerView(SceneEditor* editor, QList<QAction*> contextActions, QWidget* parent = nullptr);
-    /// The model shown.
+    /// The model shown (through the name filter).
     OutlinerModel* outlinerModel() const { return model_; }
+    /// Shows only the lights and objects whose name contains `text` (any case), and the
+    /// groups holding them; empty shows all. The editor's selection is kept as it is.
+    void setNameFilter(const QString& text);
+    /// The view's row of a light, object or the camera; invalid when absent or filtered out.
+    QModelIndex indexOf(ObjectId id) const;
+    /// The id a row of this view stands for (OutlinerModel::idOf).
+    ObjectId idOf(const QModelIndex& viewIndex) const;
 
 private:
     void selectFromEditor();
@@ -23,6 +34,7 @@ private:
 
     SceneEditor* editor_;
     OutlinerModel* model_;
+    QSortFilterProxyModel* filter_;
     bool syncing_ = false;
 };
 

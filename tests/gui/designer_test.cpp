@@ -97,8 +97,7 @@ void DesignerTest::clickOnSphere_SelectsItInOutliner_AndOutlinerSelectsInViewpor
     QTest::mouseClick(window_->viewport(), Qt::LeftButton, {},
                       window_->viewport()->widgetPointOf(x, y));
     QCOMPARE(window_->editor()->selection(), blue);
-    OutlinerModel* model = window_->outliner()->outlinerModel();
-    QCOMPARE(model->idOf(window_->outliner()->currentIndex()), blue);
+    QCOMPARE(window_->outliner()->idOf(window_->outliner()->currentIndex()), blue);
 
     // The raster view draws the outline around the selection.
     const QImage shown =
@@ -111,7 +110,7 @@ void DesignerTest::clickOnSphere_SelectsItInOutliner_AndOutlinerSelectsInViewpor
     QVERIFY(outline);
 
     const ObjectId glass = idOf(*window_, "glass ball");
-    window_->outliner()->setCurrentIndex(model->indexOf(glass));
+    window_->outliner()->setCurrentIndex(window_->outliner()->indexOf(glass));
     QCOMPARE(window_->editor()->selection(), glass);
 }
 

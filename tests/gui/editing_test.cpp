@@ -512,8 +512,7 @@ void EditingTest::lightSelectedInOutliner_IsHighlighted() {
         return false;
     };
     QVERIFY(!highlighted());
-    OutlinerModel* model = window_->outliner()->outlinerModel();
-    window_->outliner()->setCurrentIndex(model->indexOf(id));
+    window_->outliner()->setCurrentIndex(window_->outliner()->indexOf(id));
     QCOMPARE(window_->editor()->selection(), id);
     QTRY_VERIFY_WITH_TIMEOUT(highlighted(), 2000);  // the OpenGL view repaints asynchronously
 }

@@ -364,10 +364,9 @@ void GizmoTest::duplicate_OfAGroup_SelectsTheCopies() {
 
 void GizmoTest::outliner_CtrlClick_SelectsSeveral_AndFollowsTheViewport() {
     OutlinerView* tree = window_->outliner();
-    OutlinerModel* model = tree->outlinerModel();
     const ObjectId blue = idOf(*window_, "blue ball"), green = idOf(*window_, "green ball");
     const auto clickRow = [&](ObjectId id, Qt::KeyboardModifiers mods) {
-        const QRect r = tree->visualRect(model->indexOf(id));
+        const QRect r = tree->visualRect(tree->indexOf(id));
         QVERIFY(r.isValid());
         QTest::mouseClick(tree->viewport(), Qt::LeftButton, mods, r.center());
     };
@@ -378,7 +377,7 @@ void GizmoTest::outliner_CtrlClick_SelectsSeveral_AndFollowsTheViewport() {
     // Selected in the viewport, the rows follow.
     click("chrome ball", Qt::ShiftModifier);
     QCOMPARE(tree->selectionModel()->selectedRows().size(), 3);
-    QVERIFY(tree->selectionModel()->isSelected(model->indexOf(idOf(*window_, "chrome ball"))));
+    QVERIFY(tree->selectionModel()->isSelected(tree->indexOf(idOf(*window_, "chrome ball"))));
 }
 
 void GizmoTest::propertyPanel_WithSeveralSelected_SaysWhichOneItShows() {

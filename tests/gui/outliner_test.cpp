@@ -123,6 +123,38 @@ private Q_SLOTS:
         QVERIFY(view.uniformRowHeights());
     }
 
+    void theNameFilter_ShowsTheMatchingRows_AndKeepsTheSelection() {
+        OutlinerView view(editor_.get(), {});
+        const ObjectId ball5 = editor_->document().objects[5].id;
+        const ObjectId ball1234 = editor_->document().objects[1234].id;
+        editor_->setSelection(ball5);
+        QCOMPARE(view.idOf(view.currentIndex()), ball5);
+
+        // "sphere 12", "sphere 120".."sphere 129", "sphere 1200".."sphere 1299": 111 rows, any
+        // case.
+        view.setNameFilter(QStringLiteral("SPHERE 12"));
+        const QModelIndex objects = view.model()->index(view.model()->rowCount() - 1, 0);
+        QCOMPARE(view.model()->rowCount(objects), 111);
+        for (int r = 0; r < 111; ++r) {
+            const ObjectId id = view.idOf(view.model()->index(r, 0, objects));
+            QVERIFY(editor_->document().findObject(id)->name.starts_with("sphere 12"));
+        }
+        QVERIFY(!view.indexOf(ball5).isValid());  // Filtered out...
+        QCOMPARE(editor_->selection(), ball5);    // ...and still the selected object.
+
+        // Picking a shown row selects it; a rename the filter no longer matches hides it.
+        view.setCurrentIndex(view.indexOf(ball1234));
+        QCOMPARE(editor_->selection(), ball1234);
+        SceneDocument doc = editor_->document();
+        doc.findObject(ball1234)->name = "renamed";
+        editor_->edit(QStringLiteral("Rename"), std::move(doc));
+        QCOMPARE(view.model()->rowCount(objects), 110);
+
+        view.setNameFilter({});
+        QCOMPARE(view.model()->rowCount(view.model()->index(2, 0)), 10000);
+        QCOMPARE(view.idOf(view.currentIndex()), editor_->selection());
+    }
+
 private:
     std::unique_ptr<SceneEditor> editor_;
     std::unique_ptr<OutlinerModel> model_;
