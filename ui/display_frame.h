@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/large_blocks.h"
+#include "frame_storage.h"
 #include "scene/document.h"
 
 namespace rs {
@@ -67,6 +68,10 @@ struct DisplayFrame {
     /// pixel, changed by edits outside any tile) is copied whole when `allFlags`. Call with the
     /// frame lock held.
     void refresh(const DeepFrame& f, const std::vector<QRect>& rects, bool allFlags);
+    /// Moves the frame into `s` where `s` has more room than the frame's own buffers, so a
+    /// frame of a new size up to `s.pixels` is copied into memory already written once. The
+    /// content and the serial stay.
+    void adopt(FrameStorage&& s);
     /// The rectangles that changed after `seen`, or false when that serial is too old to say.
     bool changedSince(uint64_t seen, std::vector<QRect>& rects) const;
 };

@@ -56,6 +56,8 @@ void SessionController::requestUpdate(const SceneDocument& doc) {
 
 void SessionController::onUpdateTimer() {
     if (!pendingDoc_) return;
+    frameStorage_.request(std::size_t(std::max(pendingDoc_->render.width, 0)) *
+                          std::size_t(std::max(pendingDoc_->render.height, 0)));
     const uint64_t generation = session_->update(*pendingDoc_);
     postedGeneration_ = generation;
     // Tone mapping and exposure trace nothing, so no tile will announce them: repaint here.
@@ -95,6 +97,7 @@ void SessionController::endInteraction() {
 
 std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wait) {
     const auto start = std::chrono::steady_clock::now();
+    if (FrameStorage room = frameStorage_.take(); room.pixels > 0) frame_->adopt(std::move(room));
     // Before the tiles are taken: every tile of the pass that made the frame whole is in them.
     const uint64_t wholeMark = session_->wholeMark();
     const bool onlyWhole =

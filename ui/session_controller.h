@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "display_frame.h"
+#include "frame_storage.h"
 #include "gui_mailbox.h"
 #include "session/render_session.h"
 
@@ -125,6 +126,8 @@ private:
     uint64_t heldGeneration_ = 0;
     QElapsedTimer lastFrame_;  ///< Since frameUpdated was last emitted.
     std::shared_ptr<DisplayFrame> frame_ = std::make_shared<DisplayFrame>();
+    /// Room for frames of the size posted, made off this thread before they come.
+    FrameStorageMaker frameStorage_;
     uint64_t frameSessionGeneration_ = 0;  ///< Session generation at the last refresh.
     /// Display settings of the document posted last.
     ToneMap postedTonemap_ = ToneMap::Clamp;
