@@ -56,7 +56,7 @@ const std::vector<OutlinerModel::Row>& OutlinerModel::rowsOf(int group) const {
     return group == kLightsRow ? lightRows_ : objectRows_;
 }
 
-bool OutlinerModel::update(int group, std::vector<Row>& cached, std::vector<Row> rows) {
+bool OutlinerModel::update(int group, std::vector<Row>& cached, const std::vector<Row>& rows) {
     const QModelIndex parent = index(group, 0);
     const std::size_t head = commonPrefix(cached, rows);
     const std::size_t tail = commonSuffix(cached, rows, head);

@@ -43,7 +43,7 @@ private:
     /// Brings group `group`'s rows to `rows`: inserts or removes a contiguous run when that is
     /// the whole difference of ids, then signals the rows whose text or check changed.
     /// Returns false when the ids changed otherwise (the caller resets the model).
-    bool update(int group, std::vector<Row>& cached, std::vector<Row> rows);
+    bool update(int group, std::vector<Row>& cached, const std::vector<Row>& rows);
     const std::vector<Row>& rowsOf(int group) const;
     std::vector<Row> lightRows_, objectRows_;
     SceneEditor* editor_;

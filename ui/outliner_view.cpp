@@ -27,9 +27,9 @@ OutlinerView::OutlinerView(SceneEditor* editor, QList<QAction*> contextActions, 
     setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
     setContextMenuPolicy(Qt::ActionsContextMenu);
     addActions(contextActions);
-    expandAll();
+    expandGroups();
     connect(filter_, &QAbstractItemModel::modelReset, this, [this] {
-        expandAll();
+        expandGroups();
         selectFromEditor();
     });
     connect(filter_, &QAbstractItemModel::rowsInserted, this, [this](const QModelIndex& parent) {
@@ -43,12 +43,17 @@ OutlinerView::OutlinerView(SceneEditor* editor, QList<QAction*> contextActions, 
     connect(editor_, &SceneEditor::selectionChanged, this, &OutlinerView::selectFromEditor);
 }
 
+void OutlinerView::expandGroups() {
+    // The groups only: expandAll() asks each of 100,000 rows whether it has children.
+    for (int r = 0; r < filter_->rowCount(); ++r) expand(filter_->index(r, 0));
+}
+
 void OutlinerView::setNameFilter(const QString& text) {
     // Rows the filter hides leave the view's selection, not the editor's.
     syncing_ = true;
     filter_->setFilterFixedString(text);
     syncing_ = false;
-    expandAll();
+    expandGroups();
     selectFromEditor();
 }
 

@@ -29,6 +29,8 @@ public:
     ObjectId idOf(const QModelIndex& viewIndex) const;
 
 private:
+    /// Opens the Lights and Objects groups.
+    void expandGroups();
     void selectFromEditor();
     void onSelectionChanged();
 
