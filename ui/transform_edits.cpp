@@ -59,9 +59,12 @@ std::optional<Vec3> entityCentre(const SceneDocument& doc, ObjectId id) {
 
 Aabb worldBounds(const SceneDocument& doc, ObjectId id) {
     const Object* o = doc.findObject(id);
-    if (!o) return {};
-    const Aabb local = localBounds(o->geometry);
-    return local.empty() ? local : local.transformed(o->transform.matrix());
+    return o ? worldBounds(*o) : Aabb{};
+}
+
+Aabb worldBounds(const Object& o) {
+    const Aabb local = localBounds(o.geometry);
+    return local.empty() ? local : local.transformed(o.transform.matrix());
 }
 
 Vec3 pivotOf(const SceneDocument& doc, const std::vector<ObjectId>& ids) {

@@ -13,6 +13,9 @@ namespace rs::ui {
 std::optional<Vec3> entityCentre(const SceneDocument& doc, ObjectId id);
 /// World bounds of object `id` (empty for planes, unknown ids and meshes without data).
 Aabb worldBounds(const SceneDocument& doc, ObjectId id);
+/// World bounds of `o` (empty for planes and meshes without data): loops over every object
+/// use this, not a lookup by id each.
+Aabb worldBounds(const Object& o);
 /// The point gestures act about: the mean of the entities' centres.
 Vec3 pivotOf(const SceneDocument& doc, const std::vector<ObjectId>& ids);
 /// Moves every entity by `delta`.
