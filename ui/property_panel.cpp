@@ -71,11 +71,36 @@ void PropertyPanel::onDocumentChanged() {
     if (signature() != signature_)
         rebuild();
     else
-        refresh();
+        refresh(&editor_->lastChange());
 }
 
-void PropertyPanel::refresh() {
-    for (const auto& r : refreshers_) r();
+bool PropertyPanel::changed(Part part, const DocumentChange& change) const {
+    switch (part) {
+        case Part::Object: {
+            if (change.objectsRestructured) return true;
+            const ObjectId id = editor_->selection();
+            return std::any_of(change.objects.begin(), change.objects.end(),
+                               [id](const DocumentChange::ObjectEdit& e) { return e.id == id; });
+        }
+        case Part::Material:
+            return change.materials;
+        case Part::Light:
+            return change.lights;
+        case Part::Camera:
+            return change.camera;
+        case Part::Render:
+            return change.render;
+    }
+    return true;
+}
+
+void PropertyPanel::refresh(const DocumentChange* change) {
+    fieldsRefreshed_ = 0;
+    for (const Refresher& r : refreshers_) {
+        if (change && !changed(r.part, *change)) continue;
+        r.set();
+        ++fieldsRefreshed_;
+    }
 }
 
 void PropertyPanel::showError(const QString& text) {
@@ -92,8 +117,8 @@ bool PropertyPanel::applyEdit(const QString& section, const std::string& key,
 }
 
 template <class Locate>
-QFormLayout* PropertyPanel::addSection(const QString& title, const QString& section, ParamKind kind,
-                                       Locate locate) {
+QFormLayout* PropertyPanel::addSection(const QString& title, const QString& section, Part part,
+                                       ParamKind kind, Locate locate) {
     auto* box = new QGroupBox(title, content_);
     auto* form = new QFormLayout(box);
     const QString mergePrefix = QString::number(editor_->selection()) + QLatin1Char(':') + title;
@@ -135,11 +160,11 @@ QFormLayout* PropertyPanel::addSection(const QString& title, const QString& sect
             d, box, [apply, key](const ParamValue& v) { apply(key, v); },
             [preview, key](const std::optional<ParamValue>& v) { preview(key, v); });
         form->addRow(QString::fromStdString(d.label), pe.widget);
-        refreshers_.push_back([this, locate, key, set = pe.setValue] {
-            const auto* target = locate(editor_->document());
-            if (!target) return;
-            if (auto v = getParameter(*target, key)) set(*v);
-        });
+        refreshers_.push_back({part, [this, locate, key, set = pe.setValue] {
+                                   const auto* target = locate(editor_->document());
+                                   if (!target) return;
+                                   if (auto v = getParameter(*target, key)) set(*v);
+                               }});
     }
     layout_->addWidget(box);
     return form;
@@ -186,9 +211,9 @@ void PropertyPanel::addMaterialChooser(ObjectId id) {
     layout_->addWidget(box);
     if (o->material.empty() || !doc.findMaterial(o->material)) return;
     const std::string name = o->material;
-    QFormLayout* materialForm = addSection(tr("Material \"%1\"").arg(QString::fromStdString(name)),
-                                           QStringLiteral("material"), ParamKind::Material,
-                                           [name](auto& d) { return materialNamed(d, name); });
+    QFormLayout* materialForm = addSection(
+        tr("Material \"%1\"").arg(QString::fromStdString(name)), QStringLiteral("material"),
+        Part::Material, ParamKind::Material, [name](auto& d) { return materialNamed(d, name); });
     addColorForm(name, materialForm);
 }
 
@@ -218,22 +243,23 @@ void PropertyPanel::addColorForm(const std::string& name, QFormLayout* form) {
         editor_->edit(tr("Colour of \"%1\": %2").arg(qname, combo->itemText(index)),
                       std::move(doc));
     });
-    refreshers_.push_back([this, name, combo] {
-        if (const Material* m = editor_->document().findMaterial(name)) {
-            const QSignalBlocker block(combo);
-            combo->setCurrentIndex(int(colorModeOf(*m)));
-        }
-    });
+    refreshers_.push_back({Part::Material, [this, name, combo] {
+                               if (const Material* m = editor_->document().findMaterial(name)) {
+                                   const QSignalBlocker block(combo);
+                                   combo->setCurrentIndex(int(colorModeOf(*m)));
+                               }
+                           }});
 
     if (mode == ColorMode::Checker) {
-        addSection(tr("Checker"), QStringLiteral("checker"), ParamKind::Checker, [name](auto& d) {
-            auto* m = materialNamed(d, name);
-            return m ? std::get_if<CheckerPattern>(&m->pattern) : nullptr;
-        });
+        addSection(tr("Checker"), QStringLiteral("checker"), Part::Material, ParamKind::Checker,
+                   [name](auto& d) {
+                       auto* m = materialNamed(d, name);
+                       return m ? std::get_if<CheckerPattern>(&m->pattern) : nullptr;
+                   });
     } else if (mode == ColorMode::Image) {
         QFormLayout* image =
-            addSection(tr("Image texture"), QStringLiteral("texture"), ParamKind::ImageTexture,
-                       [name](auto& d) {
+            addSection(tr("Image texture"), QStringLiteral("texture"), Part::Material,
+                       ParamKind::ImageTexture, [name](auto& d) {
                            auto* m = materialNamed(d, name);
                            return m ? std::get_if<ImageTexture>(&m->pattern) : nullptr;
                        });
@@ -258,11 +284,12 @@ void PropertyPanel::addColorForm(const std::string& name, QFormLayout* form) {
             if (!m || !setColorMode(*m, ColorMode::Image, path.toStdString())) return;
             editor_->edit(tr("Change texture image"), std::move(doc));
         });
-        refreshers_.push_back([this, name, preview] {
-            const Material* m = editor_->document().findMaterial(name);
-            if (const auto* t = m ? std::get_if<ImageTexture>(&m->pattern) : nullptr)
-                preview->setImage(t->image.source());
-        });
+        refreshers_.push_back({Part::Material, [this, name, preview] {
+                                   const Material* m = editor_->document().findMaterial(name);
+                                   if (const auto* t =
+                                           m ? std::get_if<ImageTexture>(&m->pattern) : nullptr)
+                                       preview->setImage(t->image.source());
+                               }});
     }
 }
 
@@ -304,25 +331,26 @@ void PropertyPanel::rebuild() {
     }
     if (const Object* o = doc.findObject(id)) {
         addSection(QString::fromLatin1(kindLabel(geometryKind(o->geometry))),
-                   QStringLiteral("geometry"), geometryKind(o->geometry), [id](auto& d) {
+                   QStringLiteral("geometry"), Part::Object, geometryKind(o->geometry),
+                   [id](auto& d) {
                        auto* obj = d.findObject(id);
                        return obj ? &obj->geometry : decltype(&obj->geometry){};
                    });
         if (!std::holds_alternative<PlaneGeometry>(o->geometry))
-            addSection(tr("Transform"), QStringLiteral("transform"), ParamKind::Transform,
-                       [id](auto& d) {
+            addSection(tr("Transform"), QStringLiteral("transform"), Part::Object,
+                       ParamKind::Transform, [id](auto& d) {
                            auto* obj = d.findObject(id);
                            return obj ? &obj->transform : decltype(&obj->transform){};
                        });
         addMaterialChooser(id);
     } else if (const Light* l = doc.findLight(id)) {
         addSection(QString::fromLatin1(kindLabel(lightKind(*l))), QStringLiteral("light"),
-                   lightKind(*l), [id](auto& d) { return d.findLight(id); });
+                   Part::Light, lightKind(*l), [id](auto& d) { return d.findLight(id); });
     } else {
         if (id == SceneEditor::kCameraSelection)
-            addSection(tr("Camera"), QStringLiteral("camera"), ParamKind::Camera,
+            addSection(tr("Camera"), QStringLiteral("camera"), Part::Camera, ParamKind::Camera,
                        [](auto& d) { return &d.camera; });
-        addSection(tr("Render settings"), QStringLiteral("render"), ParamKind::Render,
+        addSection(tr("Render settings"), QStringLiteral("render"), Part::Render, ParamKind::Render,
                    [](auto& d) { return &d.render; });
     }
     layout_->addStretch(1);

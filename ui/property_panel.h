@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "scene/document.h"
+#include "scene/document_change.h"
 #include "scene/parameters.h"
 
 class QFormLayout;
@@ -18,7 +19,9 @@ namespace rs::ui {
 class SceneEditor;
 
 /// Rebuilds its sections when the selection (or its kind) changes and refreshes values on
-/// every other document change, so a widget the user is dragging is never destroyed.
+/// every other document change, so a widget the user is dragging is never destroyed. A
+/// refresh sets only the fields of the parts the edit changed (SceneEditor::lastChange): moving
+/// one of 100,000 objects leaves the panel of another, or the render settings, alone.
 class PropertyPanel : public QScrollArea {
     Q_OBJECT
 public:
@@ -31,14 +34,21 @@ public:
     bool applyEdit(const QString& section, const std::string& key, const ParamValue& value);
     /// The last validation error shown (empty when none).
     QString lastError() const { return lastError_; }
+    /// How many fields the last refresh set from the document (tests).
+    int fieldsRefreshed() const { return fieldsRefreshed_; }
 
 private:
     void onDocumentChanged();
     void rebuild();
-    void refresh();
+    /// What a field shows: the selected object, a material, a light, the camera, the render
+    /// settings.
+    enum class Part { Object, Material, Light, Camera, Render };
+    /// Sets the fields of the parts `change` changed from the document; every field without one.
+    void refresh(const DocumentChange* change = nullptr);
+    bool changed(Part part, const DocumentChange& change) const;
     QString signature() const;
     template <class Locate>
-    QFormLayout* addSection(const QString& title, const QString& section, ParamKind kind,
+    QFormLayout* addSection(const QString& title, const QString& section, Part part, ParamKind kind,
                             Locate locate);
     void addMaterialChooser(ObjectId id);
     /// The Colour / Checker / Image selector in material `name`'s `form` and, for a pattern,
@@ -52,7 +62,12 @@ private:
     QLabel* errorLabel_ = nullptr;
     QString signature_;
     QString lastError_;
-    std::vector<std::function<void()>> refreshers_;
+    struct Refresher {
+        Part part;
+        std::function<void()> set;
+    };
+    std::vector<Refresher> refreshers_;
+    int fieldsRefreshed_ = 0;
     std::vector<std::pair<QString, std::function<bool(const std::string&, const ParamValue&)>>>
         appliers_;
 };

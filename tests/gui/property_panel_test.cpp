@@ -27,6 +27,7 @@ private Q_SLOTS:
     }
     void showsAndKeepsFileValuesBeyondItsEditorsRange();
     void onFirstRun_EveryValueOfASelectedObjectFitsItsField();
+    void anEdit_RefreshesOnlyTheFieldsOfWhatItChanged();
 
 private:
     std::unique_ptr<MainWindow> window_;
@@ -179,6 +180,69 @@ void PropertyPanelTest::onFirstRun_EveryValueOfASelectedObjectFitsItsField() {
                                 .arg(needed)));
     }
     QVERIFY(checked >= 9);  // centre, radius, translate, rotate, scale...
+}
+
+/// Every number the panel's spin boxes show, in order.
+static QList<double> panelNumbers(MainWindow& w) {
+    QList<double> out;
+    for (auto* spin : w.propertyPanel()->findChildren<QDoubleSpinBox*>())
+        out.push_back(spin->value());
+    return out;
+}
+
+void PropertyPanelTest::anEdit_RefreshesOnlyTheFieldsOfWhatItChanged() {
+    // Moving one of 100,000 objects set every field of the panel (all of them for a drag, a
+    // few dozen widgets per mouse move): now only the fields of the part an edit changed.
+    MainWindow& w = *window_;
+    SceneEditor& editor = *w.editor();
+    PropertyPanel& panel = *w.propertyPanel();
+    const ObjectId blue = idOf(w, "blue ball"), green = idOf(w, "green ball");
+    editor.setSelection(blue);
+    const int everyField = panel.fieldsRefreshed();  // A new selection sets them all.
+    const QList<double> before = panelNumbers(w);
+    QVERIFY(!before.isEmpty());
+
+    const auto edit = [&](auto change) {
+        SceneDocument doc = editor.document();
+        change(doc);
+        editor.edit(QStringLiteral("Edit"), std::move(doc));
+    };
+    edit([&](SceneDocument& d) { d.findObject(green)->transform.translate.x += 0.5f; });
+    QCOMPARE(panel.fieldsRefreshed(), 0);
+    edit([&](SceneDocument& d) { d.camera.position.y += 0.25f; });
+    QCOMPARE(panel.fieldsRefreshed(), 0);
+    edit([&](SceneDocument& d) { d.render.maxDepth = 7; });
+    QCOMPARE(panel.fieldsRefreshed(), 0);
+    QCOMPARE(panelNumbers(w), before);
+
+    // The selected ball's own move sets its shape and transform fields, not its material's.
+    edit([&](SceneDocument& d) { d.findObject(blue)->transform.translate.x = -3.25f; });
+    const int shapeFields = panel.fieldsRefreshed();
+    QVERIFY(shapeFields > 0);
+    QVERIFY(panelNumbers(w).contains(-3.25));
+    // Its material's edit sets the material's fields.
+    edit([&](SceneDocument& d) {
+        for (Material& m : d.materials)
+            if (m.name == "blue plastic") m.shininess = 77.0f;
+    });
+    const int materialFields = panel.fieldsRefreshed();
+    QVERIFY(materialFields > 0);
+    QVERIFY(panelNumbers(w).contains(77.0));
+    QVERIFY(shapeFields + materialFields <= everyField);
+
+    // With nothing selected the panel shows the render settings: a move leaves them alone, a
+    // setting's edit sets them.
+    editor.setSelection(kNoObject);
+    edit([&](SceneDocument& d) { d.findObject(blue)->transform.translate.x = 1.0f; });
+    QCOMPARE(panel.fieldsRefreshed(), 0);
+    edit([&](SceneDocument& d) { d.render.maxDepth = 9; });
+    QVERIFY(panel.fieldsRefreshed() > 0);
+    bool shown = false;
+    for (auto* spin : panel.findChildren<QSpinBox*>()) shown = shown || spin->value() == 9;
+    QVERIFY(shown);
+    // Undo is an edit like any other: the setting goes back on screen.
+    editor.undoStack()->undo();
+    QVERIFY(panel.fieldsRefreshed() > 0);
 }
 
 #include "property_panel_test.moc"
