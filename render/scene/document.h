@@ -218,7 +218,9 @@ struct Object {
     bool operator==(const Object&) const = default;
 };
 
-/// The whole editable scene. Ids are assigned by the document and never reused.
+/// The whole editable scene. Ids are assigned by the document and never reused; objects and
+/// lights are only appended (addObject, addLight) and erased, so each list is in increasing id
+/// order, which findObject and findLight rely on (a binary search).
 struct SceneDocument {
     Camera camera;
     RenderSettings render;
