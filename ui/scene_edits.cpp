@@ -207,15 +207,20 @@ std::string renameMaterial(SceneDocument& doc, const std::string& from, const st
 
 std::string materialDeleteError(const SceneDocument& doc, const std::string& name) {
     if (!doc.findMaterial(name)) return "there is no material \"" + name + "\"";
-    std::vector<std::string> users;
-    for (const Object& o : doc.objects)
-        if (o.material == name) users.push_back(o.name);
-    if (users.empty()) return {};
-    std::string list = "\"" + users[0] + "\"";
+    // The first few users by name and how many more: a material of 100,000 spheres is
+    // counted, not copied name by name.
     constexpr std::size_t kNamed = 3;
-    for (std::size_t i = 1; i < std::min(users.size(), kNamed); ++i)
-        list += ", \"" + users[i] + "\"";
-    if (users.size() > kNamed) list += " and " + std::to_string(users.size() - kNamed) + " more";
+    std::vector<const std::string*> named;
+    std::size_t users = 0;
+    for (const Object& o : doc.objects) {
+        if (o.material != name) continue;
+        if (named.size() < kNamed) named.push_back(&o.name);
+        ++users;
+    }
+    if (users == 0) return {};
+    std::string list = "\"" + *named[0] + "\"";
+    for (std::size_t i = 1; i < named.size(); ++i) list += ", \"" + *named[i] + "\"";
+    if (users > kNamed) list += " and " + std::to_string(users - kNamed) + " more";
     return "\"" + name + "\" is used by " + list + "; assign those another material first";
 }
 

@@ -80,6 +80,14 @@ void UiLogicTest::materials_DeleteRefusedWhileUsed_RenameFollowsUsers_NamesValid
     QCOMPARE(doc.findObject(a)->material, std::string("a"));
     QCOMPARE(deleteMaterial(doc, copy), std::string());
     QCOMPARE(doc.materials.size(), std::size_t(1));
+
+    // Many users: the first three by name, the rest counted.
+    std::vector<ObjectId> balls;
+    for (const char* n : {"c", "d", "e", "f"}) balls.push_back(addBall(doc, n));
+    QCOMPARE(assignMaterial(doc, balls, "a"), 4);
+    QCOMPARE(materialDeleteError(doc, "a"),
+             std::string("\"a\" is used by \"a\", \"c\", \"d\" and 2 more; assign those another "
+                         "material first"));
 }
 
 void UiLogicTest::placement_RestsOnTheSurfaceHit_OrSnapsToTheFloorBelow() {
