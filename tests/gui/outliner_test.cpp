@@ -7,26 +7,14 @@
 #include "outliner_model.h"
 #include "outliner_view.h"
 #include "scene_editor.h"
+#include "test_scenes.h"
 
 using namespace rs;
 using namespace rs::ui;
 
 namespace {
 
-SceneDocument manySpheres(int n) {
-    SceneDocument doc;
-    for (int i = 0; i < n; ++i) {
-        Object o;
-        o.name = "sphere ";
-        o.name += std::to_string(i);
-        o.geometry = SphereGeometry{Vec3(float(i), 0.0f, 0.0f), 0.4f};
-        doc.addObject(o);
-    }
-    Light l;
-    l.name = "key";
-    doc.addLight(l);
-    return doc;
-}
+using rs::test::manySpheres;
 
 /// How many rows the dataChanged signals of `spy` covered.
 int rowsSignalled(const QSignalSpy& spy) {

@@ -6,25 +6,12 @@
 #include <string>
 #include <utility>
 
+#include "test_scenes.h"
+
 namespace rs {
 namespace {
 
-SceneDocument manySpheres(int n) {
-    SceneDocument doc;
-    Material red;
-    red.name = "red";
-    doc.materials.push_back(red);
-    for (int i = 0; i < n; ++i) {
-        Object o;
-        o.name = "ball " + std::to_string(i);
-        o.geometry = SphereGeometry{Vec3(float(i), 0.0f, 0.0f), 0.4f};
-        doc.addObject(o);
-    }
-    Light key;
-    key.name = "key";
-    doc.addLight(key);
-    return doc;
-}
+using test::manySpheres;
 
 TEST(DocumentChange, MovingOneOfManyObjects_NamesThatObjectAndItsShapeAlone) {
     const SceneDocument before = manySpheres(10000);

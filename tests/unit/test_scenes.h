@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "scene/document.h"
 #include "scene/mesh_data.h"
@@ -88,6 +89,25 @@ inline std::shared_ptr<const MeshData> tetrahedron() {
                        Vec3(0, -0.3f, -0.4f)};
     mesh->indices = {0, 1, 2, 0, 2, 3, 0, 3, 1, 1, 3, 2};
     return mesh;
+}
+
+/// `n` spheres in a row, "sphere 0" to "sphere n-1", one material ("red", used by none) and a
+/// light ("key"): the scene of the tests of edits, lookups and panels at scale.
+inline SceneDocument manySpheres(int n) {
+    SceneDocument doc;
+    Material red;
+    red.name = "red";
+    doc.materials.push_back(red);
+    for (int i = 0; i < n; ++i) {
+        Object o;
+        o.name = "sphere " + std::to_string(i);
+        o.geometry = SphereGeometry{Vec3(float(i), 0.0f, 0.0f), 0.4f};
+        doc.addObject(o);
+    }
+    Light key;
+    key.name = "key";
+    doc.addLight(key);
+    return doc;
 }
 
 }  // namespace rs::test
