@@ -20,7 +20,9 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 # The one scene -> POV-Ray mapping (tests/oracle/scene_to_pov.py) writes the twins.
 sys.path.insert(0, os.path.join(ROOT, "tests", "oracle"))
+sys.path.insert(0, os.path.join(ROOT, "tests", "bench", "lib"))
 import scene_to_pov  # noqa: E402
+from sphere_floor import side_for, sphere_floor  # noqa: E402
 
 
 def reference_room():
@@ -53,30 +55,10 @@ def room_sphere_light(out):
 
 def spheres(out, n, rng):
     """N spheres scattered over a floor, seen from above at an angle, one point light."""
-    side = 4.0 * math.sqrt(n)
-    radius = 1.0
-    doc = {
-        "format": "raystudio-scene", "version": 1,
-        "camera": {"position": [0, 0.45 * side, 0.55 * side], "target": [0, 0, 0],
-                   "up": [0, 1, 0], "fov_y": 55},
-        "render": {"width": 1280, "height": 720, "max_depth": 3, "shadow_samples": 1,
-                   "background": [0.05, 0.05, 0.08], "ambient": [0.05, 0.05, 0.05]},
-        "materials": [
-            {"name": "floor", "color": [0.7, 0.7, 0.7], "diffuse": 0.9},
-            {"name": "red", "color": [0.8, 0.2, 0.1], "diffuse": 0.9, "specular": 0.4, "shininess": 40},
-            {"name": "blue", "color": [0.1, 0.3, 0.8], "diffuse": 0.9, "specular": 0.4, "shininess": 40},
-            {"name": "mirror", "color": [0.9, 0.9, 0.9], "diffuse": 0.1, "reflectivity": 0.8},
-        ],
-        "lights": [{"name": "sun", "type": "point", "position": [0.3 * side, side, 0.2 * side]}],
-        "objects": [{"name": "floor", "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
-                     "material": "floor"}],
-    }
-    for i in range(n):
-        x, z = rng.uniform(-side / 2, side / 2), rng.uniform(-side / 2, side / 2)
-        r = radius * rng.uniform(0.4, 1.0)
-        mat = ("red", "blue", "mirror")[i % 3]
-        doc["objects"].append({"name": "ball %d" % i, "type": "sphere", "center": [x, r, z],
-                               "radius": r, "material": mat})
+    side = side_for(n)
+    doc = sphere_floor(range(n), rng, side,
+                       camera={"position": [0, 0.45 * side, 0.55 * side], "target": [0, 0, 0]},
+                       light=[0.3 * side, side, 0.2 * side], ambient=0.05)
     write_json(os.path.join(out, "spheres-%d.scene.json" % n), doc)
     with open(os.path.join(out, "spheres-%d.pov" % n), "w") as f:
         f.write(scene_to_pov.convert(doc, out))

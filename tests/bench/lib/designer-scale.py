@@ -16,6 +16,8 @@ import random
 import statistics
 import sys
 
+from sphere_floor import side_for, sphere_floor
+
 MASK_SCALE = 4      # The mask is the recorded region shrunk 4x (area average).
 MASK_LEVEL = 128    # A mask pixel at least this green is the ball's.
 MOVED_PX = 2.0      # The ball moved when its centre moved this far (screen pixels).
@@ -34,34 +36,13 @@ TARGETS = [  # key, label, unit, comparison, target
 
 
 def scene(out, n):
-    rng = random.Random(7)
-    side = 4.0 * math.sqrt(max(n, 10))
-    doc = {
-        "format": "raystudio-scene", "version": 1,
-        "camera": {"position": [0, 9, 18], "target": [0, 1, 0], "up": [0, 1, 0], "fov_y": 55},
-        "render": {"width": 1280, "height": 720, "max_depth": 3, "shadow_samples": 1,
-                   "background": [0.05, 0.05, 0.08], "ambient": [0.15, 0.15, 0.15]},
-        "materials": [
-            {"name": "floor", "color": [0.7, 0.7, 0.7], "diffuse": 0.9},
-            {"name": "red", "color": [0.8, 0.2, 0.1], "diffuse": 0.9, "specular": 0.4, "shininess": 40},
-            {"name": "blue", "color": [0.1, 0.3, 0.8], "diffuse": 0.9, "specular": 0.4, "shininess": 40},
-            {"name": "mirror", "color": [0.9, 0.9, 0.9], "diffuse": 0.1, "reflectivity": 0.8},
-            {"name": "marker", "color": [0.02, 1.0, 0.02], "diffuse": 1.0},
-        ],
-        "lights": [{"name": "sun", "type": "point", "position": [6, 30, 20]}],
-        "objects": [{"name": "floor", "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
-                     "material": "floor"},
-                    {"name": "ball 0", "type": "sphere", "center": [0, 1, 0], "radius": 1.0,
-                     "material": "marker"}],
-    }
-    for i in range(1, n):
-        while True:
-            x, z = rng.uniform(-side / 2, side / 2), rng.uniform(-side / 2, side / 2)
-            if x * x + z * z > 25.0:
-                break
-        r = rng.uniform(0.4, 1.0)
-        doc["objects"].append({"name": "ball %d" % i, "type": "sphere", "center": [x, r, z],
-                               "radius": r, "material": ("red", "blue", "mirror")[i % 3]})
+    # "ball 0" is the marker: bright green at the origin, the others kept 5 units away.
+    doc = sphere_floor(range(1, n), random.Random(7), side_for(max(n, 10)),
+                       camera={"position": [0, 9, 18], "target": [0, 1, 0]},
+                       light=[6, 30, 20], ambient=0.15, clear=5.0)
+    doc["materials"].append({"name": "marker", "color": [0.02, 1.0, 0.02], "diffuse": 1.0})
+    doc["objects"].insert(1, {"name": "ball 0", "type": "sphere", "center": [0, 1, 0],
+                              "radius": 1.0, "material": "marker"})
     with open(out, "w") as f:
         json.dump(doc, f)
 
