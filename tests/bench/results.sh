@@ -127,6 +127,11 @@ need() {  # what value
     printf '%s' "$2"
 }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN{printf "%.2f", a / b}'; }
+# What a designer row measured: "orbit" rows orbit the camera, the others move the blue ball
+# ($2: how, e.g. dragging).
+designer_action() {
+    if [[ "$1" == orbit ]]; then echo "orbiting the reference room's camera"; else echo "$2 the reference room's blue ball"; fi
+}
 
 started="$(date -u '+%Y-%m-%d %H:%M UTC')"
 start_s="$(date +%s)"
@@ -194,8 +199,7 @@ for kind in ("drag", "orbit"):
           m("whole_latency_median_ms"), m("gui_stall_max_ms"), m("full_frame_ratio")))
 PY
     while read -r kind viewport view whole shown latency stall full; do
-        what="dragging the reference room's blue ball"
-        [[ "${kind}" == orbit ]] && what="orbiting the reference room's camera"
+        what=$(designer_action "${kind}" dragging)
         headline+=("| designer in a window (Xvfb, Mesa llvmpipe, ${view} view, viewport ${viewport}), ${what}, 240 mouse moves at 60 Hz | **${whole} whole frames/s** (${shown} shown), input to a whole frame ${latency} ms, longest GUI stall ${stall} ms | | viewport full frame ${full}x \`renderImage\` | \`bash tests/bench/measure-designer.sh --json\`, median of ${designer_runs} |")
     done <"${work}/designer.rows"
 fi
@@ -217,8 +221,7 @@ for kind in ("drag", "orbit"):
           "%.1f" % float(own.get("latency_median_ms", "nan")))
 PY
     while read -r kind screen fps gap longest latency own_fps own_latency; do
-        what="G-moving the reference room's blue ball"
-        [[ "${kind}" == orbit ]] && what="orbiting the reference room's camera"
+        what=$(designer_action "${kind}" G-moving)
         headline+=("| designer seen from outside (Xvfb ${screen} + openbox, maximised; one xdotool process at 60 Hz; ffmpeg x11grab + mpdecimate of the viewport's middle), ${what}, 240 moves | **${fps} distinct frames/s** on screen, median gap ${gap} ms, longest ${longest} ms, first input to screen ${latency} ms | the designer's own (\`--measure-${kind}\`): ${own_fps} frames/s, latency ${own_latency} ms | | \`bash tests/bench/window-frames.sh --json\` |")
     done <"${work}/window.rows"
 fi
