@@ -240,20 +240,26 @@ private:
         return *chunk;
     }
     /// Removes and returns the elements from index `at` on; chunks before it stay as they are.
+    /// Elements of chunks no other list shares are moved, the others copied.
     std::vector<T> takeFrom(std::size_t at) {
         std::vector<T> tail;
         tail.reserve(size_ - at);
         const std::size_t firstChunk = at >> kChunkBits;
+        const auto take = [](Chunk& chunk, std::size_t from, std::size_t to, std::vector<T>& out) {
+            const auto first = chunk.items.begin() + std::ptrdiff_t(from);
+            const auto last = chunk.items.begin() + std::ptrdiff_t(to);
+            if (chunk.unique())
+                out.insert(out.end(), std::make_move_iterator(first),
+                           std::make_move_iterator(last));
+            else
+                out.insert(out.end(), first, last);
+        };
         for (std::size_t c = firstChunk; c < chunks_.size(); ++c) {
-            const auto& items = chunks_[c]->items;
-            const std::size_t from = c == firstChunk ? (at & (kChunk - 1)) : 0;
-            tail.insert(tail.end(), items.begin() + std::ptrdiff_t(from), items.end());
+            Chunk& chunk = *chunks_[c];
+            take(chunk, c == firstChunk ? (at & (kChunk - 1)) : 0, chunk.items.size(), tail);
         }
         std::vector<T> head;
-        if (at & (kChunk - 1)) {
-            const auto& items = chunks_[firstChunk]->items;
-            head.assign(items.begin(), items.begin() + std::ptrdiff_t(at & (kChunk - 1)));
-        }
+        if (at & (kChunk - 1)) take(*chunks_[firstChunk], 0, at & (kChunk - 1), head);
         for (std::size_t c = firstChunk; c < chunks_.size(); ++c)
             if (chunks_[c]->release()) delete chunks_[c];
         chunks_.resize(firstChunk);
