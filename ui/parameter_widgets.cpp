@@ -157,6 +157,15 @@ ParamEditor colorEditor(const ParamDescriptor& d, QWidget* parent,
     value->setKeyboardTracking(false);
     value->setPrefix(QStringLiteral("× "));
     value->setToolTip(QObject::tr("Value: the largest component; beyond 1 for HDR colours"));
+    // The panel takes its width from its rows' minimum widths when it is built, before a
+    // colour is set: neither field's minimum may follow what it shows later. The swatch keeps
+    // room for three components of three digits (its tooltip carries longer ones), the value
+    // for three digits before the point.
+    paintSwatch(button, Vec3(0.888f));
+    button->setMinimumWidth(button->sizeHint().width());
+    value->setRange(0.0, 999.999);
+    value->setMinimumWidth(value->minimumSizeHint().width());
+    value->setRange(0.0, d.softMax);
     layout->addWidget(button, 3);
     layout->addWidget(value, 1);
     auto colour = std::make_shared<Vec3>(0.0f);
@@ -183,6 +192,7 @@ ParamEditor colorEditor(const ParamDescriptor& d, QWidget* parent,
     auto set = [=](const ParamValue& v) {
         *colour = std::get<Vec3>(v);
         paintSwatch(button, *colour);
+        button->setToolTip(button->text());
         const QSignalBlocker block(value);
         value->setRange(0.0, std::max(d.softMax, double(valueOf(*colour))));
         value->setValue(valueOf(*colour));
