@@ -49,6 +49,7 @@ struct Request {
     int frames = 240;
     bool json = false;
     DisplayKind display = DisplayKind::Automatic;  ///< --view: who draws the viewport.
+    std::function<void(QWidget&)> afterOpen;       ///< Called once the scene is shown.
 };
 
 /// One posted mouse event: when it was due (its event time), when the viewport had handled
@@ -89,6 +90,7 @@ public:
 private:
     bool waitUntil(const std::function<bool()>& done, int timeoutMs);
     bool waitFinalShown(Clock::time_point* shownAt);
+    bool waitViewSettled();
     QPoint pathPoint(QPoint start, int i) const;
     void post(int i, QPoint start);
     QJsonObject analyse(Clock::time_point begin, Clock::time_point end) const;
@@ -170,21 +172,43 @@ void Measurement::post(int i, QPoint start) {
 
 /// Rounds of measureFullFrames: an even number, so the view ends as it was opened.
 constexpr int kFullFrameRounds = 4;
+/// Rounds measureFullFrames may repeat because a resize superseded them.
+constexpr int kFullFrameRepeats = 8;
+
+/// Waits until the viewport has kept its size for twice the time a resize takes to reach the
+/// session, the session traces that size and its frame is final and shown. A dock that takes
+/// its width after the open resizes the viewport; the new size is posted once it rests.
+bool Measurement::waitViewSettled() {
+    Viewport* v = window_.viewport();
+    QSize size = v->size();
+    auto since = Clock::now();
+    const bool rested = waitUntil(
+        [&] {
+            if (v->size() != size) size = v->size(), since = Clock::now();
+            const QSize traced =
+                tracedFrameSize(size * v->devicePixelRatioF(), v->previewDivider());
+            return msBetween(since, Clock::now()) > 2.0 * Viewport::kResizeSettleMs &&
+                   v->tracedSize() == traced;
+        },
+        20000);
+    return rested && waitFinalShown(nullptr);
+}
 
 /// Viewport full frames against renderImage, like with like: the same view document (the
 /// viewport's traced size and camera, the scene's samples), the same thread count, both after
 /// the open has settled and interleaved so that both see the same machine load. A frame is a
 /// camera nudge (every pixel re-traced); its time is the session's passes for it (Base, and
 /// Supersample where the scene asks), as renderImage's is its tracing (snapshot built before).
+/// A round that another post superseded (the viewport's new size) is measured again.
 bool Measurement::measureFullFrames(FullFrames& out) {
     SessionController* c = window_.session();
-    const SceneDocument opened = window_.viewport()->viewDocument();
     RenderOptions options;
     options.threads = loadPreferences().threads;
     std::vector<double> pass, shown, image;
-    for (int k = 0; k < kFullFrameRounds; ++k) {
-        SceneDocument doc = opened;
-        if (k % 2 == 0) doc.camera.target.x += 1e-3f;  // Odd rounds go back to the opened view.
+    for (int k = 0, repeats = 0; k < kFullFrameRounds;) {
+        if (!waitViewSettled()) return false;
+        SceneDocument doc = window_.viewport()->viewDocument();  // At the size traced now.
+        if (k % 2 == 0) doc.camera.target.x += 1e-3f;            // Odd rounds go back to the view.
         const std::size_t seen = passes_.size();
         const auto start = Clock::now();
         c->requestUpdate(doc);
@@ -192,6 +216,13 @@ bool Measurement::measureFullFrames(FullFrames& out) {
         const uint64_t generation = c->session().generation();
         Clock::time_point shownAt;
         if (!waitFinalShown(&shownAt)) return false;
+        if (c->session().generation() != generation) {
+            if (++repeats > kFullFrameRepeats) {
+                std::fprintf(stderr, "raystudio: the viewport kept changing size\n");
+                return false;
+            }
+            continue;
+        }
         double ms = 0.0;
         std::size_t traced = 0;
         for (std::size_t p = seen; p < passes_.size(); ++p) {
@@ -209,6 +240,7 @@ bool Measurement::measureFullFrames(FullFrames& out) {
         shown.push_back(msBetween(start, shownAt));
         const CompiledScene scene(doc);
         image.push_back(renderImage(scene, options).ms);
+        ++k;
     }
     out = {quantile(pass, 0.5), quantile(shown, 0.5), quantile(image, 0.5), kFullFrameRounds};
     return true;
@@ -344,6 +376,7 @@ int Measurement::run() {
             openPassMs = p.ms;
             break;
         }
+    if (request_.afterOpen) request_.afterOpen(window_);
     FullFrames full;
     if (!measureFullFrames(full)) {
         std::fprintf(stderr, "raystudio: a full frame never completed\n");
@@ -532,8 +565,10 @@ void addMeasurementOptions(QCommandLineParser& parser) {
                       QStringLiteral("KIND"), QStringLiteral("automatic")});
 }
 
-int runRequestedMeasurement(const QCommandLineParser& parser) {
+int runRequestedMeasurement(const QCommandLineParser& parser,
+                            const std::function<void(QWidget&)>& afterOpen) {
     Request r;
+    r.afterOpen = afterOpen;
     r.orbit = parser.isSet(QStringLiteral("measure-orbit"));
     if (!r.orbit && !parser.isSet(QStringLiteral("measure-drag"))) return -1;
     r.scene =

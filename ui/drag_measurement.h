@@ -2,7 +2,10 @@
 // from each event to the paint of the first frame that shows its edit.
 #pragma once
 
+#include <functional>
+
 class QCommandLineParser;
+class QWidget;
 
 namespace rs::ui {
 
@@ -10,7 +13,10 @@ namespace rs::ui {
 void addMeasurementOptions(QCommandLineParser& parser);
 
 /// Runs the measurement the parsed options ask for and returns the exit code (0 measured,
-/// 2 bad input, 1 failure); -1 when no measurement was asked for.
-int runRequestedMeasurement(const QCommandLineParser& parser);
+/// 2 bad input, 1 failure); -1 when no measurement was asked for. `afterOpen`, when set, is
+/// called with the main window once the opened scene is shown (tests resize it there, as a
+/// dock taking its width late would).
+int runRequestedMeasurement(const QCommandLineParser& parser,
+                            const std::function<void(QWidget&)>& afterOpen = {});
 
 }  // namespace rs::ui

@@ -1,11 +1,14 @@
 // The main window as a user opens it: at 1500 x 950 with the render settings in the
-// Properties dock, every colour row's value field is whole inside the dock.
+// Properties dock, every colour row's value field is whole inside the dock; and the
+// designer's own measurement (--measure-orbit) when the viewport is resized after the open.
+#include <QCommandLineParser>
 #include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QtTest>
 
+#include "drag_measurement.h"
 #include "gui_test_support.h"
 #include "property_panel.h"
 
@@ -18,6 +21,7 @@ class WindowLayoutTest : public QObject {
 private Q_SLOTS:
     void initTestCase() { isolateSettings(); }
     void renderSettings_At1500x950_EveryColourRowFitsTheDock();
+    void measureOrbit_WhenTheViewportIsResizedAfterTheOpen_StillCompletes();
 };
 
 namespace {
@@ -65,6 +69,31 @@ void WindowLayoutTest::renderSettings_At1500x950_EveryColourRowFitsTheDock() {
                                     .arg(spin->minimumSizeHint().width())));
     }
     window.editor()->undoStack()->setClean();
+}
+
+void WindowLayoutTest::measureOrbit_WhenTheViewportIsResizedAfterTheOpen_StillCompletes() {
+    QCommandLineParser parser;
+    addMeasurementOptions(parser);
+    QVERIFY(parser.parse({QStringLiteral("raystudio"), QStringLiteral("--measure-orbit"),
+                          scenePath("reference-room.scene.json"), QStringLiteral("--frames"),
+                          QStringLiteral("4"), QStringLiteral("--json")}));
+    // Right after the open the window narrows (the viewport with it), and once more a little
+    // later: each new size reaches the session only once it rests, while the full frames
+    // are being measured.
+    QSize resizedTo;
+    int resizes = 0;
+    const auto afterOpen = [&](QWidget& window) {
+        window.resize(window.width() - 120, window.height() - 40);
+        ++resizes;
+        QTimer::singleShot(Viewport::kResizeSettleMs + 60, &window, [&] {
+            window.resize(window.width() - 60, window.height());
+            resizedTo = window.size();
+            ++resizes;
+        });
+    };
+    QCOMPARE(runRequestedMeasurement(parser, afterOpen), 0);
+    QCOMPARE(resizes, 2);
+    QVERIFY(resizedTo.isValid());
 }
 
 QTEST_MAIN(WindowLayoutTest)
