@@ -61,6 +61,7 @@ private Q_SLOTS:
     void undoFromTheMenu_DuringADrag_EndsTheDrag();
     void orbitAboutAFarWall_KeepsTheViewInsideTheRoom();
     void aLightSelectedFirst_ShowsAFullSizeGizmo();
+    void nearTheTopEdge_TheGizmoStaysWhole_AndItsRingAndArrowWork();
 
 private:
     Viewport* viewport() { return window_->viewport(); }
@@ -95,17 +96,94 @@ void GizmoTest::aLightSelectedFirst_ShowsAFullSizeGizmo() {
     editor()->setSelection(light);
     const auto g = viewport()->gizmo();
     QVERIFY(g);
-    // Its arrows are kArrowPx long on screen, whatever the light's distance: the gizmo spans
-    // at least one arrow's length, not a few pixels.
+    // Its rings are kRingPx across on screen, whatever the light's distance (less near the
+    // view's edge, down to kMinScale of that): the gizmo spans their diameter at the least,
+    // not a few pixels.
     const QRectF b = g->bounds();
-    QVERIFY2(std::max(b.width(), b.height()) > TransformGizmo::kArrowPx,
-             qPrintable(QStringLiteral("%1 x %2").arg(b.width()).arg(b.height())));
+    QVERIFY2(
+        std::max(b.width(), b.height()) > 2 * TransformGizmo::kRingPx * TransformGizmo::kMinScale,
+        qPrintable(QStringLiteral("%1 x %2").arg(b.width()).arg(b.height())));
+}
+
+void GizmoTest::nearTheTopEdge_TheGizmoStaysWhole_AndItsRingAndArrowWork() {
+    click("blue ball");
+    const ObjectId id = idOf(*window_, "blue ball");
+    // The ball moved, at the same distance from the eye, to where its centre shows 40 pixels
+    // below the viewport's top edge.
+    {
+        const ViewProjection view = viewport()->projection();
+        const Vec3 centre = *entityCentre(doc(), id);
+        const QPointF shown = *view.project(centre);
+        const Ray ray = view.rayThrough(QPointF(shown.x(), 40.0));
+        const Vec3 to = ray.origin + glm::normalize(ray.dir) * glm::length(centre - ray.origin);
+        SceneDocument d = doc();
+        d.findObject(id)->transform.translate += to - centre;
+        editor()->edit(QStringLiteral("Move up"), std::move(d));
+        QVERIFY(settle(*window_));
+    }
+    const Vec3 centre = *entityCentre(doc(), id);
+    const QPointF pivot = *viewport()->projection().project(centre);
+    QVERIFY2(std::abs(pivot.y() - 40.0) < 0.5, qPrintable(QString::number(pivot.y())));
+    const auto g = viewport()->gizmo();
+    QVERIFY(g);
+    const QRectF b = g->bounds();
+    QVERIFY2(QRectF(viewport()->rect()).contains(b),
+             qPrintable(QStringLiteral("the gizmo reaches (%1, %2)-(%3, %4)")
+                            .arg(b.left())
+                            .arg(b.top())
+                            .arg(b.right())
+                            .arg(b.bottom())));
+
+    // Its Z ring turns the ball about Z alone.
+    const Transform before = object("blue ball").transform;
+    const QPointF at = grab({TransformKind::Rotate, 2, false});
+    QVERIFY(!at.isNull());
+    const QPointF r = at - pivot;
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, at.toPoint());
+    for (int i = 1; i <= 10; ++i) {
+        const double a = -M_PI / 4 * i / 10.0;
+        moveHeld(viewport(), pivot + QPointF(r.x() * std::cos(a) - r.y() * std::sin(a),
+                                             r.x() * std::sin(a) + r.y() * std::cos(a)));
+    }
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, viewport()->mapFromGlobal(QCursor::pos()));
+    const Transform turned = object("blue ball").transform;
+    QVERIFY2(std::abs(turned.rotate.z - before.rotate.z) > 20.0f, qPrintable(str(turned.rotate)));
+    QCOMPARE(turned.rotate.x, before.rotate.x);
+    QCOMPARE(turned.rotate.y, before.rotate.y);
+
+    // Its X arrow moves the ball along X alone, by what the drag spans along X (within 2 %).
+    const ViewProjection view = viewport()->projection();
+    const QPointF from = QPointF(grab({TransformKind::Move, 0, false}).toPoint());
+    QVERIFY(!from.isNull());
+    const QPointF to = from + 30.0 * screenDirection(view, centre, Vec3(1, 0, 0));
+    drag(viewport(), from, to);
+    const Vec3 delta = object("blue ball").transform.translate - turned.translate;
+    const double expected = alongAxis(view, centre, Vec3(1, 0, 0), from, to);
+    QVERIFY2(expected > 0.05 && std::abs(delta.x - expected) <= 0.02 * expected &&
+                 delta.y == 0.0f && delta.z == 0.0f,
+             qPrintable(str(delta) + QStringLiteral(", expected x %1").arg(expected)));
+    QCOMPARE(editor()->undoStack()->count(), 3);  // The move up, the turn, the move.
 }
 
 void GizmoTest::click(const std::string& name, Qt::KeyboardModifiers mods) {
-    const auto [x, y] = pixelOf(*viewport()->frame(), idOf(*window_, name));
-    QVERIFY2(x >= 0, name.c_str());
-    QTest::mouseClick(viewport(), Qt::LeftButton, mods, viewport()->widgetPointOf(x, y));
+    // The pixel of it nearest its middle that no handle of the gizmo shown now covers (a
+    // click there would grab the handle, as in Blender).
+    const DisplayFrame& f = *viewport()->frame();
+    const ObjectId id = idOf(*window_, name);
+    const auto [cx, cy] = pixelOf(f, id);
+    QVERIFY2(cx >= 0, name.c_str());
+    const auto gizmo = viewport()->gizmo();
+    QPoint at(-1, -1);
+    long best = -1;
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x) {
+            const long d = long(x - cx) * (x - cx) + long(y - cy) * (y - cy);
+            if (f.idAt(x, y) != id || (best >= 0 && d >= best)) continue;
+            const QPoint p = viewport()->widgetPointOf(x, y);
+            if (!gizmo || !gizmo->handleAt(QPointF(p))) at = p, best = d;
+        }
+    QVERIFY2(at.x() >= 0, name.c_str());
+    QTest::mouseClick(viewport(), Qt::LeftButton, mods, at);
 }
 
 QPointF GizmoTest::grab(const GizmoHandle& h) {

@@ -2,6 +2,8 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QImage>
+#include <QPainter>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -197,30 +199,104 @@ void UiLogicTest::fitScale_ScalesOnlyMeshesThatDoNotFitTheView() {
              float(findParameter(ParamKind::Transform, "scale")->softMin));
 }
 
-void UiLogicTest::gizmoRings_StayInsideTheFrame_NearItsEdge() {
-    // A 960 x 540 view; pivots from the middle up to 125 pixels from the top edge (nearer,
-    // the rings would have to cross the scale boxes to fit).
-    Camera view;
-    view.position = Vec3(0, 0, 5);
-    view.target = Vec3(0, 0, 0);
-    const QSize size(960, 540);
-    const ViewProjection projection(view, size, size, size);
-    const QRectF frame(projection.imageRect());
-    for (const double fromTop : {270.0, 180.0, 140.0, 125.0}) {
-        const Ray ray = projection.rayThrough(QPointF(480.0, fromTop));
-        const Vec3 pivot = ray.origin + ray.dir * (5.0f / -ray.dir.z);  // on the plane z = 0
-        const TransformGizmo g(projection, pivot, Mat3(1.0f));
-        QVERIFY(g.valid());
-        // bounds() reaches 12 pixels past the shapes; the rings themselves stay inside.
-        const QRectF shapes = g.bounds().adjusted(12, 12, -12, -12);
-        QVERIFY2(frame.contains(shapes),
-                 qPrintable(QStringLiteral("pivot %1 px from the top: rings reach y %2")
-                                .arg(fromTop)
-                                .arg(shapes.top())));
+namespace {
+
+/// The pixels `g` paints, drawn over a transparent `frame` with a margin of 200 pixels all
+/// round: how many fall outside the frame, and how many outside g.bounds().
+std::pair<int, int> paintedOutside(const TransformGizmo& g, const QRect& frame) {
+    constexpr int kMargin = 200;
+    QImage image(frame.size() + QSize(2 * kMargin, 2 * kMargin), QImage::Format_ARGB32);
+    image.fill(Qt::transparent);
+    {
+        QPainter p(&image);
+        p.translate(kMargin - frame.left(), kMargin - frame.top());
+        g.paint(p, std::nullopt);
     }
-    // In the middle the rings keep their full size.
-    const TransformGizmo middle(projection, Vec3(0.0f), Mat3(1.0f));
-    QVERIFY(middle.bounds().height() >= 2 * TransformGizmo::kRingPx);
+    const QRectF bounds = g.bounds();
+    int outsideFrame = 0, outsideBounds = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            if (qAlpha(image.pixel(x, y)) == 0) continue;
+            // The pixel's square in widget coordinates.
+            const QRectF px(x - kMargin + frame.left(), y - kMargin + frame.top(), 1, 1);
+            outsideFrame += !QRectF(frame).contains(px);
+            outsideBounds += !bounds.contains(px);
+        }
+    return {outsideFrame, outsideBounds};
+}
+
+}  // namespace
+
+void UiLogicTest::gizmoRings_StayInsideTheFrame_NearItsEdge() {
+    // A 960 x 540 view, seen straight on and from two angles; pivots from the middle
+    // to 40 pixels from an edge. The whole gizmo stays inside, every handle drawn can be
+    // grabbed.
+    const QSize size(960, 540);
+    for (const Vec3 eye : {Vec3(0, 0, 5), Vec3(3, 3, 4), Vec3(-3, 2, 5)}) {
+        Camera view;
+        view.position = eye;
+        view.target = Vec3(0, 0, 0);
+        const ViewProjection projection(view, size, size, size);
+        const QRect frame = projection.imageRect();
+        QCOMPARE(frame, QRect(QPoint(0, 0), size));
+        const QPointF points[] = {{480, 270}, {480, 180}, {480, 125}, {480, 90}, {480, 40},
+                                  {60, 270},  {900, 270}, {480, 480}, {60, 60},  {900, 480}};
+        for (const QPointF& at : points) {
+            const QString where = QStringLiteral("pivot at (%1, %2), eye (%3, %4, %5)")
+                                      .arg(at.x())
+                                      .arg(at.y())
+                                      .arg(eye.x)
+                                      .arg(eye.y)
+                                      .arg(eye.z);
+            const Ray ray = projection.rayThrough(at);
+            // On the plane through the origin facing the camera.
+            const Vec3 n = glm::normalize(eye);
+            const Vec3 pivot =
+                ray.origin + ray.dir * (-glm::dot(ray.origin, n) / glm::dot(ray.dir, n));
+            const TransformGizmo g(projection, pivot, Mat3(1.0f));
+            QVERIFY2(g.valid(), qPrintable(where));
+            const auto [outsideFrame, outsideBounds] = paintedOutside(g, frame);
+            QVERIFY2(outsideFrame == 0,
+                     qPrintable(
+                         where +
+                         QStringLiteral(": %1 pixels drawn outside the frame").arg(outsideFrame)));
+            QVERIFY2(outsideBounds == 0,
+                     qPrintable(
+                         where +
+                         QStringLiteral(": %1 pixels drawn outside bounds()").arg(outsideBounds)));
+            QVERIFY2(QRectF(frame).contains(g.bounds()), qPrintable(where));
+            // Every handle drawn is grabbed somewhere (where grabPoint says), inside the frame.
+            // (Straight on, Z points along the ray from the view's centre: off the centre its
+            // short arrow lies on the X or Y arrow, as in any 3D tool. Drawn only.)
+            if (eye.x == 0.0f) continue;
+            int shown = 0;
+            for (int axis = 0; axis < 3; ++axis)
+                for (const GizmoHandle h : {GizmoHandle{TransformKind::Move, axis, false},
+                                            GizmoHandle{TransformKind::Move, axis, true},
+                                            GizmoHandle{TransformKind::Scale, axis, false},
+                                            GizmoHandle{TransformKind::Rotate, axis, false}}) {
+                    if (!g.shows(h)) continue;
+                    ++shown;
+                    const QString what =
+                        where + QStringLiteral(": handle %1/%2/%3 (kind/axis/plane)")
+                                    .arg(int(h.kind))
+                                    .arg(h.axis)
+                                    .arg(h.plane);
+                    const auto p = g.grabPoint(h);
+                    QVERIFY2(p, qPrintable(what + QStringLiteral(" is drawn, nothing grabs it")));
+                    const auto picked = g.handleAt(*p);
+                    QVERIFY2(picked && *picked == h, qPrintable(what));
+                    QVERIFY2(QRectF(frame).contains(*p), qPrintable(what));
+                }
+            // At least the arrows and boxes of two axes, a square and the three rings.
+            QVERIFY2(shown >= 8, qPrintable(where + QStringLiteral(": %1 handles").arg(shown)));
+        }
+        // In the middle the gizmo keeps its full size: rings of kRingPx.
+        const TransformGizmo middle(projection, Vec3(0.0f), Mat3(1.0f));
+        QCOMPARE(middle.scale(), 1.0);
+        // Straight on, the Z ring is a circle of that radius.
+        if (eye.x == 0.0f) QVERIFY(middle.bounds().height() >= 2 * TransformGizmo::kRingPx);
+    }
 }
 
 void UiLogicTest::sunGlyph_FromAFile_GoesUpstreamOfTheScene() {
