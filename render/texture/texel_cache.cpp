@@ -87,17 +87,36 @@ inline Float4 loadTexel(const float* p) {
     std::memcpy(&v, p, sizeof v);
     return v;
 }
-/// A 16-bit texel's channels as floats in [0, 65535].
-inline Float4 loadTexel(const std::uint16_t* p) {
-    using U16x4 = std::uint16_t __attribute__((vector_size(8)));
-    using I32x4 = std::int32_t __attribute__((vector_size(16)));
-    U16x4 v;
+
+using Float8 = float __attribute__((vector_size(32)));
+/// Two neighbouring texels of a row, (x, y) in lanes 0-3 and (x + 1, y) in lanes 4-7.
+/// (Out parameters: a 32-byte vector returned by value would change the ABI with AVX.)
+inline void loadPair(const float* p, Float8& v) {
     std::memcpy(&v, p, sizeof v);
-    return __builtin_convertvector(__builtin_convertvector(v, I32x4), Float4);
+}
+/// Two neighbouring 16-bit texels as floats in [0, 65535].
+inline void loadPair(const std::uint16_t* p, Float8& out) {
+    using U16x8 = std::uint16_t __attribute__((vector_size(16)));
+    using I32x8 = std::int32_t __attribute__((vector_size(32)));
+    U16x8 v;
+    std::memcpy(&v, p, sizeof v);
+    out = __builtin_convertvector(__builtin_convertvector(v, I32x8), Float8);
+}
+
+/// The bilinear blend of texels (x0, y0), (x1, y0) (`top`, lanes 0-3 and 4-7) and (x0, y1),
+/// (x1, y1) (`bottom`): down the columns by `ay`, then across by `ax`. Every path computes
+/// it this way, so whole levels and blocks give the same bits.
+inline Float4 blend(const Float8& top, const Float8& bottom, float ax, float ay) {
+    const Float8 columns = top + (bottom - top) * ay;
+    Float4 left, right;
+    std::memcpy(&left, &columns, sizeof left);
+    std::memcpy(&right, reinterpret_cast<const char*>(&columns) + sizeof left, sizeof right);
+    return left + (right - left) * ax;
 }
 
 /// One MIP level as a lookup reads it: whole in memory (as floats or, for textures in
-/// [0, 1], 16-bit fractions), or in blocks.
+/// [0, 1], 16-bit fractions; each row one texel longer than the level, repeating its first
+/// texel), or in blocks.
 struct Level {
     const void* whole = nullptr;
     bool sixteenBit = false;
@@ -115,73 +134,73 @@ Level levelOf(const TexelSource& source, int index) {
 }
 
 /// Where (s, t) falls among a level's texels: the columns and rows of the four around it
-/// and the weights of (x0, y0), (x1, y0), (x0, y1), (x1, y1); s (and t unless `clampT`)
-/// already wrapped into [0, 1].
+/// and the fractions across (ax) and down (ay); s (and t unless `clampT`) already wrapped
+/// into [0, 1].
 struct Footing {
     int x0, x1, y0, y1;
-    float w00, w10, w01, w11;
+    float ax, ay;
 };
 
-[[gnu::always_inline]] inline Footing footing(const Level& l, float s, float t, bool clampT) {
-    const int w = l.w, h = l.h;
+template <bool ClampT>
+[[gnu::always_inline]] inline Footing footing(int w, int h, float s, float t) {
     const float x = s * float(w) - 0.5f, y = t * float(h) - 0.5f;
     // x >= -0.5 and y clamped to [-1, h]: truncation after adding one floors them.
     const int ix = int(x + 1.0f) - 1, iy = int(std::clamp(y, -1.0f, float(h)) + 1.0f) - 1;
-    const float ax = x - float(ix), ay = y - float(iy);
     Footing f;
+    f.ax = x - float(ix), f.ay = y - float(iy);
     // ix is in [-1, w - 1] for s in [0, 1]: the texel left of the first is the last.
     f.x0 = ix < 0 ? w - 1 : std::min(ix, w - 1);
     f.x1 = f.x0 + 1 == w ? 0 : f.x0 + 1;
-    if (clampT) {
+    if (ClampT) {
         f.y0 = std::clamp(iy, 0, h - 1);
         f.y1 = std::clamp(iy + 1, 0, h - 1);
     } else {
         f.y0 = iy < 0 ? h - 1 : std::min(iy, h - 1);
         f.y1 = f.y0 + 1 == h ? 0 : f.y0 + 1;
     }
-    f.w11 = ax * ay, f.w01 = ay - f.w11, f.w10 = ax - f.w11;
-    f.w00 = 1.0f - ax - f.w01;
     return f;
 }
 
-template <class T, int Stride>
-inline Float4 bilinearWhole(const T* whole, int w, const Footing& f) {
-    const T* row0 = whole + std::size_t(f.y0) * std::size_t(w) * Stride;
-    const T* row1 = whole + std::size_t(f.y1) * std::size_t(w) * Stride;
-    return loadTexel(row0 + f.x0 * Stride) * f.w00 + loadTexel(row0 + f.x1 * Stride) * f.w10 +
-           loadTexel(row1 + f.x0 * Stride) * f.w01 + loadTexel(row1 + f.x1 * Stride) * f.w11;
+/// A whole level's texels as the filter reads them: rows of w + 1 texels (the last repeats
+/// the first, so a texel's right neighbour always lies next to it in memory).
+template <class T>
+struct Whole {
+    const T* texels;
+    int w, h;
+};
+
+template <class T, bool ClampT>
+[[gnu::always_inline]] inline Float4 bilinearWhole(const Whole<T>& l, float s, float t) {
+    const Footing f = footing<ClampT>(l.w, l.h, s, t);
+    const std::size_t stride = std::size_t(l.w + 1) * 4;
+    const T* column = l.texels + std::size_t(f.x0) * 4;
+    Float8 top, bottom;
+    loadPair(column + std::size_t(f.y0) * stride, top);
+    loadPair(column + std::size_t(f.y1) * stride, bottom);
+    return blend(top, bottom, f.ax, f.ay);
 }
 
-/// Bilinear interpolation of the four texels around (s, t) at one level; false when a block
-/// could not be fetched.
-[[gnu::always_inline]] inline bool bilinear(const TexelSource& source, const Level& l, float s,
-                                            float t, bool clampT, Float4& out) {
-    const Footing f = footing(l, s, t, clampT);
-    if (l.whole) {
-        if (l.sixteenBit) {
-            out = bilinearWhole<std::uint16_t, 4>(static_cast<const std::uint16_t*>(l.whole), l.w,
-                                                  f) *
-                  (1.0f / 65535.0f);
-        } else {
-            out = bilinearWhole<float, 4>(static_cast<const float*>(l.whole), l.w, f);
-        }
-        return true;
-    }
+/// Bilinear interpolation of the four texels around (s, t) at a level read in blocks; false
+/// when a block could not be fetched.
+template <bool ClampT>
+bool bilinearBlocks(const TexelSource& source, const Level& l, float s, float t, Float4& out) {
+    const Footing f = footing<ClampT>(l.w, l.h, s, t);
     BlockTable& blocks = table();
     const Block* last = nullptr;
     const int xs[2] = {f.x0, f.x1}, ys[2] = {f.y0, f.y1};
-    const float weights[4] = {f.w00, f.w10, f.w01, f.w11};
-    Float4 sum = {0.0f, 0.0f, 0.0f, 0.0f};
+    Float4 texel[4];
     for (int k = 0; k < 4; ++k) {
         const int tx = xs[k & 1], ty = ys[k >> 1];
         if (!last || last->bx != tx >> kBlockBits || last->by != ty >> kBlockBits) {
             last = blocks.find(source, l.index, tx, ty);
             if (!last) return false;
         }
-        sum += loadTexel(last->texels + ((ty & kBlockMask) * kBlock + (tx & kBlockMask)) * 4) *
-               weights[k];
+        texel[k] = loadTexel(last->texels + ((ty & kBlockMask) * kBlock + (tx & kBlockMask)) * 4);
     }
-    out = sum;
+    Float8 top, bottom;
+    std::memcpy(&top, &texel[0], sizeof top);
+    std::memcpy(&bottom, &texel[2], sizeof bottom);
+    out = blend(top, bottom, f.ax, f.ay);
     return true;
 }
 
@@ -216,15 +235,126 @@ LevelPair levelsFor(const TexelSource& source, float width) {
     return {fine, fine >= last ? 0.0f : lod - float(fine)};
 }
 
-/// Trilinear: `fine` and, weighted `blend`, `coarse`.
-[[gnu::always_inline]] inline bool trilinear(const TexelSource& source, const Level& fine,
-                                             const Level& coarse, float blend, float s, float t,
-                                             bool clampT, Float4& out) {
-    if (!bilinear(source, fine, s, t, clampT, out)) return false;
-    if (blend <= 0.0f) return true;
-    Float4 c;
-    if (!bilinear(source, coarse, s, t, clampT, c)) return false;
-    out += (c - out) * blend;
+/// Where the samples of one lookup lie: `samples` points spread evenly along (ms, mt) about
+/// (s, t), each read trilinearly at `fine` and, weighted `blend`, the next coarser level.
+struct Spread {
+    float s, t, ms, mt, blend;
+    int samples;
+};
+
+template <bool ClampT>
+[[gnu::always_inline]] inline void samplePoint(const Spread& a, int i, float step, float& s,
+                                               float& t) {
+    const float k = (float(i) + 0.5f) * step - 0.5f;
+    s = wrapped(a.s + a.ms * k);
+    t = ClampT ? a.t + a.mt * k : wrapped(a.t + a.mt * k);
+}
+
+using Int4 = std::int32_t __attribute__((vector_size(16)));
+
+/// floor(x) lane by lane, for |x| < 2^31.
+inline Float4 floorLanes(const Float4& x) {
+    const Float4 t = __builtin_convertvector(__builtin_convertvector(x, Int4), Float4);
+    return t > x ? t - 1.0f : t;
+}
+
+/// The filter over two whole levels: no call and no lock, only loads. The bilinear samples
+/// of a lookup (each sample point at the fine level and, when `blend` > 0, the coarse one)
+/// find their texels four at a time in vector lanes; each is then two loads of two texels.
+template <class T, bool ClampT>
+Float4 filterWhole(const Whole<T>& fine, const Whole<T>& coarse, const Spread& a, float scale) {
+    // One point (the lanes would be half empty), or points this far out (they would overflow
+    // the lanes' integer conversion): one at a time.
+    if (a.samples == 1 || !(std::abs(a.ms) < 1e6f && std::abs(a.mt) < 1e6f)) {
+        const float step = 1.0f / float(a.samples);
+        Float4 sum = {0.0f, 0.0f, 0.0f, 0.0f};
+        for (int i = 0; i < a.samples; ++i) {
+            float s = a.s, t = a.t;
+            if (a.samples > 1) samplePoint<ClampT>(a, i, step, s, t);
+            Float4 c = bilinearWhole<T, ClampT>(fine, s, t);
+            if (a.blend > 0.0f) c += (bilinearWhole<T, ClampT>(coarse, s, t) - c) * a.blend;
+            sum += c;
+        }
+        return sum * (step * scale);
+    }
+    const bool both = a.blend > 0.0f;
+    const int lanes = a.samples * (both ? 2 : 1);
+    const float step = 1.0f / float(a.samples);
+    // Lane l of a group of four: sample l (one level), or sample l / 2 at level l % 2.
+    const Int4 odd = both ? Int4{0, -1, 0, -1} : Int4{0, 0, 0, 0};
+    const Float4 laneSample =
+        both ? Float4{0.0f, 0.0f, 1.0f, 1.0f} : Float4{0.0f, 1.0f, 2.0f, 3.0f};
+    const float groupSamples = both ? 2.0f : 4.0f;
+    const Float4 fw = odd ? float(coarse.w) : float(fine.w);
+    const Float4 fh = odd ? float(coarse.h) : float(fine.h);
+    const Int4 w = odd ? coarse.w : fine.w, h = odd ? coarse.h : fine.h;
+    const float fineWeight = (both ? 1.0f - a.blend : 1.0f) * step * scale;
+    const float coarseWeight = a.blend * step * scale;
+    const T* base[2] = {fine.texels, coarse.texels};
+    const std::size_t stride[2] = {std::size_t(fine.w + 1) * 4, std::size_t(coarse.w + 1) * 4};
+    Float4 sum = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (int first = 0; first < lanes; first += 4) {
+        const Float4 k = (laneSample + (float(first) / 4.0f * groupSamples + 0.5f)) * step - 0.5f;
+        Float4 s = a.s + a.ms * k, t = a.t + a.mt * k;
+        s -= floorLanes(s);
+        if (!ClampT) t -= floorLanes(t);
+        const Float4 x = s * fw - 0.5f, y = t * fh - 0.5f;
+        const Float4 yc = y < -1.0f ? Float4{} - 1.0f : (y > fh ? fh : y);
+        const Int4 ix = __builtin_convertvector(x + 1.0f, Int4) - 1;
+        const Int4 iy = __builtin_convertvector(yc + 1.0f, Int4) - 1;
+        const Float4 ax = x - __builtin_convertvector(ix, Float4);
+        const Float4 ay = y - __builtin_convertvector(iy, Float4);
+        const Int4 x0 = ix < 0 ? w - 1 : (ix < w - 1 ? ix : w - 1);
+        Int4 y0, y1;
+        if (ClampT) {
+            const Int4 below = iy + 1;
+            y0 = iy < 0 ? Int4{} : (iy < h - 1 ? iy : h - 1);
+            y1 = below < 0 ? Int4{} : (below < h - 1 ? below : h - 1);
+        } else {
+            y0 = iy < 0 ? h - 1 : (iy < h - 1 ? iy : h - 1);
+            y1 = y0 + 1 == h ? Int4{} : y0 + 1;
+        }
+        const int count = std::min(4, lanes - first);
+        for (int l = 0; l < count; ++l) {
+            const int level = odd[l] ? 1 : 0;
+            const T* column = base[level] + std::size_t(x0[l]) * 4;
+            Float8 top, bottom;
+            loadPair(column + std::size_t(y0[l]) * stride[level], top);
+            loadPair(column + std::size_t(y1[l]) * stride[level], bottom);
+            sum += blend(top, bottom, ax[l], ay[l]) * (level ? coarseWeight : fineWeight);
+        }
+    }
+    return sum;
+}
+
+/// The same filter where a level is read in blocks (or only one of the two is whole).
+template <bool ClampT>
+bool filterBlocks(const TexelSource& source, const Level& fine, const Level& coarse,
+                  const Spread& a, Float4& out) {
+    const auto bilinear = [&](const Level& l, float s, float t, Float4& c) {
+        if (!l.whole) return bilinearBlocks<ClampT>(source, l, s, t, c);
+        if (l.sixteenBit)
+            c = bilinearWhole<std::uint16_t, ClampT>(
+                    {static_cast<const std::uint16_t*>(l.whole), l.w, l.h}, s, t) *
+                (1.0f / 65535.0f);
+        else
+            c = bilinearWhole<float, ClampT>({static_cast<const float*>(l.whole), l.w, l.h}, s, t);
+        return true;
+    };
+    const float step = a.samples == 1 ? 1.0f : 1.0f / float(a.samples);
+    Float4 sum = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (int i = 0; i < a.samples; ++i) {
+        float s = a.s, t = a.t;
+        if (a.samples > 1) samplePoint<ClampT>(a, i, step, s, t);
+        Float4 c, d;
+        if (!bilinear(fine, s, t, c)) return false;
+        if (a.blend > 0.0f) {
+            if (!bilinear(coarse, s, t, d)) return false;
+            c += (d - c) * a.blend;
+        }
+        sum += c;
+    }
+    out = a.samples == 1 ? sum : sum * step;
     return true;
 }
 
@@ -240,10 +370,11 @@ const void* TexelSource::residentLevel(int level) const {
     if (now == kRefused) return nullptr;
     std::lock_guard lock(mutex_);
     if (state.load(std::memory_order_relaxed) == kUntried) {
-        const std::size_t texels =
-            std::size_t(width[std::size_t(level)]) * std::size_t(height[std::size_t(level)]);
+        const std::size_t w = std::size_t(width[std::size_t(level)]);
+        const std::size_t h = std::size_t(height[std::size_t(level)]);
+        const std::size_t texels = w * h;
         const std::size_t texelBytes = unitRange ? 4 * sizeof(std::uint16_t) : 4 * sizeof(float);
-        const std::size_t bytes = texels * texelBytes;
+        const std::size_t bytes = (w + 1) * h * texelBytes;  // each row's first texel twice
         std::size_t spent = residentBytes.load();
         bool granted = false;
         while (texels <= kMaxResidentTexels && spent + bytes <= residentBudget.load() &&
@@ -254,17 +385,18 @@ const void* TexelSource::residentLevel(int level) const {
             if (fetch(level, 0, width[std::size_t(level)], 0, height[std::size_t(level)],
                       rgb.get())) {
                 std::unique_ptr<unsigned char[]> kept(new unsigned char[bytes]);
-                for (std::size_t i = 0; i < texels; ++i) {
+                for (std::size_t k = 0; k < (w + 1) * h; ++k) {
+                    const std::size_t i = k / (w + 1) * w + k % (w + 1) % w;  // source texel
                     if (unitRange) {
                         std::uint16_t q[4] = {0, 0, 0, 0};
                         for (int c = 0; c < 3; ++c)
                             q[c] = std::uint16_t(
                                 std::clamp(rgb[3 * i + std::size_t(c)], 0.0f, 1.0f) * 65535.0f +
                                 0.5f);
-                        std::memcpy(kept.get() + i * texelBytes, q, sizeof q);
+                        std::memcpy(kept.get() + k * texelBytes, q, sizeof q);
                     } else {
                         const float f[4] = {rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2], 0.0f};
-                        std::memcpy(kept.get() + i * texelBytes, f, sizeof f);
+                        std::memcpy(kept.get() + k * texelBytes, f, sizeof f);
                     }
                 }
                 whole_[std::size_t(level)] = std::move(kept);
@@ -304,22 +436,30 @@ bool filteredLookup(const TexelSource& source, float s, float t, float dsdx, flo
     }
     const Level fine = levelOf(source, levels.fine);
     const Level coarse = levels.blend > 0.0f ? levelOf(source, levels.fine + 1) : fine;
+    Spread spread{s, t, 0.0f, 0.0f, levels.blend, samples};
+    if (samples > 1) {
+        spread.ms = xMajor ? dsdx : dsdy;
+        spread.mt = xMajor ? dtdx : dtdy;
+    }
     Float4 sum;
-    if (samples == 1) {
-        if (!trilinear(source, fine, coarse, levels.blend, s, t, clampT, sum)) return false;
-    } else {
-        const float ms = xMajor ? dsdx : dsdy, mt = xMajor ? dtdx : dtdy;
-        sum = Float4{0.0f, 0.0f, 0.0f, 0.0f};
-        for (int i = 0; i < samples; ++i) {
-            const float k = (float(i) + 0.5f) / float(samples) - 0.5f;
-            float ss = s + ms * k, tt = t + mt * k;
-            ss = wrapped(ss);
-            if (!clampT) tt = wrapped(tt);
-            Float4 c;
-            if (!trilinear(source, fine, coarse, levels.blend, ss, tt, clampT, c)) return false;
-            sum += c;
+    if (fine.whole && coarse.whole) {
+        if (fine.sixteenBit) {
+            using W = Whole<std::uint16_t>;
+            const W f{static_cast<const std::uint16_t*>(fine.whole), fine.w, fine.h};
+            const W c{static_cast<const std::uint16_t*>(coarse.whole), coarse.w, coarse.h};
+            constexpr float kScale = 1.0f / 65535.0f;
+            sum = clampT ? filterWhole<std::uint16_t, true>(f, c, spread, kScale)
+                         : filterWhole<std::uint16_t, false>(f, c, spread, kScale);
+        } else {
+            using W = Whole<float>;
+            const W f{static_cast<const float*>(fine.whole), fine.w, fine.h};
+            const W c{static_cast<const float*>(coarse.whole), coarse.w, coarse.h};
+            sum = clampT ? filterWhole<float, true>(f, c, spread, 1.0f)
+                         : filterWhole<float, false>(f, c, spread, 1.0f);
         }
-        sum *= 1.0f / float(samples);
+    } else if (!(clampT ? filterBlocks<true>(source, fine, coarse, spread, sum)
+                        : filterBlocks<false>(source, fine, coarse, spread, sum))) {
+        return false;
     }
     out = Color(sum[0], sum[1], sum[2]);
     return true;
