@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "core/fast_angles.h"
+
 namespace rs {
 
 namespace {
@@ -21,11 +23,10 @@ ShapeUV sphereUV(const Vec3& p, const Vec3& center, float radius) {
         return uv;
     }
     const float rho = std::sqrt(rhoSquared);
-    const float length = std::sqrt(lengthSquared);
     if (rhoSquared > 0.0f) {
         // acos(x / rho), mirrored for z < 0: atan2 gives the same angle without the acos's
         // loss of precision near +-X.
-        float phi = std::atan2(d.z, d.x);
+        float phi = atan2Polynomial(d.z, d.x);
         if (phi < 0.0f) phi += kTwoPi;
         float u = phi / kTwoPi;
         if (u >= 1.0f) u = 0.0f;  // -0 and rounding just below the seam
@@ -33,8 +34,8 @@ ShapeUV sphereUV(const Vec3& p, const Vec3& center, float radius) {
         uv.dudp = Vec3(-d.z, 0.0f, d.x) / (kTwoPi * rhoSquared);
         uv.dvdp = Vec3(-d.y * d.x / rho, rho, -d.y * d.z / rho) / (kPi * lengthSquared);
     }
-    const float sine = std::clamp(d.y / length, -1.0f, 1.0f);
-    uv.v = 0.5f + std::asin(sine) / kPi;
+    // asin(dy / |d|) is atan2(dy, rho).
+    uv.v = 0.5f + atan2Polynomial(d.y, rho) / kPi;
     return uv;
 }
 

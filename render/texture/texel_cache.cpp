@@ -363,11 +363,8 @@ void setResidentTexelBudget(std::size_t bytes) {
     residentBudget.store(bytes);
 }
 
-const void* TexelSource::residentLevel(int level) const {
+const void* TexelSource::decideResident(int level) const {
     auto& state = state_[std::size_t(level)];
-    const unsigned char now = state.load(std::memory_order_acquire);
-    if (now == kResident) return whole_[std::size_t(level)].get();
-    if (now == kRefused) return nullptr;
     std::lock_guard lock(mutex_);
     if (state.load(std::memory_order_relaxed) == kUntried) {
         const std::size_t w = std::size_t(width[std::size_t(level)]);

@@ -36,9 +36,17 @@ public:
     /// Level `level` whole, when it is small enough and the budget allows (see
     /// filteredLookup), fetched on the first call; else null. Texels in four lanes (RGB and a
     /// spare), row by row: floats, or 16-bit fractions of 65535 when `unitRange`.
-    const void* residentLevel(int level) const;
+    const void* residentLevel(int level) const {
+        // Once decided, a level is read without a call (this runs twice a lookup).
+        const unsigned char now = state_[std::size_t(level)].load(std::memory_order_acquire);
+        if (now == kResident) return whole_[std::size_t(level)].get();
+        return now == kRefused ? nullptr : decideResident(level);
+    }
 
 private:
+    /// The first call for `level`: fetches it whole if it fits, under the lock.
+    const void* decideResident(int level) const;
+
     enum : unsigned char { kUntried, kResident, kRefused };
     mutable std::array<std::atomic<unsigned char>, kMaxMipLevels> state_{};
     mutable std::array<std::unique_ptr<unsigned char[]>, kMaxMipLevels> whole_;

@@ -14,6 +14,7 @@
 #include <memory>
 #include <mutex>
 
+#include "core/fast_angles.h"
 #include "io/input_file.h"
 #include "texture/srgb_input.h"
 #include "texture/texel_cache.h"
@@ -52,26 +53,6 @@ TextureSystem::Perthread* perthreadOf(TextureSystem* system) {
         owner = system;
     }
     return info;
-}
-
-/// atan2(y, x) in [-pi, pi] without a library call (the sky's two angles took a tenth of
-/// the classic scene's pattern cost): the octant's ratio in [0, 1] through Abramowitz and
-/// Stegun's 4.4.49 polynomial, within 2e-8 radians (a 16k-wide sky's texel is 4e-4).
-inline float atan2Polynomial(float y, float x) {
-    const float ax = std::abs(x), ay = std::abs(y);
-    const float big = std::max(ax, ay), small = std::min(ax, ay);
-    if (!(big > 0.0f)) return 0.0f;
-    const float a = small / big, q = a * a;
-    float r = -0.0040540580f * q + 0.0218612288f;
-    r = r * q - 0.0559098861f;
-    r = r * q + 0.0964200441f;
-    r = r * q - 0.1390853351f;
-    r = r * q + 0.1994653599f;
-    r = r * q - 0.3332985605f;
-    r = (r * q + 0.9999993329f) * a;
-    if (ay > ax) r = 0.5f * kPi - r;
-    if (x < 0.0f) r = kPi - r;
-    return y < 0.0f ? -r : r;
 }
 
 /// One version of an open file's MIP pyramid, read through the TextureSystem: its tile
