@@ -417,19 +417,27 @@ bool filteredLookup(const TexelSource& source, float s, float t, float dsdx, flo
     // and a level is chosen where half of it covers a texel (as OpenImageIO does).
     const float w0 = 0.5f * float(source.width[0]), h0 = 0.5f * float(source.height[0]);
     const float xs = dsdx * w0, xt = dtdx * h0, ys = dsdy * w0, yt = dtdy * h0;
-    const float lenX = std::sqrt(xs * xs + xt * xt), lenY = std::sqrt(ys * ys + yt * yt);
-    const bool xMajor = lenX >= lenY;
-    const float major = xMajor ? lenX : lenY, minor = xMajor ? lenY : lenX;
-    LevelPair levels{source.levels - 1, 0.0f};  // inf, NaN: the image's mean
+    const float squareX = xs * xs + xt * xt, squareY = ys * ys + yt * yt;
+    // Both half-axes within half a texel (most sky lookups): the finest level, one sample,
+    // as the general choice below would make, without its square roots and logarithm.
+    LevelPair levels{0, 0.0f};
     int samples = 1;
-    if (major < 1e30f) {
-        // Each sample filters over `width`; enough of them line the long axis.
-        const float width = std::max(minor, major / float(kMaxAnisotropy));
-        levels = levelsFor(source, width);
-        // Within half a texel of the centre the footprint magnifies: bilinear interpolation
-        // alone is the filter, and samples along it would differ by less than a texel.
-        if (width > 0.0f && major > kMagnifyingHalfAxis)
-            samples = std::clamp(int(major / width + 0.5f), 1, kMaxAnisotropy);
+    bool xMajor = true;
+    if (!(squareX <= 0.25f && squareY <= 0.25f)) {
+        const float lenX = std::sqrt(squareX), lenY = std::sqrt(squareY);
+        xMajor = lenX >= lenY;
+        const float major = xMajor ? lenX : lenY, minor = xMajor ? lenY : lenX;
+        levels = {source.levels - 1, 0.0f};  // inf, NaN: the image's mean
+        if (major < 1e30f) {
+            // Each sample filters over `width`; enough of them line the long axis.
+            const float width = std::max(minor, major / float(kMaxAnisotropy));
+            levels = levelsFor(source, width);
+            // Within half a texel of the centre the footprint magnifies: bilinear
+            // interpolation alone is the filter, and samples along it would differ by less
+            // than a texel.
+            if (width > 0.0f && major > kMagnifyingHalfAxis)
+                samples = std::clamp(int(major / width + 0.5f), 1, kMaxAnisotropy);
+        }
     }
     const Level fine = levelOf(source, levels.fine);
     const Level coarse = levels.blend > 0.0f ? levelOf(source, levels.fine + 1) : fine;

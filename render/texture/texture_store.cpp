@@ -257,19 +257,22 @@ Color TextureStore::lookup(const TextureHandle& texture, float s, float t, float
 
 Color TextureStore::environment(const TextureHandle& texture, const Vec3& d, float rotationDegrees,
                                 float coneAngle) const {
-    const float length = glm::length(d);
-    const Vec3 n = length > 0.0f ? d / length : Vec3(0.0f, 1.0f, 0.0f);
-    const float rho = std::sqrt(n.x * n.x + n.z * n.z);
-    float phi = rho > 0.0f ? atan2Polynomial(n.z, n.x) : 0.0f;
+    // Both angles are atan2s, which need no unit vector: |d| enters only the cone's width
+    // in s. (A zero or NaN direction looks straight up.)
+    float x = d.x, y = d.y, z = d.z;
+    float rho = std::sqrt(x * x + z * z);
+    float length = std::sqrt(rho * rho + y * y);
+    if (!(length > 0.0f)) x = 0.0f, y = 1.0f, z = 0.0f, rho = 0.0f, length = 1.0f;
+    constexpr float kInverseTwoPi = 1.0f / kTwoPi, kInversePi = 1.0f / kPi;
+    float phi = rho > 0.0f ? atan2Polynomial(z, x) : 0.0f;
     if (phi < 0.0f) phi += kTwoPi;
-    float s = phi / kTwoPi + rotationDegrees / 360.0f;
+    float s = phi * kInverseTwoPi + rotationDegrees * (1.0f / 360.0f);
     s -= floorInline(s);
-    // asin(y) of a unit vector is atan2(y, sqrt(x^2 + z^2)).
-    const float v = 0.5f + atan2Polynomial(std::clamp(n.y, -1.0f, 1.0f), rho) / kPi;
-    const float t = 1.0f - v;
+    // asin(y / |d|) is atan2(y, rho).
+    const float t = 0.5f - atan2Polynomial(y, rho) * kInversePi;
     const float cone = std::max(coneAngle, 0.0f);
-    const float dt = cone / kPi;
-    const float ds = std::min(cone / (kTwoPi * std::max(rho, 1e-6f)), 1.0f);
+    const float dt = cone * kInversePi;
+    const float ds = std::min(cone * length / (kTwoPi * std::max(rho, 1e-6f * length)), 1.0f);
     Color c;
     if (!texture.texels ||
         !filteredLookup(*texture.texels, s, t, ds, 0.0f, 0.0f, dt, /*clampT=*/true, c))
