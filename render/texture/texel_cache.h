@@ -35,7 +35,9 @@ public:
 
     /// Level `level` whole, when it is small enough and the budget allows (see
     /// filteredLookup), fetched on the first call; else null. Texels in four lanes (RGB and a
-    /// spare), row by row: floats, or 16-bit fractions of 65535 when `unitRange`.
+    /// spare), row by row, each row width + 1 texels long (its first texel again at the end,
+    /// so a texel's right neighbour is always next to it): floats, or 16-bit fractions of
+    /// 65535 when `unitRange`.
     const void* residentLevel(int level) const {
         // Once decided, a level is read without a call (this runs twice a lookup).
         const unsigned char now = state_[std::size_t(level)].load(std::memory_order_acquire);
