@@ -439,32 +439,39 @@ bool filteredLookup(const TexelSource& source, float s, float t, float dsdx, flo
                 samples = std::clamp(int(major / width + 0.5f), 1, kMaxAnisotropy);
         }
     }
-    const Level fine = levelOf(source, levels.fine);
-    const Level coarse = levels.blend > 0.0f ? levelOf(source, levels.fine + 1) : fine;
     Spread spread{s, t, 0.0f, 0.0f, levels.blend, samples};
     if (samples > 1) {
         spread.ms = xMajor ? dsdx : dsdy;
         spread.mt = xMajor ? dtdx : dtdy;
     }
+    // The levels as scalars, not as Level records: a record chosen by a condition was
+    // assembled on the stack and read back whole, a store-forwarding stall a lookup.
+    const int fi = levels.fine, ci = levels.blend > 0.0f ? levels.fine + 1 : levels.fine;
+    const void* fineWhole = source.residentLevel(fi);
+    const void* coarseWhole = ci == fi ? fineWhole : source.residentLevel(ci);
+    const int fw = source.width[std::size_t(fi)], fh = source.height[std::size_t(fi)];
+    const int cw = source.width[std::size_t(ci)], ch = source.height[std::size_t(ci)];
     Float4 sum;
-    if (fine.whole && coarse.whole) {
-        if (fine.sixteenBit) {
+    if (fineWhole && coarseWhole) {
+        if (source.unitRange) {
             using W = Whole<std::uint16_t>;
-            const W f{static_cast<const std::uint16_t*>(fine.whole), fine.w, fine.h};
-            const W c{static_cast<const std::uint16_t*>(coarse.whole), coarse.w, coarse.h};
+            const W f{static_cast<const std::uint16_t*>(fineWhole), fw, fh};
+            const W c{static_cast<const std::uint16_t*>(coarseWhole), cw, ch};
             constexpr float kScale = 1.0f / 65535.0f;
             sum = clampT ? filterWhole<std::uint16_t, true>(f, c, spread, kScale)
                          : filterWhole<std::uint16_t, false>(f, c, spread, kScale);
         } else {
             using W = Whole<float>;
-            const W f{static_cast<const float*>(fine.whole), fine.w, fine.h};
-            const W c{static_cast<const float*>(coarse.whole), coarse.w, coarse.h};
+            const W f{static_cast<const float*>(fineWhole), fw, fh};
+            const W c{static_cast<const float*>(coarseWhole), cw, ch};
             sum = clampT ? filterWhole<float, true>(f, c, spread, 1.0f)
                          : filterWhole<float, false>(f, c, spread, 1.0f);
         }
-    } else if (!(clampT ? filterBlocks<true>(source, fine, coarse, spread, sum)
-                        : filterBlocks<false>(source, fine, coarse, spread, sum))) {
-        return false;
+    } else {
+        const Level fine = levelOf(source, fi), coarse = levelOf(source, ci);
+        if (!(clampT ? filterBlocks<true>(source, fine, coarse, spread, sum)
+                     : filterBlocks<false>(source, fine, coarse, spread, sum)))
+            return false;
     }
     out = Color(sum[0], sum[1], sum[2]);
     return true;
