@@ -152,22 +152,6 @@ void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, 
     }
 }
 
-namespace {
-template <class T>
-void adoptBuffer(LargeVector<T>& mine, LargeVector<T>& room) {
-    if (room.capacity() <= mine.capacity()) return;
-    room.assign(mine.begin(), mine.end());  // Within its capacity: no new allocation.
-    mine.swap(room);
-}
-}  // namespace
-
-void DisplayFrame::adopt(FrameStorage&& s) {
-    adoptBuffer(color, s.color);
-    adoptBuffer(id, s.id);
-    adoptBuffer(depth, s.depth);
-    adoptBuffer(flags, s.flags);
-}
-
 bool DisplayFrame::changedSince(uint64_t seen, std::vector<QRect>& rects) const {
     rects.clear();
     if (seen < damageFloor) return false;

@@ -25,18 +25,16 @@ bool showsDebugBuffers(ViewMode mode);
 
 /// The buffers the viewport needs, copied out under the frame lock. The controller keeps one
 /// and refreshes it in place, rectangle by rectangle; `damage` tells views what changed.
-/// Colour, ids (picking, the outline), depth (picking, orbit pivots) and flags are always
-/// there; normals and costs only with `debugBuffers`, else empty: an orbit changes every
-/// pixel, and copying buffers no view shows was 16 of every 37 bytes a pixel handed over.
-struct DisplayFrame {
+/// The FrameBuffers (colour, ids, depth, flags) are always there; normals and costs only with
+/// `debugBuffers`, else empty: an orbit changes every pixel, and copying buffers no view shows
+/// was 16 of every 37 bytes a pixel handed over. FrameBuffers::adopt moves the frame into
+/// storage made off the GUI thread before a frame of a new size comes (content and serial
+/// stay).
+struct DisplayFrame : FrameBuffers {
     int width = 0;
     int height = 0;
-    LargeVector<Color> color;
-    LargeVector<ObjectId> id;
     LargeVector<Vec3> normal;
-    LargeVector<float> depth;
     LargeVector<uint32_t> cost;
-    LargeVector<uint8_t> flags;
     ToneMap tonemap = ToneMap::Clamp;
     float exposure = 0.0f;
     uint64_t generation = 0;  ///< Newest edit whose traced pixels this frame holds.
@@ -68,10 +66,6 @@ struct DisplayFrame {
     /// pixel, changed by edits outside any tile) is copied whole when `allFlags`. Call with the
     /// frame lock held.
     void refresh(const DeepFrame& f, const std::vector<QRect>& rects, bool allFlags);
-    /// Moves the frame into `s` where `s` has more room than the frame's own buffers, so a
-    /// frame of a new size up to `s.pixels` is copied into memory already written once. The
-    /// content and the serial stay.
-    void adopt(FrameStorage&& s);
     /// The rectangles that changed after `seen`, or false when that serial is too old to say.
     bool changedSince(uint64_t seen, std::vector<QRect>& rects) const;
 };

@@ -7,6 +7,22 @@
 
 namespace rs::ui {
 
+namespace {
+template <class T>
+void adoptBuffer(LargeVector<T>& mine, LargeVector<T>& room) {
+    if (room.capacity() <= mine.capacity()) return;
+    room.assign(mine.begin(), mine.end());  // Within its capacity: no new allocation.
+    mine.swap(room);
+}
+}  // namespace
+
+void FrameBuffers::adopt(FrameBuffers&& room) {
+    adoptBuffer(color, room.color);
+    adoptBuffer(id, room.id);
+    adoptBuffer(depth, room.depth);
+    adoptBuffer(flags, room.flags);
+}
+
 FrameStorage touchedStorage(std::size_t pixels) {
     FrameStorage s;
     s.pixels = pixels;

@@ -10,14 +10,22 @@
 
 namespace rs::ui {
 
-/// Storage for the buffers a DisplayFrame always holds (colour, ids, depth, flags), each with
-/// room for `pixels` and every page of it already written once.
-struct FrameStorage {
-    std::size_t pixels = 0;
+/// The per-pixel buffers a DisplayFrame always holds: colour, ids (picking, the outline),
+/// depth (picking, orbit pivots) and flags. Listed here once; DisplayFrame is made of them.
+struct FrameBuffers {
     LargeVector<Color> color;
     LargeVector<ObjectId> id;
     LargeVector<float> depth;
     LargeVector<uint8_t> flags;
+
+    /// Moves each buffer into `room`'s where that has more capacity, keeping the content, so a
+    /// frame of a new size up to that capacity is later copied into memory already written.
+    void adopt(FrameBuffers&& room);
+};
+
+/// FrameBuffers with room for `pixels` each, every page of them already written once.
+struct FrameStorage : FrameBuffers {
+    std::size_t pixels = 0;
 };
 
 /// Allocates and writes a FrameStorage for `pixels` (any thread). The first write to a fresh
