@@ -2,6 +2,8 @@
 #pragma once
 
 #include <QCoreApplication>
+#include <QFileInfo>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QString>
 #include <QTest>
@@ -21,7 +23,12 @@ namespace rs::ui::test {
 inline void isolateSettings() {
     QStandardPaths::setTestModeEnabled(true);
     QCoreApplication::setOrganizationName(QStringLiteral("RayStudioTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("RayStudioGuiTests"));
+    // One settings file per test program, emptied when it starts: the programs ran with what
+    // others left (a saved window geometry, the OpenGL display) and, under ctest -j, beside
+    // them. Settings still carry over between the cases of one program, as in the designer.
+    const QString program = QFileInfo(QCoreApplication::applicationFilePath()).baseName();
+    QCoreApplication::setApplicationName(QStringLiteral("RayStudioGuiTests-") + program);
+    QSettings().clear();
 }
 
 inline QString scenePath(const char* name) {
