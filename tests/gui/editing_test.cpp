@@ -428,15 +428,19 @@ void EditingTest::ctrlWhileMoving_SnapsToTheGrid() {
     const QPoint c = view.project(centre)->toPoint();
     const QPointF e = screenDirection(view, centre, x);
     const auto along = [&](double pixels) { return c + (pixels * e).toPoint(); };
-    QTest::mouseMove(v, c);
-    // G measures from QCursor::pos(). Under xcb QTest::mouseMove warps the real pointer, which
-    // a busy machine had not done yet when G came: the move started where the click was.
-    QTRY_COMPARE(QCursor::pos(), v->mapToGlobal(c));
+    // G measures from QCursor::pos(). Under xcb QTest::mouseMove warps the real pointer
+    // asynchronously, to where the window was when it asked (a window still being placed
+    // moves after): the move started elsewhere. Warp until the viewport sees the pointer at c.
+    const auto pointerAt = [v](QPoint p) {
+        QTest::mouseMove(v, p);
+        return v->mapFromGlobal(QCursor::pos()) == p;
+    };
+    QTRY_VERIFY(pointerAt(c));
     QTest::keyClicks(v, QStringLiteral("gx"));
     for (int i = 1; i <= 6; ++i) QTest::mouseMove(v, along(12.0 * i));
     // The warps' own motion events may come after the test's: let them arrive, then move
     // once more to where the test reads the ball.
-    QTRY_COMPARE(QCursor::pos(), v->mapToGlobal(along(72.0)));
+    QTRY_VERIFY(pointerAt(along(72.0)));
     QTest::qWait(20);
     QTest::mouseMove(v, along(72.0));
     const double free = alongAxis(view, centre, x, c, along(72.0));
