@@ -187,8 +187,8 @@ AssetMaterial mapAssetMaterial(const aiMaterial& in, const AssetTextureContext& 
     else
         m.name = "asset material " + std::to_string(context.materialIndex);
 
-    if (!readColor(in, AI_MATKEY_BASE_COLOR, "base colour", notes, m.color))
-        readColor(in, AI_MATKEY_COLOR_DIFFUSE, "diffuse colour", notes, m.color);
+    const bool hasColor = readColor(in, AI_MATKEY_BASE_COLOR, "base colour", notes, m.color) ||
+                          readColor(in, AI_MATKEY_COLOR_DIFFUSE, "diffuse colour", notes, m.color);
 
     float metallic = 0.0f;
     float roughness = 1.0f;
@@ -272,7 +272,8 @@ AssetMaterial mapAssetMaterial(const aiMaterial& in, const AssetTextureContext& 
         notes.push_back("emissive colour " + describe(emissive) + " is not rendered");
 
     readTexture(in, context, out);
-    if (out.texture.source != AssetTexture::Source::None &&
+    // Only a colour the asset gives multiplies its texture; our default grey does not.
+    if (hasColor && out.texture.source != AssetTexture::Source::None &&
         (std::abs(m.color.x - 1.0f) > 1e-3f || std::abs(m.color.y - 1.0f) > 1e-3f ||
          std::abs(m.color.z - 1.0f) > 1e-3f))
         notes.push_back("colour " + describe(m.color) +
