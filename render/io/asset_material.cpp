@@ -192,10 +192,11 @@ AssetMaterial mapAssetMaterial(const aiMaterial& in, const AssetTextureContext& 
 
     float metallic = 0.0f;
     float roughness = 1.0f;
-    bool hasMetallic = readNumber(in, AI_MATKEY_METALLIC_FACTOR, "metallic", notes, metallic);
-    bool hasRoughness = readNumber(in, AI_MATKEY_ROUGHNESS_FACTOR, "roughness", notes, roughness);
-    if (hasMetallic || hasRoughness) {
-        if (!hasMetallic) metallic = 1.0f;  // glTF's default
+    // A metallic factor marks a metal/roughness material (glTF writes both factors). A
+    // roughness alone does not: assimp 5.2.5's FBX reader derives one from the Phong
+    // exponent (1 - sqrt(shininess) / 10) for every material, PBR or not.
+    if (readNumber(in, AI_MATKEY_METALLIC_FACTOR, "metallic", notes, metallic)) {
+        readNumber(in, AI_MATKEY_ROUGHNESS_FACTOR, "roughness", notes, roughness);
         metallic = clamp01(metallic);
         roughness = clamp01(roughness);
         m.reflectivity = metallic * (1.0f - roughness);

@@ -1,8 +1,8 @@
 // One material of an imported asset (glTF, OBJ/MTL, FBX, ... through assimp) as a RayStudio
 // Material: a pure mapping, with what the Whitted model cannot express written down as notes.
 //
-// The mapping, rule by rule (a: the assimp key read; each number is clamped to its field's
-// range, and a value that is not finite is ignored with a note):
+// The mapping, rule by rule ($... and ?...: the assimp keys read; each number is clamped to
+// its field's range, and a value that is not finite is ignored with a note):
 //   name          ?mat.name; empty: "asset material N" (N the material's index in the asset).
 //   color         $clr.base (glTF baseColorFactor) rgb, else $clr.diffuse (MTL Kd) rgb.
 //   texture       the first BaseColor texture, else the first Diffuse one (MTL map_Kd): a file
@@ -13,7 +13,8 @@
 //                 (assimp 5.2.5 already flips glTF's V for them: offset_v = 1 - scale_v - o_v).
 //                 The texture replaces the colour: a base colour factor that is not white,
 //                 which the asset multiplies in, is noted.
-//   PBR (when $mat.metallicFactor or $mat.roughnessFactor is present; glTF defaults m = r = 1):
+//   PBR (when $mat.metallicFactor m is present; $mat.roughnessFactor r defaults to 1 as in
+//   glTF; a roughness alone is FBX's, derived by assimp from the Phong exponent: Phong below):
 //     reflectivity  m * (1 - r): only smooth metal is a mirror (our mirror is not tinted).
 //     specular      1 - r: the highlight's weight.
 //     shininess     0.5 / r^4 - 0.5 in [1, 10000]: the Phong exponent whose lobe matches GGX

@@ -134,12 +134,26 @@ TEST(AssetMaterial, RoughnessBoundsGiveShininessBounds) {
     EXPECT_NEAR(mapAssetMaterial(outside, {}).material.reflectivity, 1.0f, kTol);
 }
 
-TEST(AssetMaterial, RoughnessAloneTakesGltfDefaultMetallicOne) {
+TEST(AssetMaterial, MetallicAloneTakesGltfDefaultRoughnessOne) {
     aiMaterial m;
-    addNumber(m, 0.5f, AI_MATKEY_ROUGHNESS_FACTOR);
+    addNumber(m, 0.5f, AI_MATKEY_METALLIC_FACTOR);
     const Material r = mapAssetMaterial(m, {}).material;
-    EXPECT_NEAR(r.reflectivity, 0.5f, kTol);  // 1 * (1 - 0.5)
-    EXPECT_NEAR(r.shininess, 7.5f, 1e-4f);    // 0.5 / 0.0625 - 0.5
+    EXPECT_NEAR(r.reflectivity, 0.0f, kTol);  // 0.5 * (1 - 1)
+    EXPECT_NEAR(r.specular, 0.0f, kTol);
+    EXPECT_NEAR(r.shininess, 1.0f, kTol);
+}
+
+TEST(AssetMaterial, RoughnessAloneIsFbxsAndKeepsPhong) {
+    // What assimp 5.2.5 makes of an FBX Phong material with Ks 0.5 and exponent 32.
+    aiMaterial m;
+    addColor(m, 0.5f, 0.5f, 0.5f, AI_MATKEY_COLOR_SPECULAR);
+    addNumber(m, 32.0f, AI_MATKEY_SHININESS);
+    addNumber(m, 1.0f - std::sqrt(32.0f) / 10.0f, AI_MATKEY_ROUGHNESS_FACTOR);
+    const AssetMaterial a = mapAssetMaterial(m, {});
+    EXPECT_NEAR(a.material.reflectivity, 0.0f, kTol);
+    EXPECT_NEAR(a.material.specular, 0.5f, kTol);
+    EXPECT_NEAR(a.material.shininess, 32.0f, kTol);
+    EXPECT_FALSE(hasNote(a, "roughness")) << allNotes(a);
 }
 
 TEST(AssetMaterial, NonFiniteMetallicIsIgnoredWithANote) {
