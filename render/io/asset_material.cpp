@@ -203,10 +203,12 @@ AssetMaterial mapAssetMaterial(const aiMaterial& in, const AssetTextureContext& 
         m.specular = 1.0f - roughness;
         const float r4 = roughness * roughness * roughness * roughness;
         m.shininess = r4 > 0.0f ? std::clamp(0.5f / r4 - 0.5f, 1.0f, 10000.0f) : 10000.0f;
-        notes.push_back("metallic " + number(metallic) + " and roughness " + number(roughness) +
-                        " became reflectivity " + number(m.reflectivity) +
-                        " (an untinted mirror), specular " + number(m.specular) +
-                        " and shininess " + number(m.shininess));
+        // A matte dielectric (m 0, r 1) loses nothing; anything else is an approximation.
+        if (metallic > 0.0f || roughness < 1.0f)
+            notes.push_back("metallic " + number(metallic) + " and roughness " + number(roughness) +
+                            " became reflectivity " + number(m.reflectivity) +
+                            " (an untinted mirror), specular " + number(m.specular) +
+                            " and shininess " + number(m.shininess));
     } else {
         metallic = 0.0f;
         Color ks(0.0f);

@@ -123,10 +123,12 @@ TEST(AssetMaterial, RoughnessBoundsGiveShininessBounds) {
     aiMaterial rough;
     addNumber(rough, 0.0f, AI_MATKEY_METALLIC_FACTOR);
     addNumber(rough, 1.0f, AI_MATKEY_ROUGHNESS_FACTOR);
-    const Material r = mapAssetMaterial(rough, {}).material;
+    const AssetMaterial ra = mapAssetMaterial(rough, {});
+    const Material& r = ra.material;
     EXPECT_NEAR(r.reflectivity, 0.0f, kTol);
     EXPECT_NEAR(r.specular, 0.0f, kTol);
-    EXPECT_NEAR(r.shininess, 1.0f, kTol);  // 0.5 / 1 - 0.5 = 0, raised to 1
+    EXPECT_NEAR(r.shininess, 1.0f, kTol);           // 0.5 / 1 - 0.5 = 0, raised to 1
+    EXPECT_TRUE(ra.notes.empty()) << allNotes(ra);  // a matte dielectric loses nothing
 
     aiMaterial outside;  // out of [0, 1]: clamped
     addNumber(outside, 2.0f, AI_MATKEY_METALLIC_FACTOR);
