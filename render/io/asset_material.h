@@ -10,7 +10,11 @@
 //                 or a name an embedded image carries). Its uv channel ($tex.uvwsrc) and
 //                 $tex.uvtrafo (KHR_texture_transform) come along unchanged; without rotation
 //                 the transform becomes the ImageTexture's scale and offset as they stand
-//                 (assimp 5.2.5 already flips glTF's V for them: offset_v = 1 - scale_v - o_v).
+//                 (assimp 5.2.5 already flips glTF's V for them: offset_v = 1 - scale_v - o_v,
+//                 which is right when read as uv * scale + translation; assimp's own
+//                 TransformUVCoords translates first, and PR 6804 proposes storing a
+//                 pre-scale translation, which a newer assimp would need undone here). MTL's
+//                 map_Kd -s/-o options never arrive: assimp 5.2.5 drops them unread.
 //                 The texture replaces the colour: a base colour factor that is not white,
 //                 which the asset multiplies in, is noted.
 //   PBR (when $mat.metallicFactor m is present; $mat.roughnessFactor r defaults to 1 as in
@@ -20,12 +24,12 @@
 //     shininess     0.5 / r^4 - 0.5 in [1, 10000]: the Phong exponent whose lobe matches GGX
 //                   (alpha = r^2) through Blinn-Phong 2 / alpha^2 - 2, a quarter of it for
 //                   Phong's R.V.
-//   Phong (otherwise, e.g. OBJ/MTL, FBX):
+//   Phong (otherwise, e.g. OBJ/MTL, FBX; m counts as 0):
 //     specular      Rec. 709 luminance of $clr.specular (Ks) times $mat.shinpercent if present.
 //     shininess     $mat.shininess (Ns), in [0, 10000].
 //     reflectivity  $mat.reflectivity, in [0, 1].
 //   glass         transparency = $mat.transmission.factor (KHR_materials_transmission) times
-//                 (1 - m); ior = $mat.refracti (KHR_materials_ior, MTL Ni), else 1.5.
+//                 (1 - m); ior = $mat.refracti (KHR_materials_ior, MTL Ni) when > 0, else 1.5.
 //   see-through   opacity $mat.opacity (MTL d; assimp turns Tr into d = 1 - Tr), else
 //                 1 - $mat.transparencyfactor: transparency = max(glass, 1 - opacity). With
 //                 no transmission the ior stays $mat.refracti, else 1 (straight through, as
@@ -33,7 +37,7 @@
 //                 in alphaMode BLEND; MASK's cut-out is noted.
 //   sum           reflectivity + transparency <= 1: transparency gives way.
 //   noted only    emissive colour, a texture's clamp/mirror wrap modes, texture rotation,
-//                 a second texture of the same kind.
+//                 a UV channel other than 0, a second texture of the same kind.
 //   ignored       ambient colour (the scene's ambient applies), two-sidedness, shading model.
 #pragma once
 
