@@ -78,8 +78,9 @@ protected:
     }
 
     /// A glTF with one triangle (tri.bin next to it), four punctual lights and three
-    /// cameras on nodes, two of them under a parent that moves and scales.
-    std::string writeGltf() {
+    /// cameras on nodes, two of them under a parent that moves and scales. `shareBulb`: the
+    /// light under the parent is the first node's light, not one of its own.
+    std::string writeGltf(bool shareBulb = false) {
         const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
         const std::uint16_t indices[4] = {0, 1, 2, 0};
         std::ofstream bin(dir_ / "tri.bin", std::ios::binary);
@@ -118,8 +119,9 @@ protected:
                          {"translation", {10, 0, 0}},
                          {"scale", {2, 2, 2}},
                          {"children", {6, 7}}});
-        nodes.push_back(
-            {{"name", "RigBulb"}, {"translation", {1, 2, 3}}, {"extensions", lightOn(3)}});
+        nodes.push_back({{"name", "RigBulb"},
+                         {"translation", {1, 2, 3}},
+                         {"extensions", lightOn(shareBulb ? 0 : 3)}});
         nodes.push_back({{"name", "RigEye"}, {"translation", {0, 0, 1}}, {"camera", 1}});
         nodes.push_back({{"name", "Flat"}, {"translation", {0, 3, 0}}, {"camera", 2}});
 
@@ -181,6 +183,32 @@ TEST_F(AssetLightsGltf, Assimp525KeepsPunctualPositionsInTheNodes) {
     EXPECT_EQ(node->mTransformation.c4, 3.0f);
     ASSERT_GE(scene->mNumCameras, 1u);
     EXPECT_EQ(scene->mCameras[0]->mPosition, aiVector3D(0, 1, 5));
+}
+
+// Two more 5.2.5 findings the header and FORMAT.md rely on: aiProcess_PreTransformVertices
+// moves a glTF camera by its node's transform on top of the translation already copied into
+// its position, and a glTF light used by two nodes arrives once, named after (and so placed
+// at) the last of them.
+TEST_F(AssetLightsGltf, Assimp525PreTransformMovesGltfCamerasTwiceAndSharedLightsOnce) {
+    const std::string file = writeGltf(true);
+    Assimp::Importer pretransformed;
+    const aiScene* baked = pretransformed.ReadFile(file, aiProcess_PreTransformVertices);
+    ASSERT_NE(baked, nullptr) << pretransformed.GetErrorString();
+    ASSERT_GE(baked->mNumCameras, 1u);
+    // The node (translation (0, 1, 5), rotation t about X) applied to (0, 1, 5) once more.
+    const aiVector3D& twice = baked->mCameras[0]->mPosition;
+    const double t = kCameraTilt;
+    EXPECT_NEAR(twice.x, 0.0, kTol);
+    EXPECT_NEAR(twice.y, 1 + std::cos(t) - 5 * std::sin(t), kTol);
+    EXPECT_NEAR(twice.z, 5 + std::sin(t) + 5 * std::cos(t), kTol);
+
+    const aiScene* scene = read(file);
+    ASSERT_NE(scene, nullptr);
+    const AssetLightsAndCameras found = assetLightsAndCameras(*scene, Mat4(1.0f));
+    EXPECT_EQ(lightNamed(found, "Bulb"), nullptr);
+    const Light* rig = lightNamed(found, "RigBulb");
+    ASSERT_NE(rig, nullptr);
+    expectNear(rig->position, 12, 4, 6, "the shared light at its last node");
 }
 
 TEST_F(AssetLightsGltf, PointLightLandsAtItsNodeWithItsColourAndIntensity) {
