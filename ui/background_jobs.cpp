@@ -97,7 +97,8 @@ void importMeshAsync(QWidget* parent, const QString& path, bool smoothNormals,
             options.cancel = cancelled.get();
             result = loadMesh(file, smoothNormals, options);
         } catch (...) {
-            result = {nullptr, file + ": " + describeFailure(std::current_exception()), {}};
+            result = MeshLoadResult{};
+            result.error = file + ": " + describeFailure(std::current_exception());
         }
         toGui.post([=] {
             if (dialog) {

@@ -5,10 +5,16 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <limits>
 
+#include "io/asset_content.h"
+#include "io/asset_material.h"
 #include "io/mesh_file_access.h"
 
 namespace rs {
@@ -73,6 +79,57 @@ void repairNormals(MeshData& mesh) {
         n = sumLength > 0.0f && std::isfinite(sumLength) ? sum / sumLength : Vec3(0, 0, 1);
     }
 }
+/// The embedded images of `scene`, compressed ones (a file's bytes) only; an uncompressed
+/// one (raw texels, rare) stays empty and a look that uses it is noted.
+std::vector<AssetImage> embeddedImages(const aiScene& scene) {
+    std::vector<AssetImage> images(scene.mNumTextures);
+    for (unsigned i = 0; i < scene.mNumTextures; ++i) {
+        const aiTexture* t = scene.mTextures[i];
+        images[i].name = t->mFilename.C_Str();
+        for (char c : std::string(t->achFormatHint, strnlen(t->achFormatHint, HINTMAXTEXTURELEN)))
+            if (std::isalnum(static_cast<unsigned char>(c))) images[i].formatHint += c;
+        if (t->mHeight == 0 && t->mWidth > 0 && t->mWidth <= kMaxAssetImageBytes)
+            images[i].bytes.assign(reinterpret_cast<const char*>(t->pcData), t->mWidth);
+    }
+    return images;
+}
+
+/// The looks of the materials that `mesh`'s parts use, their names made unique.
+AssetContent collectAssetContent(const aiScene& scene, const std::string& file,
+                                 const MeshData& mesh) {
+    AssetContent content;
+    content.images = embeddedImages(scene);
+    AssetTextureContext context;
+    context.assetDir = std::filesystem::path(file).parent_path().string();
+    for (const AssetImage& image : content.images) context.embeddedNames.push_back(image.name);
+    for (const MeshPart& part : mesh.parts) {
+        if (!content.looks.empty() && content.looks.back().index == part.material) continue;
+        if (part.material >= scene.mNumMaterials) continue;
+        context.materialIndex = part.material;
+        AssetMaterial mapped = mapAssetMaterial(*scene.mMaterials[part.material], context);
+        AssetLook look;
+        look.index = part.material;
+        look.material = std::move(mapped.material);
+        look.notes = std::move(mapped.notes);
+        look.material.name = numberedName(look.material.name, [&](const std::string& name) {
+            return std::any_of(content.looks.begin(), content.looks.end(),
+                               [&](const AssetLook& l) { return l.material.name == name; });
+        });
+        if (mapped.texture.source == AssetTexture::Source::Embedded) {
+            const int image = mapped.texture.embeddedIndex;
+            if (image >= 0 && std::size_t(image) < content.images.size() &&
+                !content.images[std::size_t(image)].bytes.empty()) {
+                look.embeddedImage = image;
+                look.material.pattern = mapped.texture.look;
+            } else {
+                look.notes.push_back("its embedded texture " + mapped.texture.path +
+                                     " is not a compressed image file; left untextured");
+            }
+        }
+        content.looks.push_back(std::move(look));
+    }
+    return content;
+}
 }  // namespace
 
 MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals) {
@@ -100,9 +157,10 @@ MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals)
     // The first UV channel, (0, 0) for vertices of sub-meshes without one; kept only when
     // some sub-mesh has one.
     bool anyUvs = false;
+    std::vector<uint32_t> bases(scene->mNumMeshes);
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         const aiMesh* in = scene->mMeshes[m];
-        const auto base = static_cast<uint32_t>(mesh->positions.size());
+        bases[m] = static_cast<uint32_t>(mesh->positions.size());
         anyUvs = anyUvs || in->HasTextureCoords(0);
         for (unsigned v = 0; v < in->mNumVertices; ++v) {
             const aiVector3D& p = in->mVertices[v];
@@ -121,6 +179,17 @@ MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals)
                 mesh->normals.emplace_back(n.x, n.y, n.z);
             }
         }
+    }
+    // The triangles grouped by material, so each material's are one run (a MeshPart).
+    std::vector<unsigned> byMaterial(scene->mNumMeshes);
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) byMaterial[m] = m;
+    std::stable_sort(byMaterial.begin(), byMaterial.end(), [&](unsigned a, unsigned b) {
+        return scene->mMeshes[a]->mMaterialIndex < scene->mMeshes[b]->mMaterialIndex;
+    });
+    for (unsigned m : byMaterial) {
+        const aiMesh* in = scene->mMeshes[m];
+        const uint32_t base = bases[m];
+        const auto firstTriangle = static_cast<uint32_t>(mesh->indices.size() / 3);
         for (unsigned f = 0; f < in->mNumFaces; ++f) {
             const aiFace& face = in->mFaces[f];
             if (face.mNumIndices != 3) continue;  // points and lines are not surfaces
@@ -136,6 +205,12 @@ MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals)
             }
             for (int k = 0; k < 3; ++k) mesh->indices.push_back(base + i[k]);
         }
+        const auto count = static_cast<uint32_t>(mesh->indices.size() / 3) - firstTriangle;
+        if (count == 0) continue;
+        if (!mesh->parts.empty() && mesh->parts.back().material == in->mMaterialIndex)
+            mesh->parts.back().triangleCount += count;
+        else
+            mesh->parts.push_back({firstTriangle, count, in->mMaterialIndex});
     }
     if (mesh->indices.empty()) {
         if (mesh->droppedDegenerate > 0)
@@ -146,6 +221,7 @@ MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals)
     if (!anyUvs) mesh->uvs.clear();
     compact(*mesh);
     if (smoothNormals) repairNormals(*mesh);
+    result.asset = std::make_shared<const AssetContent>(collectAssetContent(*scene, file, *mesh));
     result.mesh = std::move(mesh);
     return result;
 }

@@ -15,6 +15,7 @@
 #include <new>
 #include <system_error>
 
+#include "io/asset_content.h"
 #include "io/child_process.h"
 #include "io/input_file.h"
 #include "io/mesh_header_check.h"
@@ -51,7 +52,8 @@ void importIntoPipe(int fd, const std::string& file, bool smoothNormals,
     } else if (!result.ok()) {
         writeMeshWireError(fd, result.error);
     } else {
-        writeMeshWire(fd, *result.mesh);
+        writeMeshWire(fd, *result.mesh, result.asset ? *result.asset : AssetContent{},
+                      fs::path(file).parent_path().string());
     }
 }
 

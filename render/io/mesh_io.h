@@ -12,9 +12,14 @@
 
 namespace rs {
 
+struct AssetContent;
+
 /// Outcome of a mesh load: data, or an error naming the path and the problem.
 struct MeshLoadResult {
     std::shared_ptr<const MeshData> mesh;
+    /// The materials and embedded images of the file's parts (io/asset_content.h), with the
+    /// mesh; null for a mesh decoded without them.
+    std::shared_ptr<const AssetContent> asset;
     std::string error;
     /// What the import's child process wrote on stderr when it crashed or exited with an
     /// error (a sanitizer's report, assimp's assertion), else "": `error` quotes only its

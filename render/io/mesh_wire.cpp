@@ -1,22 +1,27 @@
 // Mesh wire format: fixed header, then raw arrays; every count checked before it is used.
 #include "io/mesh_wire.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <type_traits>
 
+#include "io/asset_content.h"
 #include "io/child_process.h"
 
 namespace rs {
 
 namespace {
-constexpr char kMagic[8] = {'R', 'S', 'M', 'E', 'S', 'H', '2', '\n'};
+constexpr char kMagic[8] = {'R', 'S', 'M', 'E', 'S', 'H', '3', '\n'};
 constexpr std::uint64_t kMeshMarker = 0;
 constexpr std::uint64_t kErrorMarker = 1;
 /// Longest error message accepted back: far more than any message, far less than memory.
 constexpr std::uint64_t kMaxErrorBytes = 1 << 16;
 
 static_assert(sizeof(Vec3) == 3 * sizeof(float) && std::is_trivially_copyable_v<Vec3>);
+static_assert(sizeof(MeshPart) == 3 * sizeof(std::uint32_t) &&
+              std::is_trivially_copyable_v<MeshPart>);
 static_assert(sizeof(glm::vec2) == 2 * sizeof(float) && std::is_trivially_copyable_v<glm::vec2>);
 
 void putCount(std::string& out, std::uint64_t value) {
@@ -71,9 +76,21 @@ MeshLoadResult malformed(const std::string& why) {
     result.error = "malformed result from the import process: " + why;
     return result;
 }
+
+/// True when the parts cover the triangles in order, once each, in increasing material order.
+bool partsCover(const std::vector<MeshPart>& parts, std::uint64_t triangles) {
+    std::uint64_t next = 0;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        if (parts[i].firstTriangle != next || parts[i].triangleCount == 0) return false;
+        if (i > 0 && parts[i].material <= parts[i - 1].material) return false;
+        next += parts[i].triangleCount;
+    }
+    return parts.empty() || next == triangles;
+}
 }  // namespace
 
-bool writeMeshWire(int fd, const MeshData& mesh) {
+bool writeMeshWire(int fd, const MeshData& mesh, const AssetContent& asset,
+                   const std::string& assetDir) {
     std::string header(kMagic, sizeof kMagic);
     putCount(header, kMeshMarker);
     putCount(header, mesh.positions.size());
@@ -81,8 +98,26 @@ bool writeMeshWire(int fd, const MeshData& mesh) {
     putCount(header, mesh.indices.size());
     putCount(header, mesh.droppedDegenerate);
     putCount(header, mesh.uvs.size());
-    return writeAllTo(fd, header.data(), header.size()) && writeArray(fd, mesh.positions) &&
-           writeArray(fd, mesh.normals) && writeArray(fd, mesh.indices) && writeArray(fd, mesh.uvs);
+    putCount(header, mesh.parts.size());
+    if (!writeAllTo(fd, header.data(), header.size()) || !writeArray(fd, mesh.positions) ||
+        !writeArray(fd, mesh.normals) || !writeArray(fd, mesh.indices) ||
+        !writeArray(fd, mesh.uvs) || !writeArray(fd, mesh.parts))
+        return false;
+    // The looks, then each embedded image's bytes.
+    std::string looks;
+    const std::string text = encodeAssetLooks(asset, assetDir);
+    putCount(looks, text.size());
+    looks += text;
+    putCount(looks, asset.images.size());
+    if (!writeAllTo(fd, looks.data(), looks.size())) return false;
+    for (const AssetImage& image : asset.images) {
+        std::string size;
+        putCount(size, image.bytes.size());
+        if (!writeAllTo(fd, size.data(), size.size()) ||
+            !writeAllTo(fd, image.bytes.data(), image.bytes.size()))
+            return false;
+    }
+    return true;
 }
 
 bool writeMeshWireError(int fd, const std::string& error) {
@@ -108,9 +143,9 @@ MeshLoadResult decodeMeshWire(const std::string& bytes, const std::string& sourc
         return result;
     }
     if (marker != kMeshMarker) return malformed("an unknown kind of result");
-    std::uint64_t positions = 0, normals = 0, indices = 0, dropped = 0, uvs = 0;
+    std::uint64_t positions = 0, normals = 0, indices = 0, dropped = 0, uvs = 0, parts = 0;
     if (!in.count(positions) || !in.count(normals) || !in.count(indices) || !in.count(dropped) ||
-        !in.count(uvs))
+        !in.count(uvs) || !in.count(parts))
         return malformed("a cut header");
     if (normals != 0 && normals != positions) return malformed("normals that are not per vertex");
     if (uvs != 0 && uvs != positions)
@@ -118,11 +153,33 @@ MeshLoadResult decodeMeshWire(const std::string& bytes, const std::string& sourc
     if (indices == 0 || indices % 3 != 0) return malformed("no whole triangles");
     auto mesh = std::make_shared<MeshData>();
     if (!in.array(positions, mesh->positions) || !in.array(normals, mesh->normals) ||
-        !in.array(indices, mesh->indices) || !in.array(uvs, mesh->uvs))
+        !in.array(indices, mesh->indices) || !in.array(uvs, mesh->uvs) ||
+        !in.array(parts, mesh->parts))
         return malformed("counts that the bytes do not hold");
-    if (in.left() != 0) return malformed("bytes after the mesh");
     for (std::uint32_t index : mesh->indices)
         if (index >= positions) return malformed("an index past the vertices");
+    if (!partsCover(mesh->parts, indices / 3))
+        return malformed("parts that do not cover the triangles in order");
+    auto asset = std::make_shared<AssetContent>();
+    std::uint64_t looksLength = 0, images = 0;
+    std::string looks;
+    if (!in.count(looksLength) || !in.text(looksLength, looks) || !in.count(images) ||
+        images > in.left() / sizeof(std::uint64_t))
+        return malformed("cut asset looks");
+    asset->images.resize(std::size_t(images));
+    for (AssetImage& image : asset->images) {
+        std::uint64_t length = 0;
+        if (!in.count(length) || length > kMaxAssetImageBytes || !in.text(length, image.bytes))
+            return malformed("a cut embedded image");
+    }
+    if (in.left() != 0) return malformed("bytes after the mesh");
+    const std::string assetDir = std::filesystem::path(sourcePath).parent_path().string();
+    if (std::string why; !decodeAssetLooks(looks, assetDir, *asset, why)) return malformed(why);
+    for (const AssetLook& look : asset->looks)
+        if (std::none_of(mesh->parts.begin(), mesh->parts.end(),
+                         [&](const MeshPart& p) { return p.material == look.index; }))
+            return malformed("a look for a material no part uses");
+    result.asset = std::move(asset);
     mesh->droppedDegenerate = std::size_t(dropped);
     mesh->sourcePath = sourcePath;
     result.mesh = std::move(mesh);

@@ -13,6 +13,14 @@
 
 namespace rs {
 
+/// A run of a mesh's triangles that share one material of the file they came from.
+struct MeshPart {
+    uint32_t firstTriangle = 0;
+    uint32_t triangleCount = 0;
+    uint32_t material = 0;  ///< The file's material index (assimp's, in the file's order).
+    bool operator==(const MeshPart&) const = default;
+};
+
 /// An indexed triangle mesh in object space. Immutable once loaded; shared between snapshots.
 struct MeshData {
     std::vector<Vec3> positions;
@@ -20,7 +28,10 @@ struct MeshData {
     /// The file's first texture-coordinate channel (u, v), one per vertex, or empty when the
     /// file has none (textures then see (0, 0) everywhere).
     std::vector<glm::vec2> uvs;
-    std::vector<uint32_t> indices;      ///< Three per triangle.
+    std::vector<uint32_t> indices;  ///< Three per triangle.
+    /// The triangles grouped by the file's material, in increasing material order, covering
+    /// every triangle once; empty when the file says nothing about materials.
+    std::vector<MeshPart> parts;
     std::size_t droppedDegenerate = 0;  ///< Zero-area triangles removed while loading.
     std::string sourcePath;             ///< The file it came from (absolute), for messages.
 
