@@ -151,7 +151,7 @@ bool rename(SceneDocument& doc, ObjectId id, const std::string& name) {
 
 int materialUsers(const SceneDocument& doc, const std::string& name) {
     return int(std::count_if(doc.objects.begin(), doc.objects.end(),
-                             [&](const Object& o) { return o.material == name; }));
+                             [&](const Object& o) { return usesMaterial(o, name); }));
 }
 
 Material* findMaterial(SceneDocument& doc, const std::string& name) {
@@ -200,8 +200,11 @@ std::string renameMaterial(SceneDocument& doc, const std::string& from, const st
     if (!m) return "there is no material \"" + from + "\"";
     if (std::string error = materialNameError(doc, from, to); !error.empty()) return error;
     m->name = to;
-    for (Object& o : doc.objects.editable())
+    for (Object& o : doc.objects.editable()) {
         if (o.material == from) o.material = to;
+        if (auto* mesh = std::get_if<MeshGeometry>(&o.geometry))
+            std::replace(mesh->partMaterials.begin(), mesh->partMaterials.end(), from, to);
+    }
     return {};
 }
 
@@ -213,7 +216,7 @@ std::string materialDeleteError(const SceneDocument& doc, const std::string& nam
     std::vector<const std::string*> named;
     std::size_t users = 0;
     for (const Object& o : doc.objects) {
-        if (o.material != name) continue;
+        if (!usesMaterial(o, name)) continue;
         if (named.size() < kNamed) named.push_back(&o.name);
         ++users;
     }

@@ -135,6 +135,11 @@ std::vector<std::string> version2Uses(const SceneDocument& doc) {
         if (t == LightType::Directional || t == LightType::Spot)
             uses.push_back(appendPointer(appendPointer("/lights", i), "type"));
     }
+    for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+        const auto* mesh = std::get_if<MeshGeometry>(&doc.objects[i].geometry);
+        if (mesh && !mesh->partMaterials.empty())
+            uses.push_back(appendPointer(appendPointer("/objects", i), "part_materials"));
+    }
     return uses;
 }
 

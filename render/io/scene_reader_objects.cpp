@@ -51,9 +51,12 @@ void readBox(EntryReader& r, BoxGeometry& g) {
                          e.message);
 }
 
+void readPartMaterials(EntryReader& r, ObjectContext& ctx, MeshGeometry& g);
+
 void readMesh(EntryReader& r, ObjectContext& ctx, MeshGeometry& g) {
     // The file is read last: loading it needs smooth_normals.
     readFields(r, ParamKind::Mesh, g, {"file"});
+    readPartMaterials(r, ctx, g);
     if (!r.string("file", g.file, Need::Required)) return;
     const std::string at = r.pointerTo("file");
     if (g.file.empty()) {
@@ -78,6 +81,42 @@ void readMesh(EntryReader& r, ObjectContext& ctx, MeshGeometry& g) {
         it->second = loaded.mesh;
     }
     g.data = it->second;
+}
+
+/// `part_materials`: for each of the mesh file's materials, by index, the name of one of
+/// ours, or null for the object's own.
+void readPartMaterials(EntryReader& r, ObjectContext& ctx, MeshGeometry& g) {
+    constexpr std::size_t kMost = 65536;
+    const Json* parts = r.get("part_materials");
+    if (!parts) return;
+    const std::string at = r.pointerTo("part_materials");
+    if (!parts->is_array()) {
+        ctx.sink.atValue(at, "part_materials must be an array of material names or nulls");
+        return;
+    }
+    if (parts->size() > kMost) {
+        ctx.sink.atValue(at, "part_materials has " + std::to_string(parts->size()) +
+                                 " entries; at most " + std::to_string(kMost));
+        return;
+    }
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < parts->size(); ++i) {
+        const Json& entry = (*parts)[i];
+        const std::string pointer = appendPointer(at, i);
+        if (entry.is_null()) {
+            names.emplace_back();
+        } else if (!entry.is_string() || entry.get<std::string>().empty()) {
+            ctx.sink.atValue(pointer, "a part's material must be a material name or null");
+            return;
+        } else if (!ctx.doc.findMaterial(entry.get<std::string>())) {
+            ctx.sink.atValue(pointer, "material \"" + entry.get<std::string>() +
+                                          "\" is not defined in /materials");
+            return;
+        } else {
+            names.push_back(entry.get<std::string>());
+        }
+    }
+    g.partMaterials = std::move(names);
 }
 
 void readTransform(EntryReader& r, Transform& t) {

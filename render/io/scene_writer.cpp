@@ -170,6 +170,12 @@ void putGeometry(Json& j, const Geometry& geometry, const std::string& baseDir) 
             if constexpr (std::is_same_v<G, MeshGeometry>) {
                 j["file"] = fileFor(g.file, g.resolvedPath, baseDir);
                 putFields(j, ParamKind::Mesh, g, {"file"});
+                if (!g.partMaterials.empty()) {
+                    Json parts = Json::array();
+                    for (const std::string& name : g.partMaterials)
+                        parts.push_back(name.empty() ? Json() : Json(name));
+                    j["part_materials"] = std::move(parts);
+                }
             } else {
                 putFields(j, geometryKind(geometry), g);
             }

@@ -176,13 +176,18 @@ struct MeshGeometry {
     std::string file;          ///< As written in the scene file (relative or absolute).
     std::string resolvedPath;  ///< Absolute path the mesh was loaded from.
     bool smoothNormals = true;
+    /// The material of each part (MeshData::parts), by the file's material index: a name from
+    /// the document's materials, or "" (and any index past the end) for the object's own.
+    /// Empty: the whole mesh takes the object's material, as one surface.
+    std::vector<std::string> partMaterials;
     std::shared_ptr<const MeshData> data;  ///< Loaded triangles; not part of equality.
     /// Which file the mesh is: its resolved path once known, else the path as written. Two
     /// spellings of one file ("meshes//m.obj", "./meshes/m.obj", an absolute path) are the same
     /// mesh, and saving writes them alike (relative below the scene's folder).
     const std::string& source() const { return resolvedPath.empty() ? file : resolvedPath; }
     bool operator==(const MeshGeometry& o) const {
-        return source() == o.source() && smoothNormals == o.smoothNormals;
+        return source() == o.source() && smoothNormals == o.smoothNormals &&
+               partMaterials == o.partMaterials;
     }
 };
 
@@ -217,6 +222,32 @@ struct Object {
     Extras extras;
     bool operator==(const Object&) const = default;
 };
+
+/// The material name the triangles of file material `fileMaterial` of `o` use: their part's
+/// entry of MeshGeometry::partMaterials when it names one, else the object's material.
+inline const std::string& partMaterial(const Object& o, uint32_t fileMaterial) {
+    if (const auto* mesh = std::get_if<MeshGeometry>(&o.geometry))
+        if (fileMaterial < mesh->partMaterials.size() && !mesh->partMaterials[fileMaterial].empty())
+            return mesh->partMaterials[fileMaterial];
+    return o.material;
+}
+
+/// Calls `f(name)` for every material name `o` shows: its own, then each part's (repeats
+/// possible; "" is the built-in grey).
+template <class F>
+void forEachMaterialOf(const Object& o, F f) {
+    f(o.material);
+    if (const auto* mesh = std::get_if<MeshGeometry>(&o.geometry))
+        for (const std::string& name : mesh->partMaterials)
+            if (!name.empty()) f(name);
+}
+
+/// True when `o` or one of its parts uses material `name`.
+inline bool usesMaterial(const Object& o, const std::string& name) {
+    bool used = false;
+    forEachMaterialOf(o, [&](const std::string& m) { used = used || m == name; });
+    return used;
+}
 
 /// The whole editable scene. Ids are assigned by the document and never reused; objects and
 /// lights are only appended (addObject, addLight) and erased, so each list is in increasing id

@@ -121,8 +121,14 @@ SceneUpdate updateScene(const SceneDocument& before,
         const Material* m = doc.findMaterial(name);
         return !doc.render.opaqueShadows && m && m->transparency > 0.0f;
     };
+    auto anyMaterial = [](const Object& o, auto test) {
+        bool any = false;
+        forEachMaterialOf(o, [&](const std::string& name) { any = any || test(name); });
+        return any;
+    };
     auto castsFilteredShadow = [&](const Object& prev, const Object& o) {
-        return filters(before, prev.material) || filters(after, o.material);
+        return anyMaterial(prev, [&](const std::string& m) { return filters(before, m); }) ||
+               anyMaterial(o, [&](const std::string& m) { return filters(after, m); });
     };
     std::set<ObjectId> reshadowed;
 
@@ -133,7 +139,8 @@ SceneUpdate updateScene(const SceneDocument& before,
             !(prev.geometry == o.geometry) || !(prev.transform == o.transform);
         const bool kindChanged = prev.geometry.index() != o.geometry.index();
         const bool materialChanged =
-            prev.material != o.material || changedMaterials.count(o.material);
+            prev.material != o.material ||
+            anyMaterial(o, [&](const std::string& m) { return changedMaterials.count(m) > 0; });
         if (isPlane(o) || isPlane(prev)) {
             if (shapeChanged || kindChanged || prev.visible != o.visible)
                 edit.everything = true;

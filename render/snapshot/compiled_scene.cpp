@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/id_search.h"
+#include "scene/mesh_parts.h"
 #include "texture/texture_store.h"
 
 namespace rs {
@@ -41,15 +43,43 @@ uint32_t materialIndex(const SceneDocument& doc, const std::string& name) {
     return 0;  // The built-in grey diffuse.
 }
 
-/// Mesh BVH of `previous` for the same mesh data, so edits never rebuild a mesh's BVH.
-std::shared_ptr<const MeshAccel> findMeshAccel(const CompiledScene* previous,
-                                               const MeshGeometry& mesh) {
-    if (!previous) return nullptr;
-    for (const Primitive& p : previous->primitives())
-        if (const auto* m = std::get_if<MeshShape>(&p.shape))
-            if (m->accel->data() == mesh.data && m->accel->smooth() == mesh.smoothNormals)
-                return m->accel;
-    return nullptr;
+/// The mesh BVHs of a previous snapshot by their mesh data, so edits never rebuild one.
+class PreviousMeshes {
+public:
+    explicit PreviousMeshes(const CompiledScene* previous) {
+        if (!previous) return;
+        for (const Primitive& p : previous->primitives())
+            if (const auto* m = std::get_if<MeshShape>(&p.shape))
+                accels_.emplace(std::pair(m->accel->data().get(), m->accel->smooth()), m->accel);
+    }
+    std::shared_ptr<const MeshAccel> find(const std::shared_ptr<const MeshData>& data,
+                                          bool smooth) const {
+        const auto it = accels_.find(std::pair(data.get(), smooth));
+        return it == accels_.end() || it->second->data() != data ? nullptr : it->second;
+    }
+
+private:
+    std::map<std::pair<const MeshData*, bool>, std::shared_ptr<const MeshAccel>> accels_;
+};
+
+/// What one object is traced as: one surface, or for a mesh with part materials one per part
+/// (its triangles and the material name), each a primitive of its own.
+struct ObjectSurface {
+    std::shared_ptr<const MeshData> mesh;  ///< A part's triangles; null: the object's shape.
+    const std::string* material;
+};
+
+std::vector<ObjectSurface> surfacesOf(const Object& o) {
+    const auto* mesh = std::get_if<MeshGeometry>(&o.geometry);
+    if (!mesh || mesh->partMaterials.empty() || !mesh->data || mesh->data->parts.empty())
+        return {{nullptr, &o.material}};
+    const std::vector<MeshPart>& parts = mesh->data->parts;
+    if (parts.size() == 1) return {{nullptr, &partMaterial(o, parts[0].material)}};
+    std::vector<ObjectSurface> surfaces;
+    const auto meshes = meshPartsOf(mesh->data);
+    for (std::size_t i = 0; i < parts.size(); ++i)
+        surfaces.push_back({meshes[i], &partMaterial(o, parts[i].material)});
+    return surfaces;
 }
 
 /// Render form of one bounded object; false for planes and meshes without triangles.
@@ -144,14 +174,22 @@ CompiledScene::CompiledScene(const SceneDocument& doc, const CompiledScene* prev
     for (const Light& l : doc.lights) lights_.push_back(compileLight(l));
     planes_ = compilePlanes(doc);
     auto prims = std::make_shared<std::vector<Primitive>>();
+    const PreviousMeshes meshes(previous);
     for (const Object& o : doc.objects) {
         if (!o.visible || std::holds_alternative<PlaneGeometry>(o.geometry)) continue;
-        std::shared_ptr<const MeshAccel> accel;
-        if (const auto* mesh = std::get_if<MeshGeometry>(&o.geometry))
-            accel = findMeshAccel(previous, *mesh);
-        Primitive prim;
-        if (compileBounded(o, materialIndex(doc, o.material), std::move(accel), prim))
-            prims->push_back(std::move(prim));
+        const auto* mesh = std::get_if<MeshGeometry>(&o.geometry);
+        for (const ObjectSurface& surface : surfacesOf(o)) {
+            std::shared_ptr<const MeshAccel> accel;
+            if (mesh) {
+                const auto& data = surface.mesh ? surface.mesh : mesh->data;
+                accel = meshes.find(data, mesh->smoothNormals);
+                if (!accel && surface.mesh)
+                    accel = std::make_shared<const MeshAccel>(data, mesh->smoothNormals);
+            }
+            Primitive prim;
+            if (compileBounded(o, materialIndex(doc, *surface.material), std::move(accel), prim))
+                prims->push_back(std::move(prim));
+        }
     }
     primitives_ = std::move(prims);
     computeEpsilon();
@@ -193,14 +231,20 @@ CompiledScene CompiledScene::refitted(const SceneDocument& doc,
     auto prims = std::make_shared<std::vector<Primitive>>(*primitives_);
     std::vector<uint32_t> indices;
     for (ObjectId id : moved) {
-        const int index = primitiveIndex(id);
+        const auto [first, end] = primitiveRange(id);
         const Object* o = doc.findObject(id);
-        if (index < 0 || !o) continue;
-        Primitive& prim = (*prims)[std::size_t(index)];
-        std::shared_ptr<const MeshAccel> accel;
-        if (const auto* m = std::get_if<MeshShape>(&prim.shape)) accel = m->accel;
-        compileBounded(*o, materialIndex(doc, o->material), std::move(accel), prim);
-        indices.push_back(uint32_t(index));
+        if (first == end || !o) continue;
+        // The same surfaces as when compiled (same mesh and part materials, or a rebuild).
+        const std::vector<ObjectSurface> surfaces = surfacesOf(*o);
+        for (std::size_t index = first; index < end; ++index) {
+            Primitive& prim = (*prims)[index];
+            std::shared_ptr<const MeshAccel> accel;
+            if (const auto* m = std::get_if<MeshShape>(&prim.shape)) accel = m->accel;
+            const std::string& material =
+                *surfaces[std::min(index - first, surfaces.size() - 1)].material;
+            compileBounded(*o, materialIndex(doc, material), std::move(accel), prim);
+            indices.push_back(uint32_t(index));
+        }
     }
     out.primitives_ = std::move(prims);
     out.computeEpsilon();
@@ -258,14 +302,16 @@ void CompiledScene::compilePatterns(const SceneDocument& doc) {
     for (std::size_t i = 0; i < primitives_->size(); ++i) {
         const Primitive& p = (*primitives_)[i];
         if (!patterned(p.material)) continue;
+        const auto* mesh = std::get_if<MeshShape>(&p.shape);
         if (const Object* o = doc.findObject(p.id))
-            patterns->setPrimitive(i, SurfacePatterns::surfaceOf(*o));
+            patterns->setPrimitive(
+                i, SurfacePatterns::surfaceOf(*o, mesh ? mesh->accel->data() : nullptr));
     }
     for (std::size_t i = 0; i < planes_->size(); ++i) {
         const PlanePrimitive& p = (*planes_)[i];
         if (!patterned(p.material)) continue;
         if (const Object* o = doc.findObject(p.id))
-            patterns->setPlane(i, SurfacePatterns::surfaceOf(*o));
+            patterns->setPlane(i, SurfacePatterns::surfaceOf(*o, nullptr));
     }
     patterns_ = std::move(patterns);
 }
@@ -284,14 +330,17 @@ Color CompiledScene::environmentColor(const Vec3& dir, float spread) const {
 
 CompiledScene CompiledScene::withBoxProxy(ObjectId id) const {
     CompiledScene out = *this;
-    const int index = primitiveIndex(id);
-    if (index >= 0) {
+    const auto [first, end] = primitiveRange(id);
+    if (first != end) {
         auto prims = std::make_shared<std::vector<Primitive>>(*primitives_);
-        Primitive& prim = (*prims)[std::size_t(index)];
-        prim.shape = BoxShape{prim.worldBounds};
-        prim.hasFrame = false;
+        std::vector<uint32_t> changed;
+        for (std::size_t index = first; index < end; ++index) {
+            Primitive& prim = (*prims)[index];
+            prim.shape = BoxShape{prim.worldBounds};
+            prim.hasFrame = false;
+            changed.push_back(uint32_t(index));
+        }
         out.primitives_ = std::move(prims);
-        const uint32_t changed[] = {uint32_t(index)};
         out.engine_ = engine_->updated(out.geometry(), changed);
     }
     return out;
@@ -302,9 +351,20 @@ int CompiledScene::primitiveIndex(ObjectId id) const {
     return int(indexById(*primitives_, id, [](const Primitive& p) { return p.id; }));
 }
 
+std::pair<std::size_t, std::size_t> CompiledScene::primitiveRange(ObjectId id) const {
+    const int first = primitiveIndex(id);
+    if (first < 0) return {0, 0};
+    std::size_t end = std::size_t(first) + 1;
+    while (end < primitives_->size() && (*primitives_)[end].id == id) ++end;
+    return {std::size_t(first), end};
+}
+
 Aabb CompiledScene::objectBounds(ObjectId id) const {
-    const int index = primitiveIndex(id);
-    return index < 0 ? Aabb{} : (*primitives_)[std::size_t(index)].worldBounds;
+    const auto [first, end] = primitiveRange(id);
+    Aabb box;
+    for (std::size_t index = first; index < end; ++index)
+        box.expand((*primitives_)[index].worldBounds);
+    return box;
 }
 
 bool CompiledScene::intersect(const Ray& ray, float tmax, SurfaceHit& hit) const {

@@ -86,8 +86,11 @@ public:
     /// A copy where object `id` is traced as its world bounding box (box proxy while moving).
     CompiledScene withBoxProxy(ObjectId id) const;
 
-    /// Index into primitives() of a bounded object, or -1 (planes, hidden or unknown ids).
+    /// Index into primitives() of a bounded object's first primitive, or -1 (planes, hidden
+    /// or unknown ids). A mesh with part materials is one primitive per part, adjacent.
     int primitiveIndex(ObjectId id) const;
+    /// [first, end) of the object's primitives in primitives(); empty when it has none.
+    std::pair<std::size_t, std::size_t> primitiveRange(ObjectId id) const;
     /// World bounds of a bounded object; empty for planes, hidden or unknown ids.
     Aabb objectBounds(ObjectId id) const;
 

@@ -60,7 +60,8 @@ ShapeUV meshUV(const PatternSurface& surface, const Vec3& po, const Vec3& n) {
 
 }  // namespace
 
-PatternSurface SurfacePatterns::surfaceOf(const Object& o) {
+PatternSurface SurfacePatterns::surfaceOf(const Object& o,
+                                          const std::shared_ptr<const MeshData>& meshData) {
     PatternSurface s;
     if (const auto* plane = std::get_if<PlaneGeometry>(&o.geometry)) {
         s = identitySurface(PatternSurface::Shape::Plane);
@@ -86,9 +87,9 @@ PatternSurface SurfacePatterns::surfaceOf(const Object& o) {
     } else {
         s.shape = PatternSurface::Shape::Mesh;
         const auto* mesh = std::get_if<MeshGeometry>(&o.geometry);
-        if (mesh && mesh->data && !mesh->data->uvs.empty() &&
-            mesh->data->uvs.size() == mesh->data->positions.size())
-            s.mesh = uvAccelFor(mesh->data);
+        const auto& data = meshData ? meshData : mesh ? mesh->data : meshData;
+        if (data && !data->uvs.empty() && data->uvs.size() == data->positions.size())
+            s.mesh = uvAccelFor(data);
     }
     return s;
 }

@@ -49,8 +49,10 @@ struct PatternSurface {
 /// kPlaneSlot). Empty, and never consulted, when no material has a pattern.
 class SurfacePatterns {
 public:
-    /// The surface of `o` (its geometry and transform).
-    static PatternSurface surfaceOf(const Object& o);
+    /// The surface of `o` (its geometry and transform); for a mesh, texture coordinates come
+    /// from `meshData` (the part a primitive traces) when given, else from the whole mesh.
+    static PatternSurface surfaceOf(const Object& o,
+                                    const std::shared_ptr<const MeshData>& meshData);
 
     void resize(std::size_t primitives, std::size_t planes);
     void setPrimitive(std::size_t index, const PatternSurface& s) { primitives_[index] = s; }
