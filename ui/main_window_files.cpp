@@ -8,6 +8,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSpinBox>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <algorithm>
 #include <cstdio>
@@ -21,6 +22,7 @@
 #include "error_reporter.h"
 #include "image/image_io.h"
 #include "integrator/cost_estimate.h"
+#include "io/asset_looks.h"
 #include "io/scene_io.h"
 #include "main_window.h"
 #include "outliner_view.h"
@@ -173,6 +175,14 @@ void MainWindow::importMeshDialog() {
     if (!path.isEmpty()) importMesh(path);
 }
 
+/// Where an asset's embedded images are written: the scene's folder once it has a file,
+/// else a folder of the designer's own (a later Save As keeps referring to them there).
+static QString importedImageFolder(const QString& scenePath) {
+    if (!scenePath.isEmpty()) return QFileInfo(scenePath).absolutePath();
+    return QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) +
+           "/imported-images";
+}
+
 void MainWindow::importMesh(const QString& path, std::optional<QPoint> at) {
     importMeshAsync(this, path, true, [this, path, at](const MeshLoadResult& r) {
         if (!r.ok()) {
@@ -193,15 +203,29 @@ void MainWindow::importMesh(const QString& path, std::optional<QPoint> at) {
             placeNew(doc, id, place);
         else
             placeNewInView(doc, id);
+        const AdoptedLooks looks =
+            r.asset ? adoptAssetLooks(doc, id, *r.asset, QFileInfo(path).fileName().toStdString(),
+                                      importedImageFolder(editor_->filePath()).toStdString())
+                    : AdoptedLooks{};
         const QString name = QString::fromStdString(doc.findObject(id)->name);
         editor_->edit(tr("Import %1").arg(name), std::move(doc));
         editor_->setSelection(id);
+        QString said = tr("Imported %1").arg(name);
+        if (!looks.materials.empty())
+            said += tr(" with %n material(s)", "", int(looks.materials.size()));
         if (factor != 1.0f)
-            statusBar()->showMessage(
-                tr("Imported %1 scaled by %2 to fit the view (Properties: Transform, Scale)")
-                    .arg(name)
-                    .arg(double(factor), 0, 'g', 3),
-                10000);
+            said += tr(", scaled by %1 to fit the view (Properties: Transform, Scale)")
+                        .arg(double(factor), 0, 'g', 3);
+        statusBar()->showMessage(said, 10000);
+        if (!looks.notes.empty()) {
+            QStringList lines;
+            for (const std::string& note : looks.notes) {
+                std::fprintf(stderr, "raystudio: %s\n", note.c_str());
+                lines << QString::fromStdString(note);
+            }
+            reportError(this, tr("Imported %1: what its materials could not keep").arg(name),
+                        lines.join('\n'));
+        }
     });
 }
 

@@ -14,6 +14,7 @@ int runBench(int argc, char** argv);
 int runDrag(int argc, char** argv);
 int runMerge(int argc, char** argv);
 int runFarm(int argc, char** argv);
+int runImport(int argc, char** argv);
 
 /// Loads a scene for a command; prints every error to stderr and returns false on failure.
 /// Warnings (images that cannot be read) are printed too; `warned` says whether there were.

@@ -45,6 +45,9 @@ const char* const kUsage =
     "      render on a Slurm cluster: a job array of N parts and a merge job (sbatch)\n"
     "  farm status JOB\n"
     "      progress of a submitted job (squeue, sacct)\n"
+    "  import ASSET -o SCENE [--width W] [--height H] [--flat-normals]\n"
+    "      a scene holding the asset (glTF, OBJ, FBX, ...) with its materials and textures\n"
+    "      (embedded images written next to SCENE), a key light and a camera that frames it\n"
     "\n"
     "results go to stdout, errors to stderr; exit codes: 0 success, 2 bad input or usage,\n"
     "1 any other failure\n";
@@ -98,6 +101,7 @@ int main(int argc, char** argv) {
         if (command == "drag") return rs::cli::runDrag(argc, argv);
         if (command == "merge") return rs::cli::runMerge(argc, argv);
         if (command == "farm") return rs::cli::runFarm(argc, argv);
+        if (command == "import") return rs::cli::runImport(argc, argv);
         if (command == "--version") {
             std::puts("raystudio-cli " RAYSTUDIO_VERSION_STRING);
             return 0;

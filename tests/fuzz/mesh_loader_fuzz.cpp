@@ -4,9 +4,12 @@
 // a lying header. assimp runs in loadMesh's child process, so its crashes are errors here; a
 // sanitizer report from the child (our code in it is instrumented) reaches the error
 // message, and is a finding. libFuzzer sees the coverage of this process only (the guards,
-// the header check, the wire decoding).
+// the header check, the wire decoding). The bytes are also the folder's "mesh.mtl", so an OBJ
+// that names it (`mtllib mesh.mtl`) reads its own lines as materials: the parts and the looks
+// that come back with them are fuzzed too.
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -16,6 +19,7 @@
 #include <fstream>
 #include <string>
 
+#include "io/asset_content.h"
 #include "io/mesh_io.h"
 
 namespace {
@@ -55,6 +59,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         std::ofstream out(path, std::ios::binary | std::ios::trunc);
         out.write(reinterpret_cast<const char*>(data + 1), std::streamsize(size - 1));
         if (!out) broken("cannot write the scratch file");
+        std::ofstream(scratchDir() + "/mesh.mtl", std::ios::binary | std::ios::trunc)
+            .write(reinterpret_cast<const char*>(data + 1), std::streamsize(size - 1));
     }
     // One import an input (each is a fork of this large process): the next bit of the first
     // byte picks smooth or flat normals.
@@ -87,5 +93,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
             broken("a vertex that is not finite");
     if (smooth && mesh.normals.size() != mesh.positions.size()) broken("normals missing");
+    // Parts cover the triangles in order; each look belongs to a part.
+    std::size_t covered = 0;
+    for (const rs::MeshPart& part : mesh.parts) {
+        if (part.firstTriangle != covered) broken("parts that leave a gap");
+        covered += part.triangleCount;
+    }
+    if (!mesh.parts.empty() && covered != mesh.triangleCount()) broken("parts that miss triangles");
+    if (!result.asset) broken("a mesh without its looks");
+    for (const rs::AssetLook& look : result.asset->looks)
+        if (std::none_of(mesh.parts.begin(), mesh.parts.end(),
+                         [&](const rs::MeshPart& p) { return p.material == look.index; }))
+            broken("a look no part uses");
     return 0;
 }

@@ -230,7 +230,7 @@ TEST_F(FormatDoc, ExamplesUseEveryKeyOfTheFormat) {
         {"plane", {"point", "normal"}},
         {"rectangle", {"center", "u", "v"}},
         {"box", {"min", "max"}},
-        {"mesh", {"file", "smooth_normals"}},
+        {"mesh", {"file", "smooth_normals", "part_materials"}},
     };
     std::map<std::string, Keys> seen;
     Keys tonemaps;

@@ -1,0 +1,30 @@
+// Giving an imported mesh object its asset's looks: the asset's materials become the
+// document's, its parts name them, its embedded images become files.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "io/asset_content.h"
+#include "scene/document.h"
+
+namespace rs {
+
+/// What adopting an asset's looks did.
+struct AdoptedLooks {
+    std::vector<std::string> materials;  ///< Names of the materials added, in asset order.
+    std::vector<std::string> images;     ///< Image files written.
+    /// What the looks could not keep, each naming the asset, the part and the file.
+    std::vector<std::string> notes;
+};
+
+/// Gives mesh object `id` of `doc` the looks of `asset` (what the mesh's import brought):
+/// each look becomes a material of `doc`, renamed "name.001", ... when the name is taken, and
+/// the object's MeshGeometry::partMaterials name them by file material index. Embedded images
+/// are written to `imageDir` (created when missing) as "<assetName>-<n>.<format>"; one that
+/// cannot be written leaves its part untextured, with a note. `assetName` names the asset in
+/// notes and files (its file name without folder).
+AdoptedLooks adoptAssetLooks(SceneDocument& doc, ObjectId id, const AssetContent& asset,
+                             const std::string& assetName, const std::string& imageDir);
+
+}  // namespace rs
