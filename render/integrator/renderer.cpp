@@ -30,12 +30,9 @@ Color renderPixel(const WhittedIntegrator& integrator, const CameraModel& camera
         return integrator.traceCamera(ray, pixelSeed(x, y, 0), counters);
     }
     Color sum(0.0f);
-    const uint32_t patternSeed = pixelSeed(x, y, 0x5eed);
-    for (int k = 0; k < spp; ++k) {
-        Vec3 o = pixelSampleOffset(k, spp, patternSeed);
-        Ray ray = camera.generateRay(float(x) + o.x, float(y) + o.y);
-        sum += integrator.traceCamera(ray, pixelSeed(x, y, k), counters);
-    }
+    const PixelSamples samples(x, y, spp);
+    for (int k = 0; k < spp; ++k)
+        sum += integrator.traceCamera(samples.ray(camera, k), samples.seed(k), counters);
     return sum / float(spp);
 }
 
@@ -51,13 +48,12 @@ bool supersamplePixels(const TraceKernel& kernel, const int32_t* xs, const int32
         const std::size_t n = std::min(perCall, count - first);
         origins.clear(), dirs.clear(), seeds.clear();
         for (std::size_t i = first; i < first + n; ++i) {
-            const uint32_t patternSeed = pixelSeed(xs[i], ys[i], 0x5eed);
+            const PixelSamples samples(xs[i], ys[i], spp);
             for (int k = 0; k < spp; ++k) {
-                const Vec3 o = pixelSampleOffset(k, spp, patternSeed);
-                const Ray ray = camera.generateRay(float(xs[i]) + o.x, float(ys[i]) + o.y);
+                const Ray ray = samples.ray(camera, k);
                 origins.push_back(ray.origin);
                 dirs.push_back(ray.dir);
-                seeds.push_back(pixelSeed(xs[i], ys[i], k));
+                seeds.push_back(samples.seed(k));
             }
         }
         colors.resize(origins.size());

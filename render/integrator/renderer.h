@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "image/image.h"
+#include "integrator/pixel_samples.h"
 #include "integrator/sampling.h"
 #include "integrator/whitted.h"
 #include "snapshot/compiled_scene.h"
@@ -49,18 +50,7 @@ struct RenderResult {
     bool cancelled = false;     ///< Tiles not traced are black, with no ids.
 };
 
-/// pixelSeed(x, y, k) given the row's key hashKey(y) and the sample's key hashKey(k): a row
-/// of pixels works both keys out once.
-inline uint32_t pixelSeedKeyed(int x, uint32_t rowKey, uint32_t sampleKey) {
-    return hashKeyed(hashKeyed(uint32_t(x), rowKey), sampleKey);
-}
-/// Seed of sample `k` of pixel (x, y): depends on the pixel alone, not on tiles or threads.
-/// It is hashCombine(hashCombine(x, y), k).
-inline uint32_t pixelSeed(int x, int y, int k) {
-    return pixelSeedKeyed(x, hashKey(uint32_t(y)), hashKey(uint32_t(k)));
-}
-
-/// The supersampled colour of one pixel: `spp` samples on the pattern of pixelSampleOffset.
+/// The supersampled colour of one pixel: `spp` samples, those of PixelSamples.
 Color renderPixel(const WhittedIntegrator& integrator, const CameraModel& camera, int x, int y,
                   int spp, TraceCounters& counters);
 

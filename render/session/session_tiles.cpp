@@ -3,6 +3,7 @@
 // samples) into a TileResult, which the frame commits only if the generation is still current.
 #include <algorithm>
 
+#include "integrator/pixel_samples.h"
 #include "integrator/renderer.h"
 #include "integrator/trace_kernel.h"
 #include "session/session_plan.h"
@@ -178,14 +179,11 @@ bool supersampleTile(const TileInput& in, TileResult& out) {
             }
             const int count = f.sampleCount[i];
             const int end = std::min(plan.spp, count + plan.sppChunk);
-            const uint32_t patternSeed = pixelSeed(x, y, 0x5eed);
+            const PixelSamples pixelSamples(x, y, plan.spp);
             sampledPixels.push_back(i);
             out.sampleFirst.push_back(int(out.samples.size()));
-            for (int k = count; k < end; ++k) {
-                const Vec3 off = pixelSampleOffset(k, plan.spp, patternSeed);
-                out.samples.add(in.camera.generateRay(float(x) + off.x, float(y) + off.y),
-                                pixelSeed(x, y, k), i, 0);
-            }
+            for (int k = count; k < end; ++k)
+                out.samples.add(pixelSamples.ray(in.camera, k), pixelSamples.seed(k), i, 0);
         }
     }
     out.sampleFirst.push_back(int(out.samples.size()));
