@@ -8,9 +8,9 @@
 #include <atomic>
 #include <exception>
 #include <memory>
-#include <new>
 #include <string>
 
+#include "core/failure_message.h"
 #include "gui_mailbox.h"
 #include "image/image_io.h"
 #include "image/tonemap.h"
@@ -22,20 +22,6 @@ namespace rs::ui {
 namespace {
 
 const QString kJobDialogName = QStringLiteral("backgroundJob");
-
-/// What a worker's exception says to the user. A job's thread must never let one escape:
-/// QThread would call std::terminate and take the unsaved document with it.
-std::string describeFailure(std::exception_ptr failure) {
-    try {
-        std::rethrow_exception(failure);
-    } catch (const std::bad_alloc&) {
-        return "out of memory";
-    } catch (const std::exception& e) {
-        return e.what();
-    } catch (...) {
-        return "unknown error";
-    }
-}
 
 QProgressDialog* makeProgress(QWidget* parent, const QString& text, int maximum) {
     auto* dialog = new QProgressDialog(text, QObject::tr("Cancel"), 0, maximum, parent);
@@ -52,6 +38,8 @@ QProgressDialog* makeProgress(QWidget* parent, const QString& text, int maximum)
 /// (its window closes) the thread must be gone before the objects `work` reports to are:
 /// `cancel` is set first so the wait ends at the work's next check, not when it completes.
 /// Quitting the application sets it too, before any window is torn down.
+/// `work` must catch whatever it throws (describeFailure says what it was): an exception that
+/// escapes a QThread calls std::terminate and takes the unsaved document with it.
 QThread* startWorker(QObject* owner, std::shared_ptr<std::atomic<bool>> cancel,
                      std::function<void()> work) {
     QThread* thread = QThread::create(std::move(work));

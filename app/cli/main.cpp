@@ -2,11 +2,11 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
-#include <new>
 #include <string>
 
 #include "arguments.h"
 #include "commands.h"
+#include "core/failure_message.h"
 #include "raystudio_version.h"
 
 namespace {
@@ -115,11 +115,9 @@ int main(int argc, char** argv) {
     } catch (const rs::cli::UsageError& e) {
         std::fprintf(stderr, "raystudio-cli %s: %s\n", command.c_str(), e.message.c_str());
         return 2;
-    } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "raystudio-cli %s: out of memory\n", command.c_str());
-        return 1;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "raystudio-cli %s: %s\n", command.c_str(), e.what());
+    } catch (...) {
+        std::fprintf(stderr, "raystudio-cli %s: %s\n", command.c_str(),
+                     rs::describeFailure(std::current_exception()).c_str());
         return 1;
     }
 }

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/failure_message.h"
 #include "core/parallel.h"
 #include "session/dirty_region.h"
 #include "session/session_plan.h"
@@ -24,15 +25,7 @@ namespace {
 
 /// The observer's message for a failure of rendering or of applying a document.
 std::string failureMessage(std::exception_ptr failure) {
-    try {
-        std::rethrow_exception(failure);
-    } catch (const std::bad_alloc&) {
-        return "rendering failed: out of memory";
-    } catch (const std::exception& e) {
-        return std::string("rendering failed: ") + e.what();
-    } catch (...) {
-    }
-    return "rendering failed";
+    return "rendering failed: " + describeFailure(failure);
 }
 
 /// More regions than this are merged into their bounding box (a long, winding drag).
