@@ -16,6 +16,7 @@
 #include <functional>
 #include <vector>
 
+#include "core/statistics.h"
 #include "display_choice.h"
 #include "error_reporter.h"
 #include "integrator/renderer.h"
@@ -33,13 +34,6 @@ using Clock = std::chrono::steady_clock;
 
 double msBetween(Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
-/// The q-quantile (0..1) of `v` (nearest rank), 0 when empty.
-double quantile(std::vector<double> v, double q) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, std::size_t(q * double(v.size() - 1) + 0.5))];
 }
 
 struct Request {
@@ -242,7 +236,7 @@ bool Measurement::measureFullFrames(FullFrames& out) {
         image.push_back(renderImage(scene, options).ms);
         ++k;
     }
-    out = {quantile(pass, 0.5), quantile(shown, 0.5), quantile(image, 0.5), kFullFrameRounds};
+    out = {median(pass), median(shown), median(image), kFullFrameRounds};
     return true;
 }
 
@@ -312,22 +306,22 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
     o[QStringLiteral("frames_per_s")] = frames / seconds;
     o[QStringLiteral("generations_per_s")] = generations / seconds;
     o[QStringLiteral("whole_frames_per_s")] = wholeFrames / seconds;
-    o[QStringLiteral("whole_latency_median_ms")] = quantile(wholeLatency, 0.5);
-    o[QStringLiteral("latency_median_ms")] = quantile(latency, 0.5);
+    o[QStringLiteral("whole_latency_median_ms")] = median(wholeLatency);
+    o[QStringLiteral("latency_median_ms")] = median(latency);
     o[QStringLiteral("latency_p90_ms")] = quantile(latency, 0.9);
     o[QStringLiteral("edits")] = int(latency.size()) + neverShown;
     o[QStringLiteral("edits_never_shown")] = neverShown;
-    o[QStringLiteral("interactive_pass_median_ms")] = quantile(passMs, 0.5);
+    o[QStringLiteral("interactive_pass_median_ms")] = median(passMs);
     o[QStringLiteral("interactive_passes")] = int(passMs.size());
     o[QStringLiteral("interactive_passes_cancelled")] = cancelled;
-    o[QStringLiteral("governor_level_median")] = quantile(levels, 0.5);
+    o[QStringLiteral("governor_level_median")] = median(levels);
     o[QStringLiteral("governor_level_max")] = quantile(levels, 1.0);
-    o[QStringLiteral("input_handling_median_ms")] = quantile(handling, 0.5);
+    o[QStringLiteral("input_handling_median_ms")] = median(handling);
     o[QStringLiteral("input_handling_max_ms")] = quantile(handling, 1.0);
     o[QStringLiteral("input_handling_max_at")] = slowestAt;
-    o[QStringLiteral("paint_median_ms")] = quantile(paint, 0.5);
+    o[QStringLiteral("paint_median_ms")] = median(paint);
     o[QStringLiteral("paint_max_ms")] = quantile(paint, 1.0);
-    o[QStringLiteral("compose_median_ms")] = quantile(compose, 0.5);
+    o[QStringLiteral("compose_median_ms")] = median(compose);
     o[QStringLiteral("gui_stall_max_ms")] = std::max(0.0, quantile(probeGaps_, 1.0) - 1.0);
     o[QStringLiteral("gui_stall_p99_ms")] = std::max(0.0, quantile(probeGaps_, 0.99) - 1.0);
     double blocked = 0.0, probed = 0.0;
@@ -480,8 +474,8 @@ int Measurement::run() {
     o[QStringLiteral("full_frame_rounds")] = full.rounds;
     o[QStringLiteral("open_full_frame_ms")] = openPassMs;
     o[QStringLiteral("open_to_final_shown_ms")] = msBetween(openStart, openShown);
-    o[QStringLiteral("idle_paint_median_ms")] = quantile(idlePaint, 0.5);
-    o[QStringLiteral("idle_compose_median_ms")] = quantile(idleCompose, 0.5);
+    o[QStringLiteral("idle_paint_median_ms")] = median(idlePaint);
+    o[QStringLiteral("idle_compose_median_ms")] = median(idleCompose);
     window_.editor()->undoStack()->setClean();  // No save prompt.
 
     if (request_.json) {

@@ -6,6 +6,7 @@
 
 #include "arguments.h"
 #include "commands.h"
+#include "core/statistics.h"
 #include "integrator/renderer.h"
 
 namespace rs::cli {
@@ -24,12 +25,6 @@ struct Measurement {
     double medianMs;
     uint64_t rays;
 };
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 }  // namespace
 

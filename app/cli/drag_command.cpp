@@ -9,6 +9,7 @@
 
 #include "arguments.h"
 #include "commands.h"
+#include "core/statistics.h"
 #include "integrator/renderer.h"
 #include "io/input_file.h"
 #include "session/render_session.h"
@@ -30,13 +31,6 @@ double msSince(Clock::time_point t) {
 /// CPU time the process has used (all its threads), in milliseconds.
 double cpuMs() {
     return 1000.0 * double(std::clock()) / double(CLOCKS_PER_SEC);
-}
-
-double medianOf(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 Vec3 parseVec3(const std::string& text) {
@@ -87,7 +81,7 @@ Phases phaseMedians(const std::vector<Step>& log) {
         plan.push_back(s.planMs);
         pass.push_back(s.passMs);
     }
-    return {medianOf(cpu), medianOf(edit), medianOf(mark), medianOf(plan), medianOf(pass)};
+    return {median(cpu), median(edit), median(mark), median(plan), median(pass)};
 }
 
 }  // namespace
@@ -197,8 +191,8 @@ int runDrag(int argc, char** argv) {
         imageFrames.push_back(renderImage(imageScene, options).ms);
         imageCpu.push_back(cpuMs() - imageCpuStart);
     }
-    const double sessionFrameMs = medianOf(sessionFrames), imageFrameMs = medianOf(imageFrames);
-    const double sessionCpuMs = medianOf(sessionCpu), imageCpuMs = medianOf(imageCpu);
+    const double sessionFrameMs = median(sessionFrames), imageFrameMs = median(imageFrames);
+    const double sessionCpuMs = median(sessionCpu), imageCpuMs = median(imageCpu);
 
     const std::size_t total = std::size_t(doc.render.width) * std::size_t(doc.render.height);
     std::vector<double> times, fractions, levels;
@@ -207,8 +201,8 @@ int runDrag(int argc, char** argv) {
         fractions.push_back(double(s.traced) / double(total));
         levels.push_back(double(s.level));
     }
-    const double stepMedian = medianOf(times), fractionMedian = medianOf(fractions);
-    const double levelMedian = medianOf(levels);
+    const double stepMedian = median(times), fractionMedian = median(fractions);
+    const double levelMedian = median(levels);
     const Phases phases = phaseMedians(log);
     if (args.has("--json")) {
         std::printf("{\"steps\": [");
