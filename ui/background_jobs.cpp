@@ -12,10 +12,8 @@
 
 #include "core/failure_message.h"
 #include "gui_mailbox.h"
-#include "image/image_io.h"
 #include "image/tonemap.h"
-#include "integrator/renderer.h"
-#include "snapshot/compiled_scene.h"
+#include "integrator/render_to_file.h"
 
 namespace rs::ui {
 
@@ -108,37 +106,29 @@ QThread* renderToFileAsync(QObject* receiver, const SceneDocument& doc, const QS
                            std::shared_ptr<const std::atomic<bool>> hold, RenderReport report) {
     const GuiMailbox toGui(receiver);
     return startWorker(receiver, cancel, [=, file = path.toStdString()] {
-        std::string error = imageSizeError(doc.render.width, doc.render.height);
+        std::string error;
         bool ok = false;
-        if (error.empty()) {
-            try {
-                const CompiledScene scene(doc, nullptr, engine);
-                RenderOptions options;
-                options.threads = threads;
-                options.cancel = cancel.get();
-                options.hold = hold.get();
-                options.ids = false;  // Only the image is written.
-                if (report.progress)
-                    options.progress = [toGui, progress = report.progress](int d, int total) {
-                        toGui.post([=] { progress(d, total); });
-                    };
-                if (report.tile)
-                    options.tileDone = [toGui, tile = report.tile, op = doc.render.tonemap,
-                                        exposure = doc.render.exposure](
-                                           const ImageRgb& image, int x0, int y0, int x1, int y1) {
-                        // Tone-mapped here, on the worker: the GUI thread only blits.
-                        const QImage pixels = displayTile(image, x0, y0, x1, y1, op, exposure);
-                        const QRect where(x0, y0, x1 - x0, y1 - y0);
-                        toGui.post([=] { tile(pixels, where); });
-                    };
-                const RenderResult result = renderImage(scene, options);
-                // Checked once more so a cancel that lands after the last tile writes nothing.
-                ok = !result.cancelled && !*cancel &&
-                     writeImage(file, result.image, doc.render.tonemap, doc.render.exposure, error);
-            } catch (...) {
-                error =
-                    "rendering " + file + " failed: " + describeFailure(std::current_exception());
-            }
+        try {
+            RenderOptions options;
+            options.threads = threads;
+            options.cancel = cancel.get();
+            options.hold = hold.get();
+            if (report.progress)
+                options.progress = [toGui, progress = report.progress](int d, int total) {
+                    toGui.post([=] { progress(d, total); });
+                };
+            if (report.tile)
+                options.tileDone = [toGui, tile = report.tile, op = doc.render.tonemap,
+                                    exposure = doc.render.exposure](const ImageRgb& image, int x0,
+                                                                    int y0, int x1, int y1) {
+                    // Tone-mapped here, on the worker: the GUI thread only blits.
+                    const QImage pixels = displayTile(image, x0, y0, x1, y1, op, exposure);
+                    const QRect where(x0, y0, x1 - x0, y1 - y0);
+                    toGui.post([=] { tile(pixels, where); });
+                };
+            ok = renderToFile(doc, engine, file, options, error);
+        } catch (...) {
+            error = "rendering " + file + " failed: " + describeFailure(std::current_exception());
         }
         toGui.post([=, done = report.done] {
             if (done) done(ok, QString::fromStdString(error));

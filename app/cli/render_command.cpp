@@ -8,10 +8,10 @@
 
 #include "arguments.h"
 #include "commands.h"
-#include "image/image_io.h"
 #include "image/part_file.h"
 #include "integrator/cost_estimate.h"
 #include "integrator/image_part.h"
+#include "integrator/render_to_file.h"
 #include "integrator/renderer.h"
 #include "io/render_fingerprint.h"
 #include "progress_bar.h"
@@ -91,17 +91,19 @@ int runRender(int argc, char** argv) {
         return 2;
     }
 
-    const CompiledScene scene(doc, nullptr, engineOption(args));
     ProgressBar bar;
     options.progress = [&bar](int done, int total) { bar.update(done, total); };
-    RenderResult result = renderImage(scene, options);
-
+    const EngineKind engine = engineOption(args);
+    RenderResult result;
     std::string error;
-    const bool written =
-        args.has("--tile")
-            ? writePart(*output, partHeader(doc, engineOption(args), part), result.image,
-                        result.ids, error)
-            : writeImage(*output, result.image, doc.render.tonemap, doc.render.exposure, error);
+    bool written = false;
+    if (args.has("--tile")) {
+        result = renderImage(CompiledScene(doc, nullptr, engine), options);
+        written =
+            writePart(*output, partHeader(doc, engine, part), result.image, result.ids, error);
+    } else {
+        written = renderToFile(doc, engine, *output, options, error, &result);
+    }
     if (!written) {
         std::fprintf(stderr, "raystudio-cli render: %s\n", error.c_str());
         return 2;
