@@ -35,34 +35,16 @@ PixelRect screenFootprint(const CameraModel& camera, const Aabb& box) {
 
 namespace {
 
-/// A segment or ray with its reciprocal direction, so testing it against several boxes costs
-/// no further divisions.
-struct Probe {
-    Vec3 a, d, inv;
-    float tmax;
-    Probe(const Vec3& from, const Vec3& dir, float t) : a(from), d(dir), tmax(t) {
-        for (int k = 0; k < 3; ++k) inv[k] = std::abs(d[k]) < 1e-12f ? 0.0f : 1.0f / d[k];
-    }
-    bool hits(const Aabb& box) const {
-        float t0 = 0.0f, t1 = tmax;
-        for (int k = 0; k < 3; ++k) {
-            if (inv[k] == 0.0f) {
-                if (a[k] < box.min[k] || a[k] > box.max[k]) return false;
-                continue;
-            }
-            float tn = (box.min[k] - a[k]) * inv[k], tf = (box.max[k] - a[k]) * inv[k];
-            if (tn > tf) std::swap(tn, tf);
-            t0 = std::max(t0, tn);
-            t1 = std::min(t1, tf);
-            if (t0 > t1) return false;
-        }
-        return true;
-    }
-};
+/// Whether the ray from `from` along `dir` meets `box` within t in [0, tmax] (t in units of
+/// |dir|): the core's slab test, whose rounding guard keeps the answer conservative (a box
+/// the segment truly touches is never rejected), so no pixel that may change goes unmarked.
+bool probeHits(const Vec3& from, const Vec3& dir, float tmax, const Aabb& box) {
+    return intersectSlabs(box, Ray::make(from, dir), 0.0f, tmax);
+}
 
 /// Segment [a, b] against a box.
 bool segmentHitsBox(const Vec3& a, const Vec3& b, const Aabb& box) {
-    return Probe(a, b - a, 1.0f).hits(box);
+    return probeHits(a, b - a, 1.0f, box);
 }
 
 Aabb grown(const Aabb& b, float r) {
@@ -200,15 +182,16 @@ bool treeMayCross(const MarkContext& c, std::size_t i, int tile) {
         for (const Aabb& region : c.regions) {
             if (!c.segments) break;
             if (!s.escapes && !span.overlaps(region)) continue;
-            const Probe ray = s.escapes ? Probe(s.a, s.b, kInfinity) : Probe(s.a, s.b - s.a, 1.0f);
-            if (ray.hits(region)) return true;
+            const bool hits = s.escapes ? probeHits(s.a, s.b, kInfinity, region)
+                                        : probeHits(s.a, s.b - s.a, 1.0f, region);
+            if (hits) return true;
         }
         if (!c.shadows || s.escapes) continue;
         for (std::size_t li = 0; li < c.lights.size(); ++li)
             for (std::size_t r = 0; r < c.regions.size(); ++r)
                 if (c.cones[r * c.lights.size() + li].mayContain(s.b, 0.0f) &&
-                    Probe(s.b, c.lights[li].position - s.b, 1.0f)
-                        .hits(c.grownRegions[r * c.lights.size() + li]))
+                    probeHits(s.b, c.lights[li].position - s.b, 1.0f,
+                              c.grownRegions[r * c.lights.size() + li]))
                     return true;
     }
     return false;
@@ -308,8 +291,7 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
             for (std::size_t r = 0; r < c.regions.size(); ++r) {
                 if (!c.cones[r * c.lights.size() + li].mayContain(p, hb.w)) continue;
                 const Aabb& g = c.grownRegions[r * c.lights.size() + li];
-                if (Probe(p, c.lights[li].position - p, 1.0f)
-                        .hits(hb.w > 0.0f ? grown(g, hb.w) : g))
+                if (probeHits(p, c.lights[li].position - p, 1.0f, hb.w > 0.0f ? grown(g, hb.w) : g))
                     return true;
             }
         }
