@@ -15,7 +15,7 @@
 #include <QSpinBox>
 #include <QStandardPaths>
 
-#include "integrator/image_part.h"
+#include "image/image_part.h"
 #include "scene/document.h"
 
 namespace rs::ui {

@@ -11,8 +11,8 @@
 #include "commands.h"
 #include "farm_scripts.h"
 #include "image/image_io.h"
+#include "image/image_part.h"
 #include "integrator/cost_estimate.h"
-#include "integrator/image_part.h"
 
 namespace rs::cli {
 

@@ -8,9 +8,9 @@
 
 #include "arguments.h"
 #include "commands.h"
+#include "image/image_part.h"
 #include "image/part_file.h"
 #include "integrator/cost_estimate.h"
-#include "integrator/image_part.h"
 #include "integrator/render_to_file.h"
 #include "integrator/renderer.h"
 #include "io/render_fingerprint.h"

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "image/image.h"
-#include "integrator/image_part.h"
+#include "image/image_part.h"
 #include "scene/document.h"
 
 namespace rs {

@@ -32,7 +32,7 @@ struct RenderOptions {
     /// pass wrote tile [x0, x1) x [y0, y1) of `image`, so a viewer can show the image filling
     /// in; other tiles of `image` are being written meanwhile. May be empty.
     std::function<void(const ImageRgb& image, int x0, int y0, int x1, int y1)> tileDone;
-    /// Render only image rows [firstRow, endRow) (a part, integrator/image_part.h); endRow < 0
+    /// Render only image rows [firstRow, endRow) (a part, image/image_part.h); endRow < 0
     /// means to the last row. Every pixel gets the value a whole-image render gives it: seeds
     /// depend on the pixel alone, and adaptive decisions read a one-row margin traced around
     /// the band. RenderResult's image and ids then hold the band's rows only, and tileDone's

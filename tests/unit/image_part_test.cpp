@@ -1,6 +1,6 @@
 // Parts of a final image (render --tile I/N, merge): band geometry, part files, the merge's
 // refusals, and that parts of every bundled scene merge bit-identically to a whole render.
-#include "integrator/image_part.h"
+#include "image/image_part.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

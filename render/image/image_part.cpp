@@ -1,5 +1,5 @@
 // Band geometry of image parts and the "I/N" notation the command line uses for them.
-#include "integrator/image_part.h"
+#include "image/image_part.h"
 
 #include <charconv>
 #include <cstdint>
