@@ -9,9 +9,9 @@
 
 #include "arguments.h"
 #include "commands.h"
+#include "core/input_file.h"
 #include "core/statistics.h"
 #include "integrator/renderer.h"
-#include "io/input_file.h"
 #include "session/render_session.h"
 
 namespace rs::cli {

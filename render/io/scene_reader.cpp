@@ -2,7 +2,7 @@
 #include <climits>
 #include <filesystem>
 
-#include "io/input_file.h"
+#include "core/input_file.h"
 #include "io/scene_io.h"
 #include "io/scene_reader_sections.h"
 

@@ -15,7 +15,7 @@
 #include <mutex>
 
 #include "core/fast_angles.h"
-#include "io/input_file.h"
+#include "core/input_file.h"
 #include "texture/srgb_input.h"
 #include "texture/texel_cache.h"
 

@@ -9,7 +9,7 @@
 #include <ostream>
 #include <string>
 
-#include "io/input_file.h"
+#include "core/input_file.h"
 #include "io/scene_io.h"
 
 namespace rs {

@@ -1,5 +1,5 @@
 // Input file guards: stat() before open, so directories, devices and FIFOs never block a read.
-#include "io/input_file.h"
+#include "core/input_file.h"
 
 #include <cerrno>
 #include <cstdio>
