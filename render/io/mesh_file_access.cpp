@@ -1,7 +1,7 @@
 // MeshFileAccess: assimp's file access behind checkInputFile.
 #include "io/mesh_file_access.h"
 
-#include "io/input_file.h"
+#include "core/input_file.h"
 
 namespace rs {
 

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/input_file.h"
+#include "core/input_file.h"
 
 namespace rs {
 

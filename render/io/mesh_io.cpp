@@ -15,9 +15,9 @@
 #include <new>
 #include <system_error>
 
+#include "core/input_file.h"
 #include "io/asset_content.h"
 #include "io/child_process.h"
-#include "io/input_file.h"
 #include "io/mesh_header_check.h"
 #include "io/mesh_import.h"
 #include "io/mesh_wire.h"

@@ -16,7 +16,7 @@
 #include <future>
 #include <string>
 
-#include "io/input_file.h"
+#include "core/input_file.h"
 
 namespace rs {
 namespace {
