@@ -207,19 +207,34 @@ void MainWindow::importMesh(const QString& path, std::optional<QPoint> at) {
             r.asset ? adoptAssetLooks(doc, id, *r.asset, QFileInfo(path).fileName().toStdString(),
                                       importedImageFolder(editor_->filePath()).toStdString())
                     : AdoptedLooks{};
+        const std::size_t lights =
+            r.asset ? adoptAssetLights(doc, id, *r.asset).size() : std::size_t(0);
         const QString name = QString::fromStdString(doc.findObject(id)->name);
+        // The asset's first camera as the scene's, when the user wants it (one undo step).
+        if (r.asset && !r.asset->views.empty() &&
+            askYesNo(this, tr("Import %1").arg(name),
+                     tr("%1 brings camera \"%2\". Look through it (it becomes the scene "
+                        "camera)?")
+                         .arg(name, QString::fromStdString(r.asset->views[0].name))))
+            doc.camera = placedAssetCamera(r.asset->views[0], *doc.findObject(id));
         editor_->edit(tr("Import %1").arg(name), std::move(doc));
         editor_->setSelection(id);
         QString said = tr("Imported %1").arg(name);
         if (!looks.materials.empty())
             said += tr(" with %n material(s)", "", int(looks.materials.size()));
+        if (lights > 0) said += tr(" and %n light(s)", "", int(lights));
         if (factor != 1.0f)
             said += tr(", scaled by %1 to fit the view (Properties: Transform, Scale)")
                         .arg(double(factor), 0, 'g', 3);
         statusBar()->showMessage(said, 10000);
-        if (!looks.notes.empty()) {
+        std::vector<std::string> notes = looks.notes;
+        if (r.asset)
+            for (const std::string& note : r.asset->lightNotes)
+                notes.push_back("asset \"" + QFileInfo(path).fileName().toStdString() +
+                                "\": " + note);
+        if (!notes.empty()) {
             QStringList lines;
-            for (const std::string& note : looks.notes) {
+            for (const std::string& note : notes) {
                 std::fprintf(stderr, "raystudio: %s\n", note.c_str());
                 lines << QString::fromStdString(note);
             }

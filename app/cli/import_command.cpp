@@ -1,6 +1,6 @@
 // `raystudio-cli import ASSET -o SCENE`: a scene file holding one asset (glTF, OBJ, FBX, ...
-// through assimp) with its materials and textures, a key light and a camera that frames it,
-// ready for `render`.
+// through assimp) with its materials and textures, its lights (or a key light) and a camera
+// that frames it (or its own), ready for `render`.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -43,13 +43,16 @@ Light keyLight(const Aabb& box) {
 
 int runImport(int argc, char** argv) {
     OptionSpec spec;
-    spec.valued = {"--output", "--width", "--height"};
+    spec.valued = {"--output", "--width", "--height", "--camera"};
     spec.flags = {"--flat-normals"};
     spec.aliases = {{"-o", "--output"}};
     Arguments args(argc, argv, 2, spec);
     if (args.positional().size() != 1) throw UsageError{"expects exactly one asset file"};
     const auto output = args.value("--output");
     if (!output) throw UsageError{"needs -o SCENE.scene.json"};
+    const std::string camera = args.value("--camera").value_or("frame");
+    if (camera != "frame" && camera != "asset")
+        throw UsageError{"--camera must be frame or asset, got \"" + camera + "\""};
     SceneDocument doc;
     doc.render.width = args.intValue("--width", 1, 16384).value_or(doc.render.width);
     doc.render.height = args.intValue("--height", 1, 16384).value_or(doc.render.height);
@@ -92,18 +95,37 @@ int runImport(int argc, char** argv) {
                         fs::path(asset).filename().string(), sceneDir.string());
     for (const std::string& note : looks.notes)
         std::fprintf(stderr, "raystudio-cli: %s\n", note.c_str());
+    const AssetContent none;
+    const AssetContent& content = loaded.asset ? *loaded.asset : none;
+    for (const std::string& note : content.lightNotes)
+        std::fprintf(stderr, "raystudio-cli: asset \"%s\": %s\n",
+                     fs::path(asset).filename().string().c_str(), note.c_str());
     doc.lights.clear();
-    doc.addLight(keyLight(placed));
-    doc.camera = framing(placed, doc.render);
+    const std::size_t assetLights = adoptAssetLights(doc, id, content).size();
+    if (assetLights == 0) doc.addLight(keyLight(placed));
+    if (camera == "asset") {
+        if (content.views.empty()) {
+            std::fprintf(stderr, "raystudio-cli: %s has no camera (--camera asset)\n",
+                         asset.c_str());
+            return 2;
+        }
+        doc.camera = placedAssetCamera(content.views[0], *doc.findObject(id));
+    } else {
+        doc.camera = framing(placed, doc.render);
+    }
 
     std::string error;
     if (!saveScene(scene.string(), doc, error)) {
         std::fprintf(stderr, "raystudio-cli: %s\n", error.c_str());
         return 1;
     }
-    std::printf("wrote %s: %zu triangles, %zu materials, %zu embedded images, 1 key light\n",
+    std::printf("wrote %s: %zu triangles, %zu materials, %zu embedded images, %s, %s\n",
                 scene.string().c_str(), loaded.mesh->triangleCount(), looks.materials.size(),
-                looks.images.size());
+                looks.images.size(),
+                assetLights ? (std::to_string(assetLights) + " lights of the asset").c_str()
+                            : "a key light (the asset has none)",
+                camera == "asset" ? ("its camera \"" + content.views[0].name + "\"").c_str()
+                                  : "a camera that frames it");
     std::printf("moved by (%g, %g, %g) to rest on y = 0, centred over the origin\n",
                 double(-centre.x + 0.0f), double(-bounds.min.y + 0.0f), double(-centre.z + 0.0f));
     return 0;

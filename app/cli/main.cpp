@@ -45,9 +45,10 @@ const char* const kUsage =
     "      render on a Slurm cluster: a job array of N parts and a merge job (sbatch)\n"
     "  farm status JOB\n"
     "      progress of a submitted job (squeue, sacct)\n"
-    "  import ASSET -o SCENE [--width W] [--height H] [--flat-normals]\n"
+    "  import ASSET -o SCENE [--width W] [--height H] [--flat-normals] [--camera frame|asset]\n"
     "      a scene holding the asset (glTF, OBJ, FBX, ...) with its materials and textures\n"
-    "      (embedded images written next to SCENE), a key light and a camera that frames it\n"
+    "      (embedded images written next to SCENE), its lights (a key light when it has\n"
+    "      none) and a camera that frames it (asset: the asset's first camera)\n"
     "\n"
     "results go to stdout, errors to stderr; exit codes: 0 success, 2 bad input or usage,\n"
     "1 any other failure\n";

@@ -55,8 +55,17 @@ std::string encodeAssetLooks(const AssetContent& content, const std::string& ass
     Json images = Json::array();
     for (const AssetImage& image : content.images)
         images.push_back({{"name", image.name}, {"format", image.formatHint}});
+    doc.lights = content.lights;
+    Json views = Json::array();
+    for (const AssetView& view : content.views) {
+        SceneDocument one;
+        one.camera = view.camera;
+        views.push_back({{"name", view.name}, {"scene", serializeScene(one, assetDir)}});
+    }
     Json out;
     out["scene"] = serializeScene(doc, assetDir);
+    out["views"] = std::move(views);
+    out["light_notes"] = content.lightNotes;
     out["looks"] = std::move(looks);
     out["images"] = std::move(images);
     return dumpJson(out);
@@ -82,6 +91,24 @@ bool decodeAssetLooks(const std::string& text, const std::string& assetDir, Asse
         return false;
     }
     content.looks.clear();
+    content.lights = std::move(scene.document.lights);
+    content.views.clear();
+    for (const Json& view : in.value("views", Json::array())) {
+        if (!view.is_object() || !view.contains("name") || !view["name"].is_string() ||
+            !view.contains("scene") || !view["scene"].is_string()) {
+            why = "an asset camera that is not the expected text";
+            return false;
+        }
+        SceneLoadResult camera = parseScene(view["scene"].get<std::string>(), assetDir, "asset");
+        if (!camera.ok()) {
+            why = "an asset camera that does not read back: " + camera.errorText();
+            return false;
+        }
+        content.views.push_back({view["name"].get<std::string>(), camera.document.camera});
+    }
+    content.lightNotes.clear();
+    for (const Json& note : in.value("light_notes", Json::array()))
+        if (note.is_string()) content.lightNotes.push_back(note.get<std::string>());
     for (std::size_t i = 0; i < looks.size(); ++i) {
         const Json& j = looks[i];
         AssetLook look;

@@ -32,9 +32,21 @@ struct AssetLook {
     std::vector<std::string> notes;  ///< What the asset says that the material cannot.
 };
 
+/// A camera of the asset, in the asset's own coordinates.
+struct AssetView {
+    std::string name;
+    Camera camera;
+};
+
 struct AssetContent {
     std::vector<AssetLook> looks;  ///< In increasing file material index.
     std::vector<AssetImage> images;
+    /// The asset's lights (io/asset_lights.h) in its own coordinates, named uniquely and
+    /// never "" within the asset; their ids are not given yet.
+    std::vector<Light> lights;
+    std::vector<AssetView> views;  ///< Its cameras, in its own coordinates.
+    /// What its lights and cameras could not keep (each names the light or camera).
+    std::vector<std::string> lightNotes;
     /// The look for file material `index`, or null when no triangle uses it.
     const AssetLook* look(uint32_t index) const;
 };
@@ -42,8 +54,8 @@ struct AssetContent {
 /// Longest embedded image accepted from an asset, like an image file's limit.
 inline constexpr std::size_t kMaxAssetImageBytes = std::size_t(256) << 20;
 
-/// The looks as text (the images' bytes travel beside it); `assetDir` is the asset's folder,
-/// against which texture paths are written and read.
+/// The looks, lights and cameras as text (the images' bytes travel beside it); `assetDir` is the
+/// asset's folder, against which texture paths are written and read.
 std::string encodeAssetLooks(const AssetContent& content, const std::string& assetDir);
 /// Reads what encodeAssetLooks wrote into `content.looks` and the names of `images` (which
 /// must already have their count); false with `why` set when the text is not that.

@@ -1,7 +1,9 @@
 // An imported asset's materials and embedded images into a document.
 #include "io/asset_looks.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -90,6 +92,41 @@ AdoptedLooks adoptAssetLooks(SceneDocument& doc, ObjectId id, const AssetContent
     }
     mesh->partMaterials = std::move(parts);
     return adopted;
+}
+
+std::vector<ObjectId> adoptAssetLights(SceneDocument& doc, ObjectId id, const AssetContent& asset) {
+    std::vector<ObjectId> ids;
+    const Object* o = doc.findObject(id);
+    if (!o) return ids;
+    const Mat4 m = o->transform.matrix();
+    const Mat3 m3(m);
+    const float scale = std::abs(o->transform.scale.x);
+    auto taken = [&](const std::string& name) {
+        return std::any_of(doc.objects.begin(), doc.objects.end(),
+                           [&](const Object& x) { return x.name == name; }) ||
+               std::any_of(doc.lights.begin(), doc.lights.end(),
+                           [&](const Light& x) { return x.name == name; });
+    };
+    for (Light light : asset.lights) {
+        light.name = numberedName(light.name, taken);
+        light.position = Vec3(m * glm::vec4(light.position, 1.0f));
+        light.target = Vec3(m * glm::vec4(light.target, 1.0f));
+        if (const Vec3 d = m3 * light.direction; glm::length(d) > 0.0f)
+            light.direction = glm::normalize(d);
+        light.radius *= scale;
+        ids.push_back(doc.addLight(std::move(light)));
+    }
+    return ids;
+}
+
+Camera placedAssetCamera(const AssetView& view, const Object& placed) {
+    const Mat4 m = placed.transform.matrix();
+    Camera c = view.camera;
+    c.position = Vec3(m * glm::vec4(c.position, 1.0f));
+    c.target = Vec3(m * glm::vec4(c.target, 1.0f));
+    if (const Vec3 up = Mat3(m) * c.up; glm::length(up) > 0.0f) c.up = glm::normalize(up);
+    c.orthoHeight *= std::abs(placed.transform.scale.y);
+    return c;
 }
 
 }  // namespace rs

@@ -1,5 +1,6 @@
-// Giving an imported mesh object its asset's looks: the asset's materials become the
-// document's, its parts name them, its embedded images become files.
+// Giving an imported mesh object what its asset brought: the asset's materials become the
+// document's, its parts name them, its embedded images become files; its lights and cameras
+// are placed as the object is.
 #pragma once
 
 #include <string>
@@ -26,5 +27,14 @@ struct AdoptedLooks {
 /// notes and files (its file name without folder).
 AdoptedLooks adoptAssetLooks(SceneDocument& doc, ObjectId id, const AssetContent& asset,
                              const std::string& assetName, const std::string& imageDir);
+
+/// Adds the lights of `asset` to `doc`, placed by mesh object `id`'s transform as its
+/// geometry is (positions, targets and directions; a sphere light's radius scaled), each
+/// named as in the asset unless an object or light of `doc` has that name ("name.001", ...).
+/// Returns the ids given.
+std::vector<ObjectId> adoptAssetLights(SceneDocument& doc, ObjectId id, const AssetContent& asset);
+
+/// Camera `view` of the asset placed by `placed`'s transform (mesh object of the asset).
+Camera placedAssetCamera(const AssetView& view, const Object& placed);
 
 }  // namespace rs

@@ -14,6 +14,7 @@
 #include <limits>
 
 #include "io/asset_content.h"
+#include "io/asset_lights.h"
 #include "io/asset_material.h"
 #include "io/mesh_file_access.h"
 
@@ -130,6 +131,21 @@ AssetContent collectAssetContent(const aiScene& scene, const std::string& file,
     }
     return content;
 }
+/// The asset's lights and cameras, named uniquely (and never "") within the asset.
+void addLightsAndViews(AssetContent& content, AssetLightsAndCameras found) {
+    for (Light& light : found.lights) {
+        light.name = numberedName(
+            light.name.empty() ? "asset light" : light.name, [&](const std::string& name) {
+                return std::any_of(content.lights.begin(), content.lights.end(),
+                                   [&](const Light& l) { return l.name == name; });
+            });
+        content.lights.push_back(std::move(light));
+    }
+    for (AssetCamera& camera : found.cameras)
+        content.views.push_back(
+            {camera.name.empty() ? "asset camera" : camera.name, camera.camera});
+    content.lightNotes = std::move(found.notes);
+}
 }  // namespace
 
 MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals) {
@@ -146,7 +162,16 @@ MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals)
                      aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure;
     // Dropping flat normals first lets identical positions join into one vertex.
     flags |= smoothNormals ? aiProcess_GenSmoothNormals : aiProcess_DropNormals;
-    const aiScene* scene = importer.ReadFile(file, flags);
+    // Lights and cameras are read before the geometry steps: pre-transforming the vertices
+    // moves a glTF camera a second time and drops the nodes that place them (asset_lights.h).
+    // The steps then run in assimp's own order, as if ReadFile had been given them.
+    const aiScene* scene = importer.ReadFile(file, aiProcess_ValidateDataStructure);
+    if (!scene) {
+        std::string why = importer.GetErrorString();
+        return fail(why.empty() ? "assimp could not read it" : "assimp: " + why);
+    }
+    AssetLightsAndCameras lightsAndCameras = assetLightsAndCameras(*scene, Mat4(1.0f));
+    scene = importer.ApplyPostProcessing(flags & ~unsigned(aiProcess_ValidateDataStructure));
     if (!scene) {
         std::string why = importer.GetErrorString();
         return fail(why.empty() ? "assimp could not read it" : "assimp: " + why);
@@ -221,7 +246,9 @@ MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals)
     if (!anyUvs) mesh->uvs.clear();
     compact(*mesh);
     if (smoothNormals) repairNormals(*mesh);
-    result.asset = std::make_shared<const AssetContent>(collectAssetContent(*scene, file, *mesh));
+    AssetContent asset = collectAssetContent(*scene, file, *mesh);
+    addLightsAndViews(asset, std::move(lightsAndCameras));
+    result.asset = std::make_shared<const AssetContent>(std::move(asset));
     result.mesh = std::move(mesh);
     return result;
 }

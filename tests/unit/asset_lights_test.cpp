@@ -18,6 +18,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "io/asset_looks.h"
+#include "io/mesh_io.h"
+
 namespace rs {
 namespace {
 namespace fs = std::filesystem;
@@ -319,6 +322,45 @@ TEST_F(AssetLightsGltf, LightsAndCamerasFollowTheAssetsPlacement) {
 }
 
 /// A scene as another importer (FBX, Collada) would leave it, for what glTF cannot say.
+// The import proper: the child reads the lights and cameras before pre-transforming the
+// vertices, sends them over the wire, and adopting them places them as the asset is placed.
+TEST_F(AssetLightsGltf, ThroughTheImport_LightsAndCamerasArriveAndFollowThePlacement) {
+    const MeshLoadResult r = loadMesh(writeGltf(), true);
+    ASSERT_TRUE(r.ok()) << r.error;
+    ASSERT_TRUE(r.asset);
+    const Light* bulb = nullptr;
+    for (const Light& l : r.asset->lights)
+        if (l.name == "Bulb") bulb = &l;
+    ASSERT_NE(bulb, nullptr);
+    expectNear(bulb->position, 1, 2, 3, "bulb through the child");
+    const AssetView* eye = nullptr;
+    for (const AssetView& v : r.asset->views)
+        if (v.name == "Eye") eye = &v;
+    ASSERT_NE(eye, nullptr);
+    expectNear(eye->camera.position, 0, 1, 5, "eye through the child");
+
+    SceneDocument doc;
+    Object taken;
+    taken.name = "Bulb";  // an object already bears the light's name
+    doc.addObject(taken);
+    Object asset;
+    asset.name = "asset";
+    asset.geometry = MeshGeometry{};
+    asset.transform.translate = Vec3(0, 5, 0);
+    asset.transform.scale = Vec3(2);
+    const ObjectId id = doc.addObject(asset);
+    const std::vector<ObjectId> ids = adoptAssetLights(doc, id, *r.asset);
+    EXPECT_EQ(ids.size(), r.asset->lights.size());
+    const Light* placed = nullptr;
+    for (const Light& l : doc.lights)
+        if (l.name == "Bulb.001") placed = &l;
+    ASSERT_NE(placed, nullptr);
+    expectNear(placed->position, 2, 9, 6, "bulb placed (scaled 2, raised 5)");
+    const Camera camera = placedAssetCamera(*eye, *doc.findObject(id));
+    expectNear(camera.position, 0, 7, 10, "eye placed (scaled 2, raised 5)");
+    EXPECT_NEAR(glm::length(camera.up), 1.0f, 1e-6f);
+}
+
 struct HandScene {
     aiScene scene;
     HandScene() {

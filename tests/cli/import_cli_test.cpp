@@ -1,0 +1,72 @@
+// raystudio-cli import: an asset becomes a scene with its parts' materials, its lights or a
+// key light and a framing camera, which validates and renders; bad input is an error naming it.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_run.h"
+
+namespace {
+namespace fs = std::filesystem;
+
+class ImportCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("raystudio-import-cli-" + std::to_string(getpid()));
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path dir_;
+};
+
+const std::string kBox = std::string(RAYSTUDIO_SCENES_DIR) + "/meshes/two-tone-box.obj";
+
+TEST_F(ImportCli, TwoPartObj_BecomesASceneWithItsMaterials_ThatRenders) {
+    const std::string scene = (dir_ / "box.scene.json").string();
+    const CliRun run = cli("import '" + kBox + "' -o '" + scene + "' --width 64 --height 48");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("12 triangles, 2 materials"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("a key light (the asset has none)"), std::string::npos) << run.out;
+    std::ifstream in(scene);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_EQ(j["materials"].size(), 2u);
+    EXPECT_EQ(j["materials"][0]["name"], "body");
+    EXPECT_EQ(j["materials"][1]["name"], "lid");
+    // The MTL's Kd; assimp numbers its own default material 0, then body 1 and lid 2.
+    EXPECT_EQ(j["materials"][1]["color"], nlohmann::json({0.2, 0.45, 0.7}));
+    EXPECT_EQ(j["objects"][0]["part_materials"], nlohmann::json({nullptr, "body", "lid"}));
+    EXPECT_EQ(j["lights"].size(), 1u);
+    // Resting on y = 0: the unit box is raised by half its height.
+    EXPECT_EQ(j["objects"][0]["translate"], nlohmann::json({0.0, 0.5, 0.0}));
+
+    EXPECT_EQ(cli("validate '" + scene + "'").out, "ok\n");
+    const std::string image = (dir_ / "box.png").string();
+    const CliRun render = cli("render '" + scene + "' -o '" + image + "'");
+    EXPECT_EQ(render.exitCode, 0) << render.err;
+    EXPECT_TRUE(fs::exists(image));
+}
+
+TEST_F(ImportCli, BadInput_IsAnErrorNamingIt) {
+    const std::string scene = (dir_ / "x.scene.json").string();
+    const std::string missing = (dir_ / "nothing.glb").string();
+    CliRun run = cli("import '" + missing + "' -o '" + scene + "'");
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("mesh \"" + missing + "\": file not found"), std::string::npos)
+        << run.err;
+    run = cli("import '" + kBox + "' -o '" + scene + "' --camera asset");
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("has no camera (--camera asset)"), std::string::npos) << run.err;
+    run = cli("import '" + kBox + "' -o '" + scene + "' --camera side");
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("--camera must be frame or asset"), std::string::npos) << run.err;
+    run = cli("import '" + kBox + "' -o '" + (dir_ / "no" / "x.scene.json").string() + "'");
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("the folder does not exist"), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(scene));
+}
+
+}  // namespace
