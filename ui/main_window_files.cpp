@@ -221,8 +221,10 @@ void MainWindow::importMesh(const QString& path, std::optional<QPoint> at) {
         editor_->setSelection(id);
         QString said = tr("Imported %1").arg(name);
         if (!looks.materials.empty())
-            said += tr(" with %n material(s)", "", int(looks.materials.size()));
-        if (lights > 0) said += tr(" and %n light(s)", "", int(lights));
+            said += looks.materials.size() == 1
+                        ? tr(" with 1 material")
+                        : tr(" with %1 materials").arg(looks.materials.size());
+        if (lights > 0) said += lights == 1 ? tr(" and 1 light") : tr(" and %1 lights").arg(lights);
         if (factor != 1.0f)
             said += tr(", scaled by %1 to fit the view (Properties: Transform, Scale)")
                         .arg(double(factor), 0, 'g', 3);

@@ -81,6 +81,7 @@ private Q_SLOTS:
     void snapToFloor_AMeshDroppedOnTheBackWallRestsOnTheFloorBelow();
     void largeMeshImport_IsScaledToFitTheView_AndTheFactorIsEditable();
     void meshImportedAtTheCursor_LandsOnTheSurfaceUnderIt_Unscaled();
+    void importedAsset_BringsItsPartsMaterials_AsOneUndoStep();
     void newAndDuplicateMaterial_EachOneUndoStep();
     void renameMaterial_InPlace_RenamesItsUsers_AndRefusesTakenOrEmptyNames();
     void deleteMaterial_UsedIsRefusedWithTheReason_UnusedIsOneUndoStep();
@@ -313,6 +314,42 @@ void MaterialsTest::meshImportedAtTheCursor_LandsOnTheSurfaceUnderIt_Unscaled() 
     QVERIFY2(std::abs(shown->x() - at.x()) < 0.05 * window_->viewport()->width(),
              qPrintable(QStringLiteral("%1 vs %2").arg(shown->x()).arg(at.x())));
     QVERIFY(shown->y() < at.y());
+}
+
+void MaterialsTest::importedAsset_BringsItsPartsMaterials_AsOneUndoStep() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    for (const char* name : {"two-tone-box.obj", "two-tone-box.mtl"})
+        QVERIFY(QFile::copy(QStringLiteral(RAYSTUDIO_SCENES_DIR "/meshes/") + name,
+                            dir.filePath(QString::fromLatin1(name))));
+    const std::size_t before = doc().materials.size();
+    window_->importMesh(dir.filePath(QStringLiteral("two-tone-box.obj")));
+    QTRY_VERIFY_WITH_TIMEOUT(idOf(*window_, "two-tone-box") != kNoObject, 20000);
+    const ObjectId id = idOf(*window_, "two-tone-box");
+    QCOMPARE(undoCount(), 1);
+    // The MTL's two materials, as ordinary ones of the scene, named by the parts.
+    QCOMPARE(doc().materials.size(), before + 2);
+    const Material* lid = doc().findMaterial("lid");
+    QVERIFY(lid && doc().findMaterial("body"));
+    QCOMPARE(lid->color, Color(0.2f, 0.45f, 0.7f));
+    const auto& parts = std::get<MeshGeometry>(doc().findObject(id)->geometry).partMaterials;
+    QCOMPARE(parts, (std::vector<std::string>{"", "body", "lid"}));
+    QVERIFY2(window_->statusBar()->currentMessage().contains(QStringLiteral("2 materials")),
+             qPrintable(window_->statusBar()->currentMessage()));
+    MaterialList* list = window_->materialList();
+    QVERIFY(list->setCurrent("lid"));
+    // Used by a part: it cannot be deleted, and the reason names the object.
+    QVERIFY(!materialButton("deleteMaterial")->isEnabled());
+    QVERIFY2(list->message().contains(QStringLiteral("\"two-tone-box\"")),
+             qPrintable(list->message()));
+    // It shows in the frame.
+    QVERIFY(settle(*window_));
+    const auto [x, y] = pixelOf(*window_->viewport()->frame(), id);
+    QVERIFY(x >= 0);
+    // Undo takes the object and its materials away together.
+    window_->editor()->undoStack()->undo();
+    QCOMPARE(idOf(*window_, "two-tone-box"), kNoObject);
+    QCOMPARE(doc().materials.size(), before);
 }
 
 void MaterialsTest::newAndDuplicateMaterial_EachOneUndoStep() {
