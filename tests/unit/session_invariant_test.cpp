@@ -4,13 +4,14 @@
 // lights (besides moves and point-light edits), the refined frame equals a
 // from-scratch render in colour, and a from-scratch session's frame in object id, depth and
 // normal, with both engines, on a scene of boxes, rectangles, a smooth mesh, scaled spheres
-// and a sphere light.
+// and a sphere light; and after dragging glass and a mirror under a sun.
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "edit_scenes.h"
 #include "integrator/renderer.h"
+#include "io/scene_io.h"
 #include "session/render_session.h"
 
 namespace rs {
@@ -260,6 +261,46 @@ void runEdits(EngineKind engine, uint32_t seed) {
                                  std::string(engineName(engine)) + " seed " + std::to_string(seed) +
                                      " round " + std::to_string(round) + " after " + kinds);
     }
+}
+
+/// Drags the classic scene's glass ball (then its mirror ball) under the default interaction
+/// policy (deferred shadows, dirty regions, the governor) and lets go: its sun, a light
+/// kSunDistance away, casts the glass-filtered shadow over the checker floor under the sky.
+void dragUnderTheSun(EngineKind engine) {
+    SceneLoadResult loaded = loadScene(kScenes + "/classic.scene.json");
+    ASSERT_TRUE(loaded.ok()) << loaded.errorText();
+    SceneDocument doc = loaded.document;
+    doc.render.width = 96;
+    doc.render.height = 54;
+    RenderSession session(2);
+    session.setEngine(engine);
+    ASSERT_EQ(session.policy(), InteractionPolicy{});
+    session.update(doc);
+    ASSERT_TRUE(session.waitUntilComplete(60s));
+    for (const auto& [name, by] : {std::pair{"glass ball", Vec3(-0.1f, 0.075f, -0.05f)},
+                                   std::pair{"mirror ball", Vec3(0.12f, 0.1f, 0.15f)}}) {
+        Object* moved = nullptr;
+        for (Object& o : doc.objects.editable())
+            if (o.name == name) moved = &o;
+        ASSERT_NE(moved, nullptr) << name;
+        session.beginInteraction(moved->id);
+        for (int step = 0; step < 4; ++step) {
+            moved->transform.translate += by;
+            ASSERT_TRUE(session.waitForPass(session.update(doc), 30s));
+        }
+        session.endInteraction();
+        ASSERT_TRUE(session.waitUntilComplete(60s));
+        expectMatchesFromScratch(session, doc, engine,
+                                 std::string(engineName(engine)) + ": dragged the " + name);
+    }
+}
+
+TEST(SessionInvariant, GlassAndMirrorDraggedUnderASun_Embree_FrameEqualsFromScratch) {
+    dragUnderTheSun(EngineKind::Embree);
+}
+
+TEST(SessionInvariant, GlassAndMirrorDraggedUnderASun_Builtin_FrameEqualsFromScratch) {
+    dragUnderTheSun(EngineKind::Builtin);
 }
 
 TEST(SessionInvariant, EveryEditKind_Embree_FrameEqualsFromScratch) {
