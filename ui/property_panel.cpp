@@ -58,6 +58,10 @@ QString PropertyPanel::signature() const {
         s += QStringLiteral("/o%1/%2")
                  .arg(o->geometry.index())
                  .arg(QString::fromStdString(o->material));
+        // A mesh's parts each show their material.
+        if (const auto* mesh = std::get_if<MeshGeometry>(&o->geometry))
+            for (const std::string& part : mesh->partMaterials)
+                s += QStringLiteral("/m") + QString::fromStdString(part);
         // Its material's colour form decides which sections are shown.
         if (const Material* m = doc.findMaterial(o->material))
             s += QStringLiteral("/p%1").arg(m->pattern.index());
@@ -168,6 +172,42 @@ QFormLayout* PropertyPanel::addSection(const QString& title, const QString& sect
     }
     layout_->addWidget(box);
     return form;
+}
+
+void PropertyPanel::addPartMaterials(ObjectId id) {
+    const SceneDocument& doc = editor_->document();
+    const Object* o = doc.findObject(id);
+    const auto* mesh = o ? std::get_if<MeshGeometry>(&o->geometry) : nullptr;
+    if (!mesh || mesh->partMaterials.empty() || !mesh->data || mesh->data->parts.size() < 2) return;
+    auto* box = new QGroupBox(tr("Parts"), content_);
+    box->setObjectName(QStringLiteral("parts"));
+    auto* form = new QFormLayout(box);
+    for (std::size_t i = 0; i < mesh->data->parts.size(); ++i) {
+        const MeshPart part = mesh->data->parts[i];
+        auto* combo = new QComboBox(box);
+        combo->addItem(tr("(the object's)"));
+        for (const Material& m : doc.materials) combo->addItem(QString::fromStdString(m.name));
+        const std::string& current =
+            part.material < mesh->partMaterials.size() ? mesh->partMaterials[part.material] : "";
+        combo->setCurrentIndex(
+            current.empty() ? 0 : std::max(0, combo->findText(QString::fromStdString(current))));
+        combo->setToolTip(tr("%1 triangles of the file's material %2")
+                              .arg(part.triangleCount)
+                              .arg(part.material));
+        connect(combo, &QComboBox::activated, this, [this, id, part, combo](int index) {
+            SceneDocument doc = editor_->document();
+            Object* obj = doc.findObject(id);
+            auto* g = obj ? std::get_if<MeshGeometry>(&obj->geometry) : nullptr;
+            if (!g) return;
+            if (g->partMaterials.size() <= part.material)
+                g->partMaterials.resize(std::size_t(part.material) + 1);
+            g->partMaterials[part.material] =
+                index == 0 ? std::string() : combo->itemText(index).toStdString();
+            editor_->edit(tr("Assign part material"), std::move(doc));
+        });
+        form->addRow(tr("Part %1").arg(i + 1), combo);
+    }
+    layout_->addWidget(box);
 }
 
 void PropertyPanel::addMaterialChooser(ObjectId id) {
@@ -343,6 +383,7 @@ void PropertyPanel::rebuild() {
                            return obj ? &obj->transform : decltype(&obj->transform){};
                        });
         addMaterialChooser(id);
+        addPartMaterials(id);
     } else if (const Light* l = doc.findLight(id)) {
         addSection(QString::fromLatin1(kindLabel(lightKind(*l))), QStringLiteral("light"),
                    Part::Light, lightKind(*l), [id](auto& d) { return d.findLight(id); });

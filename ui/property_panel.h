@@ -50,6 +50,8 @@ private:
     template <class Locate>
     QFormLayout* addSection(const QString& title, const QString& section, Part part, ParamKind kind,
                             Locate locate);
+    /// A mesh with part materials: a material chooser per part ("Parts").
+    void addPartMaterials(ObjectId id);
     void addMaterialChooser(ObjectId id);
     /// The Colour / Checker / Image selector in material `name`'s `form` and, for a pattern,
     /// its section (checker colours and cell size, or the image with its thumbnail).

@@ -5,6 +5,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QColorDialog>
+#include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -346,6 +347,20 @@ void MaterialsTest::importedAsset_BringsItsPartsMaterials_AsOneUndoStep() {
     QVERIFY(settle(*window_));
     const auto [x, y] = pixelOf(*window_->viewport()->frame(), id);
     QVERIFY(x >= 0);
+    // Properties list its parts, each with its material; choosing one is an undo step.
+    auto* partsBox = window_->findChild<QGroupBox*>(QStringLiteral("parts"));
+    QVERIFY(partsBox);
+    const auto combos = partsBox->findChildren<QComboBox*>();
+    QCOMPARE(combos.size(), 2);
+    QCOMPARE(combos[1]->currentText(), QStringLiteral("lid"));
+    const int body = combos[1]->findText(QStringLiteral("body"));
+    QVERIFY(body > 0);
+    combos[1]->setCurrentIndex(body);
+    Q_EMIT combos[1]->activated(body);
+    QCOMPARE(std::get<MeshGeometry>(doc().findObject(id)->geometry).partMaterials[2],
+             std::string("body"));
+    QCOMPARE(undoCount(), 2);
+    window_->editor()->undoStack()->undo();
     // Undo takes the object and its materials away together.
     window_->editor()->undoStack()->undo();
     QCOMPARE(idOf(*window_, "two-tone-box"), kNoObject);
