@@ -122,7 +122,9 @@ int runImport(int argc, char** argv) {
     std::printf("wrote %s: %zu triangles, %zu materials, %zu embedded images, %s, %s\n",
                 scene.string().c_str(), loaded.mesh->triangleCount(), looks.materials.size(),
                 looks.images.size(),
-                assetLights ? (std::to_string(assetLights) + " lights of the asset").c_str()
+                assetLights ? (std::to_string(assetLights) +
+                               (assetLights == 1 ? " light" : " lights") + " of the asset")
+                                  .c_str()
                             : "a key light (the asset has none)",
                 camera == "asset" ? ("its camera \"" + content.views[0].name + "\"").c_str()
                                   : "a camera that frames it");

@@ -95,6 +95,24 @@ std::vector<AssetImage> embeddedImages(const aiScene& scene) {
     return images;
 }
 
+/// A texture named by a path from the machine the asset was made on ("D:/work/tex.jpg", as
+/// FBX files often say) that is not there: the file of that name in the asset's own folder,
+/// when there is one (as Blender finds missing files).
+void findMovedTexture(ImageTexture& t, const std::string& assetDir,
+                      std::vector<std::string>& notes) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (t.image.resolvedPath.empty() || fs::exists(t.image.resolvedPath, ec)) return;
+    const fs::path name = fs::path(t.image.file).filename();
+    if (name.empty()) return;
+    const fs::path here = fs::path(assetDir) / name;
+    if (!fs::is_regular_file(here, ec)) return;
+    notes.push_back("its texture \"" + t.image.file + "\" is not there; using \"" + name.string() +
+                    "\" from the asset's folder");
+    t.image.file = name.string();
+    t.image.resolvedPath = here.string();
+}
+
 /// The looks of the materials that `mesh`'s parts use, their names made unique.
 AssetContent collectAssetContent(const aiScene& scene, const std::string& file,
                                  const MeshData& mesh) {
@@ -116,6 +134,8 @@ AssetContent collectAssetContent(const aiScene& scene, const std::string& file,
             return std::any_of(content.looks.begin(), content.looks.end(),
                                [&](const AssetLook& l) { return l.material.name == name; });
         });
+        if (auto* t = std::get_if<ImageTexture>(&look.material.pattern))
+            findMovedTexture(*t, context.assetDir, look.notes);
         if (mapped.texture.source == AssetTexture::Source::Embedded) {
             const int image = mapped.texture.embeddedIndex;
             if (image >= 0 && std::size_t(image) < content.images.size() &&

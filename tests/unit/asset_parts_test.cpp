@@ -368,5 +368,24 @@ TEST(AssetParts, MissingTextureFile_LeavesThePartUntextured_WithANoteNamingIt) {
     EXPECT_NE(notes.find("left untextured"), std::string::npos) << notes;
 }
 
+TEST(AssetParts, TexturePathFromAnotherMachine_IsFoundByNameInTheAssetsFolder) {
+    TempDir dir;
+    fs::copy_file(std::string(RAYSTUDIO_SCENES_DIR) + "/textures/tiles.png", dir.path / "wood.png");
+    dir.file("m.mtl", "newmtl wood\nKd 1 1 1\nmap_Kd D:\\work\\maps\\wood.png\n");
+    const std::string obj =
+        dir.file("m.obj",
+                 "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                 "usemtl wood\nf 1/1 2/2 3/3\n");
+    const MeshLoadResult r = loadMesh(obj, false);
+    ASSERT_TRUE(r.ok()) << r.error;
+    ASSERT_EQ(r.asset->looks.size(), 1u);
+    const auto* t = std::get_if<ImageTexture>(&r.asset->looks[0].material.pattern);
+    ASSERT_TRUE(t);
+    EXPECT_EQ(t->image.source(), (dir.path / "wood.png").string());
+    std::string notes;
+    for (const std::string& n : r.asset->looks[0].notes) notes += n + "\n";
+    EXPECT_NE(notes.find("using \"wood.png\" from the asset's folder"), std::string::npos) << notes;
+}
+
 }  // namespace
 }  // namespace rs
