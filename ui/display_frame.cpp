@@ -7,7 +7,7 @@
 #include <tuple>
 
 #include "image/tonemap.h"
-#include "session/deep_frame.h"
+#include "session/frame/deep_frame.h"
 #include "session/render_session.h"
 
 namespace rs::ui {

@@ -7,7 +7,7 @@
 #include <cstring>
 
 #include "core/parallel.h"
-#include "session/byte_lanes.h"
+#include "session/frame/byte_lanes.h"
 
 namespace rs {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "session/deep_frame.h"
+#include "session/frame/deep_frame.h"
 #include "session/scene_update.h"
 #include "snapshot/compiled_scene.h"
 

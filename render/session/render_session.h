@@ -16,8 +16,8 @@
 
 #include "core/thread_priority.h"
 #include "scene/document.h"
-#include "session/deep_frame.h"
 #include "session/dirty_region.h"
+#include "session/frame/deep_frame.h"
 #include "session/frame_lock.h"
 #include "session/governor.h"
 #include "session/interaction_policy.h"

@@ -8,8 +8,8 @@
 
 #include "core/vec_lanes.h"
 #include "integrator/trace_kernel.h"
-#include "session/deep_frame.h"
 #include "session/dirty_region.h"
+#include "session/frame/deep_frame.h"
 #include "snapshot/camera_model.h"
 
 namespace rs {

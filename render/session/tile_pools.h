@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "session/deep_frame.h"
+#include "session/frame/deep_frame.h"
 #include "session/tile_output.h"
 
 namespace rs {

@@ -7,7 +7,7 @@
 #include <algorithm>
 
 #include "display_frame.h"
-#include "session/deep_frame.h"
+#include "session/frame/deep_frame.h"
 
 using namespace rs;
 using namespace rs::ui;

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <set>
 
-#include "session/deep_frame.h"
+#include "session/frame/deep_frame.h"
 #include "session/tile_output.h"
 
 namespace rs {

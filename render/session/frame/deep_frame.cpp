@@ -1,10 +1,10 @@
 // Deep frame allocation, the edits' marks, state counts and block summaries.
-#include "session/deep_frame.h"
+#include "session/frame/deep_frame.h"
 
 #include <algorithm>
 #include <cstring>
 
-#include "session/byte_lanes.h"
+#include "session/frame/byte_lanes.h"
 
 namespace rs {
 

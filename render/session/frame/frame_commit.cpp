@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "core/vec_lanes.h"
-#include "session/deep_frame.h"
+#include "session/frame/deep_frame.h"
 #include "session/tile_output.h"
 #include "session/tile_pools.h"
 
