@@ -9,10 +9,6 @@ namespace rs {
 
 namespace {
 
-/// Bytes a pixel costs the session's deep frame (deep_frame.h: colour, base and sample sum,
-/// count, id, depth, normal, cost, state, flags, hit bound, record and segment indices).
-constexpr uint64_t kSessionBytesPerPixel = 3 * 12 + 2 + 4 + 4 + 12 + 4 + 1 + 1 + 16 + 5 + 5;
-
 std::string format(const char* pattern, double value) {
     char text[64];
     std::snprintf(text, sizeof text, pattern, value);
@@ -63,7 +59,6 @@ CostEstimate estimateCost(const SceneDocument& doc) {
     // (up to float RGB for EXR and HDR) while it is written.
     const uint64_t perPixel = 12 + 4 + (s.adaptiveSupersampling ? 12 : 0) + 12;
     e.frameBytes = pixels * perPixel;
-    e.sessionFrameBytes = pixels * kSessionBytesPerPixel;
     return e;
 }
 

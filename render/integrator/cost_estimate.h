@@ -32,8 +32,6 @@ struct CostEstimate {
     double rays = 0.0;
     /// Frame buffers of a full render (colour, ids, adaptive buffers, the written image).
     uint64_t frameBytes = 0;
-    /// The interactive session's deep frame at this size (about 90 bytes a pixel).
-    uint64_t sessionFrameBytes = 0;
 };
 
 /// The limits estimates are held to.

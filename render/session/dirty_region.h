@@ -5,17 +5,11 @@
 #include <vector>
 
 #include "session/frame/deep_frame.h"
+#include "session/frame/pixel_rect.h"
 #include "session/scene_update.h"
 #include "snapshot/compiled_scene.h"
 
 namespace rs {
-
-/// Screen rectangle [x0, x1) x [y0, y1) in pixels.
-struct PixelRect {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    bool empty() const { return x0 >= x1 || y0 >= y1; }
-    int area() const { return empty() ? 0 : (x1 - x0) * (y1 - y0); }
-};
 
 /// Pixels whose samples can see into `box`: the projected corners' bounding rectangle grown
 /// by a pixel; the whole image when the box reaches behind the camera.

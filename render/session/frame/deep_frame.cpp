@@ -25,25 +25,14 @@ void DeepFrame::allocate(int w, int h) {
     width = w;
     height = h;
     const std::size_t n = std::size_t(w) * std::size_t(h);
-    color.assign(n, Color(0.0f));
-    base.assign(n, Color(0.0f));
-    sampleSum.assign(n, Color(0.0f));
-    sampleCount.assign(n, 0);
-    id.assign(n, kNoObject);
-    depth.assign(n, kInfinity);
-    normal.assign(n, Vec3(0.0f));
-    cost.assign(n, 0);
-    state.assign(n, kStale);
-    flags.assign(n, 0);
-    hitBound.assign(n, glm::vec4(0.0f, 0.0f, 0.0f, -1.0f));
-    tileRecords.assign(std::size_t(tilesX()) * std::size_t(tilesY()), {});
-    recordStart.assign(n, 0);
-    recordCount.assign(n, 0);
-    tileRecordsKept.assign(tileRecords.size(), 0);
-    tileSegments.assign(tileRecords.size(), {});
-    segmentStart.assign(n, 0);
-    segmentCount.assign(n, 0);
-    tileLiveSegments.assign(tileRecords.size(), 0);
+#define RS_CHANNEL_ASSIGN(name, Vector, Type, fresh, ahead, shown) name.assign(n, fresh);
+    RS_DEEP_FRAME_CHANNELS(RS_CHANNEL_ASSIGN)
+#undef RS_CHANNEL_ASSIGN
+    const std::size_t tiles = std::size_t(tilesX()) * std::size_t(tilesY());
+    tileRecords.assign(tiles, {});
+    tileRecordsKept.assign(tiles, 0);
+    tileSegments.assign(tiles, {});
+    tileLiveSegments.assign(tiles, 0);
     blockSummary.assign(std::size_t(blocksX()) * std::size_t(blocksY()), {});
     tileSummary.assign(tileRecords.size(), {});
     tileStates.assign(tileRecords.size(), {});

@@ -3,12 +3,15 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "image/image.h"
 #include "integrator/whitted.h"
 #include "scene/document.h"
+#include "session/frame/pixel_channels.h"
+#include "session/frame/pixel_rect.h"
 
 namespace rs {
 
@@ -47,9 +50,35 @@ struct TileSummary {
 
 struct TileResult;
 
+/// The commit's write streams that ask for a channel's lines ahead (pixel_channels.h).
+enum ChannelAhead : unsigned {
+    kAheadOfRun = 1,    ///< The next row of a run of traced pixels.
+    kAheadOfSpans = 2,  ///< The next row of an undersampled pass's block spans.
+};
+
+/// What the designer's display copy does with a channel (pixel_channels.h).
+enum ChannelShown {
+    kNotShown,
+    kShown,           ///< Compared and copied.
+    kShownInDebug,    ///< Compared and copied while a debug view shows it.
+    kShownAsOverlay,  ///< The re-traced overlay: changed by edits outside any tile.
+};
+
 /// A tile's pool of secondary segments: grown by resize() and then written over, so grown
 /// without zero-filling first (a second store to each segment otherwise).
 using SegmentVector = std::vector<TreeSegment, DefaultInitAllocator<TreeSegment>>;
+
+/// The sum of the sizes of the per-pixel channels' elements.
+constexpr std::size_t pixelChannelBytes() {
+    std::size_t bytes = 0;
+#define RS_CHANNEL_BYTES(name, Vector, Type, fresh, ahead, shown) bytes += sizeof(Type);
+    RS_DEEP_FRAME_CHANNELS(RS_CHANNEL_BYTES)
+#undef RS_CHANNEL_BYTES
+    return bytes;
+}
+
+// What the list makes of each channel inside DeepFrame (undefined after it).
+#define RS_CHANNEL_BUFFER(name, Vector, Type, fresh, ahead, shown) Vector<Type> name;
 
 /// Structure-of-arrays deep buffer (thesis 3.3), row-major, (0, 0) top left.
 ///
@@ -71,29 +100,16 @@ struct DeepFrame {
     int width = 0;
     int height = 0;
     int tileSize = 32;
-    LargeVector<Color> color;  ///< What is shown (linear HDR).
-    LargeVector<Color> base;   ///< Centre sample when supersampling; adaptive decisions read it.
-    LargeVector<Color> sampleSum;  ///< Running sum of supersamples (progressive refinement).
-    LargeVector<uint16_t> sampleCount;
-    LargeVector<ObjectId> id;    ///< Object seen through the pixel centre.
-    LargeVector<float> depth;    ///< Distance to that hit (infinity: background).
-    LargeVector<Vec3> normal;    ///< Its unit normal.
-    LargeVector<uint32_t> cost;  ///< Rays traced for the pixel's latest value.
-    LargeVector<uint8_t> state;  ///< PixelState.
-    LargeVector<uint8_t> flags;  ///< PixelFlag bits.
-    /// Bounding sphere (centre, radius) of the pixel's camera-ray hit points; radius < 0 when
-    /// nothing was hit. Shadow-aware dirty regions test segments from it to each light.
-    LargeVector<glm::vec4> hitBound;
+    /// The per-pixel buffers, one per channel of pixel_channels.h (which says what each holds).
+    RS_DEEP_FRAME_CHANNELS(RS_CHANNEL_BUFFER)
+    /// Bytes a pixel costs the per-pixel buffers (the tiles' pools and summaries come on top).
+    static constexpr std::size_t kBytesPerPixel = pixelChannelBytes();
     /// Deferred shading records, pooled per tile; a pixel's are [recordStart, +recordCount).
     std::vector<std::vector<ShadingRecord>> tileRecords;
-    std::vector<uint32_t> recordStart;
-    std::vector<uint8_t> recordCount;
     /// Size of each record pool after its last compaction (commit appends and compacts).
     std::vector<uint32_t> tileRecordsKept;
     /// Secondary ray segments of each pixel's ray tree, pooled per tile like the records.
     std::vector<SegmentVector> tileSegments;
-    std::vector<uint32_t> segmentStart;
-    std::vector<uint8_t> segmentCount;
     std::vector<uint32_t> tileLiveSegments;  ///< Segments still referenced in each pool.
     /// Summaries of 8 x 8 blocks (finer than tiles: tighter boxes reject more in marking).
     std::vector<TileSummary> blockSummary;
@@ -174,6 +190,23 @@ struct DeepFrame {
     void summarizeBlock(int x, int y);
     /// Recomputes tile t's summary from its blocks' summaries.
     void uniteTileSummary(int t);
+
+private:
+    struct Commit;  // What commit()'s steps share (frame_commit.cpp).
+    /// commit()'s steps, each one kind of result (tile_output.h).
+    void commitTraced(const TileResult& t, Commit& c);
+    void commitRecords(const TileResult& t, const Commit& c);
+    void commitBlocks(const TileResult& t, Commit& c);
+    void commitResolved(const TileResult& t, Commit& c);
+    void commitFinished(const TileResult& t, const Commit& c);
+    void commitSampled(const TileResult& t, Commit& c);
+    /// Asks for the lines of pixels [i, i + n) of the channels whose `ahead` has Stream.
+    template <unsigned Stream>
+    void prefetchAhead(std::size_t i, std::size_t n) const;
+    /// prefetchAhead<kAheadOfSpans> for rows [y0, y1) of `r`.
+    void prefetchSpanRows(const PixelRect& r, int y0, int y1) const;
 };
+
+#undef RS_CHANNEL_BUFFER
 
 }  // namespace rs

@@ -152,24 +152,6 @@ struct SpanWriter {
     }
 };
 
-/// Asks for the lines of rows [y0, y1) of `r` in the buffers block spans write, for writing:
-/// eight buffers written four pixels at a time, a row of blocks four frame rows, are too many
-/// short streams for the hardware's prefetchers.
-void prefetchSpanRows(const DeepFrame& f, const PixelRect& r, int y0, int y1) {
-    const std::size_t n = std::size_t(r.x1 - r.x0);
-    for (int y = y0; y < y1; ++y) {
-        const std::size_t i = f.index(r.x0, y);
-        prefetchForWrite(f.color.data() + i, n);
-        prefetchForWrite(f.id.data() + i, n);
-        prefetchForWrite(f.depth.data() + i, n);
-        prefetchForWrite(f.normal.data() + i, n);
-        prefetchForWrite(f.cost.data() + i, n);
-        prefetchForWrite(f.hitBound.data() + i, n);
-        prefetchForWrite(f.state.data() + i, n);
-        prefetchForWrite(f.flags.data() + i, n);
-    }
-}
-
 /// The blocks of one tile a commit wrote, so each summary is recomputed once.
 class TouchedBlocks {
 public:
@@ -322,26 +304,62 @@ private:
 
 }  // namespace
 
+/// What commit()'s steps share.
+struct DeepFrame::Commit {
+    SegmentPool segments;
+    TouchedBlocks touched;
+    int tile;
+    /// Tiles that never got supersamples hold zero sums already: no need to clear them again.
+    bool clearSamples;
+    /// Every pixel of the tile traced again (a full pass): the tile's state counts are known
+    /// without reading the old states (a dependent read-modify-write per pixel otherwise).
+    bool wholeTile;
+};
+
+template <unsigned Stream>
+void DeepFrame::prefetchAhead(std::size_t i, std::size_t n) const {
+#define RS_CHANNEL_AHEAD(name, Vector, Type, fresh, ahead, shown) \
+    if constexpr (((ahead)&Stream) != 0) prefetchForWrite(name.data() + i, n);
+    RS_DEEP_FRAME_CHANNELS(RS_CHANNEL_AHEAD)
+#undef RS_CHANNEL_AHEAD
+}
+
+/// Block spans write eight buffers four pixels at a time, a row of blocks four frame rows:
+/// too many short streams for the hardware's prefetchers.
+void DeepFrame::prefetchSpanRows(const PixelRect& r, int y0, int y1) const {
+    const std::size_t n = std::size_t(r.x1 - r.x0);
+    for (int y = y0; y < y1; ++y) prefetchAhead<kAheadOfSpans>(index(r.x0, y), n);
+}
+
 bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     if (t.generation != liveGeneration) return false;  // Never write a stale tile.
-    SegmentPool segments(*this, t.tile);
-    TouchedBlocks touched(*this, t.rect);
-    const int tile = t.tile;
-    // Tiles that never got supersamples hold zero sums already: no need to clear them again.
-    const bool clearSamples = tileSampled[std::size_t(tile)] != 0;
-    // Every pixel of the tile traced again (a full pass): the tile's state counts are known
-    // without reading the old states (a dependent read-modify-write per pixel otherwise).
-    const bool wholeTile = t.traced.size() == std::size_t(t.rect.area());
-    if (wholeTile) {
-        segments.restart();
+    Commit c{SegmentPool(*this, t.tile), TouchedBlocks(*this, t.rect), t.tile,
+             tileSampled[std::size_t(t.tile)] != 0, t.traced.size() == std::size_t(t.rect.area())};
+    if (c.wholeTile) {
+        c.segments.restart();
         if (t.blocks.size() == 0 && t.resolvedPixel.empty() && t.sampled.empty())
-            touched.buildWhole();
+            c.touched.buildWhole();
     }
+    commitTraced(t, c);
+    if (t.traced.withRecords) commitRecords(t, c);
+    if (t.blocks.size() > 0) commitBlocks(t, c);
+    commitResolved(t, c);
+    commitFinished(t, c);
+    commitSampled(t, c);
+    c.segments.compactIfWasteful(t.rect);
+    c.touched.summarize(*this, c.tile);
+    return true;
+}
 
-    // Camera rays at pixel centres: every buffer of the pixel. Passes gather a tile's pixels
-    // row by row, so the rays come in runs of neighbouring pixels (a whole tile's rows in a
-    // full pass): each run's colours, costs and bases are copied as blocks, and the rest of a
-    // pixel's bookkeeping works from the run's row instead of dividing its index.
+// Camera rays at pixel centres: every buffer of the pixel. Passes gather a tile's pixels row by
+// row, so the rays come in runs of neighbouring pixels (a whole tile's rows in a full pass):
+// each run's colours, costs and bases are copied as blocks, and the rest of a pixel's
+// bookkeeping works from the run's row instead of dividing its index.
+void DeepFrame::commitTraced(const TileResult& t, Commit& c) {
+    const int tile = c.tile;
+    const bool clearSamples = c.clearSamples, wholeTile = c.wholeTile;
+    SegmentPool& segments = c.segments;
+    TouchedBlocks& touched = c.touched;
     const RayList& traced = t.traced;
     const bool writeBase = t.tracedState >= kBase && t.keepBase;
     const bool whole = touched.whole();
@@ -357,23 +375,12 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
             n = rowWidth;  // Row-major, one ray a pixel: the run is the tile's row.
         while (n < rowLeft && k0 + n < traced.size() && traced.pixel[k0 + n] == i0 + n) ++n;
         const auto from = std::ptrdiff_t(k0), to = std::ptrdiff_t(i0), count = std::ptrdiff_t(n);
-        if (wholeTile && y + 1 < uint32_t(t.rect.y1)) {
-            // The next row's run (a whole-tile commit writes every row): its lines asked for
-            // now, for writing, so they arrive while this row is written. A tile's rows are a
-            // frame row apart in each buffer, too short a stretch for the hardware's
-            // prefetchers. Partial commits (drag steps) seldom write the next row.
-            const std::size_t next = i0 + std::size_t(width);
-            prefetchForWrite(color.data() + next, n);
-            prefetchForWrite(cost.data() + next, n);
-            prefetchForWrite(id.data() + next, n);
-            prefetchForWrite(depth.data() + next, n);
-            prefetchForWrite(normal.data() + next, n);
-            prefetchForWrite(hitBound.data() + next, n);
-            prefetchForWrite(flags.data() + next, n);
-            prefetchForWrite(state.data() + next, n);
-            prefetchForWrite(segmentStart.data() + next, n);
-            prefetchForWrite(segmentCount.data() + next, n);
-        }
+        // The next row's run (a whole-tile commit writes every row): its lines asked for now,
+        // for writing, so they arrive while this row is written. A tile's rows are a frame row
+        // apart in each buffer, too short a stretch for the hardware's prefetchers. Partial
+        // commits (drag steps) seldom write the next row.
+        if (wholeTile && y + 1 < uint32_t(t.rect.y1))
+            prefetchAhead<kAheadOfRun>(i0 + std::size_t(width), n);
         std::copy_n(traced.color.begin() + from, count, color.begin() + to);
         std::copy_n(traced.rays.begin() + from, count, cost.begin() + to);
         if (writeBase) std::copy_n(traced.color.begin() + from, count, base.begin() + to);
@@ -404,78 +411,86 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
         counts = {0, 0, 0, 0};
         counts[t.tracedState] = uint32_t(traced.size());
     }
-    if (traced.withRecords) {
-        // Traced pixels get new records at the end of the tile's pool; untouched pixels that
-        // still wait for their deferred shadows keep theirs where they are.
-        RecordPool records(*this, tile);
-        if (wholeTile) records.restart();
-        for (std::size_t k = 0; k < traced.size(); ++k) {
-            const uint8_t n = traced.records.overflow[k] ? 0 : traced.records.count[k];
-            records.append(traced.pixel[k], traced.records.of(k), n);
-        }
-        records.compactIfWasteful(t.rect);
-    }
+}
 
-    // Undersampled blocks: the block's ray over all its pixels, which keep no segments. Each
-    // span row is a run of neighbouring pixels that SpanWriter fills buffer by buffer; the
-    // segments are cleared a span row at a time. An orbit's pass finds every pixel of the
-    // tile stale and (after its first pass) none keeping segments: then the old states and
-    // segment counts are known from the tile's counts and are not read: loads that miss the
-    // cache, which the commit waited for (its stores alone it does not wait for).
+// Traced pixels get new records at the end of the tile's pool; untouched pixels that still wait
+// for their deferred shadows keep theirs where they are.
+void DeepFrame::commitRecords(const TileResult& t, const Commit& c) {
+    const RayList& traced = t.traced;
+    RecordPool records(*this, c.tile);
+    if (c.wholeTile) records.restart();
+    for (std::size_t k = 0; k < traced.size(); ++k) {
+        const uint8_t n = traced.records.overflow[k] ? 0 : traced.records.count[k];
+        records.append(traced.pixel[k], traced.records.of(k), n);
+    }
+    records.compactIfWasteful(t.rect);
+}
+
+// Undersampled blocks: the block's ray over all its pixels, which keep no segments. Each span
+// row is a run of neighbouring pixels that SpanWriter fills buffer by buffer; the segments are
+// cleared a span row at a time. An orbit's pass finds every pixel of the tile stale and (after
+// its first pass) none keeping segments: then the old states and segment counts are known from
+// the tile's counts and are not read: loads that miss the cache, which the commit waited for
+// (its stores alone it does not wait for).
+void DeepFrame::commitBlocks(const TileResult& t, Commit& c) {
+    const int tile = c.tile;
+    SegmentPool& segments = c.segments;
+    TouchedBlocks& touched = c.touched;
     const RayList& blocks = t.blocks;
-    if (blocks.size() > 0) {
-        const bool allStale = tileStates[std::size_t(tile)][kStale] == uint32_t(t.rect.area());
-        const bool clearSegments = !segments.noneKept();
-        SpanWriter spans{color.data(),     id.data(),          depth.data(), normal.data(),
-                         cost.data(),      state.data(),       flags.data(), hitBound.data(),
-                         sampleSum.data(), sampleCount.data(), clearSamples, !allStale};
-        uint32_t spanPixels = 0;
-        uint32_t rowOfBlocks = UINT32_MAX;
-        for (std::size_t k = 0; k < blocks.size(); ++k) {
-            const PrimaryInfo& info = blocks.info[k];
-            const SpanValue v{blocks.color[k],
-                              info.id,
-                              info.depth,
-                              info.normal,
-                              blocks.rays[k],
-                              uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) |
-                                      kTracedLastUpdate),
-                              blocks.hitBound(k)};
-            const int spanX = blocks.extra[k] & 15, spanY = blocks.extra[k] >> 4;
-            {
-                // A span (step 2 or 4, aligned) lies in one 8x8 block. Frames hold at most
-                // kMaxImagePixels (< 2^32): one 32-bit division, not two 64-bit.
-                const uint32_t y = uint32_t(blocks.pixel[k]) / uint32_t(width);
-                const uint32_t x = uint32_t(blocks.pixel[k]) - y * uint32_t(width);
-                touched.addSpan(int(x), int(y), spanX * spanY, v.bound, v.flags);
-                if (y != rowOfBlocks) {
-                    // A new row of blocks (the pass gathers them row by row): the next row's
-                    // lines are asked for while this one is written.
-                    rowOfBlocks = y;
-                    prefetchSpanRows(*this, t.rect, int(y) + spanY,
-                                     std::min(t.rect.y1, int(y) + 2 * spanY));
-                }
-            }
-            for (int dy = 0; dy < spanY; ++dy) {
-                const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width);
-                const std::size_t n = std::size_t(spanX);
-                if (n == 4)
-                    spans.row<4>(i, n, v);  // Quarter and half resolution: unrolled.
-                else if (n == 2)
-                    spans.row<2>(i, n, v);
-                else
-                    spans.row<0>(i, n, v);
-                spanPixels += uint32_t(spanX);
-                if (clearSegments) segments.clearRun(i, n);
+    const bool allStale = tileStates[std::size_t(tile)][kStale] == uint32_t(t.rect.area());
+    const bool clearSegments = !segments.noneKept();
+    SpanWriter spans{color.data(),     id.data(),          depth.data(),   normal.data(),
+                     cost.data(),      state.data(),       flags.data(),   hitBound.data(),
+                     sampleSum.data(), sampleCount.data(), c.clearSamples, !allStale};
+    uint32_t spanPixels = 0;
+    uint32_t rowOfBlocks = UINT32_MAX;
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+        const PrimaryInfo& info = blocks.info[k];
+        const SpanValue v{blocks.color[k],
+                          info.id,
+                          info.depth,
+                          info.normal,
+                          blocks.rays[k],
+                          uint8_t((info.touchedSpecular ? kTouchedSpecular | kTreeUnknown : 0) |
+                                  kTracedLastUpdate),
+                          blocks.hitBound(k)};
+        const int spanX = blocks.extra[k] & 15, spanY = blocks.extra[k] >> 4;
+        {
+            // A span (step 2 or 4, aligned) lies in one 8x8 block. Frames hold at most
+            // kMaxImagePixels (< 2^32): one 32-bit division, not two 64-bit.
+            const uint32_t y = uint32_t(blocks.pixel[k]) / uint32_t(width);
+            const uint32_t x = uint32_t(blocks.pixel[k]) - y * uint32_t(width);
+            touched.addSpan(int(x), int(y), spanX * spanY, v.bound, v.flags);
+            if (y != rowOfBlocks) {
+                // A new row of blocks (the pass gathers them row by row): the next row's
+                // lines are asked for while this one is written.
+                rowOfBlocks = y;
+                prefetchSpanRows(t.rect, int(y) + spanY, std::min(t.rect.y1, int(y) + 2 * spanY));
             }
         }
-        auto& counts = tileStates[std::size_t(tile)];
-        if (allStale) spans.wasState[kStale] = spanPixels;
-        for (int s = 0; s < 4; ++s) counts[std::size_t(s)] -= spans.wasState[s];
-        counts[kInteractive] += spanPixels;
+        for (int dy = 0; dy < spanY; ++dy) {
+            const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width);
+            const std::size_t n = std::size_t(spanX);
+            if (n == 4)
+                spans.row<4>(i, n, v);  // Quarter and half resolution: unrolled.
+            else if (n == 2)
+                spans.row<2>(i, n, v);
+            else
+                spans.row<0>(i, n, v);
+            spanPixels += uint32_t(spanX);
+            if (clearSegments) segments.clearRun(i, n);
+        }
     }
+    auto& counts = tileStates[std::size_t(tile)];
+    if (allStale) spans.wasState[kStale] = spanPixels;
+    for (int s = 0; s < 4; ++s) counts[std::size_t(s)] -= spans.wasState[s];
+    counts[kInteractive] += spanPixels;
+}
 
-    // Deferred shadows resolved: the hit, its tree and its cost stay.
+// Deferred shadows resolved: the hit, its tree and its cost stay.
+void DeepFrame::commitResolved(const TileResult& t, Commit& c) {
+    const int tile = c.tile;
+    const bool clearSamples = c.clearSamples;
     for (std::size_t k = 0; k < t.resolvedPixel.size(); ++k) {
         const std::size_t i = t.resolvedPixel[k];
         color[i] = t.resolvedColor[k];
@@ -486,10 +501,14 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
             sampleSum[i] = Color(0.0f);
             sampleCount[i] = 0;
         }
-        touched.add(i);
+        c.touched.add(i);
     }
+}
 
-    // Nothing to supersample: the centre sample is final.
+// Nothing to supersample: the centre sample is final.
+void DeepFrame::commitFinished(const TileResult& t, const Commit& c) {
+    const int tile = c.tile;
+    const bool clearSamples = c.clearSamples;
     for (const std::size_t i : t.finishedPixel) {
         color[i] = base[i];
         setState(i, tile, kFinal);
@@ -498,8 +517,12 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
             sampleCount[i] = 0;
         }
     }
+}
 
-    // More samples: new totals, and the new rays' segments after the pixel's old ones.
+// More samples: new totals, and the new rays' segments after the pixel's old ones.
+void DeepFrame::commitSampled(const TileResult& t, Commit& c) {
+    const int tile = c.tile;
+    SegmentPool& segments = c.segments;
     const RayList& samples = t.samples;
     if (!t.sampled.empty()) tileSampled[std::size_t(tile)] = 1;
     for (std::size_t k = 0; k < t.sampled.size(); ++k) {
@@ -522,12 +545,8 @@ bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
             kept += n;
         }
         segments.end();
-        touched.add(i);
+        c.touched.add(i);
     }
-
-    segments.compactIfWasteful(t.rect);
-    touched.summarize(*this, tile);
-    return true;
 }
 
 }  // namespace rs
