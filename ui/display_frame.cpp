@@ -17,13 +17,8 @@ DisplayFrame DisplayFrame::fromSession(const RenderSession& session) {
     session.withFrame([&d](const DeepFrame& f, const std::shared_ptr<const CompiledScene>& s) {
         d.width = f.width;
         d.height = f.height;
-        d.color = f.color;
-        d.id = f.id;
-        d.normal = f.normal;
-        d.depth = f.depth;
-        d.cost = f.cost;
-        d.flags = f.flags;
         d.debugBuffers = true;
+        f.copyDisplayWhole(d, d.debugBuffers);
         if (s) {
             d.tonemap = s->settings().tonemap;
             d.exposure = s->settings().exposure;
@@ -41,29 +36,17 @@ constexpr std::size_t kDamageKept = 4096;
 /// Edge of the blocks a tile is split into to find what really changed.
 constexpr int kDamageBlock = 8;
 
-template <class T>
-void copyRect(LargeVector<T>& dst, const LargeVector<T>& src, int width, const QRect& r) {
-    for (int y = r.top(); y <= r.bottom(); ++y) {
-        const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(r.left());
-        std::memcpy(dst.data() + i, src.data() + i, sizeof(T) * std::size_t(r.width()));
-    }
-}
-
-template <class T>
-bool differs(const LargeVector<T>& a, const LargeVector<T>& b, int width, const QRect& r) {
-    for (int y = r.top(); y <= r.bottom(); ++y) {
-        const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(r.left());
-        if (std::memcmp(a.data() + i, b.data() + i, sizeof(T) * std::size_t(r.width())) != 0)
-            return true;
-    }
-    return false;
-}
-
 }  // namespace
 
 bool showsDebugBuffers(ViewMode mode) {
     return mode == ViewMode::Normals || mode == ViewMode::Cost;
 }
+
+namespace {
+PixelRect pixelRect(const QRect& r) {
+    return {r.left(), r.top(), r.right() + 1, r.bottom() + 1};
+}
+}  // namespace
 
 void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, bool allFlags) {
     const QRect all(0, 0, f.width, f.height);
@@ -76,14 +59,7 @@ void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, 
         (debugBuffers && (normal.size() != f.normal.size() || cost.size() != f.cost.size()))) {
         width = f.width;
         height = f.height;
-        color = f.color;
-        id = f.id;
-        depth = f.depth;
-        if (debugBuffers) {
-            normal = f.normal;
-            cost = f.cost;
-        }
-        flags = f.flags;
+        f.copyDisplayWhole(*this, debugBuffers);
         ++serial;
         damage.clear();
         damageFloor = serial;
@@ -97,8 +73,8 @@ void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, 
     for (const QRect& raw : rects) {
         const QRect r = raw & all;
         if (r.isEmpty()) continue;
-        if (!allFlags && differs(flags, f.flags, width, r)) {
-            copyRect(flags, f.flags, width, r);
+        if (!allFlags && f.overlayDiffers(pixelRect(r), *this)) {
+            f.copyOverlay(pixelRect(r), *this);
             flagsChanged = true;
         }
         const int bx0 = r.left() / kDamageBlock * kDamageBlock;
@@ -112,11 +88,7 @@ void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, 
                 bool changedBlock = false;
                 if (bx <= r.right()) {
                     const QRect b = QRect(bx, by, kDamageBlock, kDamageBlock) & r;
-                    changedBlock =
-                        differs(color, f.color, width, b) || differs(id, f.id, width, b) ||
-                        differs(depth, f.depth, width, b) ||
-                        (debugBuffers &&
-                         (differs(normal, f.normal, width, b) || differs(cost, f.cost, width, b)));
+                    changedBlock = f.displayDiffers(pixelRect(b), *this, debugBuffers);
                 }
                 if (changedBlock && runStart < 0) runStart = std::max(bx, r.left());
                 if (changedBlock || runStart < 0) {
@@ -127,20 +99,14 @@ void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, 
                 const QRect run = QRect(QPoint(runStart, std::max(by, r.top())),
                                         QPoint(std::min(bx - 1, r.right()),
                                                std::min(by + kDamageBlock - 1, r.bottom())));
-                copyRect(color, f.color, width, run);
-                copyRect(id, f.id, width, run);
-                copyRect(depth, f.depth, width, run);
-                if (debugBuffers) {
-                    copyRect(normal, f.normal, width, run);
-                    copyRect(cost, f.cost, width, run);
-                }
+                f.copyDisplay(pixelRect(run), *this, debugBuffers);
                 changed.push_back(run);
                 runStart = -1;
                 if (bx > r.right()) break;
             }
         }
     }
-    if (allFlags) std::memcpy(flags.data(), f.flags.data(), flags.size());
+    if (allFlags) f.copyOverlay(PixelRect{0, 0, width, height}, *this);
     if (changed.empty() && !flagsChanged) return;
     ++serial;
     for (const QRect& r : mergeRects(std::move(changed), QSize(width, height)))

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "image/image.h"
@@ -79,6 +80,12 @@ constexpr std::size_t pixelChannelBytes() {
 
 // What the list makes of each channel inside DeepFrame (undefined after it).
 #define RS_CHANNEL_BUFFER(name, Vector, Type, fresh, ahead, shown) Vector<Type> name;
+#define RS_CHANNEL_SHOWN(name, Vector, Type, fresh, ahead, shown) \
+    if constexpr (shown == kShown) f(name, out.name);             \
+    if constexpr (shown == kShownInDebug)                         \
+        if (debug) f(name, out.name);
+#define RS_CHANNEL_OVERLAY(name, Vector, Type, fresh, ahead, shown) \
+    if constexpr (shown == kShownAsOverlay) f(name, out.name);
 
 /// Structure-of-arrays deep buffer (thesis 3.3), row-major, (0, 0) top left.
 ///
@@ -191,6 +198,30 @@ struct DeepFrame {
     /// Recomputes tile t's summary from its blocks' summaries.
     void uniteTileSummary(int t);
 
+    /// The designer's copy of the frame: `out` is any object with a buffer of the frame's
+    /// size (data(), and assignable from the channel's buffer) for each channel the list
+    /// shows, named like it. `debug` adds the channels shown only in debug views; the overlay
+    /// (flags) has calls of its own, since edits change it outside any tile.
+    ///
+    /// Whether a shown channel of `out` differs from the frame's in `r` (inside the frame).
+    template <class Out>
+    bool displayDiffers(const PixelRect& r, const Out& out, bool debug) const;
+    /// Copies the shown channels of each of `rects` (inside the frame) into `out`.
+    template <class Out>
+    void copyDisplay(const std::vector<PixelRect>& rects, Out& out, bool debug) const {
+        for (const PixelRect& r : rects) copyDisplay(r, out, debug);
+    }
+    template <class Out>
+    void copyDisplay(const PixelRect& r, Out& out, bool debug) const;
+    /// Whether the overlay of `out` differs from the frame's in `r`, and its copy.
+    template <class Out>
+    bool overlayDiffers(const PixelRect& r, const Out& out) const;
+    template <class Out>
+    void copyOverlay(const PixelRect& r, Out& out) const;
+    /// Every shown channel (the overlay too) whole, `out`'s buffers taking the frame's sizes.
+    template <class Out>
+    void copyDisplayWhole(Out& out, bool debug) const;
+
 private:
     struct Commit;  // What commit()'s steps share (frame_commit.cpp).
     /// commit()'s steps, each one kind of result (tile_output.h).
@@ -205,8 +236,80 @@ private:
     void prefetchAhead(std::size_t i, std::size_t n) const;
     /// prefetchAhead<kAheadOfSpans> for rows [y0, y1) of `r`.
     void prefetchSpanRows(const PixelRect& r, int y0, int y1) const;
+
+    /// Calls f(channel, out's buffer) for the display channels `debug` selects.
+    template <class Out, class F>
+    void forShown(Out& out, bool debug, F&& f) const {
+        RS_DEEP_FRAME_CHANNELS(RS_CHANNEL_SHOWN)
+    }
+    /// Calls f(channel, out's buffer) for the overlay channels.
+    template <class Out, class F>
+    void forOverlay(Out& out, F&& f) const {
+        RS_DEEP_FRAME_CHANNELS(RS_CHANNEL_OVERLAY)
+    }
+    /// Whether rows of `r` differ between frame-sized buffers a and b.
+    template <class A, class B>
+    bool rectDiffers(const A& a, const B& b, const PixelRect& r) const {
+        const std::size_t n = sizeof(a[0]) * std::size_t(r.x1 - r.x0);
+        for (int y = r.y0; y < r.y1; ++y) {
+            const std::size_t i = index(r.x0, y);
+            if (std::memcmp(a.data() + i, b.data() + i, n) != 0) return true;
+        }
+        return false;
+    }
+    /// Copies rows of `r` of frame-sized buffer `from` into `to` (whole rows in one go).
+    template <class A, class B>
+    void copyRect(const A& from, B& to, const PixelRect& r) const {
+        if (r.x0 == 0 && r.x1 == width) {
+            std::memcpy(to.data() + index(0, r.y0), from.data() + index(0, r.y0),
+                        sizeof(from[0]) * std::size_t(r.y1 - r.y0) * std::size_t(width));
+            return;
+        }
+        const std::size_t n = sizeof(from[0]) * std::size_t(r.x1 - r.x0);
+        for (int y = r.y0; y < r.y1; ++y) {
+            const std::size_t i = index(r.x0, y);
+            std::memcpy(to.data() + i, from.data() + i, n);
+        }
+    }
 };
 
 #undef RS_CHANNEL_BUFFER
+#undef RS_CHANNEL_SHOWN
+#undef RS_CHANNEL_OVERLAY
+
+template <class Out>
+bool DeepFrame::displayDiffers(const PixelRect& r, const Out& out, bool debug) const {
+    bool differs = false;
+    forShown(out, debug, [&](const auto& mine, const auto& theirs) {
+        differs = differs || rectDiffers(mine, theirs, r);
+    });
+    return differs;
+}
+
+template <class Out>
+void DeepFrame::copyDisplay(const PixelRect& r, Out& out, bool debug) const {
+    forShown(out, debug, [&](const auto& mine, auto& theirs) { copyRect(mine, theirs, r); });
+}
+
+template <class Out>
+bool DeepFrame::overlayDiffers(const PixelRect& r, const Out& out) const {
+    bool differs = false;
+    forOverlay(out, [&](const auto& mine, const auto& theirs) {
+        differs = differs || rectDiffers(mine, theirs, r);
+    });
+    return differs;
+}
+
+template <class Out>
+void DeepFrame::copyOverlay(const PixelRect& r, Out& out) const {
+    forOverlay(out, [&](const auto& mine, auto& theirs) { copyRect(mine, theirs, r); });
+}
+
+template <class Out>
+void DeepFrame::copyDisplayWhole(Out& out, bool debug) const {
+    const auto whole = [](const auto& mine, auto& theirs) { theirs = mine; };
+    forShown(out, debug, whole);
+    forOverlay(out, whole);
+}
 
 }  // namespace rs
