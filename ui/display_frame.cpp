@@ -15,8 +15,8 @@ namespace rs::ui {
 DisplayFrame DisplayFrame::fromSession(const RenderSession& session) {
     DisplayFrame d;
     session.withFrame([&d](const DeepFrame& f, const std::shared_ptr<const CompiledScene>& s) {
-        d.width = f.width;
-        d.height = f.height;
+        d.width = f.width();
+        d.height = f.height();
         d.debugBuffers = true;
         f.copyDisplayWhole(d, d.debugBuffers);
         if (s) {
@@ -49,16 +49,16 @@ PixelRect pixelRect(const QRect& r) {
 }  // namespace
 
 void DisplayFrame::refresh(const DeepFrame& f, const std::vector<QRect>& rects, bool allFlags) {
-    const QRect all(0, 0, f.width, f.height);
+    const QRect all(0, 0, f.width(), f.height());
     if (!debugBuffers && (!normal.empty() || !cost.empty())) {
         // No view shows them any more: nothing keeps them current.
         normal = {};
         cost = {};
     }
-    if (f.width != width || f.height != height || color.size() != f.color.size() ||
-        (debugBuffers && (normal.size() != f.normal.size() || cost.size() != f.cost.size()))) {
-        width = f.width;
-        height = f.height;
+    if (f.width() != width || f.height() != height || color.size() != f.color().size() ||
+        (debugBuffers && (normal.size() != f.normal().size() || cost.size() != f.cost().size()))) {
+        width = f.width();
+        height = f.height();
         f.copyDisplayWhole(*this, debugBuffers);
         ++serial;
         damage.clear();

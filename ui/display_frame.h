@@ -12,7 +12,7 @@
 
 namespace rs {
 class RenderSession;
-struct DeepFrame;
+class DeepFrame;
 }  // namespace rs
 
 namespace rs::ui {

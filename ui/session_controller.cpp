@@ -126,11 +126,11 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
             torn = true;  // The last whole frame stays; these tiles wait for the next.
             return;
         }
-        if (everything) tiles.assign(1, QRect(0, 0, f.width, f.height));
+        if (everything) tiles.assign(1, QRect(0, 0, f.width(), f.height()));
         // Edits clear the previous edit's re-traced overlay outside any tile: the flags follow
         // whole when the generation moved (a byte a pixel).
         const uint64_t generation = session_->generation();
-        d.refresh(f, mergeRects(std::move(tiles), QSize(f.width, f.height)),
+        d.refresh(f, mergeRects(std::move(tiles), QSize(f.width(), f.height())),
                   generation != frameSessionGeneration_);
         frameSessionGeneration_ = generation;
         handover_.copyMs +=

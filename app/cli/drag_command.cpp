@@ -159,7 +159,7 @@ int runDrag(int argc, char** argv) {
     float maxDiff = 0.0f;
     session.withFrame([&](const DeepFrame& frame, const auto&) {
         for (std::size_t i = 0; i < frame.pixelCount(); ++i) {
-            const Color d = glm::abs(frame.color[i] - full.image.pixels[i]);
+            const Color d = glm::abs(frame.color()[i] - full.image.pixels[i]);
             maxDiff = std::max({maxDiff, d.x, d.y, d.z});
         }
     });

@@ -148,14 +148,15 @@ constexpr float kSpotConeSlack = 1e-4f;
 /// sample) or outside its spot cone, the pixel is marked. Background pixels see no light.
 bool lightMayChange(const MarkContext& c, std::size_t i) {
     const DeepFrame& f = c.frame;
-    if (f.id[i] == kNoObject && f.sampleCount[i] == 0) return false;
-    const glm::vec4 hb = f.hitBound[i];
-    if ((f.flags[i] & (kTouchedSpecular | kTreeUnknown)) || f.sampleCount[i] > 0 || hb.w != 0.0f)
+    if (f.id()[i] == kNoObject && f.sampleCount()[i] == 0) return false;
+    const glm::vec4 hb = f.hitBound()[i];
+    if ((f.flags()[i] & (kTouchedSpecular | kTreeUnknown)) || f.sampleCount()[i] > 0 ||
+        hb.w != 0.0f)
         return true;
     const Vec3 p(hb);
     // The integrator faces the normal toward the incoming camera ray.
     const Vec3 toEye = c.camera->orthographic() ? -c.camera->forward() : c.camera->origin() - p;
-    const Vec3 n = f.normal[i];
+    const Vec3 n = f.normal()[i];
     const float facing = glm::dot(n, toEye);
     if (std::abs(facing) <= 1e-4f * glm::length(toEye)) return true;  // Grazing: either side.
     const Vec3 ns = facing > 0.0f ? n : -n;
@@ -189,10 +190,10 @@ std::vector<Aabb> mergeOverlapping(std::vector<Aabb> boxes) {
 /// Whether any of the pixel's secondary segments (or shadow rays from their end points) can
 /// reach an edited region.
 bool treeMayCross(const MarkContext& c, std::size_t i, int tile) {
-    if (c.frame.flags[i] & kTreeUnknown) return true;
-    const auto& pool = c.frame.tileSegments[std::size_t(tile)];
-    const uint32_t start = c.frame.segmentStart[i];
-    for (uint32_t k = 0; k < c.frame.segmentCount[i]; ++k) {
+    if (c.frame.flags()[i] & kTreeUnknown) return true;
+    const auto& pool = c.frame.tileSegments()[std::size_t(tile)];
+    const uint32_t start = c.frame.segmentStart()[i];
+    for (uint32_t k = 0; k < c.frame.segmentCount()[i]; ++k) {
         const TreeSegment& s = pool[start + k];
         // Cheap rejections first (no divisions): the segment's own box, the light cones.
         Aabb span;
@@ -219,12 +220,13 @@ bool treeMayCross(const MarkContext& c, std::size_t i, int tile) {
 /// Whether a ray of pixel i may have left the scene: its centre ray missed, one of its
 /// supersamples missed, or a secondary ray of its tree escaped.
 bool seesEnvironment(const DeepFrame& f, std::size_t i, int tile) {
-    if (f.id[i] == kNoObject || (f.sampleCount[i] > 0 && (f.flags[i] & kSampleMissed))) return true;
-    if (!(f.flags[i] & kTouchedSpecular)) return false;
-    if (f.flags[i] & kTreeUnknown) return true;
-    const auto& pool = f.tileSegments[std::size_t(tile)];
-    for (uint32_t k = 0; k < f.segmentCount[i]; ++k)
-        if (pool[f.segmentStart[i] + k].escapes) return true;
+    if (f.id()[i] == kNoObject || (f.sampleCount()[i] > 0 && (f.flags()[i] & kSampleMissed)))
+        return true;
+    if (!(f.flags()[i] & kTouchedSpecular)) return false;
+    if (f.flags()[i] & kTreeUnknown) return true;
+    const auto& pool = f.tileSegments()[std::size_t(tile)];
+    for (uint32_t k = 0; k < f.segmentCount()[i]; ++k)
+        if (pool[f.segmentStart()[i] + k].escapes) return true;
     return false;
 }
 
@@ -290,18 +292,18 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
             if (x >= f.x0 && x < f.x1 && y >= f.y0 && y < f.y1) return true;
     if (tests.retint) {
         for (ObjectId id : c.edit.retinted)
-            if (c.frame.id[i] == id) return true;
+            if (c.frame.id()[i] == id) return true;
         // The id is the centre sample's; a supersampled pixel also averages samples that
         // may have hit a retinted object.
-        if (c.frame.sampleCount[i] > 0) return true;
+        if (c.frame.sampleCount()[i] > 0) return true;
     }
-    if (tests.tree && (c.frame.flags[i] & kTouchedSpecular)) {
+    if (tests.tree && (c.frame.flags()[i] & kTouchedSpecular)) {
         // A retinted object may be seen in a mirror: then any specular pixel.
         if (!c.edit.retinted.empty() || treeMayCross(c, i, tile)) return true;
     }
     if (tests.light && lightMayChange(c, i)) return true;
     if (tests.environment && seesEnvironment(c.frame, i, tile)) return true;
-    const glm::vec4 hb = c.frame.hitBound[i];
+    const glm::vec4 hb = c.frame.hitBound()[i];
     if (tests.primaryShadow && hb.w >= 0.0f) {
         // Any segment from the hit points to any point of a light stays within
         // (hit radius + light radius) of the centre-to-centre segment.
@@ -327,8 +329,9 @@ void clearBlocks(std::vector<uint8_t>& v, const DeepFrame& frame, const std::vec
         const int first = blocks[k], row = first / bxs;
         std::size_t e = k + 1;
         while (e < blocks.size() && blocks[e] == blocks[e - 1] + 1 && blocks[e] / bxs == row) ++e;
-        const int x0 = (first % bxs) * B, x1 = std::min(frame.width, (blocks[e - 1] % bxs + 1) * B);
-        for (int y = row * B; y < std::min(frame.height, (row + 1) * B); ++y)
+        const int x0 = (first % bxs) * B,
+                  x1 = std::min(frame.width(), (blocks[e - 1] % bxs + 1) * B);
+        for (int y = row * B; y < std::min(frame.height(), (row + 1) * B); ++y)
             std::memset(v.data() + frame.index(x0, y), 0, std::size_t(x1 - x0));
         k = e;
     }
@@ -348,10 +351,10 @@ void markRow(uint8_t* p, int n) {
 /// when it was for a frame of the same sides.
 void resetMask(DirtyMask& mask, const DeepFrame& frame) {
     const std::size_t blockCount = std::size_t(frame.blocksX()) * std::size_t(frame.blocksY());
-    if (mask.width != frame.width || mask.height != frame.height ||
+    if (mask.width != frame.width() || mask.height != frame.height() ||
         mask.pixels.size() != frame.pixelCount() || mask.touched.size() != blockCount) {
-        mask.width = frame.width;
-        mask.height = frame.height;
+        mask.width = frame.width();
+        mask.height = frame.height();
         mask.pixels.assign(frame.pixelCount(), 0);
         mask.touched.assign(blockCount, 0);
     } else {
@@ -407,7 +410,7 @@ std::size_t growBlockMarks(const uint8_t* core, int width, int height, int x0, i
 std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                             const DeepFrame& frame, DirtyMask& mask, MarkScope scope,
                             MarkStats* stats) {
-    const int w = frame.width, h = frame.height;
+    const int w = frame.width(), h = frame.height();
     if (stats) *stats = MarkStats{};
     resetMask(mask, frame);
     if (edit.everything) {
@@ -444,7 +447,7 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     // adaptive supersampling decision). A tile whose summary (the union of its blocks') passes
     // no test is skipped whole; growing visits only blocks next to marked ones.
     const int blocksX = frame.blocksX(), blocksY = frame.blocksY(), blocks = blocksX * blocksY;
-    const int B = DeepFrame::kBlock, T = frame.tileSize, perTile = T / B;
+    const int B = DeepFrame::kBlock, T = frame.tileSize(), perTile = T / B;
     std::vector<uint8_t> blockMarked(std::size_t(blocks), 0);
     // The marks before growing. Reused between edits and zero between them: each marking
     // clears the blocks it marked, not the frame. Bound to references here because a
@@ -459,14 +462,14 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     parallelForIndex(0, frame.tilesX() * frame.tilesY(), [&](int t) {
         const int tx = t % frame.tilesX(), ty = t / frame.tilesX();
         const PixelRect tr{tx * T, ty * T, std::min(w, (tx + 1) * T), std::min(h, (ty + 1) * T)};
-        if (!tileTests(c, tr, frame.tileSummary[std::size_t(t)]).any()) return;
+        if (!tileTests(c, tr, frame.tileSummary()[std::size_t(t)]).any()) return;
         std::size_t tested = 0, pixels = 0;
         for (int by = ty * perTile; by < std::min(blocksY, (ty + 1) * perTile); ++by) {
             for (int bx = tx * perTile; bx < std::min(blocksX, (tx + 1) * perTile); ++bx) {
                 const int b = by * blocksX + bx;
                 const PixelRect r{bx * B, by * B, std::min(w, (bx + 1) * B),
                                   std::min(h, (by + 1) * B)};
-                const TileTests tests = tileTests(c, r, frame.blockSummary[std::size_t(b)]);
+                const TileTests tests = tileTests(c, r, frame.blockSummary()[std::size_t(b)]);
                 ++tested;
                 if (!tests.any()) continue;
                 if (tests.footprint && insideFootprint(c, r)) {

@@ -222,7 +222,8 @@ void RenderSession::applyPendingLocked(std::unique_lock<std::mutex>& lock) {
     snapshot_ = u.snapshot;
     appliedGeneration_ = gen;
     ++stats_.appliedUpdates;
-    if (u.edit.resized || frame_.width != doc_.render.width || frame_.height != doc_.render.height)
+    if (u.edit.resized || frame_.width() != doc_.render.width ||
+        frame_.height() != doc_.render.height)
         pendingResize_ = true;
 
     std::size_t marked = 0;
@@ -327,14 +328,8 @@ void RenderSession::markReleasedShadowsLocked() {
         SceneEdit edit;
         edit.regions.swap(deferredShadowRegions_);
         if (markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, MarkScope::ShadowsOnly) > 0) {
-            for (const int b : dirtyMask_.blocks) {
-                frame_.forEachPixelOfBlock(std::size_t(b), [&](std::size_t i, int tile) {
-                    if (dirtyMask_.pixels[i] && frame_.state[i] >= kBase) {
-                        frame_.setState(i, tile, kStale);
-                        frame_.flags[i] = uint8_t(frame_.flags[i] & ~kDeferredValid);
-                    }
-                });
-            }
+            for (const int b : dirtyMask_.blocks)
+                frame_.applyShadowMarks(std::size_t(b), dirtyMask_.pixels);
         }
     }
     deferredShadowRegions_.clear();

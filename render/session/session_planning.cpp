@@ -17,13 +17,13 @@ constexpr int kFocusGroupX = 8, kFocusGroupY = 2;
 /// interleaved pass also needs a stale pixel of this frame's parity: those tiles are scanned).
 bool tileHasCandidate(const RenderSession::Plan& plan, const DeepFrame& frame, int tile,
                       const PixelRect& r) {
-    const auto& counts = frame.tileStates[std::size_t(tile)];
+    const auto& counts = frame.tileStates()[std::size_t(tile)];
     switch (plan.kind) {
         case PassKind::Interactive:
             if (counts[kStale] == 0) return false;
             if (!plan.interleaved) return true;
             for (int y = r.y0; y < r.y1; ++y) {
-                const uint8_t* row = frame.state.data() + frame.index(r.x0, y);
+                const uint8_t* row = frame.state().data() + frame.index(r.x0, y);
                 for (int x = r.x0; x < r.x1; ++x) {
                     const int bx = x / plan.step, by = y / plan.step;
                     if (row[x - r.x0] == kStale && ((bx + by + plan.parity) & 1) == 0) return true;
@@ -52,8 +52,8 @@ bool RenderSession::planLocked(Plan& plan) {
         pendingResize_ = false;
     }
     plan.generation = generation_.load();
-    plan.width = frame_.width;
-    plan.height = frame_.height;
+    plan.width = frame_.width();
+    plan.height = frame_.height();
     plan.spp = std::max(1, settings.supersampling);
 
     // From the tiles' state counts: no pixel is looked at.
@@ -100,9 +100,9 @@ bool RenderSession::planLocked(Plan& plan) {
         for (int tx = 0; tx < frame_.tilesX(); ++tx) {
             TileJob job;
             job.tile = ty * frame_.tilesX() + tx;
-            job.rect = {tx * frame_.tileSize, ty * frame_.tileSize,
-                        std::min(frame_.width, (tx + 1) * frame_.tileSize),
-                        std::min(frame_.height, (ty + 1) * frame_.tileSize)};
+            job.rect = {tx * frame_.tileSize(), ty * frame_.tileSize(),
+                        std::min(frame_.width(), (tx + 1) * frame_.tileSize()),
+                        std::min(frame_.height(), (ty + 1) * frame_.tileSize())};
             if (tileHasCandidate(plan, frame_, job.tile, job.rect)) plan.tiles.push_back(job);
         }
     }
@@ -113,8 +113,9 @@ bool RenderSession::planLocked(Plan& plan) {
     // share the pages of each frame buffer, which a tile-by-tile spiral leaves at every tile
     // (a full frame of the room took about 6 % more CPU time in that order).
     if (focusX_ >= 0.0f) {
-        const int groupW = kFocusGroupX * frame_.tileSize, groupH = kFocusGroupY * frame_.tileSize;
-        const int groupsX = (frame_.width + groupW - 1) / groupW;
+        const int groupW = kFocusGroupX * frame_.tileSize(),
+                  groupH = kFocusGroupY * frame_.tileSize();
+        const int groupsX = (frame_.width() + groupW - 1) / groupW;
         const float fx = focusX_, fy = focusY_;
         auto group = [&](const TileJob& j) {
             return (j.rect.y0 / groupH) * groupsX + j.rect.x0 / groupW;

@@ -55,7 +55,7 @@ struct TileInput {
 bool interactiveTile(const TileInput& in, TileResult& out) {
     const RenderSession::Plan& plan = in.plan;
     const PixelRect& r = in.job.rect;
-    const uint8_t* state = in.frame.state.data();
+    const uint8_t* state = in.frame.state().data();
     for (int y = r.y0; y < r.y1; ++y) {
         in.addCentreRays(
             out.traced, y,
@@ -82,7 +82,7 @@ bool blockTile(const TileInput& in, TileResult& out) {
             bool anyStale = false;
             for (int yy = y; yy < by1 && !anyStale; ++yy)
                 for (int xx = x; xx < bx1 && !anyStale; ++xx)
-                    anyStale = in.frame.state[in.index(xx, yy)] == kStale;
+                    anyStale = in.frame.state()[in.index(xx, yy)] == kStale;
             if (!anyStale) continue;
             const Ray ray = in.camera.generateRay(0.5f * float(x + bx1), 0.5f * float(y + by1));
             out.blocks.add(ray, pixelSeed(x, y, 0), in.index(x, y),
@@ -101,14 +101,14 @@ bool baseTile(const TileInput& in, TileResult& out) {
     records.clear();
     const DeepFrame& f = in.frame;
     const PixelRect& r = in.job.rect;
-    const auto& pool = f.tileRecords[std::size_t(in.job.tile)];
-    const uint8_t* state = f.state.data();
-    const uint8_t* flags = f.flags.data();
+    const auto& pool = f.tileRecords()[std::size_t(in.job.tile)];
+    const uint8_t* state = f.state().data();
+    const uint8_t* flags = f.flags().data();
     // Waiting for its deferred shadows only: resolved from its records, not traced again.
     const auto deferred = [&](std::size_t i) {
         return state[i] == kInteractive && (flags[i] & kDeferredValid);
     };
-    if (f.tileStates[std::size_t(in.job.tile)][kStale] == uint32_t(r.area())) {
+    if (f.tileStates()[std::size_t(in.job.tile)][kStale] == uint32_t(r.area())) {
         // Every pixel stale (a camera move, a new frame): all traced, none resolved, and
         // nothing per pixel to decide (this tile's counts only its own commit writes).
         const std::size_t n = std::size_t(r.x1 - r.x0);
@@ -127,9 +127,9 @@ bool baseTile(const TileInput& in, TileResult& out) {
             const std::size_t i = in.index(x, y);
             if (state[i] >= kBase || !deferred(i)) continue;
             out.resolvedPixel.push_back(i);
-            const uint32_t start = f.recordStart[i];
+            const uint32_t start = f.recordStart()[i];
             records.insert(records.end(), pool.begin() + start,
-                           pool.begin() + start + f.recordCount[i]);
+                           pool.begin() + start + f.recordCount()[i]);
         }
         in.addCentreRays(
             out.traced, y, [&](int, std::size_t i) { return state[i] < kBase && !deferred(i); },
@@ -142,11 +142,11 @@ bool baseTile(const TileInput& in, TileResult& out) {
     out.resolvedState = in.doneState();
     for (std::size_t k = 0, record = 0; k < out.resolvedPixel.size(); ++k) {
         const std::size_t i = out.resolvedPixel[k];
-        Color c = f.color[i];
-        for (uint32_t j = 0; j < f.recordCount[i]; ++j) c += resolved[record++];
+        Color c = f.color()[i];
+        for (uint32_t j = 0; j < f.recordCount()[i]; ++j) c += resolved[record++];
         out.resolvedColor.push_back(c);
         out.resolvedFlags.push_back(
-            uint8_t(f.flags[i] & (kTouchedSpecular | kTracedLastUpdate | kTreeUnknown)));
+            uint8_t(f.flags()[i] & (kTouchedSpecular | kTracedLastUpdate | kTreeUnknown)));
     }
     return true;
 }
@@ -169,15 +169,16 @@ bool supersampleTile(const TileInput& in, TileResult& out) {
     for (int y = r.y0; y < r.y1; ++y) {
         for (int x = r.x0; x < r.x1; ++x) {
             const std::size_t i = in.index(x, y);
-            if (f.state[i] != kBase) continue;
+            if (f.state()[i] != kBase) continue;
             // Decided here, per tile: the pass writes no base, id or normal, so the
             // neighbours this reads (in other tiles too) stay as the Base pass left them.
-            if (plan.adaptive && !needsSupersampling(f.base.data(), f.id.data(), f.normal.data(),
-                                                     f.width, f.height, x, y)) {
+            if (plan.adaptive &&
+                !needsSupersampling(f.base().data(), f.id().data(), f.normal().data(), f.width(),
+                                    f.height(), x, y)) {
                 out.finishedPixel.push_back(i);
                 continue;
             }
-            const int count = f.sampleCount[i];
+            const int count = f.sampleCount()[i];
             const int end = std::min(plan.spp, count + plan.sppChunk);
             const PixelSamples pixelSamples(x, y, plan.spp);
             sampledPixels.push_back(i);
@@ -191,8 +192,8 @@ bool supersampleTile(const TileInput& in, TileResult& out) {
     const RayList& samples = out.samples;
     for (std::size_t k = 0; k < sampledPixels.size(); ++k) {
         const std::size_t i = sampledPixels[k];
-        TileResult::Sampled s{i,     Color(0.0f), f.sampleSum[i], f.sampleCount[i],
-                              kBase, f.flags[i],  f.cost[i],      f.hitBound[i]};
+        TileResult::Sampled s{i,     Color(0.0f),  f.sampleSum()[i], f.sampleCount()[i],
+                              kBase, f.flags()[i], f.cost()[i],      f.hitBound()[i]};
         int kept = 0;
         for (int j = out.sampleFirst[k]; j < out.sampleFirst[k + 1]; ++j) {
             const std::size_t q = std::size_t(j);

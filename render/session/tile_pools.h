@@ -18,17 +18,17 @@ class SegmentPool {
 public:
     SegmentPool(DeepFrame& frame, int tile)
         : frame_(frame),
-          pool_(frame.tileSegments[std::size_t(tile)]),
-          live_(frame.tileLiveSegments[std::size_t(tile)]) {}
+          pool_(frame.tileSegments_[std::size_t(tile)]),
+          live_(frame.tileLiveSegments_[std::size_t(tile)]) {}
 
     /// Pixel i's segments become its old ones (when `keepOld`) followed by `count` from `first`
     /// (several lists: call add() for each, then end()).
     void begin(std::size_t i, bool keepOld) {
         pixel_ = i;
-        oldCount_ = fresh_ ? 0 : frame_.segmentCount[i];
+        oldCount_ = fresh_ ? 0 : frame_.segmentCount_[i];
         start_ = uint32_t(pool_.size());
         if (keepOld) {
-            const uint32_t oldStart = frame_.segmentStart[i];
+            const uint32_t oldStart = frame_.segmentStart_[i];
             for (uint32_t k = 0; k < oldCount_; ++k) pool_.push_back(pool_[oldStart + k]);
         }
     }
@@ -48,9 +48,9 @@ public:
     void replaceRun(std::size_t i, std::size_t n, const RayList& list, std::size_t k) {
         uint32_t removed = 0, added = 0;
         if (!fresh_)
-            for (std::size_t j = 0; j < n; ++j) removed += frame_.segmentCount[i + j];
-        uint32_t* startOut = frame_.segmentStart.data() + i;
-        uint8_t* countOut = frame_.segmentCount.data() + i;
+            for (std::size_t j = 0; j < n; ++j) removed += frame_.segmentCount_[i + j];
+        uint32_t* startOut = frame_.segmentStart_.data() + i;
+        uint8_t* countOut = frame_.segmentCount_.data() + i;
         const uint32_t base = uint32_t(pool_.size());
         if (!list.withSegments) {
             std::fill_n(startOut, n, base);
@@ -76,10 +76,10 @@ public:
         if (count > 255) {  // Too many to index: forget them and always re-trace.
             pool_.resize(start_);
             count = 0;
-            frame_.flags[pixel_] |= kTreeUnknown;
+            frame_.flags_[pixel_] |= kTreeUnknown;
         }
-        frame_.segmentStart[pixel_] = start_;
-        frame_.segmentCount[pixel_] = uint8_t(count);
+        frame_.segmentStart_[pixel_] = start_;
+        frame_.segmentCount_[pixel_] = uint8_t(count);
         live_ = live_ - oldCount_ + uint32_t(count);
     }
     /// Whether no pixel of the tile keeps a segment: every count is 0 (live_ is their sum),
@@ -88,10 +88,10 @@ public:
     /// Pixels [i, i + n) of one row keep no segments.
     void clearRun(std::size_t i, std::size_t n) {
         uint32_t removed = 0;
-        for (std::size_t j = 0; j < n; ++j) removed += frame_.segmentCount[i + j];
+        for (std::size_t j = 0; j < n; ++j) removed += frame_.segmentCount_[i + j];
         if (!fresh_) live_ -= removed;
-        std::fill_n(frame_.segmentStart.begin() + std::ptrdiff_t(i), n, uint32_t(pool_.size()));
-        std::fill_n(frame_.segmentCount.begin() + std::ptrdiff_t(i), n, uint8_t(0));
+        std::fill_n(frame_.segmentStart_.begin() + std::ptrdiff_t(i), n, uint32_t(pool_.size()));
+        std::fill_n(frame_.segmentCount_.begin() + std::ptrdiff_t(i), n, uint8_t(0));
     }
     /// Rewrites the pool with only the segments pixels of `r` still reference, when it is
     /// mostly garbage.
@@ -102,10 +102,10 @@ public:
         for (int y = r.y0; y < r.y1; ++y) {
             for (int x = r.x0; x < r.x1; ++x) {
                 const std::size_t i = frame_.index(x, y);
-                const uint32_t start = frame_.segmentStart[i];
-                frame_.segmentStart[i] = uint32_t(fresh.size());
+                const uint32_t start = frame_.segmentStart_[i];
+                frame_.segmentStart_[i] = uint32_t(fresh.size());
                 fresh.insert(fresh.end(), pool_.begin() + start,
-                             pool_.begin() + start + frame_.segmentCount[i]);
+                             pool_.begin() + start + frame_.segmentCount_[i]);
             }
         }
         pool_.swap(fresh);
@@ -130,8 +130,8 @@ class RecordPool {
 public:
     RecordPool(DeepFrame& frame, int tile)
         : frame_(frame),
-          pool_(frame.tileRecords[std::size_t(tile)]),
-          kept_(frame.tileRecordsKept[std::size_t(tile)]) {}
+          pool_(frame.tileRecords_[std::size_t(tile)]),
+          kept_(frame.tileRecordsKept_[std::size_t(tile)]) {}
 
     /// Every pixel of the tile is traced again: no old record stays referenced.
     void restart() {
@@ -139,8 +139,8 @@ public:
         kept_ = 0;
     }
     void append(std::size_t i, const ShadingRecord* first, uint8_t count) {
-        frame_.recordStart[i] = uint32_t(pool_.size());
-        frame_.recordCount[i] = count;
+        frame_.recordStart_[i] = uint32_t(pool_.size());
+        frame_.recordCount_[i] = count;
         pool_.insert(pool_.end(), first, first + count);
     }
     /// Keeps only the records of the pixels of `r` that still wait for deferred shadows.
@@ -150,11 +150,11 @@ public:
         for (int y = r.y0; y < r.y1; ++y) {
             for (int x = r.x0; x < r.x1; ++x) {
                 const std::size_t i = frame_.index(x, y);
-                if (!(frame_.flags[i] & kDeferredValid)) continue;
-                const uint32_t start = frame_.recordStart[i];
-                frame_.recordStart[i] = uint32_t(fresh.size());
+                if (!(frame_.flags_[i] & kDeferredValid)) continue;
+                const uint32_t start = frame_.recordStart_[i];
+                frame_.recordStart_[i] = uint32_t(fresh.size());
                 fresh.insert(fresh.end(), pool_.begin() + start,
-                             pool_.begin() + start + frame_.recordCount[i]);
+                             pool_.begin() + start + frame_.recordCount_[i]);
             }
         }
         pool_.swap(fresh);

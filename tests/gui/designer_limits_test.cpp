@@ -119,7 +119,7 @@ void DesignerLimitsTest::outOfMemory_IsReported_AndDocumentKept() {
     setrlimit(RLIMIT_AS, &old);
     int sessionWidth = 0;
     window_->session()->session().withFrame(
-        [&](const DeepFrame& f, const auto&) { sessionWidth = f.width; });
+        [&](const DeepFrame& f, const auto&) { sessionWidth = f.width(); });
     QVERIFY2(reported,
              qPrintable(errors_.join('\n') + " | " + window_->statusBar()->currentMessage() +
                         QStringLiteral(" | traced %1x%2, session frame width %3")

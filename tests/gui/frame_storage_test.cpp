@@ -19,26 +19,35 @@ private Q_SLOTS:
     void storageMaker_MakesTheLargestSizeAskedFor();
 };
 
+namespace rs {
+/// The frame's own buffers, to number the pixels by hand.
+struct DeepFrameTestAccess {
+    static void number(DeepFrame& f, float base) {
+        for (std::size_t i = 0; i < f.color_.size(); ++i) {
+            f.color_[i] = Color(base + float(i), 0.5f * float(i), 1.0f);
+            f.id_[i] = ObjectId(i % 7);
+            f.depth_[i] = base + 0.25f * float(i);
+            f.flags_[i] = uint8_t(i % 3);
+        }
+    }
+};
+}  // namespace rs
+
 /// A deep frame whose every buffer the display copies differs from pixel to pixel.
 static DeepFrame numberedFrame(int w, int h, float base) {
     DeepFrame f;
     f.resize(w, h);
-    for (std::size_t i = 0; i < f.color.size(); ++i) {
-        f.color[i] = Color(base + float(i), 0.5f * float(i), 1.0f);
-        f.id[i] = ObjectId(i % 7);
-        f.depth[i] = base + 0.25f * float(i);
-        f.flags[i] = uint8_t(i % 3);
-    }
+    DeepFrameTestAccess::number(f, base);
     return f;
 }
 
 static void compareBuffers(const DisplayFrame& d, const DeepFrame& f) {
-    QCOMPARE(d.width, f.width);
-    QCOMPARE(d.height, f.height);
-    QVERIFY(std::equal(d.color.begin(), d.color.end(), f.color.begin(), f.color.end()));
-    QVERIFY(std::equal(d.id.begin(), d.id.end(), f.id.begin(), f.id.end()));
-    QVERIFY(std::equal(d.depth.begin(), d.depth.end(), f.depth.begin(), f.depth.end()));
-    QVERIFY(std::equal(d.flags.begin(), d.flags.end(), f.flags.begin(), f.flags.end()));
+    QCOMPARE(d.width, f.width());
+    QCOMPARE(d.height, f.height());
+    QVERIFY(std::equal(d.color.begin(), d.color.end(), f.color().begin(), f.color().end()));
+    QVERIFY(std::equal(d.id.begin(), d.id.end(), f.id().begin(), f.id().end()));
+    QVERIFY(std::equal(d.depth.begin(), d.depth.end(), f.depth().begin(), f.depth().end()));
+    QVERIFY(std::equal(d.flags.begin(), d.flags.end(), f.flags().begin(), f.flags().end()));
 }
 
 void FrameStorageTest::adopt_ANewSizeIsCopiedIntoTheStorageMadeBeforeIt() {

@@ -112,10 +112,10 @@ void SessionThreadsTest::editsWhilePassesRun_EndInTheFullRenderOfTheLastDocument
         QVERIFY(scene);
         QVERIFY(scene->materials().at(1).color == Color(0.2f, 0.7f, 0.3f));  // Slot 0: the default.
         const RenderResult full = renderImage(*scene);
-        QCOMPARE(full.image.pixels.size(), f.color.size());
+        QCOMPARE(full.image.pixels.size(), f.color().size());
         float worst = 0.0f;
-        for (std::size_t i = 0; i < f.color.size(); ++i) {
-            const Color d = glm::abs(full.image.pixels[i] - f.color[i]);
+        for (std::size_t i = 0; i < f.color().size(); ++i) {
+            const Color d = glm::abs(full.image.pixels[i] - f.color()[i]);
             worst = std::max({worst, d.x, d.y, d.z});
         }
         QVERIFY2(worst <= 1e-5f, qPrintable(QStringLiteral("max difference %1").arg(worst)));

@@ -61,8 +61,8 @@ void ViewportSizeTest::resizingTheViewport_ChangesTheTracedSize_NotTheOutputSize
     // The session's own frame, not just the copy shown.
     int w = 0, h = 0;
     window_->session()->session().withFrame([&](const DeepFrame& f, const auto&) {
-        w = f.width;
-        h = f.height;
+        w = f.width();
+        h = f.height();
     });
     QCOMPARE(QSize(w, h), QSize(333, 187));
     // The document's output size (Render Image, Export's caption, the CLI) is untouched.

@@ -262,8 +262,8 @@ TEST(DirtyMask, KeptFromTheLastMarking_MarksWhatAFreshMaskMarks) {
             // The test can fail: the large move marked pixels that the small one does not,
             // both outside the small one's blocks and inside them.
             std::size_t outside = 0, inside = 0;
-            for (int y = 0; y < frame.height; ++y)
-                for (int x = 0; x < frame.width; ++x) {
+            for (int y = 0; y < frame.height(); ++y)
+                for (int x = 0; x < frame.width(); ++x) {
                     const std::size_t i = frame.index(x, y);
                     const std::size_t b =
                         std::size_t(y / 8) * std::size_t(frame.blocksX()) + std::size_t(x / 8);

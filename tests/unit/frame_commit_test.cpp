@@ -14,6 +14,15 @@
 #include "session/tile_output.h"
 
 namespace rs {
+
+/// The frame's own buffers, for the cases that set pixels up by hand.
+struct DeepFrameTestAccess {
+    static LargeVector<uint8_t>& flags(DeepFrame& f) { return f.flags_; }
+    static void setState(DeepFrame& f, std::size_t i, int tile, uint8_t s) {
+        f.setState(i, tile, s);
+    }
+};
+
 namespace {
 
 // One tile wide, two tiles high: the last pixel of a row and the first of the next have
@@ -84,24 +93,24 @@ TileResult resultFor(const std::vector<std::size_t>& pixels, int salt, uint64_t 
 void expectPixel(const DeepFrame& f, std::size_t i, int salt, bool base) {
     const Made m = made(i, salt);
     SCOPED_TRACE("pixel " + std::to_string(i) + " of pass " + std::to_string(salt));
-    EXPECT_EQ(f.color[i], m.color);
-    EXPECT_EQ(f.base[i], base ? m.color : Color(0.0f));
-    EXPECT_EQ(f.id[i], m.info.id);
-    EXPECT_EQ(f.depth[i], m.info.depth);
-    EXPECT_EQ(f.normal[i], m.info.normal);
-    EXPECT_EQ(f.cost[i], m.rays);
-    EXPECT_EQ(f.state[i], kBase);
-    EXPECT_EQ(f.flags[i],
+    EXPECT_EQ(f.color()[i], m.color);
+    EXPECT_EQ(f.base()[i], base ? m.color : Color(0.0f));
+    EXPECT_EQ(f.id()[i], m.info.id);
+    EXPECT_EQ(f.depth()[i], m.info.depth);
+    EXPECT_EQ(f.normal()[i], m.info.normal);
+    EXPECT_EQ(f.cost()[i], m.rays);
+    EXPECT_EQ(f.state()[i], kBase);
+    EXPECT_EQ(f.flags()[i],
               uint8_t(kTracedLastUpdate | (m.info.touchedSpecular ? kTouchedSpecular : 0)));
     const glm::vec4 bound = m.info.id == kNoObject ? glm::vec4(0.0f, 0.0f, 0.0f, -1.0f)
                                                    : glm::vec4(float(i % kWidth), float(i / kWidth),
                                                                -m.info.depth, 0.0f);
-    EXPECT_EQ(f.hitBound[i], bound);
-    ASSERT_EQ(int(f.segmentCount[i]), m.segments);
-    const auto& pool = f.tileSegments[0];
+    EXPECT_EQ(f.hitBound()[i], bound);
+    ASSERT_EQ(int(f.segmentCount()[i]), m.segments);
+    const auto& pool = f.tileSegments()[0];
     for (int s = 0; s < m.segments; ++s) {
         const TreeSegment want = segmentOf(i, salt, s);
-        const TreeSegment& got = pool[f.segmentStart[i] + uint32_t(s)];
+        const TreeSegment& got = pool[f.segmentStart()[i] + uint32_t(s)];
         EXPECT_EQ(got.a, want.a);
         EXPECT_EQ(got.b, want.b);
         EXPECT_EQ(got.escapes, want.escapes);
@@ -112,7 +121,7 @@ void expectPixel(const DeepFrame& f, std::size_t i, int salt, bool base) {
 uint32_t referencedSegments(const DeepFrame& f) {
     uint32_t n = 0;
     for (int y = 0; y < 32; ++y)
-        for (int x = 0; x < 32; ++x) n += f.segmentCount[f.index(x, y)];
+        for (int x = 0; x < 32; ++x) n += f.segmentCount()[f.index(x, y)];
     return n;
 }
 
@@ -128,9 +137,9 @@ TEST(FrameCommit, WholeTile_WritesEveryBuffer_PoolsAndSummaries) {
     f.resize(kWidth, kHeight);
     ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));
     for (const std::size_t i : wholeTile()) expectPixel(f, i, 1, true);
-    EXPECT_EQ(f.tileStates[0], (std::array<uint32_t, 4>{0, 0, 1024, 0}));
-    EXPECT_EQ(f.tileStates[1], (std::array<uint32_t, 4>{1024, 0, 0, 0}));
-    EXPECT_EQ(f.tileLiveSegments[0], referencedSegments(f));
+    EXPECT_EQ(f.tileStates()[0], (std::array<uint32_t, 4>{0, 0, 1024, 0}));
+    EXPECT_EQ(f.tileStates()[1], (std::array<uint32_t, 4>{1024, 0, 0, 0}));
+    EXPECT_EQ(f.tileLiveSegments()[0], referencedSegments(f));
     EXPECT_TRUE(f.summariesMatchPixels());
     // A result of another generation writes nothing.
     EXPECT_FALSE(f.commit(resultFor(wholeTile(), 2, 6), 7));
@@ -149,8 +158,8 @@ TEST(FrameCommit, ScatteredPixels_RunsEndWithTheirRow_OthersKept) {
     ASSERT_TRUE(f.commit(resultFor(scattered, 2, 7), 7));
     const std::set<std::size_t> again(scattered.begin(), scattered.end());
     for (const std::size_t i : wholeTile()) expectPixel(f, i, again.count(i) ? 2 : 1, true);
-    EXPECT_EQ(f.tileStates[0], (std::array<uint32_t, 4>{0, 0, 1024, 0}));
-    EXPECT_EQ(f.tileLiveSegments[0], referencedSegments(f));
+    EXPECT_EQ(f.tileStates()[0], (std::array<uint32_t, 4>{0, 0, 1024, 0}));
+    EXPECT_EQ(f.tileLiveSegments()[0], referencedSegments(f));
     EXPECT_TRUE(f.summariesMatchPixels());
 }
 
@@ -196,12 +205,12 @@ TileResult withRecords(const std::vector<std::size_t>& pixels, int salt, uint64_
 
 void expectRecords(const DeepFrame& f, std::size_t i, int salt) {
     SCOPED_TRACE("records of pixel " + std::to_string(i) + " of pass " + std::to_string(salt));
-    ASSERT_TRUE(f.flags[i] & kDeferredValid);
-    ASSERT_EQ(int(f.recordCount[i]), int(i % 3) + 1);
-    const auto& pool = f.tileRecords[0];
-    for (int j = 0; j < int(f.recordCount[i]); ++j) {
-        ASSERT_LT(f.recordStart[i] + uint32_t(j), pool.size());
-        const ShadingRecord& got = pool[f.recordStart[i] + uint32_t(j)];
+    ASSERT_TRUE(f.flags()[i] & kDeferredValid);
+    ASSERT_EQ(int(f.recordCount()[i]), int(i % 3) + 1);
+    const auto& pool = f.tileRecords()[0];
+    for (int j = 0; j < int(f.recordCount()[i]); ++j) {
+        ASSERT_LT(f.recordStart()[i] + uint32_t(j), pool.size());
+        const ShadingRecord& got = pool[f.recordStart()[i] + uint32_t(j)];
         const ShadingRecord want = recordOf(i, salt, j);
         EXPECT_EQ(got.p, want.p);
         EXPECT_EQ(got.weight, want.weight);
@@ -214,21 +223,22 @@ TEST(FrameCommit, SparseRecords_AppendedWithoutMovingTheTilesOthers_PoolBounded)
     f.resize(kWidth, kHeight);
     ASSERT_TRUE(f.commit(withRecords(wholeTile(), 1, 7), 7));
     for (const std::size_t i : wholeTile()) expectRecords(f, i, 1);
-    const std::size_t wholeSize = f.tileRecords[0].size();
+    const std::size_t wholeSize = f.tileRecords()[0].size();
     // A sparse commit writes its pixels' records only: every other pixel's stay where they
     // were (a commit that rebuilt the pool would cost the tile, not what it traced).
-    const std::vector<uint32_t> startsBefore(f.recordStart.begin(), f.recordStart.begin() + 1024);
+    const std::vector<uint32_t> startsBefore(f.recordStart().begin(),
+                                             f.recordStart().begin() + 1024);
     const std::vector<std::size_t> few = {5, 6, 7, 300, 1000};
     ASSERT_TRUE(f.commit(withRecords(few, 2, 7), 7));
     std::size_t appended = 0;
     for (const std::size_t i : few) appended += i % 3 + 1;
-    EXPECT_EQ(f.tileRecords[0].size(), wholeSize + appended);
+    EXPECT_EQ(f.tileRecords()[0].size(), wholeSize + appended);
     const std::set<std::size_t> fewSet(few.begin(), few.end());
     int latest[1024];
     for (const std::size_t i : wholeTile()) {
         latest[i] = fewSet.count(i) ? 2 : 1;
         if (!fewSet.count(i)) {
-            EXPECT_EQ(f.recordStart[i], startsBefore[i]) << "pixel " << i;
+            EXPECT_EQ(f.recordStart()[i], startsBefore[i]) << "pixel " << i;
         }
         expectRecords(f, i, latest[i]);
     }
@@ -241,19 +251,21 @@ TEST(FrameCommit, SparseRecords_AppendedWithoutMovingTheTilesOthers_PoolBounded)
         some.erase(std::unique(some.begin(), some.end()), some.end());
         ASSERT_TRUE(f.commit(withRecords(some, pass, 7), 7));
         for (const std::size_t i : some) latest[i] = pass;
-        EXPECT_LE(f.tileRecords[0].size(), 2 * std::size_t(f.tileRecordsKept[0]) + 1024 + 7 * 3);
+        EXPECT_LE(f.tileRecords()[0].size(),
+                  2 * std::size_t(f.tileRecordsKept()[0]) + 1024 + 7 * 3);
     }
-    EXPECT_LT(f.tileRecords[0].size(), 3 * wholeSize);
+    EXPECT_LT(f.tileRecords()[0].size(), 3 * wholeSize);
     for (const std::size_t i : wholeTile()) expectRecords(f, i, latest[i]);
     // Pixels that stop waiting for shadows (an edit clears kDeferredValid) free their records at
     // the next compaction, and the others keep theirs.
-    for (std::size_t i = 0; i < 1024; i += 2) f.flags[i] = uint8_t(f.flags[i] & ~kDeferredValid);
+    for (std::size_t i = 0; i < 1024; i += 2)
+        DeepFrameTestAccess::flags(f)[i] &= uint8_t(~kDeferredValid);
     for (int pass = 400; pass < 800; ++pass) {
         const std::vector<std::size_t> one = {std::size_t(pass % 512) * 2 + 1};
         ASSERT_TRUE(f.commit(withRecords(one, pass, 7), 7));
         latest[one[0]] = pass;
     }
-    EXPECT_LT(f.tileRecords[0].size(), wholeSize);
+    EXPECT_LT(f.tileRecords()[0].size(), wholeSize);
     for (std::size_t i = 1; i < 1024; i += 2) expectRecords(f, i, latest[i]);
 }
 
@@ -262,9 +274,9 @@ TEST(FrameCommit, UndersampledBlocks_FillTheirSpans_CountsFollowMixedStates) {
     f.resize(kWidth, kHeight);
     ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // every pixel at kBase
     // Mixed old states: some final, some stale, some interactive.
-    for (std::size_t i = 0; i < 1024; i += 3) f.setState(i, 0, kFinal);
-    for (std::size_t i = 1; i < 1024; i += 5) f.setState(i, 0, kStale);
-    for (std::size_t i = 2; i < 1024; i += 7) f.setState(i, 0, kInteractive);
+    for (std::size_t i = 0; i < 1024; i += 3) DeepFrameTestAccess::setState(f, i, 0, kFinal);
+    for (std::size_t i = 1; i < 1024; i += 5) DeepFrameTestAccess::setState(f, i, 0, kStale);
+    for (std::size_t i = 2; i < 1024; i += 7) DeepFrameTestAccess::setState(f, i, 0, kInteractive);
     TileResult t;
     t.generation = 7;
     t.rect = {0, 0, 32, 32};
@@ -288,14 +300,14 @@ TEST(FrameCommit, UndersampledBlocks_FillTheirSpans_CountsFollowMixedStates) {
         b.info[k].touchedSpecular = k == 1;
         b.rays[k] = uint32_t(10 + k);
     }
-    std::array<uint32_t, 4> want = f.tileStates[0];
+    std::array<uint32_t, 4> want = f.tileStates()[0];
     std::set<std::size_t> covered;
     for (const auto& sp : spans)
         for (int y = sp[1]; y < sp[1] + sp[3]; ++y)
             for (int x = sp[0]; x < sp[0] + sp[2]; ++x) {
                 const std::size_t i = f.index(x, y);
                 covered.insert(i);
-                --want[f.state[i]];
+                --want[f.state()[i]];
                 ++want[kInteractive];
             }
     ASSERT_TRUE(f.commit(t, 7));
@@ -305,25 +317,25 @@ TEST(FrameCommit, UndersampledBlocks_FillTheirSpans_CountsFollowMixedStates) {
             for (int x = sp[0]; x < sp[0] + sp[2]; ++x) {
                 const std::size_t i = f.index(x, y);
                 SCOPED_TRACE("pixel " + std::to_string(i));
-                EXPECT_EQ(f.color[i], b.color[k]);
-                EXPECT_EQ(f.id[i], b.info[k].id);
-                EXPECT_EQ(f.depth[i], b.info[k].depth);
-                EXPECT_EQ(f.normal[i], b.info[k].normal);
-                EXPECT_EQ(f.cost[i], b.rays[k]);
-                EXPECT_EQ(f.state[i], kInteractive);
-                EXPECT_EQ(f.flags[i], uint8_t(kTracedLastUpdate |
-                                              (k == 1 ? kTouchedSpecular | kTreeUnknown : 0)));
-                EXPECT_EQ(f.hitBound[i],
+                EXPECT_EQ(f.color()[i], b.color[k]);
+                EXPECT_EQ(f.id()[i], b.info[k].id);
+                EXPECT_EQ(f.depth()[i], b.info[k].depth);
+                EXPECT_EQ(f.normal()[i], b.info[k].normal);
+                EXPECT_EQ(f.cost()[i], b.rays[k]);
+                EXPECT_EQ(f.state()[i], kInteractive);
+                EXPECT_EQ(f.flags()[i], uint8_t(kTracedLastUpdate |
+                                                (k == 1 ? kTouchedSpecular | kTreeUnknown : 0)));
+                EXPECT_EQ(f.hitBound()[i],
                           glm::vec4(float(sp[0]), float(sp[1]), -b.info[k].depth, 0.0f));
-                EXPECT_EQ(f.segmentCount[i], 0);
+                EXPECT_EQ(f.segmentCount()[i], 0);
             }
     }
     for (const std::size_t i : wholeTile())
         if (!covered.count(i)) {
-            ASSERT_EQ(f.color[i], made(i, 1).color) << "pixel " << i << " outside every span";
+            ASSERT_EQ(f.color()[i], made(i, 1).color) << "pixel " << i << " outside every span";
         }
-    EXPECT_EQ(f.tileStates[0], want);
-    EXPECT_EQ(f.tileLiveSegments[0], referencedSegments(f));
+    EXPECT_EQ(f.tileStates()[0], want);
+    EXPECT_EQ(f.tileLiveSegments()[0], referencedSegments(f));
     EXPECT_TRUE(f.summariesMatchPixels());
 }
 
@@ -361,15 +373,15 @@ TEST(FrameCommit, SpansCoveringWholeBlocks_SummariesFromTheRays_MatchThePixels) 
     DeepFrame f;
     f.resize(kWidth, kHeight);
     ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // segments and hits everywhere
-    const TileSummary before = f.tileSummary[0];
+    const TileSummary before = f.tileSummary()[0];
     ASSERT_TRUE(before.anySpecular);
     ASSERT_FALSE(before.segmentStarts.empty());
     ASSERT_TRUE(f.commit(quarterPass(f, 7), 7));
     EXPECT_TRUE(f.summariesMatchPixels());
-    EXPECT_EQ(f.tileLiveSegments[0], 0u);
-    EXPECT_TRUE(f.tileSummary[0].segmentStarts.empty());  // the old trees are gone
-    EXPECT_TRUE(f.tileSummary[0].anyUnknown);
-    EXPECT_EQ(f.tileStates[0][kInteractive], 1024u);
+    EXPECT_EQ(f.tileLiveSegments()[0], 0u);
+    EXPECT_TRUE(f.tileSummary()[0].segmentStarts.empty());  // the old trees are gone
+    EXPECT_TRUE(f.tileSummary()[0].anyUnknown);
+    EXPECT_EQ(f.tileStates()[0][kInteractive], 1024u);
 }
 
 // Orbiting: every pixel of the tile is stale when its quarter-resolution pass commits, so the
@@ -381,20 +393,20 @@ TEST(FrameCommit, OrbitPasses_AllStaleTiles_CountsAndSegmentsKnownFromTheTile) {
     DeepFrame f;
     f.resize(kWidth, kHeight);
     ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // segments and hits everywhere
-    ASSERT_GT(f.tileLiveSegments[0], 0u);
+    ASSERT_GT(f.tileLiveSegments()[0], 0u);
     for (int pass = 0; pass < 2; ++pass) {
         SCOPED_TRACE("orbit pass " + std::to_string(pass));
         f.markAllStale();
-        ASSERT_EQ(f.tileStates[0][kStale], 1024u);
+        ASSERT_EQ(f.tileStates()[0][kStale], 1024u);
         ASSERT_TRUE(f.commit(quarterPass(f, 7), 7));
         const std::array<uint32_t, 4> interactive = {0, 1024, 0, 0};
-        EXPECT_EQ(f.tileStates[0], interactive);
-        EXPECT_EQ(f.tileLiveSegments[0], 0u);
+        EXPECT_EQ(f.tileStates()[0], interactive);
+        EXPECT_EQ(f.tileLiveSegments()[0], 0u);
         EXPECT_EQ(referencedSegments(f), 0u);
         EXPECT_TRUE(f.summariesMatchPixels());
     }
     // The second tile, never traced, is still all stale.
-    EXPECT_EQ(f.tileStates[1][kStale], 1024u);
+    EXPECT_EQ(f.tileStates()[1][kStale], 1024u);
 }
 
 // An edit's marks in one block: marked pixels go stale, lose their deferred records and get
@@ -404,36 +416,36 @@ TEST(FrameCommit, ApplyBlockMarks_MarkedPixelsGoStale_OthersLoseTheOverlay_Count
     DeepFrame f;
     f.resize(kWidth, kHeight);
     ASSERT_TRUE(f.commit(resultFor(wholeTile(), 1, 7), 7));  // kBase, overlay flag set
-    for (std::size_t i = 0; i < 1024; i += 3) f.setState(i, 0, kFinal);
-    for (std::size_t i = 2; i < 1024; i += 7) f.setState(i, 0, kInteractive);
-    for (std::size_t i = 0; i < 1024; i += 2) f.flags[i] |= kDeferredValid;
+    for (std::size_t i = 0; i < 1024; i += 3) DeepFrameTestAccess::setState(f, i, 0, kFinal);
+    for (std::size_t i = 2; i < 1024; i += 7) DeepFrameTestAccess::setState(f, i, 0, kInteractive);
+    for (std::size_t i = 0; i < 1024; i += 2) DeepFrameTestAccess::flags(f)[i] |= kDeferredValid;
     const DeepFrame before = f;
     std::vector<uint8_t> mask(f.pixelCount(), 0);
     for (std::size_t i = 0; i < mask.size(); i += 5) mask[i] = 1;  // also outside the block
     const std::size_t block = 1 * std::size_t(f.blocksX()) + 2;    // pixels x 16..23, y 8..15
     f.applyBlockMarks(block, mask);
-    std::array<uint32_t, 4> want = before.tileStates[0];
+    std::array<uint32_t, 4> want = before.tileStates()[0];
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
             const std::size_t i = f.index(x, y);
             SCOPED_TRACE("pixel " + std::to_string(i));
             const bool inBlock = x >= 16 && x < 24 && y >= 8 && y < 16;
             if (!inBlock) {
-                EXPECT_EQ(f.state[i], before.state[i]);
-                EXPECT_EQ(f.flags[i], before.flags[i]);
+                EXPECT_EQ(f.state()[i], before.state()[i]);
+                EXPECT_EQ(f.flags()[i], before.flags()[i]);
             } else if (mask[i]) {
-                EXPECT_EQ(f.state[i], kStale);
-                EXPECT_EQ(f.flags[i],
-                          uint8_t((before.flags[i] & ~kDeferredValid) | kTracedLastUpdate));
-                --want[before.state[i]];
+                EXPECT_EQ(f.state()[i], kStale);
+                EXPECT_EQ(f.flags()[i],
+                          uint8_t((before.flags()[i] & ~kDeferredValid) | kTracedLastUpdate));
+                --want[before.state()[i]];
                 ++want[kStale];
             } else {
-                EXPECT_EQ(f.state[i], before.state[i]);
-                EXPECT_EQ(f.flags[i], uint8_t(before.flags[i] & ~kTracedLastUpdate));
+                EXPECT_EQ(f.state()[i], before.state()[i]);
+                EXPECT_EQ(f.flags()[i], uint8_t(before.flags()[i] & ~kTracedLastUpdate));
             }
         }
-    EXPECT_EQ(f.tileStates[0], want);
-    EXPECT_EQ(f.tileStates[1], before.tileStates[1]);
+    EXPECT_EQ(f.tileStates()[0], want);
+    EXPECT_EQ(f.tileStates()[1], before.tileStates()[1]);
     EXPECT_TRUE(f.summariesMatchPixels());
 }
 
@@ -446,11 +458,11 @@ TEST(FrameCommit, ApplyBlockMarks_AnyMarkValueAndCutBlocks_AsPixelByPixel) {
     std::vector<uint8_t> mask(f.pixelCount(), 0);
     uint32_t h = 12345;
     auto next = [&h] { return h = h * 1664525u + 1013904223u, h >> 8; };
-    for (int y = 0; y < f.height; ++y)
-        for (int x = 0; x < f.width; ++x) {
+    for (int y = 0; y < f.height(); ++y)
+        for (int x = 0; x < f.width(); ++x) {
             const std::size_t i = f.index(x, y);
-            f.setState(i, f.tileOf(x, y), uint8_t(next() % 4));
-            f.flags[i] = uint8_t(next() & 15);
+            DeepFrameTestAccess::setState(f, i, f.tileOf(x, y), uint8_t(next() % 4));
+            DeepFrameTestAccess::flags(f)[i] = uint8_t(next() & 15);
             mask[i] = next() % 3 == 0 ? 0 : uint8_t(1u << (next() % 8));  // 1, 2, ..., 128
         }
     const DeepFrame before = f;
@@ -461,19 +473,21 @@ TEST(FrameCommit, ApplyBlockMarks_AnyMarkValueAndCutBlocks_AsPixelByPixel) {
         SCOPED_TRACE("pixel " + std::to_string(i));
         if (mask[i]) {
             ++marked;
-            EXPECT_EQ(f.state[i], kStale);
-            EXPECT_EQ(f.flags[i], markedStaleFlags(before.flags[i]));
+            EXPECT_EQ(f.state()[i], kStale);
+            EXPECT_EQ(f.flags()[i], markedStaleFlags(before.flags()[i]));
         } else {
-            EXPECT_EQ(f.state[i], before.state[i]);
-            EXPECT_EQ(f.flags[i], uint8_t(before.flags[i] & ~kTracedLastUpdate));
+            EXPECT_EQ(f.state()[i], before.state()[i]);
+            EXPECT_EQ(f.flags()[i], uint8_t(before.flags()[i] & ~kTracedLastUpdate));
         }
     }
     ASSERT_GT(marked, f.pixelCount() / 2);
-    std::vector<std::array<uint32_t, 4>> counts(f.tileStates.size(), std::array<uint32_t, 4>{});
-    for (int y = 0; y < f.height; ++y)
-        for (int x = 0; x < f.width; ++x)
-            ++counts[std::size_t(f.tileOf(x, y))][f.state[f.index(x, y)]];
-    EXPECT_EQ(f.tileStates, counts);  // the tile counts follow the states
+    std::vector<std::array<uint32_t, 4>> counts(f.tileStates().size(), std::array<uint32_t, 4>{});
+    for (int y = 0; y < f.height(); ++y)
+        for (int x = 0; x < f.width(); ++x)
+            ++counts[std::size_t(f.tileOf(x, y))][f.state()[f.index(x, y)]];
+    const std::vector<std::array<uint32_t, 4>> tileStates(f.tileStates().begin(),
+                                                          f.tileStates().end());
+    EXPECT_EQ(tileStates, counts);  // the tile counts follow the states
 }
 
 }  // namespace

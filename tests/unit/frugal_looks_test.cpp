@@ -34,14 +34,14 @@ SceneDocument openAir() {
 std::size_t grownCount(RenderSession& session, const std::function<bool(ObjectId)>& seen) {
     std::size_t count = 0;
     session.withFrame([&](const DeepFrame& f, const auto&) {
-        for (int y = 0; y < f.height; ++y)
-            for (int x = 0; x < f.width; ++x) {
+        for (int y = 0; y < f.height(); ++y)
+            for (int x = 0; x < f.width(); ++x) {
                 bool near = false;
                 for (int dy = -1; dy <= 1 && !near; ++dy)
                     for (int dx = -1; dx <= 1 && !near; ++dx) {
                         const int xx = x + dx, yy = y + dy;
-                        if (xx >= 0 && yy >= 0 && xx < f.width && yy < f.height)
-                            near = seen(f.id[f.index(xx, yy)]);
+                        if (xx >= 0 && yy >= 0 && xx < f.width() && yy < f.height())
+                            near = seen(f.id()[f.index(xx, yy)]);
                     }
                 count += near;
             }

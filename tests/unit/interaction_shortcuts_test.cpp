@@ -19,7 +19,7 @@ using test::testRoom;
 std::size_t pixelsIn(RenderSession& session, uint8_t state) {
     std::size_t n = 0;
     session.withFrame([&](const DeepFrame& f, const auto&) {
-        for (std::size_t i = 0; i < f.pixelCount(); ++i) n += f.state[i] == state;
+        for (std::size_t i = 0; i < f.pixelCount(); ++i) n += f.state()[i] == state;
     });
     return n;
 }
@@ -67,8 +67,8 @@ TEST(InteractionShortcuts, BoxProxy_ShownWhileMoving_NeverKeptInTheRefinedFrame)
         for (const ObjectId id : exact.ids) ballPixels += id == ball;
         session.withFrame([&](const DeepFrame& f, const auto&) {
             for (std::size_t i = 0; i < f.pixelCount(); ++i) {
-                shownAsBall += f.id[i] == ball;
-                refined += f.state[i] >= kBase;
+                shownAsBall += f.id()[i] == ball;
+                refined += f.state()[i] >= kBase;
             }
         });
         ASSERT_GT(ballPixels, 0u);

@@ -24,7 +24,7 @@ float maxDiffToFullRender(RenderSession& session, const SceneDocument& doc) {
             return;
         }
         for (std::size_t i = 0; i < frame.pixelCount(); ++i) {
-            const Color d = glm::abs(frame.color[i] - full.image.pixels[i]);
+            const Color d = glm::abs(frame.color()[i] - full.image.pixels[i]);
             worst = std::max(worst, std::max(d.x, std::max(d.y, d.z)));
         }
     });

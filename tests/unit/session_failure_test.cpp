@@ -56,7 +56,7 @@ void expectRendersAfter(RenderSession& session, ErrorRecorder& recorder, SceneDo
     session.update(doc);
     ASSERT_TRUE(session.waitUntilComplete(60s));
     session.withFrame([](const DeepFrame& frame, const auto&) {
-        EXPECT_EQ(frame.width, 32);
+        EXPECT_EQ(frame.width(), 32);
         EXPECT_EQ(frame.pixelCount(), std::size_t(32 * 24));
     });
 }
@@ -130,7 +130,7 @@ TEST(SessionFailure, BadAllocInUpdate_IsReported_AndSessionKeepsItsDocument) {
     doc.render.width = 40;
     ASSERT_TRUE(session.waitForUpdate(session.update(doc), 30s));
     ASSERT_TRUE(session.waitUntilComplete(60s));
-    session.withFrame([](const DeepFrame& frame, const auto&) { EXPECT_EQ(frame.width, 40); });
+    session.withFrame([](const DeepFrame& frame, const auto&) { EXPECT_EQ(frame.width(), 40); });
 }
 
 }  // namespace

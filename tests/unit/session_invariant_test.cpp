@@ -39,10 +39,10 @@ struct FrameCopy {
 FrameCopy copyFrame(const RenderSession& session) {
     FrameCopy c;
     session.withFrame([&](const DeepFrame& f, const auto&) {
-        c.color.assign(f.color.begin(), f.color.end());
-        c.id.assign(f.id.begin(), f.id.end());
-        c.depth.assign(f.depth.begin(), f.depth.end());
-        c.normal.assign(f.normal.begin(), f.normal.end());
+        c.color.assign(f.color().begin(), f.color().end());
+        c.id.assign(f.id().begin(), f.id().end());
+        c.depth.assign(f.depth().begin(), f.depth().end());
+        c.normal.assign(f.normal().begin(), f.normal().end());
     });
     return c;
 }

@@ -246,15 +246,15 @@ TEST(RenderSession, QuarterResolution_EachTracedRayFillsItsBlock) {
     ASSERT_TRUE(firstDragStep(session, doc, p, info));
     std::size_t interactive = 0, differing = 0;
     session.withFrame([&](const DeepFrame& f, const auto&) {
-        for (int y = 0; y < f.height; ++y) {
-            for (int x = 0; x < f.width; ++x) {
+        for (int y = 0; y < f.height(); ++y) {
+            for (int x = 0; x < f.width(); ++x) {
                 const std::size_t i = f.index(x, y);
                 // The block's sample sits at its top-left pixel; blocks never cross tiles.
                 const std::size_t corner = f.index(x / 4 * 4, y / 4 * 4);
-                if (f.state[i] != kInteractive) continue;
+                if (f.state()[i] != kInteractive) continue;
                 ++interactive;
-                differing += f.color[i] != f.color[corner] || f.id[i] != f.id[corner] ||
-                             f.state[corner] != kInteractive;
+                differing += f.color()[i] != f.color()[corner] || f.id()[i] != f.id()[corner] ||
+                             f.state()[corner] != kInteractive;
             }
         }
     });
@@ -276,8 +276,8 @@ TEST(RenderSession, DeferredShadows_RecordsWhileMovingAndResolvesExactlyAfterRel
     std::size_t deferred = 0, interactive = 0;
     session.withFrame([&](const DeepFrame& f, const auto&) {
         for (std::size_t i = 0; i < f.pixelCount(); ++i) {
-            deferred += (f.flags[i] & kDeferredValid) != 0;
-            interactive += f.state[i] == kInteractive;
+            deferred += (f.flags()[i] & kDeferredValid) != 0;
+            interactive += f.state()[i] == kInteractive;
         }
     });
     EXPECT_EQ(interactive, doc.render.width * std::size_t(doc.render.height));
@@ -583,8 +583,8 @@ TEST(RenderSession, FramesSizedByTheViewport_OddSizesResizedMidDrag_EndExact) {
     ASSERT_TRUE(session.waitUntilComplete(60s));
     EXPECT_LE(maxDiffToFullRender(session, doc), 1e-5f);
     session.withFrame([](const DeepFrame& f, const auto&) {
-        EXPECT_EQ(f.width, 187);
-        EXPECT_EQ(f.height, 333);
+        EXPECT_EQ(f.width(), 187);
+        EXPECT_EQ(f.height(), 333);
     });
 }
 

@@ -28,9 +28,9 @@ inline float maxDiffToFullRender(RenderSession& session, const SceneDocument& do
         EXPECT_EQ(snapshot->engineKind(), session.engine());
         std::size_t idMismatches = 0;
         for (std::size_t i = 0; i < frame.pixelCount(); ++i) {
-            const Color d = glm::abs(frame.color[i] - full.image.pixels[i]);
+            const Color d = glm::abs(frame.color()[i] - full.image.pixels[i]);
             worst = std::max(worst, std::max(d.x, std::max(d.y, d.z)));
-            idMismatches += frame.id[i] != full.ids[i];
+            idMismatches += frame.id()[i] != full.ids[i];
         }
         EXPECT_EQ(idMismatches, 0u);
     });

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <vector>
 
 #include "image/image.h"
@@ -50,6 +51,9 @@ struct TileSummary {
 };
 
 struct TileResult;
+class SegmentPool;
+class RecordPool;
+class TouchedBlocks;
 
 /// The commit's write streams that ask for a channel's lines ahead (pixel_channels.h).
 enum ChannelAhead : unsigned {
@@ -79,20 +83,25 @@ constexpr std::size_t pixelChannelBytes() {
 }
 
 // What the list makes of each channel inside DeepFrame (undefined after it).
-#define RS_CHANNEL_BUFFER(name, Vector, Type, fresh, ahead, shown) Vector<Type> name;
+#define RS_CHANNEL_BUFFER(name, Vector, Type, fresh, ahead, shown) Vector<Type> name##_;
+#define RS_CHANNEL_VIEW(name, Vector, Type, fresh, ahead, shown) \
+    std::span<const Type> name() const {                         \
+        return name##_;                                          \
+    }
 #define RS_CHANNEL_SHOWN(name, Vector, Type, fresh, ahead, shown) \
-    if constexpr (shown == kShown) f(name, out.name);             \
+    if constexpr (shown == kShown) f(name##_, out.name);          \
     if constexpr (shown == kShownInDebug)                         \
-        if (debug) f(name, out.name);
+        if (debug) f(name##_, out.name);
 #define RS_CHANNEL_OVERLAY(name, Vector, Type, fresh, ahead, shown) \
-    if constexpr (shown == kShownAsOverlay) f(name, out.name);
+    if constexpr (shown == kShownAsOverlay) f(name##_, out.name);
 
 /// Structure-of-arrays deep buffer (thesis 3.3), row-major, (0, 0) top left.
 ///
-/// Who writes what: resize() allocates; tiles write only through commit(), under the session's
-/// shared frame lock, each tile its own pixels; edits (the session's dirty marking) change
-/// only `state` and `flags`, through applyBlockMarks() or markAllStale(), under the exclusive
-/// lock. commit() keeps these invariants:
+/// The buffers are the class's own: readers get const views of them (color(), state(), ...),
+/// and only these write: resize() allocates; tiles write only through commit(), under the
+/// session's shared frame lock, each tile its own pixels; edits (the session's dirty
+/// marking) change only `state` and `flags`, through applyBlockMarks(), applyShadowMarks()
+/// or markAllStale(), under the exclusive lock. commit() keeps these invariants:
 /// - a result of another generation than the live one writes nothing;
 /// - `base` holds the centre sample of pixels at kBase or above when the scene supersamples
 ///   (only supersampling reads it), `sampleSum`/`sampleCount` the samples (zero below kBase);
@@ -103,50 +112,51 @@ constexpr std::size_t pixelChannelBytes() {
 ///   summary of their tile;
 /// - tileStates counts every pixel of its tile by state (setState() keeps it);
 /// - a tile whose tileSampled is 0 has no sampleSum or sampleCount other than zero.
-struct DeepFrame {
-    int width = 0;
-    int height = 0;
-    int tileSize = 32;
-    /// The per-pixel buffers, one per channel of pixel_channels.h (which says what each holds).
-    RS_DEEP_FRAME_CHANNELS(RS_CHANNEL_BUFFER)
+class DeepFrame {
+public:
+    static constexpr int kBlock = 8;  ///< Side of the blocks summaries describe.
     /// Bytes a pixel costs the per-pixel buffers (the tiles' pools and summaries come on top).
     static constexpr std::size_t kBytesPerPixel = pixelChannelBytes();
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int tileSize() const { return tileSize_; }
+    /// Each per-pixel channel of pixel_channels.h as a const view, row-major.
+    RS_DEEP_FRAME_CHANNELS(RS_CHANNEL_VIEW)
     /// Deferred shading records, pooled per tile; a pixel's are [recordStart, +recordCount).
-    std::vector<std::vector<ShadingRecord>> tileRecords;
+    std::span<const std::vector<ShadingRecord>> tileRecords() const { return tileRecords_; }
     /// Size of each record pool after its last compaction (commit appends and compacts).
-    std::vector<uint32_t> tileRecordsKept;
+    std::span<const uint32_t> tileRecordsKept() const { return tileRecordsKept_; }
     /// Secondary ray segments of each pixel's ray tree, pooled per tile like the records.
-    std::vector<SegmentVector> tileSegments;
-    std::vector<uint32_t> tileLiveSegments;  ///< Segments still referenced in each pool.
+    std::span<const SegmentVector> tileSegments() const { return tileSegments_; }
+    /// Segments still referenced in each pool.
+    std::span<const uint32_t> tileLiveSegments() const { return tileLiveSegments_; }
     /// Summaries of 8 x 8 blocks (finer than tiles: tighter boxes reject more in marking).
-    std::vector<TileSummary> blockSummary;
-    static constexpr int kBlock = 8;
+    std::span<const TileSummary> blockSummary() const { return blockSummary_; }
     /// Union of the block summaries of each tile: marking tests a tile before its blocks.
-    std::vector<TileSummary> tileSummary;
+    std::span<const TileSummary> tileSummary() const { return tileSummary_; }
     /// Pixels of each PixelState in each tile: planning, completeness and waiting read these
     /// instead of scanning every pixel's state.
-    std::vector<std::array<uint32_t, 4>> tileStates;
+    std::span<const std::array<uint32_t, 4>> tileStates() const { return tileStates_; }
     /// 1 where the tile may hold supersamples (a sampleSum or sampleCount not zero).
-    std::vector<uint8_t> tileSampled;
+    std::span<const uint8_t> tileSampled() const { return tileSampled_; }
 
     /// Allocates for w x h; every pixel starts stale and black. When an allocation fails the
     /// frame is left empty (0 x 0) and the exception passes on.
     void resize(int w, int h);
-    /// resize() without the clean-up on failure.
-    void allocate(int w, int h);
     std::size_t index(int x, int y) const {
-        return std::size_t(y) * std::size_t(width) + std::size_t(x);
+        return std::size_t(y) * std::size_t(width_) + std::size_t(x);
     }
-    std::size_t pixelCount() const { return color.size(); }
-    int tilesX() const { return (width + tileSize - 1) / tileSize; }
-    int tilesY() const { return (height + tileSize - 1) / tileSize; }
-    int tileOf(int x, int y) const { return (y / tileSize) * tilesX() + x / tileSize; }
-    int blocksX() const { return (width + kBlock - 1) / kBlock; }
-    int blocksY() const { return (height + kBlock - 1) / kBlock; }
+    std::size_t pixelCount() const { return color_.size(); }
+    int tilesX() const { return (width_ + tileSize_ - 1) / tileSize_; }
+    int tilesY() const { return (height_ + tileSize_ - 1) / tileSize_; }
+    int tileOf(int x, int y) const { return (y / tileSize_) * tilesX() + x / tileSize_; }
+    int blocksX() const { return (width_ + kBlock - 1) / kBlock; }
+    int blocksY() const { return (height_ + kBlock - 1) / kBlock; }
     /// The tile holding block b (tile sides are whole blocks).
     int tileOfBlock(std::size_t b) const {
         const int bx = int(b % std::size_t(blocksX())), by = int(b / std::size_t(blocksX()));
-        return (by * kBlock / tileSize) * tilesX() + bx * kBlock / tileSize;
+        return (by * kBlock / tileSize_) * tilesX() + bx * kBlock / tileSize_;
     }
     /// Calls f(i, tile) for every pixel index i of block b, row by row, with b's tile.
     template <class F>
@@ -154,19 +164,12 @@ struct DeepFrame {
         const int bx = int(b % std::size_t(blocksX())) * kBlock;
         const int by = int(b / std::size_t(blocksX())) * kBlock;
         const int tile = tileOfBlock(b);
-        for (int y = by; y < std::min(height, by + kBlock); ++y)
-            for (int x = bx; x < std::min(width, bx + kBlock); ++x) f(index(x, y), tile);
-    }
-    /// Sets pixel i, of tile `tile`, to state s and keeps the tile's counts.
-    void setState(std::size_t i, int tile, uint8_t s) {
-        auto& counts = tileStates[std::size_t(tile)];
-        --counts[state[i]];
-        ++counts[s];
-        state[i] = s;
+        for (int y = by; y < std::min(height_, by + kBlock); ++y)
+            for (int x = bx; x < std::min(width_, bx + kBlock); ++x) f(index(x, y), tile);
     }
     /// Whether tile t has a pixel whose state is below s.
     bool tileHasBelow(int t, uint8_t s) const {
-        const auto& counts = tileStates[std::size_t(t)];
+        const auto& counts = tileStates_[std::size_t(t)];
         uint32_t n = 0;
         for (uint8_t k = 0; k < s && k < 4; ++k) n += counts[k];
         return n > 0;
@@ -179,6 +182,10 @@ struct DeepFrame {
     /// Every pixel goes stale (an edit that changes everything): loses its deferred records
     /// and gets the re-traced overlay flag; the counts follow.
     void markAllStale();
+    /// The shadows a drag moved, at its release: pixels of block b whose entry of `mask` is
+    /// set and whose state is kBase or above go stale and lose their deferred records (the
+    /// re-traced overlay stays as it is); the counts follow.
+    void applyShadowMarks(std::size_t b, const std::vector<uint8_t>& mask);
     /// Pixels whose state is below s, from the tile counts.
     std::size_t countBelow(uint8_t s) const;
     /// Whether any pixel's state is below s (stops at the first tile that has one).
@@ -191,12 +198,6 @@ struct DeepFrame {
     /// ones colour, sums, state, flags, cost, bound and appended segments. False, writing
     /// nothing, when `result` is of another generation than `liveGeneration`.
     bool commit(const TileResult& result, uint64_t liveGeneration);
-    /// Recomputes the block summaries inside tile `t` from its pixels.
-    void summarizeTile(int t);
-    /// Recomputes the summary of the block holding pixel (x, y).
-    void summarizeBlock(int x, int y);
-    /// Recomputes tile t's summary from its blocks' summaries.
-    void uniteTileSummary(int t);
 
     /// The designer's copy of the frame: `out` is any object with a buffer of the frame's
     /// size (data(), and assignable from the channel's buffer) for each channel the list
@@ -223,6 +224,26 @@ struct DeepFrame {
     void copyDisplayWhole(Out& out, bool debug) const;
 
 private:
+    friend class SegmentPool;           // commit()'s segment pools (tile_pools.h),
+    friend class RecordPool;            // its record pools
+    friend class TouchedBlocks;         // and the block summaries it rewrites (frame_commit.cpp).
+    friend struct DeepFrameTestAccess;  // Tests that set pixels up by hand.
+
+    /// resize() without the clean-up on failure.
+    void allocate(int w, int h);
+    /// Sets pixel i, of tile `tile`, to state s and keeps the tile's counts.
+    void setState(std::size_t i, int tile, uint8_t s) {
+        auto& counts = tileStates_[std::size_t(tile)];
+        --counts[state_[i]];
+        ++counts[s];
+        state_[i] = s;
+    }
+    /// Recomputes the block summaries inside tile `t` from its pixels.
+    void summarizeTile(int t);
+    /// Recomputes the summary of the block holding pixel (x, y).
+    void summarizeBlock(int x, int y);
+    /// Recomputes tile t's summary from its blocks' summaries.
+    void uniteTileSummary(int t);
     struct Commit;  // What commit()'s steps share (frame_commit.cpp).
     /// commit()'s steps, each one kind of result (tile_output.h).
     void commitTraced(const TileResult& t, Commit& c);
@@ -260,9 +281,9 @@ private:
     /// Copies rows of `r` of frame-sized buffer `from` into `to` (whole rows in one go).
     template <class A, class B>
     void copyRect(const A& from, B& to, const PixelRect& r) const {
-        if (r.x0 == 0 && r.x1 == width) {
+        if (r.x0 == 0 && r.x1 == width_) {
             std::memcpy(to.data() + index(0, r.y0), from.data() + index(0, r.y0),
-                        sizeof(from[0]) * std::size_t(r.y1 - r.y0) * std::size_t(width));
+                        sizeof(from[0]) * std::size_t(r.y1 - r.y0) * std::size_t(width_));
             return;
         }
         const std::size_t n = sizeof(from[0]) * std::size_t(r.x1 - r.x0);
@@ -271,9 +292,24 @@ private:
             std::memcpy(to.data() + i, from.data() + i, n);
         }
     }
+
+    int width_ = 0;
+    int height_ = 0;
+    int tileSize_ = 32;
+    /// The per-pixel buffers, one per channel of pixel_channels.h (which says what each holds).
+    RS_DEEP_FRAME_CHANNELS(RS_CHANNEL_BUFFER)
+    std::vector<std::vector<ShadingRecord>> tileRecords_;
+    std::vector<uint32_t> tileRecordsKept_;
+    std::vector<SegmentVector> tileSegments_;
+    std::vector<uint32_t> tileLiveSegments_;
+    std::vector<TileSummary> blockSummary_;
+    std::vector<TileSummary> tileSummary_;
+    std::vector<std::array<uint32_t, 4>> tileStates_;
+    std::vector<uint8_t> tileSampled_;
 };
 
 #undef RS_CHANNEL_BUFFER
+#undef RS_CHANNEL_VIEW
 #undef RS_CHANNEL_SHOWN
 #undef RS_CHANNEL_OVERLAY
 

@@ -152,11 +152,13 @@ struct SpanWriter {
     }
 };
 
+}  // namespace
+
 /// The blocks of one tile a commit wrote, so each summary is recomputed once.
 class TouchedBlocks {
 public:
     TouchedBlocks(const DeepFrame& frame, const PixelRect& r)
-        : width_(frame.width),
+        : width_(frame.width_),
           r_(r),
           perRow_((r.x1 - r.x0 + DeepFrame::kBlock - 1) / DeepFrame::kBlock),
           marks_(std::size_t(perRow_) *
@@ -267,9 +269,9 @@ public:
             if (!marks_[b]) continue;
             const int x = r_.x0 + int(b % std::size_t(perRow_)) * DeepFrame::kBlock;
             const int y = r_.y0 + int(b / std::size_t(perRow_)) * DeepFrame::kBlock;
-            TileSummary& summary = frame.blockSummary[std::size_t(y / DeepFrame::kBlock) *
-                                                          std::size_t(frame.blocksX()) +
-                                                      std::size_t(x / DeepFrame::kBlock)];
+            TileSummary& summary = frame.blockSummary_[std::size_t(y / DeepFrame::kBlock) *
+                                                           std::size_t(frame.blocksX()) +
+                                                       std::size_t(x / DeepFrame::kBlock)];
             const int area = (std::min(r_.x1, x + DeepFrame::kBlock) - x) *
                              (std::min(r_.y1, y + DeepFrame::kBlock) - y);
             if (whole_)
@@ -302,8 +304,6 @@ private:
     bool any_ = false, whole_ = false;
 };
 
-}  // namespace
-
 /// What commit()'s steps share.
 struct DeepFrame::Commit {
     SegmentPool segments;
@@ -319,7 +319,7 @@ struct DeepFrame::Commit {
 template <unsigned Stream>
 void DeepFrame::prefetchAhead(std::size_t i, std::size_t n) const {
 #define RS_CHANNEL_AHEAD(name, Vector, Type, fresh, ahead, shown) \
-    if constexpr (((ahead)&Stream) != 0) prefetchForWrite(name.data() + i, n);
+    if constexpr (((ahead)&Stream) != 0) prefetchForWrite(name##_.data() + i, n);
     RS_DEEP_FRAME_CHANNELS(RS_CHANNEL_AHEAD)
 #undef RS_CHANNEL_AHEAD
 }
@@ -334,7 +334,7 @@ void DeepFrame::prefetchSpanRows(const PixelRect& r, int y0, int y1) const {
 bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
     if (t.generation != liveGeneration) return false;  // Never write a stale tile.
     Commit c{SegmentPool(*this, t.tile), TouchedBlocks(*this, t.rect), t.tile,
-             tileSampled[std::size_t(t.tile)] != 0, t.traced.size() == std::size_t(t.rect.area())};
+             tileSampled_[std::size_t(t.tile)] != 0, t.traced.size() == std::size_t(t.rect.area())};
     if (c.wholeTile) {
         c.segments.restart();
         if (t.blocks.size() == 0 && t.resolvedPixel.empty() && t.sampled.empty())
@@ -367,8 +367,9 @@ void DeepFrame::commitTraced(const TileResult& t, Commit& c) {
     for (std::size_t k0 = 0; k0 < traced.size();) {
         const std::size_t i0 = traced.pixel[k0];
         // Frames hold at most kMaxImagePixels (< 2^32): one 32-bit division, not two 64-bit.
-        const uint32_t y = uint32_t(i0) / uint32_t(width), x0 = uint32_t(i0) - y * uint32_t(width);
-        const std::size_t rowLeft = std::size_t(uint32_t(width) - x0);
+        const uint32_t y = uint32_t(i0) / uint32_t(width_),
+                       x0 = uint32_t(i0) - y * uint32_t(width_);
+        const std::size_t rowLeft = std::size_t(uint32_t(width_) - x0);
         std::size_t n = 1;  // The run ends with the row.
         if (wholeTile && k0 + rowWidth <= traced.size() && rowWidth <= rowLeft &&
             traced.pixel[k0 + rowWidth - 1] == i0 + rowWidth - 1)
@@ -380,19 +381,19 @@ void DeepFrame::commitTraced(const TileResult& t, Commit& c) {
         // apart in each buffer, too short a stretch for the hardware's prefetchers. Partial
         // commits (drag steps) seldom write the next row.
         if (wholeTile && y + 1 < uint32_t(t.rect.y1))
-            prefetchAhead<kAheadOfRun>(i0 + std::size_t(width), n);
-        std::copy_n(traced.color.begin() + from, count, color.begin() + to);
-        std::copy_n(traced.rays.begin() + from, count, cost.begin() + to);
-        if (writeBase) std::copy_n(traced.color.begin() + from, count, base.begin() + to);
+            prefetchAhead<kAheadOfRun>(i0 + std::size_t(width_), n);
+        std::copy_n(traced.color.begin() + from, count, color_.begin() + to);
+        std::copy_n(traced.rays.begin() + from, count, cost_.begin() + to);
+        if (writeBase) std::copy_n(traced.color.begin() + from, count, base_.begin() + to);
         if (clearSamples) {
-            std::fill_n(sampleSum.begin() + to, count, Color(0.0f));
-            std::fill_n(sampleCount.begin() + to, count, uint16_t(0));
+            std::fill_n(sampleSum_.begin() + to, count, Color(0.0f));
+            std::fill_n(sampleCount_.begin() + to, count, uint16_t(0));
         }
-        auto& counts = tileStates[std::size_t(tile)];
+        auto& counts = tileStates_[std::size_t(tile)];
         if (!wholeTile)
-            for (std::size_t j = 0; j < n; ++j) --counts[state[i0 + j]];
-        const TracedColumns out{id.data() + i0, depth.data() + i0, normal.data() + i0,
-                                flags.data() + i0, hitBound.data() + i0};
+            for (std::size_t j = 0; j < n; ++j) --counts[state_[i0 + j]];
+        const TracedColumns out{id_.data() + i0, depth_.data() + i0, normal_.data() + i0,
+                                flags_.data() + i0, hitBound_.data() + i0};
         if (traced.withRecords)
             traced.withSegments ? out.write<true, true>(traced, k0, n)
                                 : out.write<true, false>(traced, k0, n);
@@ -400,14 +401,14 @@ void DeepFrame::commitTraced(const TileResult& t, Commit& c) {
             traced.withSegments ? out.write<false, true>(traced, k0, n)
                                 : out.write<false, false>(traced, k0, n);
         if (!wholeTile) counts[t.tracedState] += uint32_t(n);
-        std::fill_n(state.begin() + to, count, t.tracedState);
+        std::fill_n(state_.begin() + to, count, t.tracedState);
         segments.replaceRun(i0, n, traced, k0);
         touched.addRun(int(x0), int(y), int(n));
         if (whole) touched.includeRun(int(x0), int(y), out.bound, out.flags, traced, k0, n);
         k0 += n;
     }
     if (wholeTile && traced.size() > 0) {
-        auto& counts = tileStates[std::size_t(tile)];
+        auto& counts = tileStates_[std::size_t(tile)];
         counts = {0, 0, 0, 0};
         counts[t.tracedState] = uint32_t(traced.size());
     }
@@ -437,11 +438,11 @@ void DeepFrame::commitBlocks(const TileResult& t, Commit& c) {
     SegmentPool& segments = c.segments;
     TouchedBlocks& touched = c.touched;
     const RayList& blocks = t.blocks;
-    const bool allStale = tileStates[std::size_t(tile)][kStale] == uint32_t(t.rect.area());
+    const bool allStale = tileStates_[std::size_t(tile)][kStale] == uint32_t(t.rect.area());
     const bool clearSegments = !segments.noneKept();
-    SpanWriter spans{color.data(),     id.data(),          depth.data(),   normal.data(),
-                     cost.data(),      state.data(),       flags.data(),   hitBound.data(),
-                     sampleSum.data(), sampleCount.data(), c.clearSamples, !allStale};
+    SpanWriter spans{color_.data(),     id_.data(),          depth_.data(),  normal_.data(),
+                     cost_.data(),      state_.data(),       flags_.data(),  hitBound_.data(),
+                     sampleSum_.data(), sampleCount_.data(), c.clearSamples, !allStale};
     uint32_t spanPixels = 0;
     uint32_t rowOfBlocks = UINT32_MAX;
     for (std::size_t k = 0; k < blocks.size(); ++k) {
@@ -458,8 +459,8 @@ void DeepFrame::commitBlocks(const TileResult& t, Commit& c) {
         {
             // A span (step 2 or 4, aligned) lies in one 8x8 block. Frames hold at most
             // kMaxImagePixels (< 2^32): one 32-bit division, not two 64-bit.
-            const uint32_t y = uint32_t(blocks.pixel[k]) / uint32_t(width);
-            const uint32_t x = uint32_t(blocks.pixel[k]) - y * uint32_t(width);
+            const uint32_t y = uint32_t(blocks.pixel[k]) / uint32_t(width_);
+            const uint32_t x = uint32_t(blocks.pixel[k]) - y * uint32_t(width_);
             touched.addSpan(int(x), int(y), spanX * spanY, v.bound, v.flags);
             if (y != rowOfBlocks) {
                 // A new row of blocks (the pass gathers them row by row): the next row's
@@ -469,7 +470,7 @@ void DeepFrame::commitBlocks(const TileResult& t, Commit& c) {
             }
         }
         for (int dy = 0; dy < spanY; ++dy) {
-            const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width);
+            const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width_);
             const std::size_t n = std::size_t(spanX);
             if (n == 4)
                 spans.row<4>(i, n, v);  // Quarter and half resolution: unrolled.
@@ -481,7 +482,7 @@ void DeepFrame::commitBlocks(const TileResult& t, Commit& c) {
             if (clearSegments) segments.clearRun(i, n);
         }
     }
-    auto& counts = tileStates[std::size_t(tile)];
+    auto& counts = tileStates_[std::size_t(tile)];
     if (allStale) spans.wasState[kStale] = spanPixels;
     for (int s = 0; s < 4; ++s) counts[std::size_t(s)] -= spans.wasState[s];
     counts[kInteractive] += spanPixels;
@@ -493,13 +494,13 @@ void DeepFrame::commitResolved(const TileResult& t, Commit& c) {
     const bool clearSamples = c.clearSamples;
     for (std::size_t k = 0; k < t.resolvedPixel.size(); ++k) {
         const std::size_t i = t.resolvedPixel[k];
-        color[i] = t.resolvedColor[k];
-        if (t.keepBase) base[i] = color[i];
+        color_[i] = t.resolvedColor[k];
+        if (t.keepBase) base_[i] = color_[i];
         setState(i, tile, t.resolvedState);
-        flags[i] = t.resolvedFlags[k];
+        flags_[i] = t.resolvedFlags[k];
         if (clearSamples) {
-            sampleSum[i] = Color(0.0f);
-            sampleCount[i] = 0;
+            sampleSum_[i] = Color(0.0f);
+            sampleCount_[i] = 0;
         }
         c.touched.add(i);
     }
@@ -510,11 +511,11 @@ void DeepFrame::commitFinished(const TileResult& t, const Commit& c) {
     const int tile = c.tile;
     const bool clearSamples = c.clearSamples;
     for (const std::size_t i : t.finishedPixel) {
-        color[i] = base[i];
+        color_[i] = base_[i];
         setState(i, tile, kFinal);
         if (clearSamples) {
-            sampleSum[i] = Color(0.0f);
-            sampleCount[i] = 0;
+            sampleSum_[i] = Color(0.0f);
+            sampleCount_[i] = 0;
         }
     }
 }
@@ -524,17 +525,17 @@ void DeepFrame::commitSampled(const TileResult& t, Commit& c) {
     const int tile = c.tile;
     SegmentPool& segments = c.segments;
     const RayList& samples = t.samples;
-    if (!t.sampled.empty()) tileSampled[std::size_t(tile)] = 1;
+    if (!t.sampled.empty()) tileSampled_[std::size_t(tile)] = 1;
     for (std::size_t k = 0; k < t.sampled.size(); ++k) {
         const TileResult::Sampled& s = t.sampled[k];
         const std::size_t i = s.pixel;
-        color[i] = s.color;
-        sampleSum[i] = s.sum;
-        sampleCount[i] = s.count;
+        color_[i] = s.color;
+        sampleSum_[i] = s.sum;
+        sampleCount_[i] = s.count;
         setState(i, tile, s.state);
-        flags[i] = s.flags;
-        cost[i] = s.cost;
-        hitBound[i] = s.hitBound;
+        flags_[i] = s.flags;
+        cost_[i] = s.cost;
+        hitBound_[i] = s.hitBound;
         segments.begin(i, true);
         std::size_t kept = 0;
         for (int j = t.sampleFirst[k]; j < t.sampleFirst[k + 1] && kept < kSegmentsPerPixel; ++j) {
