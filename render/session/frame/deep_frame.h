@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "image/image.h"
@@ -55,12 +56,6 @@ class SegmentPool;
 class RecordPool;
 class TouchedBlocks;
 
-/// The commit's write streams that ask for a channel's lines ahead (pixel_channels.h).
-enum ChannelAhead : unsigned {
-    kAheadOfRun = 1,    ///< The next row of a run of traced pixels.
-    kAheadOfSpans = 2,  ///< The next row of an undersampled pass's block spans.
-};
-
 /// What the designer's display copy does with a channel (pixel_channels.h).
 enum ChannelShown {
     kNotShown,
@@ -72,6 +67,15 @@ enum ChannelShown {
 /// A tile's pool of secondary segments: grown by resize() and then written over, so grown
 /// without zero-filling first (a second store to each segment otherwise).
 using SegmentVector = std::vector<TreeSegment, DefaultInitAllocator<TreeSegment>>;
+
+/// The number of per-pixel channels.
+constexpr int pixelChannelCount() {
+    int count = 0;
+#define RS_CHANNEL_COUNT(name, Vector, Type, fresh, ahead, shown) ++count;
+    RS_DEEP_FRAME_CHANNELS(RS_CHANNEL_COUNT)
+#undef RS_CHANNEL_COUNT
+    return count;
+}
 
 /// The sum of the sizes of the per-pixel channels' elements.
 constexpr std::size_t pixelChannelBytes() {
@@ -252,11 +256,14 @@ private:
     void commitResolved(const TileResult& t, Commit& c);
     void commitFinished(const TileResult& t, const Commit& c);
     void commitSampled(const TileResult& t, Commit& c);
-    /// Asks for the lines of pixels [i, i + n) of the channels whose `ahead` has Stream.
-    template <unsigned Stream>
-    void prefetchAhead(std::size_t i, std::size_t n) const;
-    /// prefetchAhead<kAheadOfSpans> for rows [y0, y1) of `r`.
-    void prefetchSpanRows(const PixelRect& r, int y0, int y1) const;
+    /// Asks for the lines of pixels [i, i + n) of the channels a traced run writes, in the
+    /// list's `ahead` order; its steps: the channels at positions P + 1, one after the other,
+    /// and the one at Position.
+    void prefetchRunRow(std::size_t i, std::size_t n) const;
+    template <int... P>
+    void prefetchInOrder(std::size_t i, std::size_t n, std::integer_sequence<int, P...>) const;
+    template <int Position>
+    void prefetchAt(std::size_t i, std::size_t n) const;
 
     /// Calls f(channel, out's buffer) for the display channels `debug` selects.
     template <class Out, class F>

@@ -2,6 +2,7 @@
 // buffers each kind of result writes, the record and segment pools, the block summaries).
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 
 #include "core/vec_lanes.h"
 #include "session/frame/deep_frame.h"
@@ -12,9 +13,10 @@ namespace rs {
 
 namespace {
 
-/// Asks for the cache lines of v[0, n) with the intent to write them.
+/// Asks for the cache lines of v[0, n) with the intent to write them. Always inlined: GCC
+/// takes a function that only prefetches for one without effects and drops the calls.
 template <class T>
-void prefetchForWrite(const T* v, std::size_t n) {
+[[gnu::always_inline]] inline void prefetchForWrite(const T* v, std::size_t n) {
     const auto last = reinterpret_cast<std::uintptr_t>(v + n);
     for (auto p = reinterpret_cast<std::uintptr_t>(v) & ~std::uintptr_t(63); p < last; p += 64)
         __builtin_prefetch(reinterpret_cast<const void*>(p), 1, 3);
@@ -316,19 +318,24 @@ struct DeepFrame::Commit {
     bool wholeTile;
 };
 
-template <unsigned Stream>
-void DeepFrame::prefetchAhead(std::size_t i, std::size_t n) const {
+template <int Position>
+[[gnu::always_inline]] inline void DeepFrame::prefetchAt(std::size_t i, std::size_t n) const {
 #define RS_CHANNEL_AHEAD(name, Vector, Type, fresh, ahead, shown) \
-    if constexpr (((ahead)&Stream) != 0) prefetchForWrite(name##_.data() + i, n);
+    if constexpr ((ahead) == Position) prefetchForWrite(name##_.data() + i, n);
     RS_DEEP_FRAME_CHANNELS(RS_CHANNEL_AHEAD)
 #undef RS_CHANNEL_AHEAD
 }
 
-/// Block spans write eight buffers four pixels at a time, a row of blocks four frame rows:
-/// too many short streams for the hardware's prefetchers.
-void DeepFrame::prefetchSpanRows(const PixelRect& r, int y0, int y1) const {
-    const std::size_t n = std::size_t(r.x1 - r.x0);
-    for (int y = y0; y < y1; ++y) prefetchAhead<kAheadOfSpans>(index(r.x0, y), n);
+template <int... P>
+[[gnu::always_inline]] inline void DeepFrame::prefetchInOrder(
+    std::size_t i, std::size_t n, std::integer_sequence<int, P...>) const {
+    (prefetchAt<P + 1>(i, n), ...);
+}
+
+// Position by position, the channel at each: the same prefetches, in the same order, as
+// written out by hand.
+[[gnu::always_inline]] inline void DeepFrame::prefetchRunRow(std::size_t i, std::size_t n) const {
+    prefetchInOrder(i, n, std::make_integer_sequence<int, pixelChannelCount()>{});
 }
 
 bool DeepFrame::commit(const TileResult& t, uint64_t liveGeneration) {
@@ -380,8 +387,7 @@ void DeepFrame::commitTraced(const TileResult& t, Commit& c) {
         // for writing, so they arrive while this row is written. A tile's rows are a frame row
         // apart in each buffer, too short a stretch for the hardware's prefetchers. Partial
         // commits (drag steps) seldom write the next row.
-        if (wholeTile && y + 1 < uint32_t(t.rect.y1))
-            prefetchAhead<kAheadOfRun>(i0 + std::size_t(width_), n);
+        if (wholeTile && y + 1 < uint32_t(t.rect.y1)) prefetchRunRow(i0 + std::size_t(width_), n);
         std::copy_n(traced.color.begin() + from, count, color_.begin() + to);
         std::copy_n(traced.rays.begin() + from, count, cost_.begin() + to);
         if (writeBase) std::copy_n(traced.color.begin() + from, count, base_.begin() + to);
@@ -444,7 +450,6 @@ void DeepFrame::commitBlocks(const TileResult& t, Commit& c) {
                      cost_.data(),      state_.data(),       flags_.data(),  hitBound_.data(),
                      sampleSum_.data(), sampleCount_.data(), c.clearSamples, !allStale};
     uint32_t spanPixels = 0;
-    uint32_t rowOfBlocks = UINT32_MAX;
     for (std::size_t k = 0; k < blocks.size(); ++k) {
         const PrimaryInfo& info = blocks.info[k];
         const SpanValue v{blocks.color[k],
@@ -462,12 +467,6 @@ void DeepFrame::commitBlocks(const TileResult& t, Commit& c) {
             const uint32_t y = uint32_t(blocks.pixel[k]) / uint32_t(width_);
             const uint32_t x = uint32_t(blocks.pixel[k]) - y * uint32_t(width_);
             touched.addSpan(int(x), int(y), spanX * spanY, v.bound, v.flags);
-            if (y != rowOfBlocks) {
-                // A new row of blocks (the pass gathers them row by row): the next row's
-                // lines are asked for while this one is written.
-                rowOfBlocks = y;
-                prefetchSpanRows(t.rect, int(y) + spanY, std::min(t.rect.y1, int(y) + 2 * spanY));
-            }
         }
         for (int dy = 0; dy < spanY; ++dy) {
             const std::size_t i = blocks.pixel[k] + std::size_t(dy) * std::size_t(width_);
