@@ -14,7 +14,8 @@ set -euo pipefail
 # others rebuild most of the engine (whitted.h, trace_kernel.cpp, light_sampling.cpp: 1-2
 # minutes each) and run with `setup.sh mutate`. setup.sh --help shows this list.
 readonly QUICK=(dirty-footprint refit-parent-box stale-tile tonemap-reinhard
-    deferred-shadows-dropped interleave-one-half box-proxy-kept)
+    deferred-shadows-dropped interleave-one-half box-proxy-kept asset-material-rough-metal-mirror
+    asset-light-own-position asset-camera-gltf-position-twice)
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "${here}/../.." && pwd)"
