@@ -24,21 +24,4 @@ void setErrorHandler(std::function<void(const QString& title, const QString& tex
     handler() = std::move(h);
 }
 
-namespace {
-std::function<bool(const QString&, const QString&)>& questionHandler() {
-    static std::function<bool(const QString&, const QString&)> h;
-    return h;
-}
-}  // namespace
-
-bool askYesNo(QWidget* parent, const QString& title, const QString& text) {
-    if (questionHandler()) return questionHandler()(title, text);
-    return QMessageBox::question(parent, title, text, QMessageBox::Yes | QMessageBox::No,
-                                 QMessageBox::No) == QMessageBox::Yes;
-}
-
-void setQuestionHandler(std::function<bool(const QString& title, const QString& text)> h) {
-    questionHandler() = std::move(h);
-}
-
 }  // namespace rs::ui

@@ -212,10 +212,10 @@ void MainWindow::importMesh(const QString& path, std::optional<QPoint> at) {
         const QString name = QString::fromStdString(doc.findObject(id)->name);
         // The asset's first camera as the scene's, when the user wants it (one undo step).
         if (r.asset && !r.asset->views.empty() &&
-            askYesNo(this, tr("Import %1").arg(name),
-                     tr("%1 brings camera \"%2\". Look through it (it becomes the scene "
-                        "camera)?")
-                         .arg(name, QString::fromStdString(r.asset->views[0].name))))
+            ask(this, tr("Import %1").arg(name),
+                tr("%1 brings camera \"%2\". Look through it (it becomes the scene "
+                   "camera)?")
+                    .arg(name, QString::fromStdString(r.asset->views[0].name))))
             doc.camera = placedAssetCamera(r.asset->views[0], *doc.findObject(id));
         editor_->edit(tr("Import %1").arg(name), std::move(doc));
         editor_->setSelection(id);

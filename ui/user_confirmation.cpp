@@ -18,6 +18,12 @@ bool confirm(QWidget* parent, const QString& title, const QString& text) {
                                 QMessageBox::Cancel) == QMessageBox::Yes;
 }
 
+bool ask(QWidget* parent, const QString& title, const QString& text) {
+    if (handler()) return handler()(title, text);
+    return QMessageBox::question(parent, title, text, QMessageBox::Yes | QMessageBox::No,
+                                 QMessageBox::No) == QMessageBox::Yes;
+}
+
 void setConfirmationHandler(std::function<bool(const QString& title, const QString& text)> h) {
     handler() = std::move(h);
 }
