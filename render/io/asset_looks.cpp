@@ -19,10 +19,17 @@ namespace fs = std::filesystem;
 /// "<asset>-<n>-<k>.<format>" that is free or already holds these bytes.
 fs::path imagePath(const fs::path& dir, const std::string& assetName, std::size_t n,
                    const AssetImage& image) {
-    const std::string stem = fs::path(assetName).stem().string() + "-" + std::to_string(n);
-    const std::string extension = "." + (image.formatHint.empty() ? "img" : image.formatHint);
+    // Appended piecewise: "literal" + std::string trips GCC 12's -Wrestrict false positive.
+    std::string stem = fs::path(assetName).stem().string();
+    stem += '-';
+    stem += std::to_string(n);
+    std::string extension = ".";
+    extension += image.formatHint.empty() ? std::string("img") : image.formatHint;
     for (int k = 0;; ++k) {
-        const fs::path path = dir / (stem + (k ? "-" + std::to_string(k) : "") + extension);
+        std::string name = stem;
+        if (k) name.append("-").append(std::to_string(k));
+        name += extension;
+        const fs::path path = dir / name;
         std::error_code ec;
         if (!fs::exists(path, ec)) return path;
         std::ifstream in(path, std::ios::binary);

@@ -193,7 +193,8 @@ SceneDocument twoPartScene(const MeshLoadResult& loaded) {
 /// The material index the ray from (x, 0, 5) down -z hits, or -1.
 int materialAt(const CompiledScene& scene, float x) {
     SurfaceHit hit;
-    if (!scene.intersect(Ray{Vec3(x, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -1.0f)}, 100.0f, hit)) return -1;
+    if (!scene.intersect(Ray::make(Vec3(x, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -1.0f)), 100.0f, hit))
+        return -1;
     return int(hit.material);
 }
 
