@@ -233,7 +233,9 @@ TEST(AssetParts, PartMaterials_AreTracedPartByPart_InEveryEngine) {
         EXPECT_EQ(materialAt(refit, 9.0f), kRed);
         EXPECT_EQ(materialAt(refit, 11.0f), kBlue);
         // A box proxy stands in for every part.
-        for (const Primitive& p : split.withBoxProxy(1).primitives())
+        const CompiledScene proxied = split.withBoxProxy(1);
+        ASSERT_EQ(proxied.primitives().size(), 2u);
+        for (const Primitive& p : proxied.primitives())
             EXPECT_TRUE(std::holds_alternative<BoxShape>(p.shape));
 
         // A part left unnamed ("" / null) shows the object's material.
