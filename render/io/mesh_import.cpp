@@ -95,9 +95,9 @@ std::vector<AssetImage> embeddedImages(const aiScene& scene) {
     return images;
 }
 
-/// A texture named by a path from the machine the asset was made on ("D:/work/tex.jpg", as
-/// FBX files often say) that is not there: the file of that name in the asset's own folder,
-/// when there is one (as Blender finds missing files).
+/// A texture named by a path from the machine the asset was made on (an absolute path with a
+/// drive letter, as FBX files often say) that is not there: the file of that name in the
+/// asset's own folder, when there is one (as Blender finds missing files).
 void findMovedTexture(ImageTexture& t, const std::string& assetDir,
                       std::vector<std::string>& notes) {
     namespace fs = std::filesystem;
