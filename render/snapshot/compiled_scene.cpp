@@ -43,22 +43,26 @@ uint32_t materialIndex(const SceneDocument& doc, const std::string& name) {
     return 0;  // The built-in grey diffuse.
 }
 
-/// The mesh BVHs of a previous snapshot by their mesh data, so edits never rebuild one.
+/// The mesh BVHs of a previous snapshot by their mesh data, so edits never rebuild one. The
+/// map is made on the first lookup: a document without meshes never walks the snapshot.
 class PreviousMeshes {
 public:
-    explicit PreviousMeshes(const CompiledScene* previous) {
-        if (!previous) return;
-        for (const Primitive& p : previous->primitives())
-            if (const auto* m = std::get_if<MeshShape>(&p.shape))
-                accels_.emplace(std::pair(m->accel->data().get(), m->accel->smooth()), m->accel);
-    }
+    explicit PreviousMeshes(const CompiledScene* previous) : previous_(previous) {}
     std::shared_ptr<const MeshAccel> find(const std::shared_ptr<const MeshData>& data,
-                                          bool smooth) const {
+                                          bool smooth) {
+        if (previous_) {
+            for (const Primitive& p : previous_->primitives())
+                if (const auto* m = std::get_if<MeshShape>(&p.shape))
+                    accels_.emplace(std::pair(m->accel->data().get(), m->accel->smooth()),
+                                    m->accel);
+            previous_ = nullptr;
+        }
         const auto it = accels_.find(std::pair(data.get(), smooth));
         return it == accels_.end() || it->second->data() != data ? nullptr : it->second;
     }
 
 private:
+    const CompiledScene* previous_;
     std::map<std::pair<const MeshData*, bool>, std::shared_ptr<const MeshAccel>> accels_;
 };
 
@@ -174,7 +178,7 @@ CompiledScene::CompiledScene(const SceneDocument& doc, const CompiledScene* prev
     for (const Light& l : doc.lights) lights_.push_back(compileLight(l));
     planes_ = compilePlanes(doc);
     auto prims = std::make_shared<std::vector<Primitive>>();
-    const PreviousMeshes meshes(previous);
+    PreviousMeshes meshes(previous);
     for (const Object& o : doc.objects) {
         if (!o.visible || std::holds_alternative<PlaneGeometry>(o.geometry)) continue;
         const auto* mesh = std::get_if<MeshGeometry>(&o.geometry);
