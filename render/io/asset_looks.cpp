@@ -136,4 +136,20 @@ Camera placedAssetCamera(const AssetView& view, const Object& placed) {
     return c;
 }
 
+std::vector<std::string> adoptAssetViews(SceneDocument& doc, ObjectId id,
+                                         const AssetContent& asset) {
+    std::vector<std::string> names;
+    const Object* o = doc.findObject(id);
+    if (!o) return names;
+    auto taken = [&](const std::string& name) { return doc.findView(name) != nullptr; };
+    for (const AssetView& view : asset.views) {
+        ViewBookmark bookmark;
+        bookmark.name = numberedName(view.name.empty() ? "Camera" : view.name, taken);
+        bookmark.camera = placedAssetCamera(view, *o);
+        names.push_back(bookmark.name);
+        doc.views.push_back(std::move(bookmark));
+    }
+    return names;
+}
+
 }  // namespace rs

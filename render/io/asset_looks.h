@@ -37,4 +37,10 @@ std::vector<ObjectId> adoptAssetLights(SceneDocument& doc, ObjectId id, const As
 /// Camera `view` of the asset placed by `placed`'s transform (mesh object of the asset).
 Camera placedAssetCamera(const AssetView& view, const Object& placed);
 
+/// Adds the cameras of `asset` to `doc.views` (view bookmarks), placed by mesh object `id`'s
+/// transform (placedAssetCamera), each named as in the asset ("Camera" when it has no name)
+/// unless a view of `doc` has that name ("name.001", ...). Returns the names given.
+std::vector<std::string> adoptAssetViews(SceneDocument& doc, ObjectId id,
+                                         const AssetContent& asset);
+
 }  // namespace rs

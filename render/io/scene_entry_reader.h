@@ -110,9 +110,10 @@ public:
     void forbid(const char* key, const std::string& why);
     /// Reports every key not asked about, except `x-` keys; returns those in file order.
     Extras finish();
+    /// Reports the required `key` as missing; returns false.
+    bool missing(const char* key);
 
 private:
-    bool missing(const char* key);
     bool numberIn(const Json& j, const std::string& pointer, const char* what, NumberRange range,
                   float& out);
     bool vectorIn(const Json& j, const std::string& pointer, const char* what, VectorRule rule,

@@ -121,7 +121,8 @@ SceneLoadResult parseScene(const std::string& text, const std::string& baseDir,
     SceneDocument& doc = result.document;
     int version = 0;
     if (readHeader(top, version)) {
-        if (const Json* j = top.get("camera")) readCamera(sink, *j, doc.camera);
+        if (const Json* j = top.get("camera")) readCamera(sink, *j, "/camera", doc.camera);
+        if (const Json* j = top.get("views")) readViews(sink, *j, doc);
         if (const Json* j = top.get("render")) readRenderSettings(sink, *j, doc.render);
         if (const Json* j = top.get("environment")) readEnvironment(sink, *j, doc.environment);
         if (const Json* j = top.get("materials")) readMaterials(sink, *j, doc);

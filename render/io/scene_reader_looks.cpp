@@ -126,6 +126,7 @@ std::vector<std::string> version2Uses(const SceneDocument& doc) {
     // In the order the reader reads the sections, so errors come in file order.
     std::vector<std::string> uses;
     if (doc.render.opaqueShadows) uses.push_back("/render/opaque_shadows");
+    if (!doc.views.empty()) uses.push_back("/views");
     if (doc.environment.present()) uses.push_back("/environment");
     for (std::size_t i = 0; i < doc.materials.size(); ++i)
         if (doc.materials[i].pattern.index() != 0)

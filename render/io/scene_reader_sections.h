@@ -1,4 +1,4 @@
-// The per-section readers of a scene file (camera, render, materials, lights, objects).
+// The per-section readers of a scene file (camera, views, render, materials, lights, objects).
 #pragma once
 
 #include <algorithm>
@@ -14,8 +14,11 @@
 
 namespace rs {
 
-/// Reads `/camera` into `camera`, checking that it can actually look somewhere.
-void readCamera(SceneErrorSink& sink, const Json& json, Camera& camera);
+/// Reads the camera object at `pointer` (`/camera`, `/views/N/camera`) into `camera`,
+/// checking that it can actually look somewhere.
+void readCamera(SceneErrorSink& sink, const Json& json, const std::string& pointer, Camera& camera);
+/// Reads `/views`, appending to `doc.views`; names are checked for uniqueness.
+void readViews(SceneErrorSink& sink, const Json& json, SceneDocument& doc);
 /// Reads `/render` into `settings`.
 void readRenderSettings(SceneErrorSink& sink, const Json& json, RenderSettings& settings);
 /// Reads `/materials`, appending to `doc.materials`; names are checked for uniqueness.

@@ -1,4 +1,4 @@
-// Reading the camera and render settings of a scene file.
+// Reading the camera, the view bookmarks and the render settings of a scene file.
 #include <climits>
 #include <cmath>
 
@@ -35,13 +35,32 @@ bool expectObject(SceneErrorSink& sink, const Json& json, const std::string& poi
     return false;
 }
 
-void readCamera(SceneErrorSink& sink, const Json& json, Camera& camera) {
-    if (!expectObject(sink, json, "/camera")) return;
-    EntryReader r(sink, json, "/camera");
+void readCamera(SceneErrorSink& sink, const Json& json, const std::string& pointer,
+                Camera& camera) {
+    if (!expectObject(sink, json, pointer)) return;
+    EntryReader r(sink, json, pointer);
     const auto invalid = readFields(r, ParamKind::Camera, camera);
     if (noneInvalid(invalid, {"position", "target", "up"}))
         if (auto e = cameraLookError(camera)) sink.atValue(r.pointerTo(e.key), e.message);
     camera.extras = r.finish();
+}
+
+void readViews(SceneErrorSink& sink, const Json& json, SceneDocument& doc) {
+    if (!expectArray(sink, json, "/views")) return;
+    UniqueNames names("view");
+    for (std::size_t i = 0; i < json.size(); ++i) {
+        const std::string at = appendPointer("/views", i);
+        if (!expectObject(sink, json[i], at)) continue;
+        EntryReader r(sink, json[i], at);
+        ViewBookmark view;
+        if (r.name(view.name)) names.add(sink, view.name, at);
+        if (const Json* camera = r.get("camera"))
+            readCamera(sink, *camera, r.pointerTo("camera"), view.camera);
+        else
+            r.missing("camera");
+        view.extras = r.finish();
+        doc.views.push_back(std::move(view));
+    }
 }
 
 void readRenderSettings(SceneErrorSink& sink, const Json& json, RenderSettings& settings) {

@@ -83,6 +83,14 @@ Json cameraJson(const Camera& c) {
     return j;
 }
 
+Json viewJson(const ViewBookmark& v) {
+    Json j = Json::object();
+    j["name"] = v.name;
+    j["camera"] = cameraJson(v.camera);
+    putExtras(j, v.extras);
+    return j;
+}
+
 Json renderJson(const RenderSettings& r) {
     Json j = Json::object();
     putFields(j, ParamKind::Render, r);
@@ -232,6 +240,10 @@ std::string serializeScene(const SceneDocument& doc, const std::string& baseDir)
     // Version 1 whenever it can say it all, so older builds keep reading what they can.
     j["version"] = version2Uses(doc).empty() ? 1 : kSceneFormatVersion;
     j["camera"] = cameraJson(doc.camera);
+    if (!doc.views.empty()) {
+        j["views"] = Json::array();
+        for (const ViewBookmark& v : doc.views) j["views"].push_back(viewJson(v));
+    }
     j["render"] = renderJson(doc.render);
     if (doc.environment.present()) j["environment"] = environmentJson(doc.environment, baseDir);
     j["materials"] = Json::array();

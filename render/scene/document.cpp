@@ -59,6 +59,12 @@ const Material* SceneDocument::findMaterial(const std::string& name) const {
     return nullptr;
 }
 
+const ViewBookmark* SceneDocument::findView(const std::string& name) const {
+    for (const ViewBookmark& v : views)
+        if (v.name == name) return &v;
+    return nullptr;
+}
+
 namespace {
 template <class T>
 bool sameIgnoringId(const T& a, const T& b) {
@@ -86,7 +92,7 @@ bool sameIgnoringIds(const SharedList<Object>& a, const SharedList<Object>& b) {
 
 bool SceneDocument::sameContent(const SceneDocument& o) const {
     return camera == o.camera && render == o.render && materials == o.materials &&
-           environment == o.environment && extras == o.extras &&
+           environment == o.environment && views == o.views && extras == o.extras &&
            sameIgnoringIds(lights, o.lights) && sameIgnoringIds(objects, o.objects);
 }
 

@@ -37,6 +37,16 @@ struct Camera {
     bool operator==(const Camera&) const = default;
 };
 
+/// A named view the user can go back to (scenes/FORMAT.md, "views"): the designer's view
+/// bookmarks, and the cameras an imported asset brings. Never rendered by itself: a render
+/// looks through the scene `camera` (or a view named on the command line).
+struct ViewBookmark {
+    std::string name;  ///< Required, non-empty, unique among the views.
+    Camera camera;
+    Extras extras;
+    bool operator==(const ViewBookmark&) const = default;
+};
+
 /// Largest accepted max_depth: recursion deeper than this could overflow a worker's stack.
 inline constexpr int kMaxDepthLimit = 1000;
 /// Largest accepted shadow_samples and supersampling (per-pixel sample counts are 16-bit).
@@ -260,6 +270,7 @@ struct SceneDocument {
     /// Copies of a document share the objects an edit did not touch (core/shared_list.h).
     SharedList<Object> objects;
     Environment environment;
+    std::vector<ViewBookmark> views;
     Extras extras;
     ObjectId nextId = 1;
 
@@ -272,6 +283,7 @@ struct SceneDocument {
     Light* findLight(ObjectId id);
     const Light* findLight(ObjectId id) const;
     const Material* findMaterial(const std::string& name) const;
+    const ViewBookmark* findView(const std::string& name) const;
 
     /// Content equality: ids are identity, not content, so they are not compared.
     bool sameContent(const SceneDocument& o) const;

@@ -7,7 +7,7 @@ namespace rs {
 
 DocumentChange DocumentChange::everything() {
     DocumentChange c;
-    c.camera = c.render = c.materials = c.lights = c.environment = c.extras = true;
+    c.camera = c.render = c.materials = c.lights = c.environment = c.views = c.extras = true;
     c.objectsRestructured = true;
     return c;
 }
@@ -43,6 +43,7 @@ DocumentChange describeChange(const SceneDocument& before, const SceneDocument& 
     c.materials = !(before.materials == after.materials);
     c.lights = !(before.lights == after.lights);
     c.environment = !(before.environment == after.environment);
+    c.views = before.views != after.views;
     c.extras = before.extras != after.extras;
 
     const SharedList<Object>& a = before.objects;

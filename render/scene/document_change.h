@@ -32,6 +32,7 @@ struct DocumentChange {
     bool materials = false;
     bool lights = false;
     bool environment = false;
+    bool views = false;  ///< The view bookmarks: nothing a render shows.
     bool extras = false;
     /// Objects were added, removed or reordered: `objects` is empty and says nothing then.
     bool objectsRestructured = false;
@@ -41,7 +42,7 @@ struct DocumentChange {
     /// A change of everything (a document opened): what a listener assumes without a diff.
     static DocumentChange everything();
     bool any() const {
-        return camera || render || materials || lights || environment || extras ||
+        return camera || render || materials || lights || environment || views || extras ||
                objectsRestructured || !objects.empty();
     }
     /// The union of the changed objects' field bits.
