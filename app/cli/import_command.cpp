@@ -103,13 +103,15 @@ int runImport(int argc, char** argv) {
     doc.lights.clear();
     const std::size_t assetLights = adoptAssetLights(doc, id, content).size();
     if (assetLights == 0) doc.addLight(keyLight(placed));
+    // Every camera of the asset is kept as a view (render --view NAME looks through it).
+    const std::vector<std::string> views = adoptAssetViews(doc, id, content);
     if (camera == "asset") {
         if (content.views.empty()) {
             std::fprintf(stderr, "raystudio-cli: %s has no camera (--camera asset)\n",
                          asset.c_str());
             return 2;
         }
-        doc.camera = placedAssetCamera(content.views[0], *doc.findObject(id));
+        doc.camera = doc.findView(views.front())->camera;
     } else {
         doc.camera = framing(placed, doc.render);
     }
@@ -126,8 +128,14 @@ int runImport(int argc, char** argv) {
                                (assetLights == 1 ? " light" : " lights") + " of the asset")
                                   .c_str()
                             : "a key light (the asset has none)",
-                camera == "asset" ? ("its camera \"" + content.views[0].name + "\"").c_str()
+                camera == "asset" ? ("its camera \"" + views[0] + "\"").c_str()
                                   : "a camera that frames it");
+    if (!views.empty()) {
+        std::string list;
+        for (const std::string& v : views)
+            list.append(list.empty() ? "\"" : ", \"").append(v) += '"';
+        std::printf("its cameras are views %s (render --view NAME)\n", list.c_str());
+    }
     std::printf("moved by (%g, %g, %g) to rest on y = 0, centred over the origin\n",
                 double(-centre.x + 0.0f), double(-bounds.min.y + 0.0f), double(-centre.z + 0.0f));
     return 0;

@@ -39,6 +39,17 @@ PartHeader partHeader(const SceneDocument& doc, EngineKind engine, const ImagePa
     return header;
 }
 
+/// "--view close: scene.json has no view named that (its views: "a", "b")".
+std::string noSuchView(const SceneDocument& doc, const std::string& scene,
+                       const std::string& view) {
+    std::string out = "--view " + view + ": " + scene + " has no view named that";
+    if (doc.views.empty()) return out + " (it has no views)";
+    out += " (its views: ";
+    for (std::size_t i = 0; i < doc.views.size(); ++i)
+        out.append(i ? ", \"" : "\"").append(doc.views[i].name) += '"';
+    return out + ")";
+}
+
 }  // namespace
 
 int runRender(int argc, char** argv) {
@@ -47,6 +58,7 @@ int runRender(int argc, char** argv) {
                    "--max-depth",     "--min-weight", "--shadow-samples",
                    "--supersampling", "--threads",    "--engine"};
     spec.valued.insert("--tile");
+    spec.valued.insert("--view");
     spec.flags = {"--stats", "--force", "--ids"};
     spec.aliases = {{"-o", "--output"}};
     Arguments args(argc, argv, 2, spec);
@@ -71,6 +83,11 @@ int runRender(int argc, char** argv) {
 
     SceneDocument doc;
     if (!loadSceneOrReport(args.positional()[0], doc)) return 2;
+    if (auto view = args.value("--view")) {
+        const ViewBookmark* named = doc.findView(*view);
+        if (!named) throw UsageError{noSuchView(doc, args.positional()[0], *view)};
+        doc.camera = named->camera;
+    }
     applyRenderOverrides(args, doc.render);
     if (args.has("--tile")) {
         if (const std::string bad = partError(part, doc.render.height); !bad.empty())

@@ -69,4 +69,40 @@ TEST_F(ImportCli, BadInput_IsAnErrorNamingIt) {
     EXPECT_FALSE(fs::exists(scene));
 }
 
+// The asset's cameras are kept as views; render --view looks through one.
+TEST_F(ImportCli, AssetCameras_BecomeViews_ThatRenderLooksThrough) {
+    const std::string asset = std::string(RAYSTUDIO_TEST_DATA) + "/meshes/two_cameras.gltf";
+    const std::string scene = (dir_ / "tri.scene.json").string();
+    const CliRun run = cli("import '" + asset + "' -o '" + scene + "' --width 48 --height 32");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("its cameras are views \"Eye\", \"Side\" (render --view NAME)"),
+              std::string::npos)
+        << run.out;
+    std::ifstream in(scene);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_EQ(j["views"].size(), 2u);
+    EXPECT_EQ(j["views"][0]["name"], "Eye");
+    EXPECT_EQ(j["views"][1]["name"], "Side");
+    EXPECT_EQ(j["version"], 2);
+
+    const std::string framing = (dir_ / "framing.png").string();
+    const std::string side = (dir_ / "side.png").string();
+    ASSERT_EQ(cli("render '" + scene + "' -o '" + framing + "'").exitCode, 0);
+    const CliRun through = cli("render '" + scene + "' -o '" + side + "' --view Side");
+    ASSERT_EQ(through.exitCode, 0) << through.err;
+    EXPECT_NE(readAll(framing), readAll(side));
+
+    const CliRun unknown = cli("render '" + scene + "' -o '" + side + "' --view Top");
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_NE(unknown.err.find("--view Top: " + scene +
+                               " has no view named that (its views: \"Eye\", \"Side\")"),
+              std::string::npos)
+        << unknown.err;
+    const CliRun none = cli("render '" + kBox.substr(0, kBox.rfind('/')) +
+                            "/../classic.scene.json' -o '" + side + "' --view Eye");
+    EXPECT_EQ(none.exitCode, 2);
+    EXPECT_NE(none.err.find("has no view named that (it has no views)"), std::string::npos)
+        << none.err;
+}
+
 }  // namespace
