@@ -34,6 +34,7 @@
 #include "session_error_relay.h"
 #include "shortcuts_dialog.h"
 #include "user_confirmation.h"
+#include "view_bookmarks.h"
 #include "viewport.h"
 #include "world_panel.h"
 
@@ -205,6 +206,28 @@ void MainWindow::addAimedLightAction(LightType type) {
 }
 
 void MainWindow::createMenus() {
+    createFileMenu();
+    const std::pair<QAction*, QAction*> undoRedo = createEditMenu();
+    createAddMenu();
+    QMenu* view = createViewMenu();
+    QAction* renderAct = createRenderMenu();
+    createHelpMenu();
+
+    QToolBar* tools = addToolBar(tr("Add"));
+    tools->setObjectName(QStringLiteral("addToolBar"));
+    // Icons with their names: a newcomer reads which shape each one adds.
+    tools->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    tools->addActions(addActions_);
+    tools->addSeparator();
+    tools->addAction(undoRedo.first);
+    tools->addAction(undoRedo.second);
+    tools->addAction(renderAct);
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        view->addAction(dock->toggleViewAction());
+    view->addAction(tools->toggleViewAction());
+}
+
+void MainWindow::createFileMenu() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newFile)
         ->setIcon(actionIcon("document-new", "document-new"));
@@ -225,7 +248,9 @@ void MainWindow::createMenus() {
     file->addAction(tr("&Quit"), this, &QWidget::close)
         ->setShortcuts(standardOr(QKeySequence::Quit, QKeySequence(Qt::CTRL | Qt::Key_Q)));
     updateRecentFileActions();
+}
 
+std::pair<QAction*, QAction*> MainWindow::createEditMenu() {
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = editor_->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setShortcuts(QKeySequence::Undo);
@@ -259,13 +284,19 @@ void MainWindow::createMenus() {
     edit->addAction(tr("&Preferences..."), QKeySequence::Preferences, this,
                     &MainWindow::showPreferences);
 
+    return {undo, redo};
+}
+
+void MainWindow::createAddMenu() {
     QMenu* add = menuBar()->addMenu(tr("&Add"));
     add->addActions(addActions_.mid(0, 5));
     add->addSeparator();
     add->addActions(addActions_.mid(5));
     add->addSeparator();
     add->addAction(snapToFloorAct_);
+}
 
+QMenu* MainWindow::createViewMenu() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Frame Selection"), QKeySequence(Qt::Key_F), viewport_,
                     &Viewport::frameSelection);
@@ -280,6 +311,8 @@ void MainWindow::createMenus() {
                     &Viewport::viewThroughSceneCamera);
     view->addAction(tr("Scene Camera from &View"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_0),
                     viewport_, &Viewport::sceneCameraFromView);
+    bookmarks_ = new ViewBookmarks(editor_, viewport_, this);
+    view->addMenu(bookmarks_->menu());
     QMenu* axes = view->addMenu(tr("&Axis Views"));
     const std::tuple<QString, AxisView, QKeySequence> axisViews[] = {
         {tr("&Front"), AxisView::Front, QKeySequence(Qt::Key_1)},
@@ -306,6 +339,10 @@ void MainWindow::createMenus() {
     }
     view->addSeparator();
 
+    return view;
+}
+
+QAction* MainWindow::createRenderMenu() {
     QMenu* render = menuBar()->addMenu(tr("&Render"));
     QAction* renderAct = render->addAction(tr("&Render Image..."), QKeySequence(Qt::Key_F12), this,
                                            &MainWindow::renderImageDialog);
@@ -318,24 +355,15 @@ void MainWindow::createMenus() {
         renderWindow_->raise();
     });
 
+    return renderAct;
+}
+
+void MainWindow::createHelpMenu() {
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts)
         ->setObjectName(QStringLiteral("keyboardShortcuts"));
     help->addAction(tr("&About RayStudio"), this, &MainWindow::about);
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
-
-    QToolBar* tools = addToolBar(tr("Add"));
-    tools->setObjectName(QStringLiteral("addToolBar"));
-    // Icons with their names: a newcomer reads which shape each one adds.
-    tools->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    tools->addActions(addActions_);
-    tools->addSeparator();
-    tools->addAction(undo);
-    tools->addAction(redo);
-    tools->addAction(renderAct);
-    for (QDockWidget* dock : findChildren<QDockWidget*>())
-        view->addAction(dock->toggleViewAction());
-    view->addAction(tools->toggleViewAction());
 }
 
 void MainWindow::createStatusBar() {

@@ -6,6 +6,7 @@
 #include <QPoint>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "placement.h"
 #include "preferences.h"
@@ -17,8 +18,9 @@ class QLabel;
 class QMenu;
 
 namespace rs {
+struct AssetContent;
 struct PassInfo;
-}
+}  // namespace rs
 
 namespace rs::ui {
 
@@ -26,6 +28,7 @@ class Autosave;
 class MaterialList;
 class ClusterSubmitDialog;
 class OutlinerView;
+class ViewBookmarks;
 class PropertyPanel;
 class RenderQueue;
 class RenderStatus;
@@ -92,6 +95,7 @@ public:
     RenderQueue* renderQueue() const { return renders_; }
     RenderWindow* renderWindow() const { return renderWindow_; }
     RenderStatus* renderStatus() const { return renderStatus_; }
+    ViewBookmarks* viewBookmarks() const { return bookmarks_; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -101,6 +105,15 @@ protected:
 private:
     void createActions();
     void createMenus();
+    void createFileMenu();
+    /// Returns the undo and redo actions (the toolbar shows them too).
+    std::pair<QAction*, QAction*> createEditMenu();
+    void createAddMenu();
+    /// Returns the View menu (the docks' and toolbar's toggles go last).
+    QMenu* createViewMenu();
+    /// Returns Render Image (the toolbar shows it too).
+    QAction* createRenderMenu();
+    void createHelpMenu();
     void createDocks();
     void createStatusBar();
     void createRenderQueue();
@@ -137,6 +150,11 @@ private:
     void addAimedLightAction(LightType type);
     void deleteSelection();
     void duplicateSelection();
+    /// Asks what becomes of the cameras an imported asset brings (mesh object `id` named
+    /// `name`): the scene camera and view bookmarks, bookmarks only, or nothing. Returns the
+    /// number of views added to `doc`.
+    std::size_t adoptAssetCameras(SceneDocument& doc, ObjectId id, const AssetContent& asset,
+                                  const QString& name);
 
     SceneEditor* editor_;
     Autosave* autosave_;
@@ -150,6 +168,7 @@ private:
     RenderQueue* renders_ = nullptr;
     RenderWindow* renderWindow_ = nullptr;
     RenderStatus* renderStatus_ = nullptr;
+    ViewBookmarks* bookmarks_ = nullptr;
     Preferences prefs_;
 
     QAction* deleteAct_ = nullptr;

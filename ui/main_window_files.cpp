@@ -183,6 +183,27 @@ static QString importedImageFolder(const QString& scenePath) {
            "/imported-images";
 }
 
+std::size_t MainWindow::adoptAssetCameras(SceneDocument& doc, ObjectId id,
+                                          const AssetContent& asset, const QString& name) {
+    if (asset.views.empty()) return 0;
+    const QString first = QString::fromStdString(asset.views[0].name);
+    const QString text = asset.views.size() == 1 ? tr("%1 brings camera \"%2\".").arg(name, first)
+                                                 : tr("%1 brings %2 cameras, the first \"%3\".")
+                                                       .arg(name)
+                                                       .arg(asset.views.size())
+                                                       .arg(first);
+    const int choice = choose(this, tr("Import %1").arg(name),
+                              text + tr(" Look through it (it becomes the scene camera; all "
+                                        "become view bookmarks), keep them as view bookmarks "
+                                        "(View > Bookmarks), or leave them out?"),
+                              {tr("Look Through It"), tr("Keep as Bookmarks"), tr("Leave Out")});
+    if (choice != 0 && choice != 1) return 0;
+    const std::vector<std::string> added = adoptAssetViews(doc, id, asset);
+    // The asset's first camera as the scene's, in the same undo step as the import.
+    if (choice == 0 && !added.empty()) doc.camera = doc.findView(added.front())->camera;
+    return added.size();
+}
+
 void MainWindow::importMesh(const QString& path, std::optional<QPoint> at) {
     importMeshAsync(this, path, true, [this, path, at](const MeshLoadResult& r) {
         if (!r.ok()) {
@@ -210,13 +231,7 @@ void MainWindow::importMesh(const QString& path, std::optional<QPoint> at) {
         const std::size_t lights =
             r.asset ? adoptAssetLights(doc, id, *r.asset).size() : std::size_t(0);
         const QString name = QString::fromStdString(doc.findObject(id)->name);
-        // The asset's first camera as the scene's, when the user wants it (one undo step).
-        if (r.asset && !r.asset->views.empty() &&
-            ask(this, tr("Import %1").arg(name),
-                tr("%1 brings camera \"%2\". Look through it (it becomes the scene "
-                   "camera)?")
-                    .arg(name, QString::fromStdString(r.asset->views[0].name))))
-            doc.camera = placedAssetCamera(r.asset->views[0], *doc.findObject(id));
+        const std::size_t views = r.asset ? adoptAssetCameras(doc, id, *r.asset, name) : 0;
         editor_->edit(tr("Import %1").arg(name), std::move(doc));
         editor_->setSelection(id);
         QString said = tr("Imported %1").arg(name);
@@ -225,6 +240,9 @@ void MainWindow::importMesh(const QString& path, std::optional<QPoint> at) {
                         ? tr(" with 1 material")
                         : tr(" with %1 materials").arg(looks.materials.size());
         if (lights > 0) said += lights == 1 ? tr(" and 1 light") : tr(" and %1 lights").arg(lights);
+        if (views > 0)
+            said += views == 1 ? tr(", its camera a view bookmark")
+                               : tr(", its %1 cameras view bookmarks").arg(views);
         if (factor != 1.0f)
             said += tr(", scaled by %1 to fit the view (Properties: Transform, Scale)")
                         .arg(double(factor), 0, 'g', 3);

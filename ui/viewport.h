@@ -76,6 +76,9 @@ public:
     void viewThroughSceneCamera();
     /// View -> Scene Camera from View: one undoable edit of the document's camera.
     void sceneCameraFromView();
+    /// Looks through `camera` (a view bookmark's) as navigation would: the document and its
+    /// scene camera stay as they are.
+    void setView(const Camera& camera);
     /// Looks at the view's target along a world axis.
     void setAxisView(AxisView view);
     /// Aims the view at the selection from the current side, no further than the first
@@ -152,7 +155,6 @@ private:
     // viewport_navigation.cpp
     void onDocumentReset();
     void onDocumentChanged();
-    void setView(const Camera& camera);
     void postView();
     /// tracedFrameSize() of the widget as it is now.
     QSize sizeToTrace() const;
