@@ -21,6 +21,7 @@
 #include "display_frame.h"
 #include "error_reporter.h"
 #include "image/image_io.h"
+#include "imported_images.h"
 #include "integrator/cost_estimate.h"
 #include "io/asset_looks.h"
 #include "io/scene_io.h"
@@ -139,7 +140,10 @@ bool MainWindow::saveFile(const QString& path) {
     const QFileInfo info(path);
     QString error;
     // The document as it is now; a large one is written while the window keeps painting.
-    const SceneDocument doc = editor_->document();
+    SceneDocument doc = editor_->document();
+    // Images that imports wrote before the scene had a file go with it now.
+    const MovedImages moved =
+        moveImportedImages(doc, importedImageFolder(QString()), info.absolutePath());
     bool written;
     if (doc.objects.size() >= kResponsiveObjects) {
         statusBar()->showMessage(tr("Saving %1…").arg(path));
@@ -153,6 +157,11 @@ bool MainWindow::saveFile(const QString& path) {
                     tr("%1 could not be written:\n%2").arg(path, error));
         return false;
     }
+    if (!moved.copied.isEmpty()) editor_->replaceDocument(doc);  // what the file says now
+    for (const QString& note : moved.notes)
+        std::fprintf(stderr, "raystudio: %s\n", qPrintable(note));
+    if (!moved.notes.isEmpty())
+        reportError(this, tr("Saved %1").arg(path), moved.notes.join(QLatin1Char('\n')));
     editor_->undoStack()->setClean();
     autosave_->discard();  // The file holds every change now.
     editor_->setFilePath(info.absoluteFilePath());
@@ -177,12 +186,6 @@ void MainWindow::importMeshDialog() {
 
 /// Where an asset's embedded images are written: the scene's folder once it has a file,
 /// else a folder of the designer's own (a later Save As keeps referring to them there).
-static QString importedImageFolder(const QString& scenePath) {
-    if (!scenePath.isEmpty()) return QFileInfo(scenePath).absolutePath();
-    return QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) +
-           "/imported-images";
-}
-
 std::size_t MainWindow::adoptAssetCameras(SceneDocument& doc, ObjectId id,
                                           const AssetContent& asset, const QString& name) {
     if (asset.views.empty()) return 0;

@@ -7,10 +7,12 @@
 #include <QColorDialog>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QImage>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -26,6 +28,7 @@
 #include <functional>
 
 #include "gui_test_support.h"
+#include "imported_images.h"
 #include "material_list.h"
 #include "placement.h"
 #include "property_panel.h"
@@ -83,6 +86,7 @@ private Q_SLOTS:
     void largeMeshImport_IsScaledToFitTheView_AndTheFactorIsEditable();
     void meshImportedAtTheCursor_LandsOnTheSurfaceUnderIt_Unscaled();
     void importedAsset_BringsItsPartsMaterials_AsOneUndoStep();
+    void importedImagesOfAnUnsavedScene_GoNextToItOnSave();
     void newAndDuplicateMaterial_EachOneUndoStep();
     void renameMaterial_InPlace_RenamesItsUsers_AndRefusesTakenOrEmptyNames();
     void deleteMaterial_UsedIsRefusedWithTheReason_UnusedIsOneUndoStep();
@@ -365,6 +369,51 @@ void MaterialsTest::importedAsset_BringsItsPartsMaterials_AsOneUndoStep() {
     window_->editor()->undoStack()->undo();
     QCOMPARE(idOf(*window_, "two-tone-box"), kNoObject);
     QCOMPARE(doc().materials.size(), before);
+}
+
+// An asset imported before the scene has a file writes its embedded images into the data
+// folder; saving the scene copies them next to it and the file refers to the copies.
+void MaterialsTest::importedImagesOfAnUnsavedScene_GoNextToItOnSave() {
+    const QString data = importedImageFolder(QString());
+    QVERIFY(QDir().mkpath(data));
+    const QString image = data + QStringLiteral("/asset-0.png");
+    QImage red(4, 4, QImage::Format_RGB32);
+    red.fill(Qt::red);
+    QVERIFY(red.save(image));
+    SceneDocument edited = doc();
+    for (const char* name : {"painted", "painted too"}) {
+        Material m;
+        m.name = name;
+        ImageTexture t;
+        t.image.file = t.image.resolvedPath = image.toStdString();
+        m.pattern = t;
+        edited.materials.push_back(m);
+    }
+    window_->editor()->edit(QStringLiteral("paint"), std::move(edited));
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    // A file of that name is there already: the copy takes the next free name.
+    QImage blue(2, 2, QImage::Format_RGB32);
+    blue.fill(Qt::blue);
+    QVERIFY(blue.save(dir.filePath(QStringLiteral("asset-0.png"))));
+    const QString scene = dir.filePath(QStringLiteral("painted.scene.json"));
+    QVERIFY(window_->saveFile(scene));
+    const QString copy =
+        QFileInfo(dir.filePath(QStringLiteral("asset-0-2.png"))).absoluteFilePath();
+    QVERIFY(QFileInfo::exists(copy));
+    QCOMPARE(QImage(copy).pixelColor(0, 0), QColor(Qt::red));
+    for (const char* name : {"painted", "painted too"}) {
+        const auto& t = std::get<ImageTexture>(doc().findMaterial(name)->pattern);
+        QCOMPARE(QString::fromStdString(t.image.resolvedPath), copy);
+    }
+    QFile saved(scene);
+    QVERIFY(saved.open(QIODevice::ReadOnly));
+    const QByteArray text = saved.readAll();
+    QVERIFY2(text.contains("\"texture\": \"asset-0-2.png\""), text.constData());
+    QVERIFY(!text.contains("imported-images"));
+    QVERIFY(window_->editor()->undoStack()->isClean());
+    QFile::remove(image);
 }
 
 void MaterialsTest::newAndDuplicateMaterial_EachOneUndoStep() {
