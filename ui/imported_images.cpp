@@ -47,8 +47,9 @@ MovedImages moveImportedImages(SceneDocument& doc, const QString& fromFolder,
                 it->second = target;
                 moved.copied << target;
             } else {
-                moved.notes << QObject::tr("image \"%1\" of material \"%2\" could not be copied "
-                                           "to %3; the scene refers to it where it is")
+                moved.notes << QObject::tr(
+                                   "image \"%1\" of material \"%2\" could not be copied "
+                                   "to %3; the scene refers to it where it is")
                                    .arg(source, QString::fromStdString(m.name), toFolder);
             }
         }

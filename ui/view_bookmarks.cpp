@@ -11,8 +11,7 @@
 
 namespace rs::ui {
 
-QString viewNameError(const SceneDocument& doc, const QString& name,
-                      const std::string& renaming) {
+QString viewNameError(const SceneDocument& doc, const QString& name, const std::string& renaming) {
     if (name.trimmed().isEmpty()) return QObject::tr("A view needs a name.");
     const std::string wanted = name.toStdString();
     if (wanted != renaming && doc.findView(wanted))

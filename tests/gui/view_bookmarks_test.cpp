@@ -2,6 +2,8 @@
 // one without moving the scene camera, names that are refused, renaming and removing as undo
 // steps, saving, and the cameras of an imported asset as bookmarks or the scene camera, as the
 // user chooses (offscreen).
+#include "view_bookmarks.h"
+
 #include <QAction>
 #include <QMenu>
 #include <QStatusBar>
@@ -12,7 +14,6 @@
 #include "error_reporter.h"
 #include "gui_test_support.h"
 #include "user_confirmation.h"
-#include "view_bookmarks.h"
 
 using namespace rs;
 using namespace rs::ui;
@@ -62,11 +63,11 @@ void ViewBookmarksTest::cleanup() {
 }
 
 void ViewBookmarksTest::answerNames(QStringList names) {
-    setTextHandler([names](const QString&, const QString&,
-                           const QString&) mutable -> std::optional<QString> {
-        if (names.isEmpty()) return std::nullopt;
-        return names.takeFirst();
-    });
+    setTextHandler(
+        [names](const QString&, const QString&, const QString&) mutable -> std::optional<QString> {
+            if (names.isEmpty()) return std::nullopt;
+            return names.takeFirst();
+        });
 }
 
 Vec3 ViewBookmarksTest::meanColour() {
@@ -214,11 +215,11 @@ void ViewBookmarksTest::importedCameras_AsTheUserChooses() {
     const Camera scene = doc().camera;
     auto import = [&](int choice) -> bool {
         QStringList asked;
-        setChoiceHandler([&asked, choice](const QString&, const QString& text,
-                                          const QStringList& choices) {
-            asked << text << choices;
-            return choice;
-        });
+        setChoiceHandler(
+            [&asked, choice](const QString&, const QString& text, const QStringList& choices) {
+                asked << text << choices;
+                return choice;
+            });
         const std::size_t objects = doc().objects.size();
         window_->importMesh(asset);
         if (!QTest::qWaitFor([&] { return doc().objects.size() == objects + 1; }, 20000))

@@ -91,8 +91,9 @@ TEST(SceneViews, ErrorsNameTheViewAndKey) {
               "/views/0/name: missing required key \"name\"");
     EXPECT_EQ(oneError(head + R"([ { "name": "", "camera": {} } ] })"),
               "/views/0/name: name must not be empty");
-    EXPECT_EQ(oneError(head + R"([ { "name": "a", "camera": {} }, { "name": "a", "camera": {} } ] })"),
-              "/views/1/name: duplicate view name \"a\" (also at /views/0)");
+    EXPECT_EQ(
+        oneError(head + R"([ { "name": "a", "camera": {} }, { "name": "a", "camera": {} } ] })"),
+        "/views/1/name: duplicate view name \"a\" (also at /views/0)");
     EXPECT_EQ(oneError(head + R"([ { "name": "a", "camera": { "target": [0, 0, 0] } } ] })"),
               "/views/0/camera/target: camera target must differ from its position");
     EXPECT_EQ(oneError(head + R"([ { "name": "a", "camera": { "fov_y": 200 } } ] })"),
