@@ -16,15 +16,15 @@
 #include <functional>
 #include <vector>
 
+#include "adapter/session_controller.h"
 #include "core/statistics.h"
-#include "display_choice.h"
-#include "error_reporter.h"
+#include "display/display_choice.h"
+#include "document/scene_editor.h"
 #include "integrator/renderer.h"
-#include "main_window.h"
-#include "preferences.h"
-#include "scene_editor.h"
-#include "session_controller.h"
-#include "viewport.h"
+#include "shell/error_reporter.h"
+#include "shell/main_window.h"
+#include "shell/preferences.h"
+#include "viewport/viewport.h"
 
 namespace rs::ui {
 

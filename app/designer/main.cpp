@@ -8,11 +8,11 @@
 #include <cstdio>
 #include <cstring>
 
-#include "default_scene.h"
+#include "document/default_scene.h"
+#include "document/scene_editor.h"
 #include "drag_measurement.h"
-#include "main_window.h"
 #include "raystudio_version.h"
-#include "scene_editor.h"
+#include "shell/main_window.h"
 
 namespace {
 int usageError(const char* message) {

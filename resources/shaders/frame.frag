@@ -8,7 +8,7 @@ uniform usampler2D idTex;
 uniform int displayReady;   // 1: colorTex already holds display values
 uniform int tonemap;        // a ToneMap value; TONEMAP_* are defined by the program that loads this
 uniform float exposure;
-uniform uint selected[32];  // kMaxOutlined (ui/display_frame.h)
+uniform uint selected[32];  // kMaxOutlined (ui/display/display_frame.h)
 uniform int selectedCount;
 uniform vec3 outlineColor;
 

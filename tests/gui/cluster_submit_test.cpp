@@ -13,9 +13,9 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-#include "cluster_submit_dialog.h"
 #include "gui_test_support.h"
-#include "user_confirmation.h"
+#include "jobs/cluster_submit_dialog.h"
+#include "shell/user_confirmation.h"
 
 using namespace rs;
 using namespace rs::ui;

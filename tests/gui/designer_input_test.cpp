@@ -15,8 +15,8 @@
 #include <map>
 
 #include "gui_test_support.h"
-#include "property_panel.h"
-#include "user_confirmation.h"
+#include "panels/property_panel.h"
+#include "shell/user_confirmation.h"
 
 using namespace rs;
 using namespace rs::ui;

@@ -10,11 +10,11 @@
 #include <QtTest>
 #include <fstream>
 
-#include "error_reporter.h"
 #include "gui_test_support.h"
 #include "io/scene_io.h"
-#include "responsive_wait.h"
-#include "user_confirmation.h"
+#include "shell/error_reporter.h"
+#include "shell/responsive_wait.h"
+#include "shell/user_confirmation.h"
 
 using namespace rs;
 using namespace rs::ui;

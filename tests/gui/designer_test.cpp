@@ -16,17 +16,17 @@
 #include <QToolBar>
 #include <QtTest>
 
+#include "document/transform_edits.h"
 #include "drag_geometry.h"
-#include "error_reporter.h"
 #include "gui_test_support.h"
 #include "io/scene_io.h"
-#include "outliner_model.h"
-#include "outliner_view.h"
-#include "preferences.h"
-#include "property_panel.h"
+#include "panels/outliner_model.h"
+#include "panels/outliner_view.h"
+#include "panels/property_panel.h"
 #include "scene/parameters.h"
 #include "session/governor.h"
-#include "transform_edits.h"
+#include "shell/error_reporter.h"
+#include "shell/preferences.h"
 
 using namespace rs;
 using namespace rs::ui;

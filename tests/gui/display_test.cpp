@@ -10,11 +10,11 @@
 #include <future>
 #include <thread>
 
+#include "display/raster_frame_view.h"
+#include "document/scene_edits.h"
 #include "gui_test_support.h"
 #include "image/tonemap.h"
-#include "raster_frame_view.h"
-#include "scene_edits.h"
-#include "viewport_pacing.h"
+#include "viewport/viewport_pacing.h"
 
 using namespace rs;
 using namespace rs::ui;

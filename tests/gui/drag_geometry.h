@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "scene/document.h"
-#include "view_projection.h"
+#include "viewport/view_projection.h"
 
 namespace rs::ui::test {
 

@@ -1,12 +1,12 @@
 // Display storage made before a frame of a new size comes: the frame is copied into pages
 // already written, off the GUI thread's clock (DisplayFrame::adopt, FrameStorageMaker).
-#include "frame_storage.h"
+#include "display/frame_storage.h"
 
 #include <QElapsedTimer>
 #include <QtTest>
 #include <algorithm>
 
-#include "display_frame.h"
+#include "display/display_frame.h"
 #include "session/frame/deep_frame.h"
 
 using namespace rs;

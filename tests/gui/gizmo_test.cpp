@@ -6,12 +6,12 @@
 #include <QtTest>
 #include <cmath>
 
+#include "document/transform_edits.h"
 #include "drag_geometry.h"
 #include "gui_test_support.h"
-#include "outliner_model.h"
-#include "outliner_view.h"
-#include "property_panel.h"
-#include "transform_edits.h"
+#include "panels/outliner_model.h"
+#include "panels/outliner_view.h"
+#include "panels/property_panel.h"
 
 using namespace rs;
 using namespace rs::ui;

@@ -8,13 +8,13 @@
 #include <QtTest>
 #include <cmath>
 
-#include "display_choice.h"
-#include "gl_frame_view.h"
+#include "display/display_choice.h"
+#include "display/gl_frame_view.h"
+#include "document/scene_edits.h"
 #include "gui_test_support.h"
 #include "image/tonemap.h"
-#include "passepartout.h"
-#include "preferences.h"
-#include "scene_edits.h"
+#include "shell/preferences.h"
+#include "viewport/passepartout.h"
 
 using namespace rs;
 using namespace rs::ui;

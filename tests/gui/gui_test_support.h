@@ -10,12 +10,12 @@
 #include <chrono>
 #include <memory>
 
-#include "display_frame.h"
-#include "main_window.h"
-#include "scene_editor.h"
-#include "session_controller.h"
-#include "view_projection.h"
-#include "viewport.h"
+#include "adapter/session_controller.h"
+#include "display/display_frame.h"
+#include "document/scene_editor.h"
+#include "shell/main_window.h"
+#include "viewport/view_projection.h"
+#include "viewport/viewport.h"
 
 namespace rs::ui::test {
 

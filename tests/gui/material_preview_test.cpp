@@ -1,7 +1,7 @@
 // Material previews in the Materials dock (issue 29): each material's icon is a sphere traced
 // in the background over a checkered backdrop; only materials whose content changed are
 // traced again, rapid edits render only the latest content, and a move renders nothing.
-#include "material_preview.h"
+#include "panels/material_preview.h"
 
 #include <QApplication>
 #include <QIcon>
@@ -12,9 +12,9 @@
 #include <cmath>
 #include <memory>
 
-#include "material_list.h"
-#include "scene_editor.h"
-#include "scene_edits.h"
+#include "document/scene_editor.h"
+#include "document/scene_edits.h"
+#include "panels/material_list.h"
 
 using namespace rs;
 using namespace rs::ui;

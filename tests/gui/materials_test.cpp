@@ -27,14 +27,14 @@
 #include <cmath>
 #include <functional>
 
+#include "document/placement.h"
+#include "document/transform_edits.h"
 #include "gui_test_support.h"
-#include "imported_images.h"
-#include "material_list.h"
-#include "placement.h"
-#include "property_panel.h"
+#include "shell/imported_images.h"
+#include "panels/material_list.h"
+#include "panels/property_panel.h"
 #include "snapshot/compiled_scene.h"
-#include "transform_edits.h"
-#include "transform_gizmo.h"
+#include "viewport/transform_gizmo.h"
 
 using namespace rs;
 using namespace rs::ui;

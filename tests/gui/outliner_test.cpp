@@ -4,9 +4,9 @@
 #include <QSignalSpy>
 #include <QtTest>
 
-#include "outliner_model.h"
-#include "outliner_view.h"
-#include "scene_editor.h"
+#include "document/scene_editor.h"
+#include "panels/outliner_model.h"
+#include "panels/outliner_view.h"
 #include "test_scenes.h"
 
 using namespace rs;

@@ -5,11 +5,11 @@
 #include <QtTest>
 #include <cmath>
 
+#include "display/raster_frame_view.h"
+#include "document/scene_edits.h"
 #include "gui_test_support.h"
 #include "image/tonemap.h"
-#include "raster_frame_view.h"
-#include "scene_edits.h"
-#include "viewport_overlay.h"
+#include "viewport/viewport_overlay.h"
 
 using namespace rs;
 using namespace rs::ui;

@@ -1,7 +1,7 @@
 // The property panel against the schema: a file may hold what the editors do not offer by
 // default (max_depth 1000 where the spin box offers 64); the panel shows such a value and
 // keeps it when another field, or another component of the same vector, is edited.
-#include "property_panel.h"
+#include "panels/property_panel.h"
 
 #include <QDoubleSpinBox>
 #include <QLineEdit>

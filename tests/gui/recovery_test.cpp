@@ -12,11 +12,11 @@
 #include <cstdio>
 #include <cstring>
 
-#include "autosave.h"
+#include "document/scene_editor.h"
+#include "document/scene_file_writer.h"
 #include "io/scene_io.h"
-#include "main_window.h"
-#include "scene_editor.h"
-#include "scene_file_writer.h"
+#include "shell/autosave.h"
+#include "shell/main_window.h"
 
 using namespace rs;
 using namespace rs::ui;

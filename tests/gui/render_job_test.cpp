@@ -16,14 +16,14 @@
 #include <QTimer>
 #include <QtTest>
 
-#include "error_reporter.h"
 #include "gui_test_support.h"
 #include "image/image_io.h"
 #include "integrator/renderer.h"
-#include "render_queue.h"
-#include "render_status.h"
-#include "render_window.h"
-#include "user_confirmation.h"
+#include "jobs/render_queue.h"
+#include "jobs/render_status.h"
+#include "jobs/render_window.h"
+#include "shell/error_reporter.h"
+#include "shell/user_confirmation.h"
 
 using namespace rs;
 using namespace rs::ui;

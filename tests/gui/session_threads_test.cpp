@@ -12,10 +12,10 @@
 #include <thread>
 #include <vector>
 
-#include "error_reporter.h"
-#include "gui_mailbox.h"
 #include "gui_test_support.h"
 #include "integrator/renderer.h"
+#include "jobs/gui_mailbox.h"
+#include "shell/error_reporter.h"
 #include "snapshot/compiled_scene.h"
 
 using namespace rs;

@@ -24,14 +24,14 @@
 #include <QtTest>
 #include <cmath>
 
-#include "color_pattern_editor.h"
 #include "gui_test_support.h"
 #include "image/image_io.h"
-#include "image_preview.h"
 #include "io/scene_io.h"
-#include "preferences.h"
-#include "property_panel.h"
+#include "panels/color_pattern_editor.h"
+#include "panels/image_preview.h"
+#include "panels/property_panel.h"
 #include "scene/parameters.h"
+#include "shell/preferences.h"
 #include "texture/texture_store.h"
 
 using namespace rs;

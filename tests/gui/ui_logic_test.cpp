@@ -10,17 +10,17 @@
 #include <QtTest>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "default_scene.h"
-#include "dialog_folders.h"
-#include "display_choice.h"
-#include "display_frame.h"
-#include "placement.h"
+#include "display/display_choice.h"
+#include "display/display_frame.h"
+#include "document/default_scene.h"
+#include "document/placement.h"
+#include "document/scene_edits.h"
+#include "document/transform_edits.h"
+#include "panels/dialog_folders.h"
 #include "scene/parameters.h"
-#include "scene_edits.h"
 #include "snapshot/compiled_scene.h"
-#include "transform_edits.h"
-#include "transform_gizmo.h"
-#include "view_projection.h"
+#include "viewport/transform_gizmo.h"
+#include "viewport/view_projection.h"
 
 using namespace rs;
 using namespace rs::ui;

@@ -2,7 +2,7 @@
 // one without moving the scene camera, names that are refused, renaming and removing as undo
 // steps, saving, and the cameras of an imported asset as bookmarks or the scene camera, as the
 // user chooses (offscreen).
-#include "view_bookmarks.h"
+#include "shell/view_bookmarks.h"
 
 #include <QAction>
 #include <QMenu>
@@ -11,9 +11,9 @@
 #include <QtTest>
 #include <optional>
 
-#include "error_reporter.h"
 #include "gui_test_support.h"
-#include "user_confirmation.h"
+#include "shell/error_reporter.h"
+#include "shell/user_confirmation.h"
 
 using namespace rs;
 using namespace rs::ui;

@@ -7,9 +7,9 @@
 
 #include "gui_test_support.h"
 #include "integrator/renderer.h"
-#include "passepartout.h"
-#include "preferences.h"
+#include "shell/preferences.h"
 #include "snapshot/compiled_scene.h"
+#include "viewport/passepartout.h"
 
 using namespace rs;
 using namespace rs::ui;

@@ -10,7 +10,7 @@
 
 #include "drag_measurement.h"
 #include "gui_test_support.h"
-#include "property_panel.h"
+#include "panels/property_panel.h"
 
 using namespace rs;
 using namespace rs::ui;

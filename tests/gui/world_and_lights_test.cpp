@@ -11,13 +11,13 @@
 #include <QtTest>
 #include <cmath>
 
-#include "dialog_folders.h"
 #include "gui_test_support.h"
-#include "light_overlay.h"
-#include "outliner_model.h"
-#include "outliner_view.h"
-#include "transform_gizmo.h"
-#include "world_panel.h"
+#include "panels/dialog_folders.h"
+#include "panels/outliner_model.h"
+#include "panels/outliner_view.h"
+#include "panels/world_panel.h"
+#include "viewport/light_overlay.h"
+#include "viewport/transform_gizmo.h"
 
 using namespace rs;
 using namespace rs::ui;

@@ -1,0 +1,214 @@
+// SessionController: worker-thread callbacks to GUI-thread signals at display rate.
+#include "adapter/session_controller.h"
+
+#include <algorithm>
+#include <chrono>
+#include <utility>
+
+namespace rs::ui {
+
+namespace {
+/// More committed tiles than this between two looks: copy the frame whole instead.
+constexpr std::size_t kMaxListedTiles = 16384;
+/// How soon a hand-over that found the frame lock held tries again. A tile commit holds it
+/// for microseconds, an edit's dirty marking for a few milliseconds.
+constexpr int kBusyRetryMs = 2;
+}  // namespace
+
+SessionController::SessionController(int threads, QObject* parent)
+    : QObject(parent), session_(std::make_unique<RenderSession>(threads)), mailbox_(this) {
+    qRegisterMetaType<rs::PassInfo>();
+    repaintTimer_.setSingleShot(true);
+    connect(&repaintTimer_, &QTimer::timeout, this, &SessionController::onRepaintTimer);
+    // Zero: fires when this event-loop pass has handled what was queued.
+    updateTimer_.setSingleShot(true);
+    updateTimer_.setInterval(0);
+    connect(&updateTimer_, &QTimer::timeout, this, &SessionController::onUpdateTimer);
+    rateTimer_.setInterval(1000);
+    connect(&rateTimer_, &QTimer::timeout, this, [this] {
+        const bool changed = updatesPerSecond_ != updatesThisSecond_;
+        updatesPerSecond_ = updatesThisSecond_;
+        updatesThisSecond_ = 0;
+        // Also when it falls to 0: passes stop when the user does, and with them
+        // passFinished, so a status bar updated only there kept the drag's rate while idle.
+        if (changed) Q_EMIT updateRateChanged(updatesPerSecond_);
+    });
+    rateTimer_.start();
+    session_->setObserver(this);
+    session_->setDisplayWaits(true);  // Whether whole frames are waited for is the policy's.
+}
+
+SessionController::~SessionController() {
+    // Joins the workers while this observer is still alive; callbacks they queued are
+    // dropped with this object.
+    session_.reset();
+}
+
+void SessionController::requestUpdate(const SceneDocument& doc) {
+    pendingDoc_ = doc;
+    ++requestSerial_;
+    if (!updateTimer_.isActive()) {
+        // The first change of this pass goes out at once; later ones wait for its end.
+        onUpdateTimer();
+        updateTimer_.start();
+    }
+}
+
+void SessionController::onUpdateTimer() {
+    if (!pendingDoc_) return;
+    frameStorage_.request(std::size_t(std::max(pendingDoc_->render.width, 0)) *
+                          std::size_t(std::max(pendingDoc_->render.height, 0)));
+    const uint64_t generation = session_->update(*pendingDoc_);
+    postedGeneration_ = generation;
+    // Tone mapping and exposure trace nothing, so no tile will announce them: repaint here.
+    const bool displayChanged = pendingDoc_->render.tonemap != postedTonemap_ ||
+                                pendingDoc_->render.exposure != postedExposure_;
+    postedTonemap_ = pendingDoc_->render.tonemap;
+    postedExposure_ = pendingDoc_->render.exposure;
+    pendingDoc_.reset();
+    ++updatesThisSecond_;
+    Q_EMIT documentPosted(requestSerial_, generation);
+    if (displayChanged) Q_EMIT frameUpdated();
+}
+
+void SessionController::flushUpdate() {
+    onUpdateTimer();
+}
+
+std::shared_ptr<const CompiledScene> SessionController::appliedSnapshot() {
+    flushUpdate();
+    if (postedGeneration_ > 0) session_->waitForUpdate(postedGeneration_, std::chrono::seconds(1));
+    return session_->snapshot();
+}
+
+void SessionController::beginInteraction(ObjectId moving) {
+    flushUpdate();
+    interacting_ = true;
+    session_->beginInteraction(moving);
+    Q_EMIT interactionChanged(true);
+}
+
+void SessionController::endInteraction() {
+    flushUpdate();
+    interacting_ = false;
+    session_->endInteraction();
+    Q_EMIT interactionChanged(false);
+}
+
+std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wait) {
+    const auto start = std::chrono::steady_clock::now();
+    if (FrameStorage room = frameStorage_.take(); room.pixels > 0) frame_->adopt(std::move(room));
+    // Before the tiles are taken: every tile of the pass that made the frame whole is in them.
+    const uint64_t wholeMark = session_->wholeMark();
+    const bool onlyWhole =
+        wait == FrameWait::TryOnly && interacting_ && session_->policy().wholeFramesWhileMoving;
+    bool whole = false, torn = false;
+    std::vector<QRect> tiles;
+    bool everything = false;
+    uint64_t committed = 0;
+    {
+        // Every tile announced so far is copied below, so the copy holds their generation.
+        std::lock_guard lock(tilesMutex_);
+        tiles.swap(committedTiles_);
+        everything = tilesOverflowed_;
+        tilesOverflowed_ = false;
+        committed = committedGeneration_;
+    }
+    tiles.insert(tiles.end(), heldTiles_.begin(), heldTiles_.end());
+    heldTiles_.clear();
+    everything = everything || std::exchange(heldEverything_, false);
+    committed = std::max(committed, std::exchange(heldGeneration_, 0));
+    DisplayFrame& d = *frame_;
+    const auto copy = [&](const DeepFrame& f, const std::shared_ptr<const CompiledScene>&) {
+        const auto locked = std::chrono::steady_clock::now();
+        whole = session_->wholeSince(wholeMark);
+        if (onlyWhole && !whole) {
+            torn = true;  // The last whole frame stays; these tiles wait for the next.
+            return;
+        }
+        if (everything) tiles.assign(1, QRect(0, 0, f.width(), f.height()));
+        // Edits clear the previous edit's re-traced overlay outside any tile: the flags follow
+        // whole when the generation moved (a byte a pixel).
+        const uint64_t generation = session_->generation();
+        d.refresh(f, mergeRects(std::move(tiles), QSize(f.width(), f.height())),
+                  generation != frameSessionGeneration_);
+        frameSessionGeneration_ = generation;
+        handover_.copyMs +=
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - locked)
+                .count();
+    };
+    const uint64_t serialBefore = d.serial;
+    if (wait == FrameWait::Block) {
+        session_->withFrame(copy);
+    } else if (const bool got = session_->tryWithFrame(copy); !got || torn) {
+        if (torn) {
+            // Not busy: the pass that makes the frame whole ends with a hand-over (the
+            // viewport's passFinished).
+            heldTiles_ = std::move(tiles);
+            heldEverything_ = everything;
+            heldGeneration_ = committed;
+            return frame_;
+        }
+        // Kept for the next look, which comes soon whether or not more tiles arrive.
+        heldTiles_ = std::move(tiles);
+        heldEverything_ = everything;
+        heldGeneration_ = committed;
+        ++handover_.busy;
+        framePending_.store(true);
+        if (!repaintTimer_.isActive()) repaintTimer_.start(kBusyRetryMs);
+        return frame_;
+    }
+    if (d.tonemap != postedTonemap_ || d.exposure != postedExposure_) {
+        d.tonemap = postedTonemap_;
+        d.exposure = postedExposure_;
+        ++d.serial;
+    }
+    d.generation = std::max(d.generation, committed);
+    if (d.serial != serialBefore) Q_EMIT frameHandedOver(d.serial, whole);
+    if (whole) session_->wholeFrameShown(wholeMark);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ++handover_.count;
+    handover_.totalMs += ms;
+    handover_.maxMs = std::max(handover_.maxMs, ms);
+    return frame_;
+}
+
+void SessionController::tileDone(int x0, int y0, int x1, int y1, uint64_t generation) {
+    {
+        std::lock_guard lock(tilesMutex_);
+        if (committedTiles_.size() < kMaxListedTiles)
+            committedTiles_.emplace_back(QPoint(x0, y0), QPoint(x1 - 1, y1 - 1));
+        else
+            tilesOverflowed_ = true;
+        committedGeneration_ = std::max(committedGeneration_, generation);
+    }
+    if (framePending_.exchange(true)) return;
+    mailbox_.post([this] { scheduleFrame(); });
+}
+
+void SessionController::scheduleFrame() {
+    if (repaintTimer_.isActive()) return;
+    // The first tiles after a quiet spell are shown at once, later ones at the display's pace.
+    const qint64 since = lastFrame_.isValid() ? lastFrame_.elapsed() : kMinFrameIntervalMs;
+    repaintTimer_.start(int(std::max<qint64>(0, kMinFrameIntervalMs - since)));
+}
+
+void SessionController::onRepaintTimer() {
+    framePending_.store(false);
+    lastFrame_.start();
+    Q_EMIT frameUpdated();
+}
+
+void SessionController::passDone(const PassInfo& info) {
+    mailbox_.post([this, info] { Q_EMIT passFinished(info); });
+}
+
+void SessionController::frameComplete(uint64_t generation) {
+    mailbox_.post([this, generation] {
+        Q_EMIT frameUpdated();
+        Q_EMIT frameCompleted(generation);
+    });
+}
+
+}  // namespace rs::ui
