@@ -7,6 +7,8 @@
 #include <QKeyEvent>
 #include <QKeySequence>
 
+#include "viewport/viewport.h"
+
 namespace rs::ui {
 
 namespace {

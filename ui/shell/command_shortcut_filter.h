@@ -12,9 +12,8 @@ namespace rs::ui {
 /// focused widget (a property-panel spin box, the outliner's rename field) would take it as an
 /// editing key (Ctrl+E is end-of-line and Ctrl+Z the field's own undo on X11). Plain keys
 /// (Delete, Backspace, letters, arrows) stay with the field. Dialogs are left alone, and so
-/// is a widget whose kTakesAllKeys property is true (the viewport during a drag or gesture,
-/// where Ctrl+Z cancels the gesture instead of undoing under it).
-inline constexpr char kTakesAllKeys[] = "raystudioTakesAllKeys";
+/// is a widget whose kTakesAllKeys property (viewport/viewport.h) is true (the viewport during a
+/// drag or gesture, where Ctrl+Z cancels the gesture instead of undoing under it).
 class CommandShortcutFilter : public QObject {
 public:
     /// Installs itself on the application; removed when `window` (its parent) is destroyed.

@@ -14,7 +14,6 @@
 #include "document/scene_editor.h"
 #include "document/scene_edits.h"
 #include "document/transform_edits.h"
-#include "shell/command_shortcut_filter.h"
 #include "viewport/camera_navigation.h"
 #include "viewport/passepartout.h"
 #include "viewport/viewport_overlay.h"

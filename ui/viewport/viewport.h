@@ -27,6 +27,11 @@ class SceneEditor;
 class SessionController;
 class ViewportOverlay;
 
+/// The widget property the viewport sets while it takes every key (a drag, gesture or armed
+/// box select): the window's command shortcuts (shell/command_shortcut_filter.h) leave those
+/// keys alone.
+inline constexpr char kTakesAllKeys[] = "raystudioTakesAllKeys";
+
 /// Blender's numpad views (1, 3, 7; with Ctrl the opposite side).
 enum class AxisView { Front, Back, Right, Left, Top, Bottom };
 
