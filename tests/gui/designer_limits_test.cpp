@@ -118,7 +118,7 @@ void DesignerLimitsTest::outOfMemory_IsReported_AndDocumentKept() {
         60000);
     setrlimit(RLIMIT_AS, &old);
     int sessionWidth = 0;
-    window_->session()->session().withFrame(
+    renderSession(*window_).withFrame(
         [&](const DeepFrame& f, const auto&) { sessionWidth = f.width(); });
     QVERIFY2(reported,
              qPrintable(errors_.join('\n') + " | " + window_->statusBar()->currentMessage() +

@@ -365,7 +365,7 @@ void DesignerTest::preferences_ChangeSessionPolicy() {
     shadows->setCurrentIndex(int(MovingShadows::Off));
     resolution->setCurrentIndex(int(MovingResolution::Quarter));
     whole->setChecked(false);
-    const InteractionPolicy p = window_->session()->session().policy();
+    const InteractionPolicy p = renderSession(*window_).policy();
     QCOMPARE(p.shadows, MovingShadows::Off);
     QCOMPARE(p.resolution, MovingResolution::Quarter);
     QVERIFY(!p.wholeFramesWhileMoving);
@@ -375,14 +375,14 @@ void DesignerTest::preferences_ChangeSessionPolicy() {
 }
 
 void DesignerTest::preferences_RayEngine_RebuildsTheViewportWithIt() {
-    QCOMPARE(window_->session()->session().snapshot()->engineKind(), EngineKind::Embree);
+    QCOMPARE(renderSession(*window_).snapshot()->engineKind(), EngineKind::Embree);
     PreferencesDialog* dialog = window_->showPreferences();
     auto* engine = dialog->findChild<QComboBox*>(QStringLiteral("engine"));
     QVERIFY(engine);
     engine->setCurrentIndex(int(EngineKind::Builtin));
     window_->session()->flushUpdate();
-    QVERIFY(window_->session()->session().waitUntilComplete(std::chrono::seconds(60)));
-    QCOMPARE(window_->session()->session().snapshot()->engineKind(), EngineKind::Builtin);
+    QVERIFY(renderSession(*window_).waitUntilComplete(std::chrono::seconds(60)));
+    QCOMPARE(renderSession(*window_).snapshot()->engineKind(), EngineKind::Builtin);
     QCOMPARE(loadPreferences().engine, EngineKind::Builtin);  // Stored for the next start.
     auto* renderThreads = dialog->findChild<QSpinBox*>(QStringLiteral("renderThreads"));
     QVERIFY(renderThreads);
@@ -391,8 +391,8 @@ void DesignerTest::preferences_RayEngine_RebuildsTheViewportWithIt() {
     dialog->close();
     window_->applyPreferences(Preferences{});
     window_->session()->flushUpdate();
-    QVERIFY(window_->session()->session().waitUntilComplete(std::chrono::seconds(60)));
-    QCOMPARE(window_->session()->session().snapshot()->engineKind(), EngineKind::Embree);
+    QVERIFY(renderSession(*window_).waitUntilComplete(std::chrono::seconds(60)));
+    QCOMPARE(renderSession(*window_).snapshot()->engineKind(), EngineKind::Embree);
 }
 
 void DesignerTest::aboutDialog_NamesVersionEngineAndLibraryLicences() {

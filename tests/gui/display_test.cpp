@@ -10,6 +10,7 @@
 #include <future>
 #include <thread>
 
+#include "adapter/frame_handover.h"
 #include "display/raster_frame_view.h"
 #include "document/scene_edits.h"
 #include "gui_test_support.h"
@@ -163,7 +164,7 @@ void DisplayTest::incrementalHandover_EqualsFullCopyAfterThePass() {
     QVERIFY(settle(w));
 
     const auto shown = w.viewport()->frame();
-    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    const DisplayFrame full = wholeFrame(renderSession(w));
     QCOMPARE(shown->width, full.width);
     QCOMPARE(shown->height, full.height);
     QVERIFY(sameBits(shown->color, full.color));
@@ -187,7 +188,7 @@ void DisplayTest::debugBuffers_HandedOverOnlyWhileShown_ThenIncrementallyEqual()
     // Switching to a view that shows them copies them at once, whole.
     v->setViewMode(ViewMode::Cost);
     {
-        const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+        const DisplayFrame full = wholeFrame(renderSession(w));
         QVERIFY(sameBits(v->frame()->normal, full.normal));
         QVERIFY(sameBits(v->frame()->cost, full.cost));
     }
@@ -196,7 +197,7 @@ void DisplayTest::debugBuffers_HandedOverOnlyWhileShown_ThenIncrementallyEqual()
     QVERIFY(settle(w));
     {
         const auto shown = v->frame();
-        const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+        const DisplayFrame full = wholeFrame(renderSession(w));
         QVERIFY(sameBits(shown->color, full.color));
         QVERIFY(sameBits(shown->normal, full.normal));
         QVERIFY(sameBits(shown->cost, full.cost));
@@ -211,7 +212,7 @@ void DisplayTest::debugBuffers_HandedOverOnlyWhileShown_ThenIncrementallyEqual()
     QVERIFY(settle(w));
     QVERIFY(v->frame()->normal.empty());
     QVERIFY(v->frame()->cost.empty());
-    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    const DisplayFrame full = wholeFrame(renderSession(w));
     QVERIFY(sameBits(v->frame()->color, full.color));
     QVERIFY(sameBits(v->frame()->depth, full.depth));
 }
@@ -234,7 +235,7 @@ void DisplayTest::rasterView_RepaintsOnlyChangedRectangles_ScreenEqualsTheFullIm
     }
     w.session()->endInteraction();
     QVERIFY(settle(w));
-    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    const DisplayFrame full = wholeFrame(renderSession(w));
     const QPoint origin = w.viewport()->mapTo(&w, QPoint(0, 0));
     auto underGlyph = [&](const QPoint& p) {
         for (const LightGlyph& g : w.viewport()->lightGlyphs())
@@ -284,10 +285,10 @@ void DisplayTest::rasterView_QuarterResolutionOrbit_ShowsEachPixelMappedAlone() 
     MainWindow& w = *window_;
     w.viewport()->setGizmoVisible(false);
     w.editor()->setSelection(std::vector<ObjectId>{});  // No outline: colours alone.
-    InteractionPolicy policy = w.session()->session().policy();
+    InteractionPolicy policy = renderSession(w).policy();
     policy.resolution = MovingResolution::Quarter;
     policy.governorTargetMs = 0.0;  // Exactly the settings: every orbit pass is quarter.
-    w.session()->session().setPolicy(policy);
+    renderSession(w).setPolicy(policy);
     QVERIFY(settle(w));
     w.session()->beginInteraction(kNoObject);
     SceneDocument doc = w.editor()->document();
@@ -295,11 +296,11 @@ void DisplayTest::rasterView_QuarterResolutionOrbit_ShowsEachPixelMappedAlone() 
     w.editor()->edit(QStringLiteral("Orbit"), std::move(doc), MergeKind::Drag,
                      QStringLiteral("camera"));
     w.session()->flushUpdate();
-    const uint64_t generation = w.session()->session().generation();
-    QVERIFY(w.session()->session().waitForPass(generation, std::chrono::seconds(60)));
+    const uint64_t generation = renderSession(w).generation();
+    QVERIFY(renderSession(w).waitForPass(generation, std::chrono::seconds(60)));
     // The pass's end is handed over by the event loop; the session waits, still moving.
     DisplayFrame session;
-    QTRY_VERIFY((session = DisplayFrame::fromSession(w.session()->session()),
+    QTRY_VERIFY((session = wholeFrame(renderSession(w)),
                  w.viewport()->frame()->generation >= generation &&
                      sameBits(w.viewport()->frame()->color, session.color)));
     const DisplayFrame& shown = *w.viewport()->frame();
@@ -322,7 +323,7 @@ void DisplayTest::rasterView_QuarterResolutionOrbit_ShowsEachPixelMappedAlone() 
     w.session()->endInteraction();
     QVERIFY(settle(w));
     // And the full-resolution frame after it.
-    QCOMPARE(shownImage(), eachPixelMappedAlone(DisplayFrame::fromSession(w.session()->session())));
+    QCOMPARE(shownImage(), eachPixelMappedAlone(wholeFrame(renderSession(w))));
 }
 
 void DisplayTest::toneMapRect_CopiesOnlyRowsEqualToTheOneAbove() {
@@ -363,14 +364,14 @@ void DisplayTest::handover_WhileTheFrameLockIsHeld_ReturnsAtOnce_AndCatchesUpAft
     w.editor()->edit(QStringLiteral("Move object"), std::move(doc));
     w.session()->flushUpdate();
     // The edit's tiles are committed; the viewport has not looked (no event loop ran).
-    QVERIFY(w.session()->session().waitUntilComplete(std::chrono::seconds(60)));
+    QVERIFY(renderSession(w).waitUntilComplete(std::chrono::seconds(60)));
     const uint64_t shownSerial = w.viewport()->frame()->serial;
 
     // Another thread holds the frame lock (as an edit's dirty marking does). It lets go after
     // 20 s on its own, so a hand-over that waited would return, late, with a new frame.
     std::promise<void> held, release;
     std::thread holder([&] {
-        w.session()->session().withFrame([&](const DeepFrame&, const auto&) {
+        renderSession(w).withFrame([&](const DeepFrame&, const auto&) {
             held.set_value();
             release.get_future().wait_for(std::chrono::seconds(20));
         });
@@ -385,7 +386,7 @@ void DisplayTest::handover_WhileTheFrameLockIsHeld_ReturnsAtOnce_AndCatchesUpAft
     QCOMPARE(w.session()->handoverStats().busy, busy + 1);
 
     // It comes back by itself: the viewport ends with the session's frame.
-    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    const DisplayFrame full = wholeFrame(renderSession(w));
     QTRY_VERIFY(w.viewport()->frame()->serial != shownSerial &&
                 sameBits(w.viewport()->frame()->color, full.color) &&
                 sameBits(w.viewport()->frame()->id, full.id));
@@ -434,7 +435,7 @@ void DisplayTest::exposureEdit_ChangesShownImageAndExport_UndoRestoresThem() {
                                     }),
              0);
     // The session's pixels shaded with the document's exposure.
-    DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    DisplayFrame full = wholeFrame(renderSession(w));
     full.exposure = w.editor()->document().render.exposure;
     QCOMPARE(brighter,
              viewportImage(full, ViewMode::Color, {}).convertToFormat(QImage::Format_RGB888));
@@ -507,7 +508,7 @@ static bool moveBallAtAnHoursPace(MainWindow& w) {
     moveBy(doc, idOf(w, "blue ball"), Vec3(0.3f, 0.0f, 0.0f));
     w.editor()->edit(QStringLiteral("Move object"), std::move(doc));
     w.session()->flushUpdate();
-    return w.session()->session().waitUntilComplete(std::chrono::seconds(60));
+    return renderSession(w).waitUntilComplete(std::chrono::seconds(60));
 }
 
 void DisplayTest::stillFrame_TilesWaitForThePace_ThePassEndShowsThemAtOnce() {
@@ -522,7 +523,7 @@ void DisplayTest::stillFrame_TilesWaitForThePace_ThePassEndShowsThemAtOnce() {
     QCOMPARE(v->frame()->serial, shownSerial);
     // The queued end of the pass is shown at once, long before the hour; it ends equal to
     // the session's frame, and the raster view to shading all of it.
-    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    const DisplayFrame full = wholeFrame(renderSession(w));
     QTRY_VERIFY(v->frame()->serial != shownSerial && sameBits(v->frame()->color, full.color));
     QVERIFY(sameBits(v->frame()->id, full.id));
     QVERIFY(sameBits(v->frame()->depth, full.depth));
@@ -542,7 +543,7 @@ void DisplayTest::interaction_EveryHandoverTakenAtOnce() {
     QCOMPARE(v->frame()->serial, shownSerial);
     Q_EMIT w.session()->frameUpdated();
     QVERIFY(v->frame()->serial != shownSerial);
-    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    const DisplayFrame full = wholeFrame(renderSession(w));
     QVERIFY(sameBits(v->frame()->color, full.color));
     QTest::mouseRelease(v, Qt::RightButton, {}, centre);
     QVERIFY(settle(w));
@@ -579,7 +580,7 @@ void DisplayTest::orbit_OnlyWholeFramesShownWhileMoving() {
     QCOMPARE(torn, 0);
     QVERIFY(whole > 0);
     QVERIFY(settle(w));
-    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    const DisplayFrame full = wholeFrame(renderSession(w));
     QVERIFY(sameBits(w.viewport()->frame()->color, full.color));
 }
 

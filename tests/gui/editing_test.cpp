@@ -138,7 +138,7 @@ void EditingTest::orbitPanDolly_MoveTheViewOnly_DocumentUnmodifiedAndUndoEmpty()
 
     // The session renders through the view camera.
     QVERIFY(settle(*window_));
-    const auto snapshot = window_->session()->session().snapshot();
+    const auto snapshot = renderSession(*window_).snapshot();
     QVERIFY(near(snapshot->camera().origin(), v->viewCamera().position));
 }
 
@@ -344,7 +344,7 @@ void EditingTest::scale2Enter_DoublesTheScale_InPlace() {
     QCOMPARE(window_->editor()->undoStack()->count(), 1);
     // The session sees the bigger ball.
     QVERIFY(settle(*window_));
-    const Aabb b = window_->session()->session().snapshot()->objectBounds(id);
+    const Aabb b = renderSession(*window_).snapshot()->objectBounds(id);
     QVERIFY(std::abs(b.extent().x - 4.0f) < 1e-3f);
 }
 

@@ -6,6 +6,7 @@
 #include <QtTest>
 #include <algorithm>
 
+#include "adapter/frame_handover.h"
 #include "display/display_frame.h"
 #include "session/frame/deep_frame.h"
 
@@ -55,7 +56,7 @@ void FrameStorageTest::adopt_ANewSizeIsCopiedIntoTheStorageMadeBeforeIt() {
     // 340 ms at 1280x976): storage written beforehand on another thread takes the copy.
     DisplayFrame d;
     const DeepFrame small = numberedFrame(4, 3, 0.0f);
-    d.refresh(small, {}, false);
+    refreshFrame(d, small, {}, false);
     compareBuffers(d, small);
     const uint64_t serial = d.serial;
 
@@ -69,7 +70,7 @@ void FrameStorageTest::adopt_ANewSizeIsCopiedIntoTheStorageMadeBeforeIt() {
     QCOMPARE(d.serial, serial);
 
     const DeepFrame large = numberedFrame(64, 48, 100.0f);
-    d.refresh(large, {}, false);
+    refreshFrame(d, large, {}, false);
     compareBuffers(d, large);
     QVERIFY(d.serial > serial);
     QCOMPARE(d.color.data(), color);

@@ -8,6 +8,7 @@
 #include <QtTest>
 #include <cmath>
 
+#include "adapter/frame_handover.h"
 #include "display/display_choice.h"
 #include "display/gl_frame_view.h"
 #include "document/scene_edits.h"
@@ -245,7 +246,7 @@ void GlViewportTest::openGLViewport_AfterEditsUploadedByRectangles_ShowsTheSessi
     w.session()->endInteraction();
     QVERIFY(settle(w));
     QTest::qWait(50);
-    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    const DisplayFrame full = wholeFrame(renderSession(w));
     QCOMPARE(differingPixels(w, full, blue), 0);
     // Bit for bit what uploading the whole frame at once draws.
     auto* view = dynamic_cast<GlFrameView*>(w.viewport()->frameView());
@@ -375,7 +376,7 @@ void GlViewportTest::automaticDisplay_PicksSoftwareOnLlvmpipe_OpenGLOnAGpu() {
         QCOMPARE(w.viewport()->frameView()->usesOpenGL(), kind == DisplayKind::OpenGL);
         QVERIFY(settle(w));
         QTest::qWait(50);
-        const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+        const DisplayFrame full = wholeFrame(renderSession(w));
         QCOMPARE(differingPixels(w, full, kNoObject), 0);
     }
     QCOMPARE(loadPreferences().display, DisplayKind::OpenGL);  // Remembered.

@@ -13,11 +13,26 @@
 #include "adapter/session_controller.h"
 #include "display/display_frame.h"
 #include "document/scene_editor.h"
+#include "session/render_session.h"
 #include "shell/main_window.h"
 #include "viewport/view_projection.h"
 #include "viewport/viewport.h"
 
+namespace rs::ui {
+
+/// The controller hands the rest of the designer a SessionHandle; the tests look behind it.
+struct SessionControllerTestAccess {
+    static RenderSession& session(SessionController& c) { return *c.session_; }
+};
+
+}  // namespace rs::ui
+
 namespace rs::ui::test {
+
+/// The window's whole render session (its frame, its waits), which only the adapter holds.
+inline RenderSession& renderSession(MainWindow& w) {
+    return SessionControllerTestAccess::session(*w.session());
+}
 
 /// Keeps tests away from the user's settings.
 inline void isolateSettings() {
@@ -39,7 +54,7 @@ inline QString scenePath(const char* name) {
 /// lets the viewport copy it.
 inline bool settle(MainWindow& w) {
     w.session()->flushUpdate();
-    const bool ok = w.session()->session().waitUntilComplete(std::chrono::seconds(60));
+    const bool ok = renderSession(w).waitUntilComplete(std::chrono::seconds(60));
     w.viewport()->refresh();
     return ok;
 }

@@ -5,6 +5,7 @@
 #include <QtTest>
 #include <cmath>
 
+#include "adapter/frame_handover.h"
 #include "display/raster_frame_view.h"
 #include "document/scene_edits.h"
 #include "gui_test_support.h"
@@ -51,7 +52,7 @@ int OverlayTrailsTest::stalePixels(const std::vector<ObjectId>& selected) {
     MainWindow& w = *window_;
     if (!settle(w)) return -2;
     QTest::qWait(80);  // The last repaint and the backing store's flush.
-    const DisplayFrame full = DisplayFrame::fromSession(w.session()->session());
+    const DisplayFrame full = wholeFrame(renderSession(w));
     const QImage expected =
         viewportImage(full, ViewMode::Color, selected).convertToFormat(QImage::Format_RGB888);
     const QImage screen =

@@ -107,8 +107,8 @@ void SessionThreadsTest::editsWhilePassesRun_EndInTheFullRenderOfTheLastDocument
     // The session's frame is the full render of the snapshot it shows (view camera and all),
     // and that snapshot carries the last document's material.
     bool compared = false;
-    window->session()->session().withFrame([&](const DeepFrame& f,
-                                               const std::shared_ptr<const CompiledScene>& scene) {
+    renderSession(*window).withFrame([&](const DeepFrame& f,
+                                         const std::shared_ptr<const CompiledScene>& scene) {
         QVERIFY(scene);
         QVERIFY(scene->materials().at(1).color == Color(0.2f, 0.7f, 0.3f));  // Slot 0: the default.
         const RenderResult full = renderImage(*scene);

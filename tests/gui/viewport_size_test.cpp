@@ -60,7 +60,7 @@ void ViewportSizeTest::resizingTheViewport_ChangesTheTracedSize_NotTheOutputSize
     QCOMPARE(QSize(v->frame()->width, v->frame()->height), QSize(333, 187));
     // The session's own frame, not just the copy shown.
     int w = 0, h = 0;
-    window_->session()->session().withFrame([&](const DeepFrame& f, const auto&) {
+    renderSession(*window_).withFrame([&](const DeepFrame& f, const auto&) {
         w = f.width();
         h = f.height();
     });

@@ -5,6 +5,9 @@
 #include <chrono>
 #include <utility>
 
+#include "adapter/frame_handover.h"
+#include "session/render_session.h"
+
 namespace rs::ui {
 
 namespace {
@@ -14,6 +17,31 @@ constexpr std::size_t kMaxListedTiles = 16384;
 /// for microseconds, an edit's dirty marking for a few milliseconds.
 constexpr int kBusyRetryMs = 2;
 }  // namespace
+
+void SessionHandle::setObserver(SessionObserver* observer) {
+    session_.setObserver(observer);
+}
+void SessionHandle::setThreads(int threads) {
+    session_.setThreads(threads);
+}
+void SessionHandle::setPolicy(const InteractionPolicy& policy) {
+    session_.setPolicy(policy);
+}
+InteractionPolicy SessionHandle::policy() const {
+    return session_.policy();
+}
+void SessionHandle::setEngine(EngineKind engine) {
+    session_.setEngine(engine);
+}
+void SessionHandle::setFocus(float px, float py) {
+    session_.setFocus(px, py);
+}
+uint64_t SessionHandle::generation() const {
+    return session_.generation();
+}
+std::shared_ptr<const CompiledScene> SessionHandle::snapshot() const {
+    return session_.snapshot();
+}
 
 SessionController::SessionController(int threads, QObject* parent)
     : QObject(parent), session_(std::make_unique<RenderSession>(threads)), mailbox_(this) {
@@ -130,8 +158,8 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
         // Edits clear the previous edit's re-traced overlay outside any tile: the flags follow
         // whole when the generation moved (a byte a pixel).
         const uint64_t generation = session_->generation();
-        d.refresh(f, mergeRects(std::move(tiles), QSize(f.width(), f.height())),
-                  generation != frameSessionGeneration_);
+        refreshFrame(d, f, mergeRects(std::move(tiles), QSize(f.width(), f.height())),
+                     generation != frameSessionGeneration_);
         frameSessionGeneration_ = generation;
         handover_.copyMs +=
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - locked)

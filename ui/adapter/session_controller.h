@@ -12,14 +12,43 @@
 #include <optional>
 #include <vector>
 
+#include "accel/ray_engine.h"
+#include "adapter/session_terms.h"
 #include "display/display_frame.h"
 #include "display/frame_storage.h"
 #include "jobs/gui_mailbox.h"
-#include "session/render_session.h"
 
 Q_DECLARE_METATYPE(rs::PassInfo)
 
+namespace rs {
+class CompiledScene;
+class RenderSession;
+}  // namespace rs
+
 namespace rs::ui {
+
+/// What the rooms outside the adapter may ask of the render session: its settings, the
+/// snapshot it traces, where to trace first and which edit it has reached. The session itself
+/// (its frame, its waits, its updates) stays inside the adapter.
+class SessionHandle {
+public:
+    explicit SessionHandle(RenderSession& session) : session_(session) {}
+
+    void setObserver(SessionObserver* observer);
+    void setThreads(int threads);
+    void setPolicy(const InteractionPolicy& policy);
+    InteractionPolicy policy() const;
+    void setEngine(EngineKind engine);
+    /// Traces around frame pixel (px, py) first.
+    void setFocus(float px, float py);
+    /// The generation of the document posted last.
+    uint64_t generation() const;
+    /// The compiled scene the session traces (null before the first update).
+    std::shared_ptr<const CompiledScene> snapshot() const;
+
+private:
+    RenderSession& session_;
+};
 
 /// Owns the session; lives on the GUI thread; never blocks it on rendering.
 class SessionController : public QObject, public SessionObserver {
@@ -28,8 +57,8 @@ public:
     explicit SessionController(int threads, QObject* parent = nullptr);
     ~SessionController() override;
 
-    /// The wrapped session (for withFrame, stats, policy).
-    RenderSession& session() { return *session_; }
+    /// The session's settings and snapshot (the session itself stays here).
+    SessionHandle& session() { return handle_; }
 
     /// Posts `doc` to the session. The first request of an event-loop pass goes at once;
     /// further ones in the same pass (mouse events queued while the thread was busy) collapse
@@ -106,7 +135,10 @@ private:
     /// Tiles were committed: frameUpdated now, or when kMinFrameIntervalMs has passed.
     void scheduleFrame();
 
+    friend struct SessionControllerTestAccess;  ///< The GUI tests reach the whole session.
+
     std::unique_ptr<RenderSession> session_;
+    SessionHandle handle_{*session_};
     GuiMailbox mailbox_;  ///< Worker callbacks to the GUI thread.
     std::atomic<bool> framePending_{false};
     QTimer repaintTimer_;

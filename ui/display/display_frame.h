@@ -10,11 +10,6 @@
 #include "display/frame_storage.h"
 #include "scene/document.h"
 
-namespace rs {
-class RenderSession;
-class DeepFrame;
-}  // namespace rs
-
 namespace rs::ui {
 
 /// What the viewport shows of the deep frame.
@@ -39,8 +34,8 @@ struct DisplayFrame : FrameBuffers {
     float exposure = 0.0f;
     uint64_t generation = 0;  ///< Newest edit whose traced pixels this frame holds.
     uint64_t serial = 0;      ///< Bumped whenever the content changes.
-    /// Whether refresh copies `normal` and `cost`; turning it on makes the next refresh copy
-    /// them whole.
+    /// Whether a refresh (adapter/frame_handover.h) copies `normal` and `cost`; turning it on
+    /// makes the next refresh copy them whole.
     bool debugBuffers = false;
 
     /// Pixels a refresh changed, tagged with the serial it gave the frame.
@@ -57,15 +52,6 @@ struct DisplayFrame : FrameBuffers {
         return x >= 0 && y >= 0 && x < width && y < height ? id[std::size_t(y) * width + x]
                                                            : kNoObject;
     }
-    /// Copies the session's current frame (the whole frame under its lock: tests compare with
-    /// it). Tone map and exposure are the snapshot's, which edits that trace nothing may keep.
-    static DisplayFrame fromSession(const RenderSession& session);
-
-    /// Copies `rects` of `f` into this frame (all of it when the sizes differ, or normals and
-    /// costs are wanted and missing) and records them as damage of a new serial; `flags` (1 byte a
-    /// pixel, changed by edits outside any tile) is copied whole when `allFlags`. Call with the
-    /// frame lock held.
-    void refresh(const DeepFrame& f, const std::vector<QRect>& rects, bool allFlags);
     /// The rectangles that changed after `seen`, or false when that serial is too old to say.
     bool changedSince(uint64_t seen, std::vector<QRect>& rects) const;
 };

@@ -5,8 +5,8 @@
 #include <QDialog>
 
 #include "accel/ray_engine.h"
+#include "adapter/session_terms.h"
 #include "display/display_choice.h"
-#include "session/interaction_policy.h"
 #include "texture/texture_store.h"
 
 namespace rs::ui {
