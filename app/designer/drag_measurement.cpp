@@ -87,7 +87,6 @@ private:
     bool waitViewSettled();
     QPoint pathPoint(QPoint start, int i) const;
     void post(int i, QPoint start);
-    QJsonObject analyse(Clock::time_point begin, Clock::time_point end) const;
     struct FullFrames {
         double passMs = 0.0;    ///< The session's passes of the frame (median).
         double shownMs = 0.0;   ///< Posting the edit to the complete frame painted (median).
@@ -95,6 +94,50 @@ private:
         int rounds = 0;
     };
     bool measureFullFrames(FullFrames& out);
+
+    // run's steps, in order.
+    /// Records presented frames, posted documents, whole hand-overs, passes and completions.
+    void connectRecorders();
+    /// Shows the window and opens the scene until its first frame is final and shown; 0, or
+    /// the exit status.
+    int openScene();
+    /// What a repaint costs with the session idle.
+    void measureIdleRepaint();
+    /// The widget point at the centre of the object the drag moves; false (said) if none.
+    bool findObjectCentre(const DisplayFrame& frame, QPoint& start) const;
+    /// Posts the press, the moves and the release at 60 Hz and waits for the final frame.
+    bool driveGesture(QPoint start);
+    /// The gesture's figures (analyse's), then the report's other facts and the text.
+    QJsonObject analyse(Clock::time_point begin, Clock::time_point end) const;
+    void addRunFacts(QJsonObject& o, const DisplayFrame& frame) const;
+    void printReport(const QJsonObject& o) const;
+
+    // analyse's parts.
+    struct Shown {  ///< Frames presented between two times.
+        int frames = 0, generations = 0, wholeFrames = 0;
+        std::vector<double> paint, compose;
+    };
+    struct Latencies {  ///< From each edit's input to the first frame, and whole frame, showing it.
+        std::vector<double> toShown, toWhole;
+        int neverShown = 0;
+    };
+    struct Passes {  ///< Interactive passes between two times.
+        std::vector<double> ms, levels;
+        int cancelled = 0;
+    };
+    bool isWhole(const Present& p) const;
+    Shown shownBetween(Clock::time_point begin, Clock::time_point end) const;
+    Latencies editLatencies() const;
+    Passes interactivePasses(Clock::time_point begin, Clock::time_point end) const;
+
+    /// What run gathers besides the gesture's events, for the report.
+    struct Facts {
+        Clock::time_point openStart, openShown, finalShown;
+        double openPassMs = 0.0;
+        FullFrames full;
+        std::vector<double> idlePaint, idleCompose;
+        SessionController::HandoverStats handover0;
+    };
 
     Request request_;
     MainWindow window_;
@@ -105,6 +148,8 @@ private:
     uint64_t completed_ = 0;
     std::vector<Input> inputs_;
     std::vector<double> probeGaps_;
+    FrameView* view_ = nullptr;
+    Facts facts_;
 };
 
 bool Measurement::waitUntil(const std::function<bool()>& done, int timeoutMs) {
@@ -240,30 +285,32 @@ bool Measurement::measureFullFrames(FullFrames& out) {
     return true;
 }
 
-QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end) const {
-    const double seconds = msBetween(begin, end) / 1000.0;
-    int frames = 0, generations = 0, wholeFrames = 0;
+bool Measurement::isWhole(const Present& p) const {
+    return std::binary_search(wholeSerials_.begin(), wholeSerials_.end(), p.frame.serial);
+}
+
+Measurement::Shown Measurement::shownBetween(Clock::time_point begin, Clock::time_point end) const {
+    Shown s;
     uint64_t lastSerial = 0, lastGeneration = 0;
-    std::vector<double> paint, compose;
-    const auto isWhole = [&](const Present& p) {
-        return std::binary_search(wholeSerials_.begin(), wholeSerials_.end(), p.frame.serial);
-    };
     for (const Present& p : presents_) {
         if (p.time > end) break;
         if (p.time >= begin) {
-            paint.push_back(p.frame.paintMs);
-            compose.push_back(p.frame.composeMs);
-            frames += p.frame.serial != lastSerial;
+            s.paint.push_back(p.frame.paintMs);
+            s.compose.push_back(p.frame.composeMs);
+            s.frames += p.frame.serial != lastSerial;
             // What the user really gets: a new frame none of whose pixels is left from an
             // older camera or position (no pass cut short in it).
-            wholeFrames += p.frame.serial != lastSerial && isWhole(p);
-            generations += p.frame.generation > lastGeneration;
+            s.wholeFrames += p.frame.serial != lastSerial && isWhole(p);
+            s.generations += p.frame.generation > lastGeneration;
         }
         lastSerial = p.frame.serial;
         lastGeneration = std::max(lastGeneration, p.frame.generation);
     }
-    std::vector<double> latency, wholeLatency;
-    int neverShown = 0;
+    return s;
+}
+
+Measurement::Latencies Measurement::editLatencies() const {
+    Latencies l;
     for (std::size_t i = 1; i < inputs_.size(); ++i) {
         if (inputs_[i].request <= inputs_[i - 1].request) continue;  // No edit.
         const auto post = std::find_if(posted_.begin(), posted_.end(), [&](const auto& p) {
@@ -276,52 +323,63 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
                       return p.time >= inputs_[i].handled && p.frame.generation >= post->second;
                   });
         if (shown == presents_.end())
-            ++neverShown;
+            ++l.neverShown;
         else
-            latency.push_back(msBetween(inputs_[i].due, shown->time));
+            l.toShown.push_back(msBetween(inputs_[i].due, shown->time));
         // The same to the first whole frame that shows the edit (never: not counted).
         const auto whole = std::find_if(shown, presents_.end(), [&](const Present& p) {
             return p.frame.generation >= post->second && isWhole(p);
         });
-        if (whole != presents_.end())
-            wholeLatency.push_back(msBetween(inputs_[i].due, whole->time));
+        if (whole != presents_.end()) l.toWhole.push_back(msBetween(inputs_[i].due, whole->time));
     }
+    return l;
+}
+
+Measurement::Passes Measurement::interactivePasses(Clock::time_point begin,
+                                                   Clock::time_point end) const {
+    Passes s;
+    for (const auto& [t, info] : passes_) {
+        if (t < begin || t > end || info.kind != PassKind::Interactive) continue;
+        s.levels.push_back(info.governorLevel);
+        if (info.cancelled)
+            ++s.cancelled;
+        else
+            s.ms.push_back(info.ms);
+    }
+    return s;
+}
+
+QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end) const {
+    const double seconds = msBetween(begin, end) / 1000.0;
+    const Shown shown = shownBetween(begin, end);
+    const Latencies latency = editLatencies();
     std::vector<double> handling;
     for (const Input& in : inputs_) handling.push_back(msBetween(in.dispatched, in.handled));
     // Which event took longest: the press (selection, panels) is not what a move costs.
     const auto slowest = std::max_element(handling.begin(), handling.end());
     const int slowestAt = slowest == handling.end() ? -1 : int(slowest - handling.begin());
-    std::vector<double> passMs, levels;
-    int cancelled = 0;
-    for (const auto& [t, info] : passes_) {
-        if (t < begin || t > end || info.kind != PassKind::Interactive) continue;
-        levels.push_back(info.governorLevel);
-        if (info.cancelled)
-            ++cancelled;
-        else
-            passMs.push_back(info.ms);
-    }
+    const Passes passes = interactivePasses(begin, end);
     QJsonObject o;
     o[QStringLiteral("seconds")] = seconds;
-    o[QStringLiteral("frames_per_s")] = frames / seconds;
-    o[QStringLiteral("generations_per_s")] = generations / seconds;
-    o[QStringLiteral("whole_frames_per_s")] = wholeFrames / seconds;
-    o[QStringLiteral("whole_latency_median_ms")] = median(wholeLatency);
-    o[QStringLiteral("latency_median_ms")] = median(latency);
-    o[QStringLiteral("latency_p90_ms")] = quantile(latency, 0.9);
-    o[QStringLiteral("edits")] = int(latency.size()) + neverShown;
-    o[QStringLiteral("edits_never_shown")] = neverShown;
-    o[QStringLiteral("interactive_pass_median_ms")] = median(passMs);
-    o[QStringLiteral("interactive_passes")] = int(passMs.size());
-    o[QStringLiteral("interactive_passes_cancelled")] = cancelled;
-    o[QStringLiteral("governor_level_median")] = median(levels);
-    o[QStringLiteral("governor_level_max")] = quantile(levels, 1.0);
+    o[QStringLiteral("frames_per_s")] = shown.frames / seconds;
+    o[QStringLiteral("generations_per_s")] = shown.generations / seconds;
+    o[QStringLiteral("whole_frames_per_s")] = shown.wholeFrames / seconds;
+    o[QStringLiteral("whole_latency_median_ms")] = median(latency.toWhole);
+    o[QStringLiteral("latency_median_ms")] = median(latency.toShown);
+    o[QStringLiteral("latency_p90_ms")] = quantile(latency.toShown, 0.9);
+    o[QStringLiteral("edits")] = int(latency.toShown.size()) + latency.neverShown;
+    o[QStringLiteral("edits_never_shown")] = latency.neverShown;
+    o[QStringLiteral("interactive_pass_median_ms")] = median(passes.ms);
+    o[QStringLiteral("interactive_passes")] = int(passes.ms.size());
+    o[QStringLiteral("interactive_passes_cancelled")] = passes.cancelled;
+    o[QStringLiteral("governor_level_median")] = median(passes.levels);
+    o[QStringLiteral("governor_level_max")] = quantile(passes.levels, 1.0);
     o[QStringLiteral("input_handling_median_ms")] = median(handling);
     o[QStringLiteral("input_handling_max_ms")] = quantile(handling, 1.0);
     o[QStringLiteral("input_handling_max_at")] = slowestAt;
-    o[QStringLiteral("paint_median_ms")] = median(paint);
-    o[QStringLiteral("paint_max_ms")] = quantile(paint, 1.0);
-    o[QStringLiteral("compose_median_ms")] = median(compose);
+    o[QStringLiteral("paint_median_ms")] = median(shown.paint);
+    o[QStringLiteral("paint_max_ms")] = quantile(shown.paint, 1.0);
+    o[QStringLiteral("compose_median_ms")] = median(shown.compose);
     o[QStringLiteral("gui_stall_max_ms")] = std::max(0.0, quantile(probeGaps_, 1.0) - 1.0);
     o[QStringLiteral("gui_stall_p99_ms")] = std::max(0.0, quantile(probeGaps_, 0.99) - 1.0);
     double blocked = 0.0, probed = 0.0;
@@ -330,164 +388,13 @@ QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end)
     return o;
 }
 
-int Measurement::run() {
-    SessionController* controller = window_.session();
-    window_.viewport()->setDisplay(request_.display);
-    FrameView* view = window_.viewport()->frameView();
-    view->setPresentedHandler([this](const PresentedFrame& f) {
-        presents_.push_back({Clock::now(), f});
-    });
-    QObject::connect(controller, &SessionController::documentPosted, &window_,
-                     [this](quint64 r, quint64 g) { posted_.emplace_back(r, g); });
-    QObject::connect(controller, &SessionController::frameHandedOver, &window_,
-                     [this](quint64 serial, bool whole) {
-                         if (whole) wholeSerials_.push_back(serial);
-                     });
-    QObject::connect(controller, &SessionController::passFinished, &window_,
-                     [this](const PassInfo& p) { passes_.emplace_back(Clock::now(), p); });
-    QObject::connect(controller, &SessionController::frameCompleted, &window_,
-                     [this](quint64 g) { completed_ = std::max<uint64_t>(completed_, g); });
-
-    window_.resize(1600, 1000);
-    window_.show();
-    waitUntil([&] { return window_.isVisible() && window_.viewport()->isVisible(); }, 5000);
-    waitUntil([] { return false; }, 300);  // Let the window manager settle the geometry.
-    const auto openStart = Clock::now();
-    if (!window_.openFile(request_.scene)) return 2;
-    controller->flushUpdate();
-    const uint64_t openGeneration = controller->session().generation();
-    Clock::time_point openShown;
-    if (!waitFinalShown(&openShown)) {
-        std::fprintf(stderr, "raystudio: the opened scene never completed\n");
-        return 1;
-    }
-    double openPassMs = 0.0;
-    // The scene's first full pass, right after the open (while the window fills its panels
-    // and caches are cold): reported, but not what the full frame is compared by.
-    for (const auto& [t, p] : passes_)
-        if (p.generation >= openGeneration && !p.cancelled && p.kind == PassKind::Base &&
-            p.tracedPixels == p.totalPixels) {
-            openPassMs = p.ms;
-            break;
-        }
-    if (request_.afterOpen) request_.afterOpen(window_);
-    FullFrames full;
-    if (!measureFullFrames(full)) {
-        std::fprintf(stderr, "raystudio: a full frame never completed\n");
-        return 1;
-    }
-    // What a repaint costs with the session idle, to tell display cost from CPU contention.
-    std::vector<double> idlePaint, idleCompose;
-    for (int k = 0; k < 10; ++k) {
-        const std::size_t seen = presents_.size();
-        window_.viewport()->refresh();
-        window_.viewport()->frameView()->repaintOverlay();  // Nothing new: paint all the same.
-        if (!waitUntil([&] { return presents_.size() > seen; }, 5000)) break;
-        idlePaint.push_back(presents_.back().frame.paintMs);
-        idleCompose.push_back(presents_.back().frame.composeMs);
-    }
-
-    const auto frame = window_.viewport()->frame();
-    QPoint start = window_.viewport()->rect().center();
-    ObjectId id = kNoObject;
-    if (!request_.orbit) {
-        for (const Object& o : window_.editor()->document().objects)
-            if (QString::fromStdString(o.name) == request_.object) id = o.id;
-        long sx = 0, sy = 0, n = 0;
-        for (int y = 0; id != kNoObject && y < frame->height; ++y)
-            for (int x = 0; x < frame->width; ++x)
-                if (frame->idAt(x, y) == id) sx += x, sy += y, ++n;
-        if (n == 0) {
-            std::fprintf(stderr, "raystudio: no visible object named \"%s\"\n",
-                         qPrintable(request_.object));
-            return 2;
-        }
-        start = window_.viewport()->widgetPointOf(int(sx / n), int(sy / n));
-        if (frame->idAt(int(sx / n), int(sy / n)) != id) {
-            std::fprintf(stderr, "raystudio: the centre of \"%s\" shows another object\n",
-                         qPrintable(request_.object));
-            return 2;
-        }
-    }
-
-    const auto handover0 = controller->handoverStats();
-    inputs_.assign(std::size_t(request_.frames) + 2, Input{});
-    const auto t0 = Clock::now() + std::chrono::milliseconds(50);
-    for (std::size_t i = 0; i < inputs_.size(); ++i)
-        inputs_[i].due = t0 + std::chrono::microseconds(int64_t(i * 1000000 / 60));
-    std::size_t next = 0;
-    QTimer driver, probe;
-    driver.setTimerType(Qt::PreciseTimer);
-    driver.setInterval(2);
-    QObject::connect(&driver, &QTimer::timeout, [&] {
-        // Events due while the GUI thread was blocked are posted late but keep their due time,
-        // as a window system would queue them.
-        while (next < inputs_.size() && Clock::now() >= inputs_[next].due) post(int(next++), start);
-    });
-    probe.setTimerType(Qt::PreciseTimer);
-    probe.setInterval(1);
-    auto lastProbe = Clock::now();
-    QObject::connect(&probe, &QTimer::timeout, [&] {
-        const auto now = Clock::now();
-        probeGaps_.push_back(msBetween(lastProbe, now));
-        lastProbe = now;
-    });
-    DispatchRecorder recorder(inputs_);
-    window_.viewport()->installEventFilter(&recorder);
-    driver.start();
-    probe.start();
-    const bool handled = waitUntil([&] { return inputs_.back().handled != Clock::time_point{}; },
-                                   60000 + request_.frames * 100);
-    probe.stop();
-    driver.stop();
-    window_.viewport()->removeEventFilter(&recorder);
-    Clock::time_point finalShown;
-    if (!handled || !waitFinalShown(&finalShown)) {
-        std::fprintf(stderr, "raystudio: the %s did not finish\n",
-                     request_.orbit ? "orbit" : "drag");
-        return 1;
-    }
-
-    QJsonObject o = analyse(inputs_.front().due, inputs_.back().due);
-    const auto& handover = controller->handoverStats();
-    const int handovers = handover.count - handover0.count;
-    o[QStringLiteral("kind")] = request_.orbit ? QStringLiteral("orbit") : QStringLiteral("drag");
-    o[QStringLiteral("scene")] = request_.scene;
-    o[QStringLiteral("object")] = request_.object;
-    o[QStringLiteral("moves")] = request_.frames;
-    o[QStringLiteral("opengl")] = view->usesOpenGL();
-    o[QStringLiteral("viewport")] =
-        QStringLiteral("%1x%2").arg(window_.viewport()->width()).arg(window_.viewport()->height());
-    o[QStringLiteral("frame")] = QStringLiteral("%1x%2").arg(frame->width).arg(frame->height);
-    o[QStringLiteral("handover_mean_ms")] =
-        handovers > 0 ? (handover.totalMs - handover0.totalMs) / handovers : 0.0;
-    o[QStringLiteral("handover_max_ms")] = handover.maxMs;
-    o[QStringLiteral("handover_copy_mean_ms")] =
-        handovers > 0 ? (handover.copyMs - handover0.copyMs) / handovers : 0.0;
-    o[QStringLiteral("handovers")] = handovers;
-    o[QStringLiteral("handovers_busy")] = handover.busy - handover0.busy;
-    o[QStringLiteral("release_to_final_shown_ms")] = msBetween(inputs_.back().due, finalShown);
-    o[QStringLiteral("viewport_full_frame_ms")] = full.passMs;
-    o[QStringLiteral("full_frame_to_shown_ms")] = full.shownMs;
-    o[QStringLiteral("render_image_ms")] = full.renderMs;
-    o[QStringLiteral("full_frame_ratio")] = full.renderMs > 0.0 ? full.passMs / full.renderMs : 0.0;
-    o[QStringLiteral("full_frame_rounds")] = full.rounds;
-    o[QStringLiteral("open_full_frame_ms")] = openPassMs;
-    o[QStringLiteral("open_to_final_shown_ms")] = msBetween(openStart, openShown);
-    o[QStringLiteral("idle_paint_median_ms")] = median(idlePaint);
-    o[QStringLiteral("idle_compose_median_ms")] = median(idleCompose);
-    window_.editor()->undoStack()->setClean();  // No save prompt.
-
-    if (request_.json) {
-        std::printf("%s\n", QJsonDocument(o).toJson(QJsonDocument::Compact).constData());
-        return 0;
-    }
+void Measurement::printReport(const QJsonObject& o) const {
     auto num = [&](const char* key) { return o[QLatin1String(key)].toDouble(); };
     std::printf("%s %s%s: %d moves at 60 Hz, viewport %s (%s), frame %s\n",
                 qPrintable(o[QStringLiteral("kind")].toString()), qPrintable(request_.scene),
                 request_.orbit ? "" : qPrintable(QStringLiteral(" \"%1\"").arg(request_.object)),
                 request_.frames, qPrintable(o[QStringLiteral("viewport")].toString()),
-                view->usesOpenGL() ? "OpenGL" : "raster",
+                view_->usesOpenGL() ? "OpenGL" : "raster",
                 qPrintable(o[QStringLiteral("frame")].toString()));
     std::printf("  frames shown          %6.1f /s distinct, %.1f /s with a newer edit\n",
                 num("frames_per_s"), num("generations_per_s"));
@@ -536,6 +443,183 @@ int Measurement::run() {
         o[QStringLiteral("full_frame_rounds")].toInt(), num("full_frame_to_shown_ms"));
     std::printf("  first frame on open  viewport pass %.1f ms (open to shown %.1f ms)\n",
                 num("open_full_frame_ms"), num("open_to_final_shown_ms"));
+}
+
+void Measurement::connectRecorders() {
+    SessionController* controller = window_.session();
+    window_.viewport()->setDisplay(request_.display);
+    view_ = window_.viewport()->frameView();
+    view_->setPresentedHandler([this](const PresentedFrame& f) {
+        presents_.push_back({Clock::now(), f});
+    });
+    QObject::connect(controller, &SessionController::documentPosted, &window_,
+                     [this](quint64 r, quint64 g) { posted_.emplace_back(r, g); });
+    QObject::connect(controller, &SessionController::frameHandedOver, &window_,
+                     [this](quint64 serial, bool whole) {
+                         if (whole) wholeSerials_.push_back(serial);
+                     });
+    QObject::connect(controller, &SessionController::passFinished, &window_,
+                     [this](const PassInfo& p) { passes_.emplace_back(Clock::now(), p); });
+    QObject::connect(controller, &SessionController::frameCompleted, &window_,
+                     [this](quint64 g) { completed_ = std::max<uint64_t>(completed_, g); });
+}
+
+int Measurement::openScene() {
+    SessionController* controller = window_.session();
+    window_.resize(1600, 1000);
+    window_.show();
+    waitUntil([&] { return window_.isVisible() && window_.viewport()->isVisible(); }, 5000);
+    waitUntil([] { return false; }, 300);  // Let the window manager settle the geometry.
+    facts_.openStart = Clock::now();
+    if (!window_.openFile(request_.scene)) return 2;
+    controller->flushUpdate();
+    const uint64_t openGeneration = controller->session().generation();
+    if (!waitFinalShown(&facts_.openShown)) {
+        std::fprintf(stderr, "raystudio: the opened scene never completed\n");
+        return 1;
+    }
+    // The scene's first full pass, right after the open (while the window fills its panels
+    // and caches are cold): reported, but not what the full frame is compared by.
+    for (const auto& [t, p] : passes_)
+        if (p.generation >= openGeneration && !p.cancelled && p.kind == PassKind::Base &&
+            p.tracedPixels == p.totalPixels) {
+            facts_.openPassMs = p.ms;
+            break;
+        }
+    return 0;
+}
+
+void Measurement::measureIdleRepaint() {
+    for (int k = 0; k < 10; ++k) {
+        const std::size_t seen = presents_.size();
+        window_.viewport()->refresh();
+        window_.viewport()->frameView()->repaintOverlay();  // Nothing new: paint all the same.
+        if (!waitUntil([&] { return presents_.size() > seen; }, 5000)) break;
+        facts_.idlePaint.push_back(presents_.back().frame.paintMs);
+        facts_.idleCompose.push_back(presents_.back().frame.composeMs);
+    }
+}
+
+bool Measurement::findObjectCentre(const DisplayFrame& frame, QPoint& start) const {
+    ObjectId id = kNoObject;
+    for (const Object& o : window_.editor()->document().objects)
+        if (QString::fromStdString(o.name) == request_.object) id = o.id;
+    long sx = 0, sy = 0, n = 0;
+    for (int y = 0; id != kNoObject && y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x)
+            if (frame.idAt(x, y) == id) sx += x, sy += y, ++n;
+    if (n == 0) {
+        std::fprintf(stderr, "raystudio: no visible object named \"%s\"\n",
+                     qPrintable(request_.object));
+        return false;
+    }
+    start = window_.viewport()->widgetPointOf(int(sx / n), int(sy / n));
+    if (frame.idAt(int(sx / n), int(sy / n)) != id) {
+        std::fprintf(stderr, "raystudio: the centre of \"%s\" shows another object\n",
+                     qPrintable(request_.object));
+        return false;
+    }
+    return true;
+}
+
+bool Measurement::driveGesture(QPoint start) {
+    inputs_.assign(std::size_t(request_.frames) + 2, Input{});
+    const auto t0 = Clock::now() + std::chrono::milliseconds(50);
+    for (std::size_t i = 0; i < inputs_.size(); ++i)
+        inputs_[i].due = t0 + std::chrono::microseconds(int64_t(i * 1000000 / 60));
+    std::size_t next = 0;
+    QTimer driver, probe;
+    driver.setTimerType(Qt::PreciseTimer);
+    driver.setInterval(2);
+    QObject::connect(&driver, &QTimer::timeout, [&] {
+        // Events due while the GUI thread was blocked are posted late but keep their due time,
+        // as a window system would queue them.
+        while (next < inputs_.size() && Clock::now() >= inputs_[next].due) post(int(next++), start);
+    });
+    probe.setTimerType(Qt::PreciseTimer);
+    probe.setInterval(1);
+    auto lastProbe = Clock::now();
+    QObject::connect(&probe, &QTimer::timeout, [&] {
+        const auto now = Clock::now();
+        probeGaps_.push_back(msBetween(lastProbe, now));
+        lastProbe = now;
+    });
+    DispatchRecorder recorder(inputs_);
+    window_.viewport()->installEventFilter(&recorder);
+    driver.start();
+    probe.start();
+    const bool handled = waitUntil([&] { return inputs_.back().handled != Clock::time_point{}; },
+                                   60000 + request_.frames * 100);
+    probe.stop();
+    driver.stop();
+    window_.viewport()->removeEventFilter(&recorder);
+    return handled && waitFinalShown(&facts_.finalShown);
+}
+
+void Measurement::addRunFacts(QJsonObject& o, const DisplayFrame& frame) const {
+    const auto& handover = window_.session()->handoverStats();
+    const auto& handover0 = facts_.handover0;
+    const int handovers = handover.count - handover0.count;
+    const FullFrames& full = facts_.full;
+    o[QStringLiteral("kind")] = request_.orbit ? QStringLiteral("orbit") : QStringLiteral("drag");
+    o[QStringLiteral("scene")] = request_.scene;
+    o[QStringLiteral("object")] = request_.object;
+    o[QStringLiteral("moves")] = request_.frames;
+    o[QStringLiteral("opengl")] = view_->usesOpenGL();
+    o[QStringLiteral("viewport")] =
+        QStringLiteral("%1x%2").arg(window_.viewport()->width()).arg(window_.viewport()->height());
+    o[QStringLiteral("frame")] = QStringLiteral("%1x%2").arg(frame.width).arg(frame.height);
+    o[QStringLiteral("handover_mean_ms")] =
+        handovers > 0 ? (handover.totalMs - handover0.totalMs) / handovers : 0.0;
+    o[QStringLiteral("handover_max_ms")] = handover.maxMs;
+    o[QStringLiteral("handover_copy_mean_ms")] =
+        handovers > 0 ? (handover.copyMs - handover0.copyMs) / handovers : 0.0;
+    o[QStringLiteral("handovers")] = handovers;
+    o[QStringLiteral("handovers_busy")] = handover.busy - handover0.busy;
+    o[QStringLiteral("release_to_final_shown_ms")] =
+        msBetween(inputs_.back().due, facts_.finalShown);
+    o[QStringLiteral("viewport_full_frame_ms")] = full.passMs;
+    o[QStringLiteral("full_frame_to_shown_ms")] = full.shownMs;
+    o[QStringLiteral("render_image_ms")] = full.renderMs;
+    o[QStringLiteral("full_frame_ratio")] = full.renderMs > 0.0 ? full.passMs / full.renderMs : 0.0;
+    o[QStringLiteral("full_frame_rounds")] = full.rounds;
+    o[QStringLiteral("open_full_frame_ms")] = facts_.openPassMs;
+    o[QStringLiteral("open_to_final_shown_ms")] = msBetween(facts_.openStart, facts_.openShown);
+    o[QStringLiteral("idle_paint_median_ms")] = median(facts_.idlePaint);
+    o[QStringLiteral("idle_compose_median_ms")] = median(facts_.idleCompose);
+}
+
+int Measurement::run() {
+    connectRecorders();
+    if (const int rc = openScene(); rc != 0) return rc;
+    if (request_.afterOpen) request_.afterOpen(window_);
+    if (!measureFullFrames(facts_.full)) {
+        std::fprintf(stderr, "raystudio: a full frame never completed\n");
+        return 1;
+    }
+    // What a repaint costs with the session idle, to tell display cost from CPU contention.
+    measureIdleRepaint();
+
+    const auto frame = window_.viewport()->frame();
+    QPoint start = window_.viewport()->rect().center();
+    if (!request_.orbit && !findObjectCentre(*frame, start)) return 2;
+
+    facts_.handover0 = window_.session()->handoverStats();
+    if (!driveGesture(start)) {
+        std::fprintf(stderr, "raystudio: the %s did not finish\n",
+                     request_.orbit ? "orbit" : "drag");
+        return 1;
+    }
+
+    QJsonObject o = analyse(inputs_.front().due, inputs_.back().due);
+    addRunFacts(o, *frame);
+    window_.editor()->undoStack()->setClean();  // No save prompt.
+
+    if (request_.json) {
+        std::printf("%s\n", QJsonDocument(o).toJson(QJsonDocument::Compact).constData());
+        return 0;
+    }
+    printReport(o);
     return 0;
 }
 
