@@ -92,9 +92,20 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     : QDialog(parent), prefs_(prefs) {
     setWindowTitle(tr("Preferences"));
     auto* form = new QFormLayout(this);
-    const InteractionPolicy& p = prefs_.policy;
-    auto notify = [this] { Q_EMIT changed(prefs_); };
+    addViewRows(form);
+    addPolicyRows(form);
+    addThreadRows(form);
+    addKeepingRows(form);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::accept);
+    form->addRow(buttons);
+}
 
+void PreferencesDialog::notify() {
+    Q_EMIT changed(prefs_);
+}
+
+void PreferencesDialog::addViewRows(QFormLayout* form) {
     // The viewport traces its own size; the document's render size is Render Image's.
     auto* preview = enumCombo(this, "previewScale", {tr("1 (every pixel)"), tr("1/2"), tr("1/4")},
                               prefs_.previewDivider == 4   ? 2
@@ -119,7 +130,9 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
         notify();
     });
     form->addRow(tr("Display"), display);
+}
 
+void PreferencesDialog::addPolicyRows(QFormLayout* form) {
     // The governor first: while it is on it decides, frame by frame, what the fixed choices
     // below would.
     auto* governor = new QSpinBox(this);
@@ -127,7 +140,7 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
     governor->setRange(0, 240);
     governor->setSuffix(tr(" frames/s"));
     governor->setSpecialValueText(tr("Off"));
-    governor->setValue(governorRate(p.governorTargetMs));
+    governor->setValue(governorRate(prefs_.policy.governorTargetMs));
     connect(governor, &QSpinBox::valueChanged, this, [=, this](int v) {
         prefs_.policy.governorTargetMs = governorTargetMs(v);
         notify();
@@ -151,10 +164,12 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
         ParamEditor editor = makeParamEditor(d, this, [=, this](const ParamValue& v) {
             if (setPolicyParameter(prefs_.policy, key, v).empty()) notify();
         });
-        if (auto v = getPolicyParameter(p, key)) editor.setValue(*v);
+        if (auto v = getPolicyParameter(prefs_.policy, key)) editor.setValue(*v);
         form->addRow(QString::fromStdString(d.label), editor.widget);
     }
+}
 
+void PreferencesDialog::addThreadRows(QFormLayout* form) {
     auto* threads = new QSpinBox(this);
     threads->setObjectName(QStringLiteral("threads"));
     threads->setRange(0, std::max(64, QThread::idealThreadCount()));
@@ -187,6 +202,9 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
         notify();
     });
     form->addRow(tr("Ray engine"), engine);
+}
+
+void PreferencesDialog::addKeepingRows(QFormLayout* form) {
     auto* autosave = new QSpinBox(this);
     autosave->setObjectName(QStringLiteral("autosaveSeconds"));
     autosave->setRange(0, 24 * 3600);
@@ -216,10 +234,6 @@ PreferencesDialog::PreferencesDialog(const Preferences& prefs, QWidget* parent)
         notify();
     });
     form->addRow(tr("Texture cache (MB)"), textureCache);
-
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
-    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::accept);
-    form->addRow(buttons);
 }
 
 }  // namespace rs::ui

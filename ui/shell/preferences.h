@@ -4,6 +4,8 @@
 
 #include <QDialog>
 
+class QFormLayout;
+
 #include "accel/ray_engine.h"
 #include "adapter/session_terms.h"
 #include "display/display_choice.h"
@@ -52,6 +54,13 @@ Q_SIGNALS:
     void changed(const rs::ui::Preferences& prefs);
 
 private:
+    void notify();
+    // The constructor's rows, top to bottom.
+    void addViewRows(QFormLayout* form);     ///< Preview scale, display.
+    void addPolicyRows(QFormLayout* form);   ///< The governor, then the interaction policy.
+    void addThreadRows(QFormLayout* form);   ///< Viewport and Render Image threads, ray engine.
+    void addKeepingRows(QFormLayout* form);  ///< Autosave, the texture cache.
+
     Preferences prefs_;
 };
 
