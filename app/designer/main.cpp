@@ -56,10 +56,9 @@ void describe(QCommandLineParser& parser, const Options& options) {
     parser.addOption(options.opened);
     parser.addOption(options.select);
 }
-}  // namespace
-
-int main(int argc, char* argv[]) {
-    // Before QApplication, which needs a display: --version works on a headless machine too.
+/// --version and --help, answered before QApplication, which needs a display: they work on a
+/// headless machine too. -1 when neither was asked for.
+int answerWithoutDisplay(int argc, char* argv[]) {
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--version") == 0) {
             std::puts("raystudio " RAYSTUDIO_VERSION_STRING);
@@ -77,6 +76,36 @@ int main(int argc, char* argv[]) {
             return 0;
         }
     }
+    return -1;
+}
+
+/// The window icon, from the PNG renders of resources/icons/raystudio.svg.
+void setWindowIcon() {
+    QIcon icon;
+    for (const char* size : {"16x16", "32x32", "48x48", "256x256"})
+        icon.addFile(QStringLiteral(":/icons/%1/raystudio.png").arg(QLatin1String(size)));
+    QApplication::setWindowIcon(icon);
+}
+
+/// --select NAME: selects the object or light named NAME, as a click in the outliner would.
+void selectNamed(rs::ui::MainWindow& window, const QString& scene, const std::string& name) {
+    const rs::SceneDocument& doc = window.editor()->document();
+    rs::ObjectId id = rs::kNoObject;
+    for (const rs::Object& o : doc.objects)
+        if (o.name == name) id = o.id;
+    for (const rs::Light& l : doc.lights)
+        if (id == rs::kNoObject && l.name == name) id = l.id;
+    if (id == rs::kNoObject)
+        std::fprintf(stderr, "raystudio: --select: %s has no object or light named '%s'\n",
+                     qPrintable(scene), name.c_str());
+    else
+        window.editor()->setSelection(id);
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+    if (const int rc = answerWithoutDisplay(argc, argv); rc >= 0) return rc;
     QSurfaceFormat format;
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
@@ -86,12 +115,7 @@ int main(int argc, char* argv[]) {
     QCoreApplication::setOrganizationName(QStringLiteral("RayStudio"));
     QCoreApplication::setApplicationName(QStringLiteral("RayStudio"));
     QCoreApplication::setApplicationVersion(QStringLiteral(RAYSTUDIO_VERSION_STRING));
-    // The window icon, from the PNG renders of resources/icons/raystudio.svg.
-    QIcon icon;
-    for (const char* size : {"16x16", "32x32", "48x48", "256x256"})
-        icon.addFile(QStringLiteral(":/icons/%1/raystudio.png").arg(QLatin1String(size)));
-    QApplication::setWindowIcon(icon);
-
+    setWindowIcon();
     QCommandLineParser parser;
     const Options options;
     describe(parser, options);
@@ -126,20 +150,8 @@ int main(int argc, char* argv[]) {
         std::printf("%s\n", qPrintable(QFileInfo(scene).canonicalFilePath()));
         return 0;
     }
-    if (parser.isSet(options.select) && opened) {
-        const std::string name = parser.value(options.select).toStdString();
-        const rs::SceneDocument& doc = window.editor()->document();
-        rs::ObjectId id = rs::kNoObject;
-        for (const rs::Object& o : doc.objects)
-            if (o.name == name) id = o.id;
-        for (const rs::Light& l : doc.lights)
-            if (id == rs::kNoObject && l.name == name) id = l.id;
-        if (id == rs::kNoObject)
-            std::fprintf(stderr, "raystudio: --select: %s has no object or light named '%s'\n",
-                         qPrintable(scene), name.c_str());
-        else
-            window.editor()->setSelection(id);
-    }
+    if (parser.isSet(options.select) && opened)
+        selectNamed(window, scene, parser.value(options.select).toStdString());
     window.offerRecovery(answer);
     return app.exec();
 }
