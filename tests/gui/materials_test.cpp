@@ -30,9 +30,9 @@
 #include "document/placement.h"
 #include "document/transform_edits.h"
 #include "gui_test_support.h"
-#include "shell/imported_images.h"
 #include "panels/material_list.h"
 #include "panels/property_panel.h"
+#include "shell/imported_images.h"
 #include "snapshot/compiled_scene.h"
 #include "viewport/transform_gizmo.h"
 
