@@ -7,6 +7,7 @@
 
 #include "core/id_search.h"
 #include "scene/mesh_parts.h"
+#include "scene/shading_rules.h"
 #include "texture/texture_store.h"
 
 namespace rs {
@@ -14,12 +15,16 @@ namespace rs {
 namespace {
 
 CompiledMaterial compileMaterial(const Material& m) {
-    float cutoff = 0.0f;
-    if (m.specular > 0.0f && m.shininess > 0.0f)
-        cutoff = std::min(1.0f, std::pow(1e-7f / m.specular, 1.0f / m.shininess));
-    return {m.color,        m.diffuse,        m.specular, m.shininess,
-            m.reflectivity, m.transparency,   m.ior,      1.0f - m.reflectivity - m.transparency,
-            cutoff,         MaterialPattern{}};
+    return {m.color,
+            m.diffuse,
+            m.specular,
+            m.shininess,
+            m.reflectivity,
+            m.transparency,
+            m.ior,
+            1.0f - m.reflectivity - m.transparency,
+            highlightCutoff(m.specular, m.shininess),
+            MaterialPattern{}};
 }
 
 /// True when the linear part is a rotation times a uniform scale (spheres stay spheres).

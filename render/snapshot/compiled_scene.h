@@ -20,8 +20,8 @@ struct CompiledMaterial {
     Color color;
     float diffuse, specular, shininess, reflectivity, transparency, ior;
     float localWeight;  ///< 1 - reflectivity - transparency.
-    /// R.V below which specular * (R.V)^shininess < 1e-7: far below a float colour's
-    /// resolution, so the costly pow is skipped there (the same on every render path).
+    /// R.V below which specular * (R.V)^shininess is negligible (highlightCutoff,
+    /// scene/shading_rules.h): the costly pow is skipped there.
     float specularCutoff;
     MaterialPattern pattern;  ///< A checker or an image in place of `color`.
 };
