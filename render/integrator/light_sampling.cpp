@@ -136,9 +136,7 @@ void LightSums::zero(std::size_t n) {
 }
 
 SurfaceTerms<float> surfaceTerms(const CompiledMaterial& m) {
-    const Color diffuseColor = m.diffuse * m.color;
-    return {diffuseColor.x, diffuseColor.y,   diffuseColor.z,
-            m.specular,     m.specularCutoff, m.shininess};
+    return materialLook(m, m.color, Color(0.0f)).terms;
 }
 
 LightSampler::LightSampler(const CompiledScene& scene, Lanes lanes)

@@ -77,6 +77,26 @@ struct SurfaceTerms {
 };
 SurfaceTerms<float> surfaceTerms(const CompiledMaterial& m);
 
+/// What shading takes of a surface seen in colour `c` (a material's flat colour, or its
+/// pattern's colour at a point): its Lambert + Phong terms and its ambient term.
+struct SurfaceLook {
+    SurfaceTerms<float> terms;
+    Color ambient;
+};
+/// Material `m` in colour `c` under the scene's `ambient`: diffuse x colour, the material's
+/// highlight, ambient x colour x diffuse.
+inline SurfaceLook materialLook(const CompiledMaterial& m, const Color& c, const Color& ambient) {
+    const Color diffuseColor = m.diffuse * c;
+    return {
+        {diffuseColor.x, diffuseColor.y, diffuseColor.z, m.specular, m.specularCutoff, m.shininess},
+        ambient * c * m.diffuse};
+}
+/// Any material in colour `c` as plain Lambert (diffuse 1, no highlight): how the interaction
+/// policies show mirror and glass shares while moving (thesis 4.2).
+inline SurfaceLook lambertLook(const Color& c, const Color& ambient) {
+    return {{c.x, c.y, c.z, 0.0f, 0.0f, 0.0f}, ambient * c};
+}
+
 /// SurfaceTerms of each shading point of a ShadingPoints, structure of arrays, padded alike.
 struct SurfaceArrays {
     ScratchVector<float> r, g, b, specular, cutoff, shininess;

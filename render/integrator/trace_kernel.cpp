@@ -16,6 +16,7 @@
 #include "integrator/sampling.h"
 #include "integrator/trace_level.h"
 #include "integrator/trace_workspace.h"
+#include "scene/shading_rules.h"
 
 namespace rs {
 
@@ -33,19 +34,43 @@ constexpr std::size_t kLevelCap = std::size_t(1) << 18;
 /// light about 7 % slower in wall time for the same instructions.
 constexpr std::size_t kSampleCap = 1024;
 
+/// While moving, mirror and glass shares may be shown as plain Lambert (thesis 4.2): what of
+/// material `m` is still traced as mirror and glass at a hit on object `id`, and the share
+/// shaded as Lambert instead.
+struct MovingShares {
+    float reflectivity, transparency, asDiffuse;
+};
+template <bool AsDiffuse>
+[[gnu::always_inline]] inline MovingShares movingShares(const CompiledMaterial& m, ObjectId id,
+                                                        const TraceOptions& options) {
+    MovingShares s{m.reflectivity, m.transparency, 0.0f};
+    if (AsDiffuse) {
+        if (options.reflectionAsDiffuse && s.reflectivity > 0.0f) {
+            s.asDiffuse += s.reflectivity;
+            s.reflectivity = 0.0f;
+        }
+        if (options.refractionAsDiffuse && s.transparency > 0.0f &&
+            id != options.refractionExempt) {
+            s.asDiffuse += s.transparency;
+            s.transparency = 0.0f;
+        }
+    }
+    return s;
+}
+
 }  // namespace
 
 TraceKernel::TraceKernel(const CompiledScene& scene, const TraceOptions& options)
     : scene_(scene), options_(options), eps_(scene.epsilon()), sampler_(scene) {
     const RenderSettings& settings = scene.settings();
     for (const CompiledMaterial& m : scene.materials()) {
-        surfaces_.push_back(surfaceTerms(m));
-        CompiledMaterial lambert{};
-        lambert.color = m.color;
-        lambert.diffuse = 1.0f;
-        lamberts_.push_back(surfaceTerms(lambert));
-        ambients_.push_back(settings.ambient * m.color * m.diffuse);
-        lambertAmbients_.push_back(settings.ambient * m.color);
+        // In its flat colour; patterned points take their pattern's colour in the same looks.
+        const SurfaceLook look = materialLook(m, m.color, settings.ambient);
+        const SurfaceLook lambert = lambertLook(m.color, settings.ambient);
+        surfaces_.push_back(look.terms);
+        lamberts_.push_back(lambert.terms);
+        ambients_.push_back(look.ambient);
+        lambertAmbients_.push_back(lambert.ambient);
         specular_.push_back(m.reflectivity > 0.0f || m.transparency > 0.0f);
     }
     // What the options fix for every level: which lights are sampled at their centre alone
@@ -118,29 +143,17 @@ bool TraceKernel::traceLevels(Workspace& ws, Level& start, int depth, const Trac
     return true;
 }
 
-template <bool Bookkeeping, bool AsDiffuse>
-void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level& next,
-                             const TraceOutput& out, TraceCounters& counters) const {
-    const std::size_t n = level.size();
-    next.reserve(2 * n);  // at most a reflection and a refraction ray per hit
-    const HitBatch hits = ws.hits(n);
-    scene_.engine().closestHit(level.batch(depth == 0), hits);
-    counters.rays += n;
+template <bool AsDiffuse>
+[[gnu::always_inline]] inline std::size_t TraceKernel::shadeHits(LevelPoints& pts,
+                                                                 const Level& level,
+                                                                 const HitBatch& hits, int depth,
+                                                                 Level& next,
+                                                                 const TraceOutput& out) const {
     const RenderSettings& settings = scene_.settings();
-    LevelPoints& pts = ws.points;
-    // Patterns and the environment are looked up only in scenes that have them: a flat-colour
-    // scene takes the per-material tables and the background, as it always did.
-    const bool patterns = scene_.hasPatterns(), environment = scene_.environment().present;
-    pts.reserve(n, AsDiffuse, patterns);
-    ShadingPoints& sp = pts.shading;
-    // Where each hit lies and which way it faces, four rays at a time into the points'
-    // arrays at the ray's index; what its material makes of it, hit by hit, with the other
-    // arrays written at the point's index; then, if some hits are not shaded (misses,
-    // surfaces with no local share), the lanes' arrays closed up to match.
-    faceHits(level.ox.data(), level.oy.data(), level.oz.data(), level.dx.data(), level.dy.data(),
-             level.dz.data(), hits, n, sp, pts.inside.data());
+    const bool environment = scene_.environment().present;
+    const ShadingPoints& sp = pts.shading;
     std::size_t count = 0;  // shading points written
-    const bool leaves = depth >= options_.maxDepth;
+    const bool leaves = !spawnsChildren(depth, options_.maxDepth);
     // The arrays through local pointers: the compiler cannot keep a vector's data pointer in
     // a register across stores it cannot tell apart from it.
     const uint32_t *owners = level.owner.data(), *seeds = level.seed.data(), *slots = hits.slot;
@@ -150,12 +163,10 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
     uint32_t *pointMaterial = pts.material.data(), *pointSeed = pts.seed.data();
     uint32_t *pointOwner = pts.owner.data(), *pointRay = pts.ray.data();
     float* pointWeight = pts.weight.data();
-    if (Bookkeeping) keepBooks(level, hits, depth, out);
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0, n = level.size(); i < n; ++i) {
         const uint32_t owner = owners[i];
         const float weight = weights[i];
-        const bool found = slots[i] != kNoSlot;
-        if (!found) {
+        if (slots[i] == kNoSlot) {  // a miss: the environment or the background
             const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
             out.color[owner] +=
                 weight * (environment ? scene_.environmentColor(d, spread_) : settings.background);
@@ -165,60 +176,61 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         ObjectId id;
         scene_.describe(slots[i], materialIndex, id);
         const CompiledMaterial& m = materials[materialIndex];
-        // The cone's width at the hit: what a pattern filters over, and where children start.
-        const float width = level.cone[i] + hits.t[i] * spread_;
-
-        // While moving, mirror and glass shares may be shown as plain Lambert (thesis 4.2).
-        float reflectivity = m.reflectivity, transparency = m.transparency, asDiffuse = 0.0f;
-        if (AsDiffuse) {
-            if (options_.reflectionAsDiffuse && reflectivity > 0.0f) {
-                asDiffuse += reflectivity;
-                reflectivity = 0.0f;
-            }
-            if (options_.refractionAsDiffuse && transparency > 0.0f &&
-                id != options_.refractionExempt) {
-                asDiffuse += transparency;
-                transparency = 0.0f;
-            }
-        }
-        if (m.localWeight > 0.0f || (AsDiffuse && asDiffuse > 0.0f)) {
+        const MovingShares s = movingShares<AsDiffuse>(m, id, options_);
+        if (m.localWeight > 0.0f || (AsDiffuse && s.asDiffuse > 0.0f)) {
             const std::size_t j = count++;
             pointRay[j] = uint32_t(i);
             pts.surface.set(j, surfaces[materialIndex]);
             if (AsDiffuse)
-                pts.lambert.set(j, lamberts_[materialIndex]), pts.asDiffuse[j] = asDiffuse;
+                pts.lambert.set(j, lamberts_[materialIndex]), pts.asDiffuse[j] = s.asDiffuse;
             pointMaterial[j] = materialIndex, pointSeed[j] = seeds[i], pointOwner[j] = owner;
             pointWeight[j] = weight;
         }
+        if (leaves || (s.reflectivity <= 0.0f && s.transparency <= 0.0f)) continue;
+        // The cone's width at the hit: where children start.
+        const float width = level.cone[i] + hits.t[i] * spread_;
+        spawnChildren(m, s.reflectivity, s.transparency, Vec3(sp.px[i], sp.py[i], sp.pz[i]),
+                      Vec3(sp.nx[i], sp.ny[i], sp.nz[i]),
+                      Vec3(level.dx[i], level.dy[i], level.dz[i]), pts.inside[i] != 0, weight,
+                      seeds[i], owner, width, next);
+    }
+    return count;
+}
 
-        if (leaves || (reflectivity <= 0.0f && transparency <= 0.0f)) continue;
-        const Vec3 p(sp.px[i], sp.py[i], sp.pz[i]), nf(sp.nx[i], sp.ny[i], sp.nz[i]);
-        const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
-        // Reflection is traced once and weighted by the mirror part plus the glass part's
-        // Fresnel (or all of the glass part on total internal reflection). A child whose
-        // accumulated weight falls below min_weight is not traced (scenes/FORMAT.md).
-        float reflectWeight = reflectivity;
-        if (transparency > 0.0f) {
-            const float eta = pts.inside[i] ? m.ior : 1.0f / m.ior;
-            Vec3 t;
-            if (refractDir(d, nf, eta, t)) {
-                const float f = schlick(-glm::dot(nf, d), m.ior);
-                reflectWeight += transparency * f;
-                const float w = weight * (transparency * (1.0f - f));
-                if (w >= options_.minWeight)
-                    next.push(p - nf * eps_, t, w, hashCombine(seeds[i], 2u), owner, width);
-            } else {
-                reflectWeight += transparency;
-            }
-        }
-        if (reflectWeight > 0.0f) {
-            const float w = weight * reflectWeight;
-            if (w >= options_.minWeight)
-                next.push(p + nf * eps_, d - 2.0f * glm::dot(d, nf) * nf, w,
-                          hashCombine(seeds[i], 1u), owner, width);
+[[gnu::always_inline]] inline void TraceKernel::spawnChildren(
+    const CompiledMaterial& m, float reflectivity, float transparency, const Vec3& p,
+    const Vec3& nf, const Vec3& d, bool inside, float weight, uint32_t seed, uint32_t owner,
+    float width, Level& next) const {
+    // Reflection is traced once and weighted by the mirror part plus the glass part's
+    // Fresnel (or all of the glass part on total internal reflection). A child whose
+    // accumulated weight falls below min_weight is not traced (scenes/FORMAT.md).
+    float reflectWeight = reflectivity;
+    if (transparency > 0.0f) {
+        const float eta = inside ? m.ior : 1.0f / m.ior;
+        Vec3 t;
+        if (refractDir(d, nf, eta, t)) {
+            const float f = schlick(-glm::dot(nf, d), m.ior);
+            reflectWeight += transparency * f;
+            const float w = weight * (transparency * (1.0f - f));
+            if (weightTraced(w, options_.minWeight))
+                next.push(p - nf * eps_, t, w, hashCombine(seed, 2u), owner, width);
+        } else {
+            reflectWeight += transparency;
         }
     }
+    if (reflectWeight > 0.0f) {
+        const float w = weight * reflectWeight;
+        if (weightTraced(w, options_.minWeight))
+            next.push(p + nf * eps_, d - 2.0f * glm::dot(d, nf) * nf, w, hashCombine(seed, 1u),
+                      owner, width);
+    }
+}
+
+[[gnu::always_inline]] inline void TraceKernel::closeUpPoints(LevelPoints& pts, std::size_t count,
+                                                              std::size_t n) {
+    ShadingPoints& sp = pts.shading;
     if (count < n) {  // close up: point j is the j-th shaded hit (ray i >= j, so in place)
+        const uint32_t* pointRay = pts.ray.data();
         for (std::size_t j = 0; j < count; ++j) {
             const std::size_t i = pointRay[j];
             if (j != i)
@@ -227,39 +239,60 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
         }
     }
     sp.count = count;
-    if (count == 0) return;
-    if (patterns) {
-        // Patterned points: the pattern's colour there, filtered over the cone's footprint,
-        // in place of the material's colour in every term (scenes/FORMAT.md "color"); every
-        // point's ambient terms, which the local sums below then take point by point.
-        for (std::size_t j = 0; j < count; ++j) {
-            const uint32_t mi = pointMaterial[j];
-            const CompiledMaterial& m = materials[mi];
-            if (m.pattern.kind == MaterialPattern::Kind::None) {
-                pts.ambient[j] = ambients_[mi];
-                if (AsDiffuse) pts.lambertAmbient[j] = lambertAmbients_[mi];
-                continue;
-            }
-            const std::size_t i = pointRay[j];
-            const Vec3 p(sp.px[j], sp.py[j], sp.pz[j]), d(level.dx[i], level.dy[i], level.dz[i]);
-            const Vec3 normal(hits.nx[i], hits.ny[i], hits.nz[i]);
-            const float width = level.cone[i] + hits.t[i] * spread_;
-            const Color c = surfaceColor(m, slots[i], p, normal, footprintAt(d, normal, width));
-            const Color diffuseColor = m.diffuse * c;
-            pts.surface.r[j] = diffuseColor.x;
-            pts.surface.g[j] = diffuseColor.y;
-            pts.surface.b[j] = diffuseColor.z;
-            pts.ambient[j] = settings.ambient * c * m.diffuse;
-            if (AsDiffuse) {
-                pts.lambert.r[j] = c.x, pts.lambert.g[j] = c.y, pts.lambert.b[j] = c.z;
-                pts.lambertAmbient[j] = settings.ambient * c;
-            }
+}
+
+template <bool AsDiffuse>
+[[gnu::always_inline]] inline void TraceKernel::patternLooks(LevelPoints& pts, const Level& level,
+                                                             const HitBatch& hits) const {
+    // Patterned points: the pattern's colour there, filtered over the cone's footprint,
+    // in place of the material's colour in every term (scenes/FORMAT.md "color"); every
+    // point's ambient terms, which the local sums below then take point by point.
+    const ShadingPoints& sp = pts.shading;
+    const CompiledMaterial* materials = scene_.materials().data();
+    const uint32_t *pointMaterial = pts.material.data(), *pointRay = pts.ray.data();
+    const Color ambient = scene_.settings().ambient;
+    for (std::size_t j = 0, count = sp.count; j < count; ++j) {
+        const uint32_t mi = pointMaterial[j];
+        const CompiledMaterial& m = materials[mi];
+        if (m.pattern.kind == MaterialPattern::Kind::None) {
+            pts.ambient[j] = ambients_[mi];
+            if (AsDiffuse) pts.lambertAmbient[j] = lambertAmbients_[mi];
+            continue;
+        }
+        const std::size_t i = pointRay[j];
+        const Vec3 p(sp.px[j], sp.py[j], sp.pz[j]), d(level.dx[i], level.dy[i], level.dz[i]);
+        const Vec3 normal(hits.nx[i], hits.ny[i], hits.nz[i]);
+        const float width = level.cone[i] + hits.t[i] * spread_;
+        const Color c = surfaceColor(m, hits.slot[i], p, normal, footprintAt(d, normal, width));
+        const SurfaceLook look = materialLook(m, c, ambient);
+        pts.surface.r[j] = look.terms.r;
+        pts.surface.g[j] = look.terms.g;
+        pts.surface.b[j] = look.terms.b;
+        pts.ambient[j] = look.ambient;
+        if (AsDiffuse) {
+            const SurfaceLook lambert = lambertLook(c, ambient);
+            pts.lambert.set(j, lambert.terms);
+            pts.lambertAmbient[j] = lambert.ambient;
         }
     }
+}
 
+/// The shading points [first, end) of a level whose lights one shadow batch serves.
+struct TraceKernel::PointGroup {
+    std::size_t first, end;
+    bool sampled;  ///< Some lights are sphere lights sampled over their disk.
+    /// The shadow answers and what passed glass of the sphere lights' samples (null: none
+    /// traced, or nothing transmits).
+    const uint8_t* areaOccluded = nullptr;
+    const Color* areaTransmitted = nullptr;
+};
+
+template <bool Bookkeeping, bool AsDiffuse>
+[[gnu::always_inline]] inline void TraceKernel::addLocalTerms(Workspace& ws, bool patterns,
+                                                              const TraceOutput& out,
+                                                              TraceCounters& counters) const {
     // The local terms, light by light over as many points as fit one shadow batch.
-    const bool deferred = options_.shadows == ShadowQuality::Deferred;
-    const bool area = area_, traceShadows = traceShadows_;
+    const std::size_t count = ws.points.count();
     const std::size_t lane = std::size_t(kLaneWidth);
     const std::size_t chunk =
         std::max(lane, kSampleCap / std::max<std::size_t>(1, perPoint_) / lane * lane);
@@ -269,136 +302,182 @@ void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level
     ws.sums.zero(count);
     if (AsDiffuse) ws.lambertSums.zero(count);
     for (std::size_t first = 0; first < count; first += chunk) {
-        const std::size_t end = std::min(count, first + chunk), group = end - first;
-        // Sphere lights' samples, point by point (lanes of samples), in light order.
-        ws.samples.clear();
-        ws.spans.clear();
-        const bool sampled = !sampledLights_.empty();
-        if (sampled) {
-            ws.pointSpans.resize(group + 1);
-            for (std::size_t j = first; j < end; ++j) {
-                ws.pointSpans[j - first] = uint32_t(ws.spans.size());
-                const Vec3 p(sp.px[j], sp.py[j], sp.pz[j]), nf(sp.nx[j], sp.ny[j], sp.nz[j]);
-                for (const uint32_t li : sampledLights_)
-                    sampler_.sampleLight(li, p, nf, pts.seed[j], area, ws.samples, ws.spans);
-            }
-            ws.pointSpans[group] = uint32_t(ws.spans.size());
-        }
-        for (const uint32_t li : centreLights_)
-            sampler_.sampleCentres(li, sp, first, end, ws.centres[li]);
-
-        // One shadow batch: every centre-sampled light's listed rays, light by light, then
-        // the sphere lights' samples in list order.
-        const uint8_t* areaOccluded = nullptr;
-        const Color* areaTransmitted = nullptr;
-        if (traceShadows) {
-            const ShadowRayArrays rays = ws.shadows(group * perPoint_);
-            if (ws.centreBase.size() < lightCount) ws.centreBase.resize(lightCount);
-            for (const uint32_t li : centreLights_) {
-                ws.centreBase[li] = uint32_t(ws.shadowCount);
-                ws.shadowCount = writeCentreShadows(sp, ws.centres[li], first, end, eps_, li, rays,
-                                                    ws.shadowCount);
-            }
-            const std::size_t areaBase = ws.shadowCount;
-            if (sampled) ws.shadowRays(sp, first, group, eps_, areaBase);
-            // One answer past the rays, so the loop below may read it without a branch.
-            ws.occluded.resize(ws.shadowCount + 1);
-            ws.occluded[ws.shadowCount] = 0;
-            if (ws.shadowCount > 0) {
-                scene_.engine().anyHit(ws.shadowBatch(area), ws.occluded.data());
-                counters.shadowRays += ws.shadowCount;
-                if (transmissive_) transmit(ws);
-            }
-            // Each centre ray's answer back to its point (flags are 0 or 1).
-            std::size_t r = 0;
-            for (const uint32_t li : centreLights_) {
-                const CentreSamples& c = ws.centres[li];
-                ScratchVector<uint8_t>& blocked = ws.blocked[li];
-                if (blocked.size() < sp.px.size()) blocked.resize(sp.px.size());
-                r = readCentreAnswers(c, first, end, ws.occluded.data(), blocked.data(), r);
-                if (Bookkeeping && out.rays)
-                    for (std::size_t j = first; j < end; ++j) out.rays[pts.owner[j]] += c.listed[j];
-            }
-            areaOccluded = ws.occluded.data() + areaBase;
-            if (transmissive_) areaTransmitted = ws.transmitted.data() + areaBase;
-            if (Bookkeeping && out.rays && sampled)
-                for (std::size_t j = first; j < end; ++j)
-                    for (uint32_t k = ws.pointSpans[j - first]; k < ws.pointSpans[j - first + 1];
-                         ++k)
-                        out.rays[pts.owner[j]] += ws.spans[k].listed;
-        }
-
-        // Light by light, so each point's sum takes the lights in the scene's order.
-        if (sampled) ws.cursor.assign(ws.pointSpans.begin(), ws.pointSpans.end() - 1);
-        for (std::size_t li = 0; li < lightCount; ++li) {
-            if (sampler_.centreOnly(li, area)) {
-                const CompiledLight& light = scene_.lights()[li];
-                const uint8_t* blocked = traceShadows ? ws.blocked[li].data() : nullptr;
-                addCentreLight(light, sp, pts.surface, ws.centres[li], blocked, first, end,
-                               ws.sums);
-                if (AsDiffuse)
-                    addCentreLight(light, sp, pts.lambert, ws.centres[li], blocked, first, end,
-                                   ws.lambertSums);
-                if (transmissive_ && traceShadows) addTransmitted<AsDiffuse>(ws, li, first, end);
-                continue;
-            }
-            for (std::size_t j = first; j < end; ++j) {
-                uint32_t& k = ws.cursor[j - first];
-                if (k == ws.pointSpans[j - first + 1] || ws.spans[k].light != li) continue;
-                const LightSpan& span = ws.spans[k++];
-                const Vec3 nf(sp.nx[j], sp.ny[j], sp.nz[j]), v(sp.vx[j], sp.vy[j], sp.vz[j]);
-                const Color c = spanShare(scene_, pts.surface.get(j), nf, v, span,
-                                          ws.samples.data(), areaOccluded, areaTransmitted);
-                ws.sums.r[j] += c.x, ws.sums.g[j] += c.y, ws.sums.b[j] += c.z;
-                if (AsDiffuse) {
-                    const Color l = spanShare(scene_, pts.lambert.get(j), nf, v, span,
-                                              ws.samples.data(), areaOccluded, areaTransmitted);
-                    ws.lambertSums.r[j] += l.x, ws.lambertSums.g[j] += l.y,
-                        ws.lambertSums.b[j] += l.z;
-                }
-            }
-        }
-
-        const float *sumR = ws.sums.r.data(), *sumG = ws.sums.g.data(), *sumB = ws.sums.b.data();
-        Color* color = out.color;
-        std::optional<PerRayAppender<ShadingRecord>> records;
-        if (Bookkeeping && deferred && out.records) records.emplace(out.records);
+        PointGroup g{first, std::min(count, first + chunk), !sampledLights_.empty()};
+        sampleGroup(ws, g);
+        if (traceShadows_) traceGroupShadows<Bookkeeping>(ws, g, out, counters);
+        sumGroupLights<AsDiffuse>(ws, g);
         // Ambient terms per material, or per point when the scene has patterns: a loop for
         // each, so flat-colour scenes run the loop they always did.
-        const auto addLocal = [&](auto patterned) {
-            const Color* ambients = patterned ? pts.ambient.data() : ambients_.data();
-            const Color* lambertAmbients =
-                patterned ? pts.lambertAmbient.data() : lambertAmbients_.data();
-            for (std::size_t j = first; j < end; ++j) {
-                const uint32_t mi = pointMaterial[j], owner = pointOwner[j];
-                const std::size_t a = patterned ? j : mi;
-                const float weight = pointWeight[j], localWeight = materials[mi].localWeight;
-                if (localWeight > 0.0f) {
-                    const Color direct(sumR[j], sumG[j], sumB[j]);
-                    color[owner] += weight * (localWeight * (ambients[a] + direct));
-                    // Shown unshadowed while moving; the record lets the shadows be added
-                    // later.
-                    if (Bookkeeping && records)
-                        records->append(
-                            owner, ShadingRecord{
-                                       Vec3(sp.px[j], sp.py[j], sp.pz[j]),
-                                       Vec3(sp.nx[j], sp.ny[j], sp.nz[j]),
-                                       Vec3(sp.vx[j], sp.vy[j], sp.vz[j]), weight * localWeight,
-                                       Color(pts.surface.r[j], pts.surface.g[j], pts.surface.b[j]),
-                                       mi, pts.seed[j]});
-                }
-                if (AsDiffuse && pts.asDiffuse[j] > 0.0f) {
-                    const Color direct(ws.lambertSums.r[j], ws.lambertSums.g[j],
-                                       ws.lambertSums.b[j]);
-                    color[owner] += weight * (pts.asDiffuse[j] * (lambertAmbients[a] + direct));
-                }
-            }
-        };
         if (patterns)
-            addLocal(std::true_type{});
+            addGroupLocal<Bookkeeping, AsDiffuse, true>(ws, g, out);
         else
-            addLocal(std::false_type{});
+            addGroupLocal<Bookkeeping, AsDiffuse, false>(ws, g, out);
     }
+}
+
+[[gnu::always_inline]] inline void TraceKernel::sampleGroup(Workspace& ws,
+                                                            const PointGroup& g) const {
+    // Sphere lights' samples, point by point (lanes of samples), in light order.
+    const ShadingPoints& sp = ws.points.shading;
+    ws.samples.clear();
+    ws.spans.clear();
+    if (g.sampled) {
+        ws.pointSpans.resize(g.end - g.first + 1);
+        for (std::size_t j = g.first; j < g.end; ++j) {
+            ws.pointSpans[j - g.first] = uint32_t(ws.spans.size());
+            const Vec3 p(sp.px[j], sp.py[j], sp.pz[j]), nf(sp.nx[j], sp.ny[j], sp.nz[j]);
+            for (const uint32_t li : sampledLights_)
+                sampler_.sampleLight(li, p, nf, ws.points.seed[j], area_, ws.samples, ws.spans);
+        }
+        ws.pointSpans[g.end - g.first] = uint32_t(ws.spans.size());
+    }
+    for (const uint32_t li : centreLights_)
+        sampler_.sampleCentres(li, sp, g.first, g.end, ws.centres[li]);
+}
+
+template <bool Bookkeeping>
+[[gnu::always_inline]] inline void TraceKernel::traceGroupShadows(Workspace& ws, PointGroup& g,
+                                                                  const TraceOutput& out,
+                                                                  TraceCounters& counters) const {
+    // One shadow batch: every centre-sampled light's listed rays, light by light, then
+    // the sphere lights' samples in list order.
+    const ShadingPoints& sp = ws.points.shading;
+    const std::size_t first = g.first, end = g.end, lightCount = scene_.lights().size();
+    const ShadowRayArrays rays = ws.shadows((end - first) * perPoint_);
+    if (ws.centreBase.size() < lightCount) ws.centreBase.resize(lightCount);
+    for (const uint32_t li : centreLights_) {
+        ws.centreBase[li] = uint32_t(ws.shadowCount);
+        ws.shadowCount =
+            writeCentreShadows(sp, ws.centres[li], first, end, eps_, li, rays, ws.shadowCount);
+    }
+    const std::size_t areaBase = ws.shadowCount;
+    if (g.sampled) ws.shadowRays(sp, first, end - first, eps_, areaBase);
+    // One answer past the rays, so the loop below may read it without a branch.
+    ws.occluded.resize(ws.shadowCount + 1);
+    ws.occluded[ws.shadowCount] = 0;
+    if (ws.shadowCount > 0) {
+        scene_.engine().anyHit(ws.shadowBatch(area_), ws.occluded.data());
+        counters.shadowRays += ws.shadowCount;
+        if (transmissive_) transmit(ws);
+    }
+    // Each centre ray's answer back to its point (flags are 0 or 1).
+    std::size_t r = 0;
+    for (const uint32_t li : centreLights_) {
+        const CentreSamples& c = ws.centres[li];
+        ScratchVector<uint8_t>& blocked = ws.blocked[li];
+        if (blocked.size() < sp.px.size()) blocked.resize(sp.px.size());
+        r = readCentreAnswers(c, first, end, ws.occluded.data(), blocked.data(), r);
+        if (Bookkeeping && out.rays)
+            for (std::size_t j = first; j < end; ++j) out.rays[ws.points.owner[j]] += c.listed[j];
+    }
+    g.areaOccluded = ws.occluded.data() + areaBase;
+    if (transmissive_) g.areaTransmitted = ws.transmitted.data() + areaBase;
+    if (Bookkeeping && out.rays && g.sampled)
+        for (std::size_t j = first; j < end; ++j)
+            for (uint32_t k = ws.pointSpans[j - first]; k < ws.pointSpans[j - first + 1]; ++k)
+                out.rays[ws.points.owner[j]] += ws.spans[k].listed;
+}
+
+template <bool AsDiffuse>
+[[gnu::always_inline]] inline void TraceKernel::sumGroupLights(Workspace& ws,
+                                                               const PointGroup& g) const {
+    // Light by light, so each point's sum takes the lights in the scene's order.
+    const LevelPoints& pts = ws.points;
+    const ShadingPoints& sp = pts.shading;
+    const std::size_t first = g.first, end = g.end;
+    if (g.sampled) ws.cursor.assign(ws.pointSpans.begin(), ws.pointSpans.end() - 1);
+    for (std::size_t li = 0; li < scene_.lights().size(); ++li) {
+        if (sampler_.centreOnly(li, area_)) {
+            const CompiledLight& light = scene_.lights()[li];
+            const uint8_t* blocked = traceShadows_ ? ws.blocked[li].data() : nullptr;
+            addCentreLight(light, sp, pts.surface, ws.centres[li], blocked, first, end, ws.sums);
+            if (AsDiffuse)
+                addCentreLight(light, sp, pts.lambert, ws.centres[li], blocked, first, end,
+                               ws.lambertSums);
+            if (transmissive_ && traceShadows_) addTransmitted<AsDiffuse>(ws, li, first, end);
+            continue;
+        }
+        for (std::size_t j = first; j < end; ++j) {
+            uint32_t& k = ws.cursor[j - first];
+            if (k == ws.pointSpans[j - first + 1] || ws.spans[k].light != li) continue;
+            const LightSpan& span = ws.spans[k++];
+            const Vec3 nf(sp.nx[j], sp.ny[j], sp.nz[j]), v(sp.vx[j], sp.vy[j], sp.vz[j]);
+            const Color c = spanShare(scene_, pts.surface.get(j), nf, v, span, ws.samples.data(),
+                                      g.areaOccluded, g.areaTransmitted);
+            ws.sums.r[j] += c.x, ws.sums.g[j] += c.y, ws.sums.b[j] += c.z;
+            if (AsDiffuse) {
+                const Color l = spanShare(scene_, pts.lambert.get(j), nf, v, span,
+                                          ws.samples.data(), g.areaOccluded, g.areaTransmitted);
+                ws.lambertSums.r[j] += l.x, ws.lambertSums.g[j] += l.y, ws.lambertSums.b[j] += l.z;
+            }
+        }
+    }
+}
+
+template <bool Bookkeeping, bool AsDiffuse, bool Patterned>
+[[gnu::always_inline]] inline void TraceKernel::addGroupLocal(Workspace& ws, const PointGroup& g,
+                                                              const TraceOutput& out) const {
+    const LevelPoints& pts = ws.points;
+    const ShadingPoints& sp = pts.shading;
+    const float *sumR = ws.sums.r.data(), *sumG = ws.sums.g.data(), *sumB = ws.sums.b.data();
+    const uint32_t *pointMaterial = pts.material.data(), *pointOwner = pts.owner.data();
+    const float* pointWeight = pts.weight.data();
+    const CompiledMaterial* materials = scene_.materials().data();
+    Color* color = out.color;
+    std::optional<PerRayAppender<ShadingRecord>> records;
+    if (Bookkeeping && options_.shadows == ShadowQuality::Deferred && out.records)
+        records.emplace(out.records);
+    const Color* ambients = Patterned ? pts.ambient.data() : ambients_.data();
+    const Color* lambertAmbients = Patterned ? pts.lambertAmbient.data() : lambertAmbients_.data();
+    for (std::size_t j = g.first; j < g.end; ++j) {
+        const uint32_t mi = pointMaterial[j], owner = pointOwner[j];
+        const std::size_t a = Patterned ? j : mi;
+        const float weight = pointWeight[j], localWeight = materials[mi].localWeight;
+        if (localWeight > 0.0f) {
+            const Color direct(sumR[j], sumG[j], sumB[j]);
+            color[owner] += weight * (localWeight * (ambients[a] + direct));
+            // Shown unshadowed while moving; the record lets the shadows be added later.
+            if (Bookkeeping && records)
+                records->append(
+                    owner,
+                    ShadingRecord{Vec3(sp.px[j], sp.py[j], sp.pz[j]),
+                                  Vec3(sp.nx[j], sp.ny[j], sp.nz[j]),
+                                  Vec3(sp.vx[j], sp.vy[j], sp.vz[j]), weight * localWeight,
+                                  Color(pts.surface.r[j], pts.surface.g[j], pts.surface.b[j]), mi,
+                                  pts.seed[j]});
+        }
+        if (AsDiffuse && pts.asDiffuse[j] > 0.0f) {
+            const Color direct(ws.lambertSums.r[j], ws.lambertSums.g[j], ws.lambertSums.b[j]);
+            color[owner] += weight * (pts.asDiffuse[j] * (lambertAmbients[a] + direct));
+        }
+    }
+}
+
+template <bool Bookkeeping, bool AsDiffuse>
+void TraceKernel::shadeLevel(Workspace& ws, const Level& level, int depth, Level& next,
+                             const TraceOutput& out, TraceCounters& counters) const {
+    const std::size_t n = level.size();
+    next.reserve(kMostChildrenPerHit * n);
+    const HitBatch hits = ws.hits(n);
+    scene_.engine().closestHit(level.batch(depth == 0), hits);
+    counters.rays += n;
+    LevelPoints& pts = ws.points;
+    // Patterns are looked up only in scenes that have them: a flat-colour scene takes the
+    // per-material tables, as it always did.
+    const bool patterns = scene_.hasPatterns();
+    pts.reserve(n, AsDiffuse, patterns);
+    // Where each hit lies and which way it faces, four rays at a time into the points'
+    // arrays at the ray's index; what its material makes of it, hit by hit, with the other
+    // arrays written at the point's index; then, if some hits are not shaded (misses,
+    // surfaces with no local share), the lanes' arrays closed up to match.
+    faceHits(level.ox.data(), level.oy.data(), level.oz.data(), level.dx.data(), level.dy.data(),
+             level.dz.data(), hits, n, pts.shading, pts.inside.data());
+    if (Bookkeeping) keepBooks(level, hits, depth, out);
+    const std::size_t count = shadeHits<AsDiffuse>(pts, level, hits, depth, next, out);
+    closeUpPoints(pts, count, n);
+    if (count == 0) return;
+    if (patterns) patternLooks<AsDiffuse>(pts, level, hits);
+    addLocalTerms<Bookkeeping, AsDiffuse>(ws, patterns, out, counters);
 }
 
 void TraceKernel::resolveDeferred(const ShadingRecord* records, std::size_t count, Color* out,

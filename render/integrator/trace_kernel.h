@@ -15,6 +15,8 @@
 
 namespace rs {
 
+struct LevelPoints;
+
 /// Camera rays to trace: origin, direction and light-sampling seed of each.
 struct CameraBatch {
     const Vec3* origin;
@@ -182,6 +184,40 @@ private:
     template <bool Bookkeeping, bool AsDiffuse>
     void shadeLevel(Workspace& ws, const Level& level, int depth, Level& next,
                     const TraceOutput& out, TraceCounters& counters) const;
+    // shadeLevel's steps, each inlined into it (the shading loop is the hot path).
+    struct PointGroup;
+    /// Each hit of `level`: a miss's environment or background added to its camera ray, a
+    /// shaded hit's point written to `pts`, its reflection and refraction rays to `next`.
+    /// Returns the points written.
+    template <bool AsDiffuse>
+    std::size_t shadeHits(LevelPoints& pts, const Level& level, const HitBatch& hits, int depth,
+                          Level& next, const TraceOutput& out) const;
+    /// The reflection and refraction rays of a hit at p (faced normal nf, ray direction d).
+    void spawnChildren(const CompiledMaterial& m, float reflectivity, float transparency,
+                       const Vec3& p, const Vec3& nf, const Vec3& d, bool inside, float weight,
+                       uint32_t seed, uint32_t owner, float width, Level& next) const;
+    /// Shading point j takes the place and facing of its ray's hit (points are `count` of
+    /// the level's `n` rays).
+    static void closeUpPoints(LevelPoints& pts, std::size_t count, std::size_t n);
+    /// Patterned points' colours, and every point's ambient terms.
+    template <bool AsDiffuse>
+    void patternLooks(LevelPoints& pts, const Level& level, const HitBatch& hits) const;
+    /// The lights' terms of every shading point, group by group, added to the outputs.
+    template <bool Bookkeeping, bool AsDiffuse>
+    void addLocalTerms(Workspace& ws, bool patterns, const TraceOutput& out,
+                       TraceCounters& counters) const;
+    /// A group's light samples: sphere lights' point by point, centre lights' in lanes.
+    void sampleGroup(Workspace& ws, const PointGroup& g) const;
+    /// A group's shadow rays as one batch, and their answers back to its points.
+    template <bool Bookkeeping>
+    void traceGroupShadows(Workspace& ws, PointGroup& g, const TraceOutput& out,
+                           TraceCounters& counters) const;
+    /// A group's light sums, light by light in the scene's order.
+    template <bool AsDiffuse>
+    void sumGroupLights(Workspace& ws, const PointGroup& g) const;
+    /// A group's local terms (ambient plus its light sums) added to its camera rays.
+    template <bool Bookkeeping, bool AsDiffuse, bool Patterned>
+    void addGroupLocal(Workspace& ws, const PointGroup& g, const TraceOutput& out) const;
     /// What a level adds to the outputs besides colour: each ray counted to its camera ray,
     /// its segment (below the camera level), the first hit and whether a mirror or glass was
     /// met. A loop of its own, so the shading loop is the one a colour-only trace runs.
