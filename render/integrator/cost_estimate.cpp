@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "scene/shading_rules.h"
+
 namespace rs {
 
 namespace {
@@ -29,15 +31,19 @@ double treeRays(const SceneDocument& doc) {
         mirror = mirror || m->reflectivity > 0.0f;
         glass = glass || m->transparency > 0.0f;
     }
-    const double depth = doc.render.maxDepth;
+    // The kernel's recursion (scene/shading_rules.h): levels 0 to max_depth, each hit's
+    // children at most kMostChildrenPerHit, none below min_weight.
+    const double levels = treeLevels(doc.render.maxDepth);
     if (glass) {
-        // Nodes of a full binary tree of this depth, capped by the min_weight bound per level.
-        const double full = std::exp2(depth + 1.0) - 1.0;  // Finite up to kMaxDepthLimit.
+        // Nodes of a full tree of that many levels, capped by the min_weight bound: the camera
+        // ray, then at most 1 / min_weight rays on each level below it.
+        constexpr double c = kMostChildrenPerHit;
+        const double full = (std::pow(c, levels) - 1.0) / (c - 1.0);  // Finite to kMaxDepthLimit.
         const float w = doc.render.minWeight;
-        return w > 0.0f ? std::min(full, 1.0 + depth / double(w)) : full;
+        return w > 0.0f ? std::min(full, 1.0 + (levels - 1.0) / double(w)) : full;
     }
     // A mirror reflects once per hit (glass's Fresnel split is what makes trees).
-    return mirror ? 1.0 + depth : 1.0;
+    return mirror ? levels : 1.0;
 }
 
 }  // namespace
@@ -50,8 +56,7 @@ CostEstimate estimateCost(const SceneDocument& doc) {
     e.extraCameraRays = s.supersampling > 1 ? 1.0 : 0.0;
     e.treeRays = treeRays(doc);
     for (const Light& l : doc.lights)
-        e.shadowRaysPerHit +=
-            l.type == LightType::Point ? std::min(1, s.shadowSamples) : double(s.shadowSamples);
+        e.shadowRaysPerHit += shadowRaysTowardLight(l.type != LightType::Point, s.shadowSamples);
     e.rays = e.pixels * (e.samplesPerPixel + e.extraCameraRays) * e.treeRays *
              (1.0 + e.shadowRaysPerHit);
     const uint64_t pixels = uint64_t(s.width) * uint64_t(s.height);
