@@ -145,149 +145,194 @@ void tilePixels(int x0, int y0, int x1, int y1, ScratchVector<int32_t>& xs,
             if (pick(x, y)) xs.push_back(x), ys.push_back(y);
 }
 
+/// One full render: what its passes share (the kernel, the rows traced, pass 1's ids and
+/// normals that pass 2 reads) and its steps.
+class FullRender {
+public:
+    FullRender(const CompiledScene& scene, const RenderOptions& options)
+        : options_(options),
+          camera_(scene.camera()),
+          kernel_(scene, TraceOptions::fromSettings(scene.settings())),
+          w_(scene.settings().width),
+          h_(scene.settings().height),
+          spp_(std::max(1, scene.settings().supersampling)),
+          adaptive_(scene.settings().adaptiveSupersampling && spp_ > 1),
+          // The band asked for, and the rows traced in pass 1: adaptive decisions at the
+          // band's edges compare with the rows next to it, so those are traced too (and
+          // cropped at the end).
+          r0_(std::clamp(options.firstRow, 0, h_)),
+          r1_(options.endRow < 0 ? h_ : std::clamp(options.endRow, r0_, h_)),
+          t0_(adaptive_ ? std::max(0, r0_ - 1) : r0_),
+          t1_(adaptive_ ? std::min(h_, r1_ + 1) : r1_),
+          cancelled_([this] {
+              return options_.cancel && options_.cancel->load(std::memory_order_relaxed);
+          }) {}
+
+    RenderResult run() {
+        // Pass 1 writes every pixel (tiles skipped on cancellation are cleared), so the
+        // buffers are not cleared first: that would touch 15 MB at 1280x720 before any tracing.
+        result_.image = ImageRgb::uninitialized(w_, t1_ - t0_);
+        const std::size_t pixelCount = result_.image.pixels.size();
+        // Adaptive supersampling reads the ids even when they are not asked for.
+        if (options_.ids || adaptive_) ids_.resize(pixelCount);
+        normals_.resize(adaptive_ ? pixelCount : 0);
+        tbb::task_arena arena(options_.threads > 0 ? options_.threads
+                                                   : tbb::info::default_concurrency());
+        arenaExecute(arena, [&] {
+            result_.cancelled =
+                !forEachTile(w_, t0_, t1_, options_, result_.rays,
+                             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
+                                 centreTile(x0, y0, x1, y1, counters);
+                             });
+            if (!adaptive_ || result_.cancelled) return;
+            // Pass 2: supersample only where neighbours differ; decisions read pass 1's
+            // image, so they are written to a copy.
+            ImageRgb refined = result_.image;
+            result_.cancelled =
+                !forEachTile(w_, r0_, r1_, options_, result_.rays,
+                             [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
+                                 refineTile(x0, y0, x1, y1, refined, counters);
+                             });
+            result_.image = std::move(refined);
+        });
+        cropToBand();
+        if (options_.ids) result_.ids = std::move(ids_);
+        return std::move(result_);
+    }
+
+private:
+    std::size_t index(int x, int y) const {
+        return std::size_t(y - t0_) * std::size_t(w_) + std::size_t(x);
+    }
+
+    void clearTile(int x0, int x1, int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < x1; ++x) {
+                const std::size_t i = index(x, y);
+                result_.image.pixels[i] = Color(0.0f);
+                if (!ids_.empty()) ids_[i] = kNoObject;
+            }
+        }
+    }
+
+    /// Pass 1 of a tile: one centre sample per pixel (all the image needs without
+    /// supersampling), or the full pattern when supersampling everywhere. Ids come from the
+    /// centre ray.
+    void centreTile(int x0, int y0, int x1, int y1, TraceCounters& counters) {
+        // Each worker's tile buffers, in its huge-page scratch arena (a cold render would
+        // otherwise fault them in 4 KiB at a time on its first tiles).
+        thread_local ScratchVector<int32_t> xs, ys;
+        thread_local ScratchVector<Vec3> origins, dirs;
+        thread_local ScratchVector<uint32_t> seeds;
+        thread_local ScratchVector<Color> colors;
+        thread_local ScratchVector<PrimaryInfo> infos;
+        thread_local ScratchVector<ObjectId> tileIds;
+        if (cancelled_()) return clearTile(x0, x1, y0, y1);
+        const std::size_t width = std::size_t(x1 - x0);
+        const std::size_t n = width * std::size_t(y1 - y0);
+        origins.resize(n), dirs.resize(n), seeds.resize(n), colors.resize(n);
+        centreRays(x0, y0, x1, y1, origins.data(), dirs.data(), seeds.data());
+        if (spp_ > 1 && !adaptive_)  // supersamplePixels takes the pixels as lists
+            tilePixels(x0, y0, x1, y1, xs, ys, [](int, int) { return true; });
+        const CameraBatch centres{origins.data(), dirs.data(), seeds.data(), n, true};
+        bool done;
+        if (spp_ == 1 || adaptive_) {
+            TraceOutput out;
+            out.color = colors.data();
+            if (!ids_.empty()) {
+                infos.resize(n);
+                out.primary = infos.data();
+            }
+            done = kernel_.trace(centres, out, counters, cancelled_);
+        } else {
+            done = supersamplePixels(kernel_, xs.data(), ys.data(), n, spp_, colors.data(),
+                                     counters, cancelled_);
+            if (done && !ids_.empty()) {
+                tileIds.resize(n);
+                kernel_.firstHits(centres, tileIds.data());
+                counters.rays += n;  // the id pass traces its centre rays too
+                infos.resize(n);
+                for (std::size_t k = 0; k < n; ++k) infos[k].id = tileIds[k];
+            }
+        }
+        if (!done) return clearTile(x0, x1, y0, y1);
+        for (int y = y0; y < y1; ++y) {
+            const std::size_t row = std::size_t(y - y0) * width, i = index(x0, y);
+            std::copy_n(colors.data() + row, width, result_.image.pixels.data() + i);
+            if (!ids_.empty())
+                for (std::size_t k = 0; k < width; ++k) ids_[i + k] = infos[row + k].id;
+            if (adaptive_)
+                for (std::size_t k = 0; k < width; ++k) normals_[i + k] = infos[row + k].normal;
+        }
+        if (options_.tileDone) options_.tileDone(result_.image, x0, y0 - t0_, x1, y1 - t0_);
+    }
+
+    /// The tile's centre rays row by row (row-major, as tilePixels lists them), with what
+    /// depends on the column alone or on the row alone worked out once.
+    void centreRays(int x0, int y0, int x1, int y1, Vec3* origins, Vec3* dirs,
+                    uint32_t* seeds) const {
+        thread_local ScratchVector<Vec3> columns;
+        const std::size_t width = std::size_t(x1 - x0);
+        columns.resize(width);
+        for (int x = x0; x < x1; ++x)
+            columns[std::size_t(x - x0)] = camera_.columnTerm(float(x) + 0.5f);
+        const uint32_t centreKey = hashKey(0u);
+        for (int y = y0; y < y1; ++y) {
+            const std::size_t row = std::size_t(y - y0) * width;
+            camera_.rowRays(columns.data(), width, float(y) + 0.5f, origins + row, dirs + row);
+            const uint32_t rowKey = hashKey(uint32_t(y));
+            for (int x = x0; x < x1; ++x)
+                seeds[row + std::size_t(x - x0)] = pixelSeedKeyed(x, rowKey, centreKey);
+        }
+    }
+
+    /// Pass 2 of a tile: the pixels whose neighbours differ in pass 1, supersampled into
+    /// `refined`.
+    void refineTile(int x0, int y0, int x1, int y1, ImageRgb& refined, TraceCounters& counters) {
+        thread_local ScratchVector<int32_t> xs, ys;
+        thread_local ScratchVector<Color> colors;
+        if (cancelled_()) return;
+        tilePixels(x0, y0, x1, y1, xs, ys, [&](int x, int y) {
+            return needsSupersampling(result_.image.pixels.data(), ids_.data(), normals_.data(), w_,
+                                      h_, x, y, t0_);
+        });
+        colors.resize(xs.size());
+        if (!supersamplePixels(kernel_, xs.data(), ys.data(), xs.size(), spp_, colors.data(),
+                               counters, cancelled_))
+            return;
+        for (std::size_t k = 0; k < xs.size(); ++k) refined.at(xs[k], ys[k] - t0_) = colors[k];
+    }
+
+    /// Drops the margin rows: only the band was asked for.
+    void cropToBand() {
+        if (t0_ == r0_ && t1_ == r1_) return;
+        const std::size_t first = index(0, r0_), count = std::size_t(w_) * std::size_t(r1_ - r0_);
+        ImageRgb band = ImageRgb::uninitialized(w_, r1_ - r0_);
+        std::copy_n(result_.image.pixels.begin() + std::ptrdiff_t(first), count,
+                    band.pixels.begin());
+        result_.image = std::move(band);
+        if (options_.ids)
+            ids_ = std::vector<ObjectId>(ids_.begin() + std::ptrdiff_t(first),
+                                         ids_.begin() + std::ptrdiff_t(first + count));
+    }
+
+    const RenderOptions& options_;
+    const CameraModel& camera_;
+    const TraceKernel kernel_;
+    const int w_, h_, spp_;
+    const bool adaptive_;
+    const int r0_, r1_, t0_, t1_;
+    const std::function<bool()> cancelled_;
+    RenderResult result_;
+    std::vector<ObjectId> ids_;
+    std::vector<Vec3> normals_;
+};
+
 }  // namespace
 
 RenderResult renderImage(const CompiledScene& scene, const RenderOptions& options) {
     const auto start = std::chrono::steady_clock::now();
-    const RenderSettings& settings = scene.settings();
-    const int w = settings.width, h = settings.height;
-    const int spp = std::max(1, settings.supersampling);
-    const bool adaptive = settings.adaptiveSupersampling && spp > 1;
-    const CameraModel& camera = scene.camera();
-    const TraceKernel kernel(scene, TraceOptions::fromSettings(settings));
-    // The band asked for, and the rows traced in pass 1: adaptive decisions at the band's
-    // edges compare with the rows next to it, so those are traced too (and cropped at the end).
-    const int r0 = std::clamp(options.firstRow, 0, h);
-    const int r1 = options.endRow < 0 ? h : std::clamp(options.endRow, r0, h);
-    const int t0 = adaptive ? std::max(0, r0 - 1) : r0;
-    const int t1 = adaptive ? std::min(h, r1 + 1) : r1;
-    auto index = [&](int x, int y) {
-        return std::size_t(y - t0) * std::size_t(w) + std::size_t(x);
-    };
-    const std::function<bool()> cancelled = [&] {
-        return options.cancel && options.cancel->load(std::memory_order_relaxed);
-    };
-
-    // Pass 1 writes every pixel (tiles skipped on cancellation are cleared), so the buffers
-    // are not cleared first: that would touch 15 MB at 1280x720 before any tracing.
-    RenderResult result;
-    result.image = ImageRgb::uninitialized(w, t1 - t0);
-    const std::size_t pixelCount = result.image.pixels.size();
-    std::vector<ObjectId> ids;  // adaptive supersampling reads them even when not asked for
-    if (options.ids || adaptive) ids.resize(pixelCount);
-    std::vector<Vec3> normals(adaptive ? pixelCount : 0);
-    auto clearTile = [&](int x0, int x1, int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            for (int x = x0; x < x1; ++x) {
-                const std::size_t i = index(x, y);
-                result.image.pixels[i] = Color(0.0f);
-                if (!ids.empty()) ids[i] = kNoObject;
-            }
-        }
-    };
-
-    tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::info::default_concurrency());
-    arenaExecute(arena, [&] {
-        // Pass 1: one centre sample per pixel (all the image needs without supersampling), or
-        // the full pattern when supersampling everywhere. Ids come from the centre ray.
-        result.cancelled = !forEachTile(
-            w, t0, t1, options, result.rays,
-            [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
-                // Each worker's tile buffers, in its huge-page scratch arena (a cold render
-                // would otherwise fault them in 4 KiB at a time on its first tiles).
-                thread_local ScratchVector<int32_t> xs, ys;
-                thread_local ScratchVector<Vec3> columns, origins, dirs;
-                thread_local ScratchVector<uint32_t> seeds;
-                thread_local ScratchVector<Color> colors;
-                thread_local ScratchVector<PrimaryInfo> infos;
-                thread_local ScratchVector<ObjectId> tileIds;
-                if (cancelled()) return clearTile(x0, x1, y0, y1);
-                // The centre rays row by row (row-major, as tilePixels lists them), with what
-                // depends on the column alone or on the row alone worked out once.
-                const std::size_t width = std::size_t(x1 - x0);
-                const std::size_t n = width * std::size_t(y1 - y0);
-                columns.resize(width);
-                origins.resize(n), dirs.resize(n), seeds.resize(n), colors.resize(n);
-                for (int x = x0; x < x1; ++x)
-                    columns[std::size_t(x - x0)] = camera.columnTerm(float(x) + 0.5f);
-                const uint32_t centreKey = hashKey(0u);
-                for (int y = y0; y < y1; ++y) {
-                    const std::size_t row = std::size_t(y - y0) * width;
-                    camera.rowRays(columns.data(), width, float(y) + 0.5f, origins.data() + row,
-                                   dirs.data() + row);
-                    const uint32_t rowKey = hashKey(uint32_t(y));
-                    for (int x = x0; x < x1; ++x)
-                        seeds[row + std::size_t(x - x0)] = pixelSeedKeyed(x, rowKey, centreKey);
-                }
-                if (spp > 1 && !adaptive)  // supersamplePixels takes the pixels as lists
-                    tilePixels(x0, y0, x1, y1, xs, ys, [](int, int) { return true; });
-                const CameraBatch centres{origins.data(), dirs.data(), seeds.data(), n, true};
-                bool done;
-                if (spp == 1 || adaptive) {
-                    TraceOutput out;
-                    out.color = colors.data();
-                    if (!ids.empty()) {
-                        infos.resize(n);
-                        out.primary = infos.data();
-                    }
-                    done = kernel.trace(centres, out, counters, cancelled);
-                } else {
-                    done = supersamplePixels(kernel, xs.data(), ys.data(), n, spp, colors.data(),
-                                             counters, cancelled);
-                    if (done && !ids.empty()) {
-                        tileIds.resize(n);
-                        kernel.firstHits(centres, tileIds.data());
-                        counters.rays += n;  // the id pass traces its centre rays too
-                        infos.resize(n);
-                        for (std::size_t k = 0; k < n; ++k) infos[k].id = tileIds[k];
-                    }
-                }
-                if (!done) return clearTile(x0, x1, y0, y1);
-                for (int y = y0; y < y1; ++y) {
-                    const std::size_t row = std::size_t(y - y0) * width, i = index(x0, y);
-                    std::copy_n(colors.data() + row, width, result.image.pixels.data() + i);
-                    if (!ids.empty())
-                        for (std::size_t k = 0; k < width; ++k) ids[i + k] = infos[row + k].id;
-                    if (adaptive)
-                        for (std::size_t k = 0; k < width; ++k)
-                            normals[i + k] = infos[row + k].normal;
-                }
-                if (options.tileDone) options.tileDone(result.image, x0, y0 - t0, x1, y1 - t0);
-            });
-        if (!adaptive || result.cancelled) return;
-        // Pass 2: supersample only where neighbours differ; decisions read pass 1's image,
-        // so they are written to a copy.
-        ImageRgb refined = result.image;
-        result.cancelled =
-            !forEachTile(w, r0, r1, options, result.rays,
-                         [&](int x0, int y0, int x1, int y1, TraceCounters& counters) {
-                             thread_local ScratchVector<int32_t> xs, ys;
-                             thread_local ScratchVector<Color> colors;
-                             if (cancelled()) return;
-                             tilePixels(x0, y0, x1, y1, xs, ys, [&](int x, int y) {
-                                 return needsSupersampling(result.image.pixels.data(), ids.data(),
-                                                           normals.data(), w, h, x, y, t0);
-                             });
-                             colors.resize(xs.size());
-                             if (!supersamplePixels(kernel, xs.data(), ys.data(), xs.size(), spp,
-                                                    colors.data(), counters, cancelled))
-                                 return;
-                             for (std::size_t k = 0; k < xs.size(); ++k)
-                                 refined.at(xs[k], ys[k] - t0) = colors[k];
-                         });
-        result.image = std::move(refined);
-    });
-    if (t0 != r0 || t1 != r1) {  // drop the margin rows: only the band was asked for
-        const std::size_t first = index(0, r0), count = std::size_t(w) * std::size_t(r1 - r0);
-        ImageRgb band = ImageRgb::uninitialized(w, r1 - r0);
-        std::copy_n(result.image.pixels.begin() + std::ptrdiff_t(first), count,
-                    band.pixels.begin());
-        result.image = std::move(band);
-        if (options.ids)
-            ids = std::vector<ObjectId>(ids.begin() + std::ptrdiff_t(first),
-                                        ids.begin() + std::ptrdiff_t(first + count));
-    }
-    if (options.ids) result.ids = std::move(ids);
+    RenderResult result = FullRender(scene, options).run();
     result.ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;
