@@ -136,45 +136,35 @@ void killAndReap(pid_t pid) {
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
 }
-}  // namespace
 
-std::string describeSignal(int signal) {
-    const char* name = ::strsignal(signal);
-    return "signal " + std::to_string(signal) + (name ? std::string(", ") + name : std::string());
-}
+/// A started child: its pid and the read ends of its result and message pipes.
+struct StartedChild {
+    pid_t pid = -1;
+    int result = -1, messages = -1;
+};
 
-bool writeAllTo(int fd, const void* data, std::size_t size) {
-    const char* bytes = static_cast<const char*>(data);
-    std::size_t done = 0;
-    while (done < size) {
-        const ssize_t n = ::write(fd, bytes + done, size - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return false;
-        done += std::size_t(n);
-    }
-    return true;
-}
-
-ChildOutcome runInChildProcess(const std::function<void(int fd)>& work, const ChildLimits& limits) {
-    ChildOutcome outcome;
+/// Makes the pipes and forks a child that runs `work`; on failure says why in
+/// outcome.problem and returns a pid below 0.
+StartedChild startChild(const std::function<void(int fd)>& work, const ChildLimits& limits,
+                        ChildOutcome& outcome) {
     int result[2], messages[2];
     // O_CLOEXEC: a program another thread starts meanwhile does not inherit the pipes.
     if (::pipe2(result, O_CLOEXEC) != 0) {
         outcome.problem = "cannot create a pipe: " + errnoMessage(errno);
-        return outcome;
+        return {};
     }
     if (::pipe2(messages, O_CLOEXEC) != 0) {
         outcome.problem = "cannot create a pipe: " + errnoMessage(errno);
         ::close(result[0]);
         ::close(result[1]);
-        return outcome;
+        return {};
     }
     const pid_t parent = ::getpid();
     const pid_t pid = ::fork();
     if (pid < 0) {
         outcome.problem = "cannot start a process: " + errnoMessage(errno);
         for (int fd : {result[0], result[1], messages[0], messages[1]}) ::close(fd);
-        return outcome;
+        return {};
     }
     if (pid == 0) {
         ::close(result[0]);
@@ -183,11 +173,17 @@ ChildOutcome runInChildProcess(const std::function<void(int fd)>& work, const Ch
     }
     ::close(result[1]);
     ::close(messages[1]);
+    return {pid, result[0], messages[0]};
+}
 
-    const Clock::time_point deadline = Clock::now() + limits.wallTime;
+/// Reads the child's result and messages into `outcome` until it closes both pipes (Exited)
+/// or something stops it first: the cancel flag, the deadline, too much output, a failed
+/// poll. Closes the pipes.
+ChildOutcome::Ending readChild(const StartedChild& child, const ChildLimits& limits,
+                               Clock::time_point deadline, ChildOutcome& outcome) {
     ChildOutcome::Ending stoppedBy = ChildOutcome::Ending::Exited;
     char buffer[1 << 16];
-    pollfd pipes[2] = {{result[0], POLLIN, 0}, {messages[0], POLLIN, 0}};
+    pollfd pipes[2] = {{child.result, POLLIN, 0}, {child.messages, POLLIN, 0}};
     int openPipes = 2;
     while (openPipes > 0) {
         if (limits.cancel && limits.cancel->load()) {
@@ -227,13 +223,12 @@ ChildOutcome runInChildProcess(const std::function<void(int fd)>& work, const Ch
     }
     for (const pollfd& p : pipes)
         if (p.fd >= 0) ::close(p.fd);
-    if (stoppedBy != ChildOutcome::Ending::Exited) {
-        killAndReap(pid);
-        outcome.ending = stoppedBy;
-        return outcome;
-    }
+    return stoppedBy;
+}
 
-    // The pipe is closed: the child is on its way out, but it gets only the time left.
+/// The child's ending and status once its pipes are closed: it is on its way out, but it
+/// gets only the time left before `deadline`.
+void reapChild(pid_t pid, Clock::time_point deadline, ChildOutcome& outcome) {
     int status = 0;
     for (;;) {
         const pid_t reaped = ::waitpid(pid, &status, WNOHANG);
@@ -242,12 +237,12 @@ ChildOutcome runInChildProcess(const std::function<void(int fd)>& work, const Ch
         if (reaped < 0) {
             // ECHILD: SIGCHLD is ignored and the system reaped it; the output must speak.
             outcome.ending = ChildOutcome::Ending::Exited;
-            return outcome;
+            return;
         }
         if (Clock::now() >= deadline) {
             killAndReap(pid);
             outcome.ending = ChildOutcome::Ending::TimedOut;
-            return outcome;
+            return;
         }
         ::usleep(1000);
     }
@@ -258,6 +253,38 @@ ChildOutcome runInChildProcess(const std::function<void(int fd)>& work, const Ch
         outcome.ending = ChildOutcome::Ending::Exited;
         outcome.status = WEXITSTATUS(status);
     }
+}
+}  // namespace
+
+std::string describeSignal(int signal) {
+    const char* name = ::strsignal(signal);
+    return "signal " + std::to_string(signal) + (name ? std::string(", ") + name : std::string());
+}
+
+bool writeAllTo(int fd, const void* data, std::size_t size) {
+    const char* bytes = static_cast<const char*>(data);
+    std::size_t done = 0;
+    while (done < size) {
+        const ssize_t n = ::write(fd, bytes + done, size - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        done += std::size_t(n);
+    }
+    return true;
+}
+
+ChildOutcome runInChildProcess(const std::function<void(int fd)>& work, const ChildLimits& limits) {
+    ChildOutcome outcome;
+    const StartedChild child = startChild(work, limits, outcome);
+    if (child.pid < 0) return outcome;
+    const Clock::time_point deadline = Clock::now() + limits.wallTime;
+    const ChildOutcome::Ending stoppedBy = readChild(child, limits, deadline, outcome);
+    if (stoppedBy != ChildOutcome::Ending::Exited) {
+        killAndReap(child.pid);
+        outcome.ending = stoppedBy;
+        return outcome;
+    }
+    reapChild(child.pid, deadline, outcome);
     return outcome;
 }
 
