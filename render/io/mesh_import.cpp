@@ -166,6 +166,77 @@ void addLightsAndViews(AssetContent& content, AssetLightsAndCameras found) {
             {camera.name.empty() ? "asset camera" : camera.name, camera.camera});
     content.lightNotes = std::move(found.notes);
 }
+/// Every sub-mesh's vertices appended to `mesh`: positions, the first UV channel ((0, 0) for
+/// vertices of sub-meshes without one; kept only when some sub-mesh has one), normals when
+/// `smoothNormals`. bases[m] is sub-mesh m's first vertex. Empty, or why the asset is unfit.
+std::string readVertices(const aiScene& scene, bool smoothNormals, MeshData& mesh,
+                         std::vector<uint32_t>& bases) {
+    bool anyUvs = false;
+    bases.assign(scene.mNumMeshes, 0);
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh* in = scene.mMeshes[m];
+        bases[m] = static_cast<uint32_t>(mesh.positions.size());
+        anyUvs = anyUvs || in->HasTextureCoords(0);
+        for (unsigned v = 0; v < in->mNumVertices; ++v) {
+            const aiVector3D& p = in->mVertices[v];
+            if (!isFinite(p))
+                return "vertex " + std::to_string(v) + " of mesh " + std::to_string(m) +
+                       " is not a finite number (NaN or infinity)";
+            mesh.positions.emplace_back(p.x, p.y, p.z);
+            const aiVector3D uv =
+                in->HasTextureCoords(0) ? in->mTextureCoords[0][v] : aiVector3D(0, 0, 0);
+            if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
+                return "texture coordinate " + std::to_string(v) + " of mesh " + std::to_string(m) +
+                       " is not a finite number (NaN or infinity)";
+            mesh.uvs.emplace_back(uv.x, uv.y);
+            if (smoothNormals) {
+                const aiVector3D n = in->HasNormals() ? in->mNormals[v] : aiVector3D(0, 0, 0);
+                mesh.normals.emplace_back(n.x, n.y, n.z);
+            }
+        }
+    }
+    if (!anyUvs) mesh.uvs.clear();
+    return {};
+}
+
+/// The sub-meshes' triangles appended to `mesh`, grouped by material so each material's are
+/// one run (a MeshPart); points, lines and degenerate triangles left out (the latter
+/// counted). Empty, or why the asset is unfit.
+std::string readTriangles(const aiScene& scene, const std::vector<uint32_t>& bases,
+                          MeshData& mesh) {
+    std::vector<unsigned> byMaterial(scene.mNumMeshes);
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) byMaterial[m] = m;
+    std::stable_sort(byMaterial.begin(), byMaterial.end(), [&](unsigned a, unsigned b) {
+        return scene.mMeshes[a]->mMaterialIndex < scene.mMeshes[b]->mMaterialIndex;
+    });
+    for (unsigned m : byMaterial) {
+        const aiMesh* in = scene.mMeshes[m];
+        const uint32_t base = bases[m];
+        const auto firstTriangle = static_cast<uint32_t>(mesh.indices.size() / 3);
+        for (unsigned f = 0; f < in->mNumFaces; ++f) {
+            const aiFace& face = in->mFaces[f];
+            if (face.mNumIndices != 3) continue;  // points and lines are not surfaces
+            const unsigned* i = face.mIndices;
+            if (i[0] >= in->mNumVertices || i[1] >= in->mNumVertices || i[2] >= in->mNumVertices)
+                return "face " + std::to_string(f) + " of mesh " + std::to_string(m) +
+                       " refers to a vertex that does not exist";
+            bool repeated = i[0] == i[1] || i[1] == i[2] || i[0] == i[2];
+            if (repeated || zeroArea(mesh.positions[base + i[0]], mesh.positions[base + i[1]],
+                                     mesh.positions[base + i[2]])) {
+                ++mesh.droppedDegenerate;
+                continue;
+            }
+            for (int k = 0; k < 3; ++k) mesh.indices.push_back(base + i[k]);
+        }
+        const auto count = static_cast<uint32_t>(mesh.indices.size() / 3) - firstTriangle;
+        if (count == 0) continue;
+        if (!mesh.parts.empty() && mesh.parts.back().material == in->mMaterialIndex)
+            mesh.parts.back().triangleCount += count;
+        else
+            mesh.parts.push_back({firstTriangle, count, in->mMaterialIndex});
+    }
+    return {};
+}
 }  // namespace
 
 MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals) {
@@ -199,71 +270,16 @@ MeshLoadResult importMeshWithAssimp(const std::string& file, bool smoothNormals)
 
     auto mesh = std::make_shared<MeshData>();
     mesh->sourcePath = file;
-    // The first UV channel, (0, 0) for vertices of sub-meshes without one; kept only when
-    // some sub-mesh has one.
-    bool anyUvs = false;
-    std::vector<uint32_t> bases(scene->mNumMeshes);
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-        const aiMesh* in = scene->mMeshes[m];
-        bases[m] = static_cast<uint32_t>(mesh->positions.size());
-        anyUvs = anyUvs || in->HasTextureCoords(0);
-        for (unsigned v = 0; v < in->mNumVertices; ++v) {
-            const aiVector3D& p = in->mVertices[v];
-            if (!isFinite(p))
-                return fail("vertex " + std::to_string(v) + " of mesh " + std::to_string(m) +
-                            " is not a finite number (NaN or infinity)");
-            mesh->positions.emplace_back(p.x, p.y, p.z);
-            const aiVector3D uv =
-                in->HasTextureCoords(0) ? in->mTextureCoords[0][v] : aiVector3D(0, 0, 0);
-            if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
-                return fail("texture coordinate " + std::to_string(v) + " of mesh " +
-                            std::to_string(m) + " is not a finite number (NaN or infinity)");
-            mesh->uvs.emplace_back(uv.x, uv.y);
-            if (smoothNormals) {
-                const aiVector3D n = in->HasNormals() ? in->mNormals[v] : aiVector3D(0, 0, 0);
-                mesh->normals.emplace_back(n.x, n.y, n.z);
-            }
-        }
-    }
-    // The triangles grouped by material, so each material's are one run (a MeshPart).
-    std::vector<unsigned> byMaterial(scene->mNumMeshes);
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) byMaterial[m] = m;
-    std::stable_sort(byMaterial.begin(), byMaterial.end(), [&](unsigned a, unsigned b) {
-        return scene->mMeshes[a]->mMaterialIndex < scene->mMeshes[b]->mMaterialIndex;
-    });
-    for (unsigned m : byMaterial) {
-        const aiMesh* in = scene->mMeshes[m];
-        const uint32_t base = bases[m];
-        const auto firstTriangle = static_cast<uint32_t>(mesh->indices.size() / 3);
-        for (unsigned f = 0; f < in->mNumFaces; ++f) {
-            const aiFace& face = in->mFaces[f];
-            if (face.mNumIndices != 3) continue;  // points and lines are not surfaces
-            const unsigned* i = face.mIndices;
-            if (i[0] >= in->mNumVertices || i[1] >= in->mNumVertices || i[2] >= in->mNumVertices)
-                return fail("face " + std::to_string(f) + " of mesh " + std::to_string(m) +
-                            " refers to a vertex that does not exist");
-            bool repeated = i[0] == i[1] || i[1] == i[2] || i[0] == i[2];
-            if (repeated || zeroArea(mesh->positions[base + i[0]], mesh->positions[base + i[1]],
-                                     mesh->positions[base + i[2]])) {
-                ++mesh->droppedDegenerate;
-                continue;
-            }
-            for (int k = 0; k < 3; ++k) mesh->indices.push_back(base + i[k]);
-        }
-        const auto count = static_cast<uint32_t>(mesh->indices.size() / 3) - firstTriangle;
-        if (count == 0) continue;
-        if (!mesh->parts.empty() && mesh->parts.back().material == in->mMaterialIndex)
-            mesh->parts.back().triangleCount += count;
-        else
-            mesh->parts.push_back({firstTriangle, count, in->mMaterialIndex});
-    }
+    std::vector<uint32_t> bases;
+    if (std::string why = readVertices(*scene, smoothNormals, *mesh, bases); !why.empty())
+        return fail(why);
+    if (std::string why = readTriangles(*scene, bases, *mesh); !why.empty()) return fail(why);
     if (mesh->indices.empty()) {
         if (mesh->droppedDegenerate > 0)
             return fail("all " + std::to_string(mesh->droppedDegenerate) +
                         " triangles are degenerate (zero area)");
         return fail("contains no triangles");
     }
-    if (!anyUvs) mesh->uvs.clear();
     compact(*mesh);
     if (smoothNormals) repairNormals(*mesh);
     AssetContent asset = collectAssetContent(*scene, file, *mesh);
