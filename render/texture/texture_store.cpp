@@ -82,6 +82,34 @@ private:
     int channels_;
 };
 
+/// The header alone: the image's size, pixel format and whether it has MIP levels. Empty, or
+/// why the file cannot be a texture (not an image, no pixels, too large to MIP-map while
+/// rendering).
+std::string readHeader(const std::string& path, OIIO::ImageSpec& spec, bool& mipmapped) {
+    {
+        auto input = OIIO::ImageInput::open(path);
+        if (!input) {
+            std::string detail = OIIO::geterror();
+            if (detail.empty()) detail = "unknown format or corrupt header";
+            return describeFile(path) + " is not an image that can be read: " + detail;
+        }
+        spec = input->spec();
+        mipmapped = input->seek_subimage(0, 1);
+        (void)input->geterror();
+    }
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+        return describeFile(path) + " has no pixels";
+    const std::int64_t pixels = std::int64_t(spec.width) * spec.height * std::max(spec.depth, 1);
+    if (!mipmapped && pixels > kMaxAutoMipPixels)
+        return describeFile(path) + " is " + std::to_string(spec.width) + " x " +
+               std::to_string(spec.height) +
+               " pixels without MIP levels, more than the 4096 x 4096 that are MIP-mapped "
+               "while rendering; make a tiled, MIP-mapped copy with maketx (Debian's "
+               "openimageio-tools), e.g. `maketx '" +
+               path + "' -o copy.exr`, and use that";
+    return {};
+}
+
 }  // namespace
 
 struct TextureStore::Impl {
@@ -98,6 +126,26 @@ struct TextureStore::Impl {
     std::deque<std::unique_ptr<OiioTexels>> pyramids;
 
     TextureSystem::Perthread* perthread() const { return perthreadOf(system); }
+
+    /// Registers the file with the reader it needs the first time, and afresh when it has
+    /// changed on disk (handles already given out stay valid and see the new pixels). Empty,
+    /// or why the cache cannot read it.
+    std::string registerFile(const std::string& path, const OIIO::ustring& name,
+                             const FileStamp& stamp) {
+        std::lock_guard<std::mutex> lock(registerMutex);
+        auto found = registered.find(path);
+        if (found != registered.end() && found->second == stamp) return {};
+        const bool replace = found != registered.end();
+        if (replace) system->invalidate(name, true);
+        if (!cache->add_file(name, stamp.srgb ? &createSrgbLinearInput : nullptr, nullptr,
+                             replace)) {
+            std::string detail = cache->geterror();
+            return describeFile(path) +
+                   " cannot be read: " + (detail.empty() ? std::string("unknown error") : detail);
+        }
+        registered[path] = stamp;
+        return {};
+    }
 
     /// The MIP pyramid of the file registered as `name`, or null when its levels cannot be
     /// read. Call with registerMutex held.
@@ -174,59 +222,17 @@ TextureHandle TextureStore::open(const std::string& path, std::string& error) {
             return known->second.second;
     }
 
-    // The header alone: its size, pixel format and whether it has MIP levels.
     OIIO::ImageSpec spec;
     bool mipmapped = false;
-    {
-        auto input = OIIO::ImageInput::open(path);
-        if (!input) {
-            std::string detail = OIIO::geterror();
-            if (detail.empty()) detail = "unknown format or corrupt header";
-            error = describeFile(path) + " is not an image that can be read: " + detail;
-            return {};
-        }
-        spec = input->spec();
-        mipmapped = input->seek_subimage(0, 1);
-        (void)input->geterror();
-    }
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
-        error = describeFile(path) + " has no pixels";
-        return {};
-    }
-    const std::int64_t pixels = std::int64_t(spec.width) * spec.height * std::max(spec.depth, 1);
-    if (!mipmapped && pixels > kMaxAutoMipPixels) {
-        error = describeFile(path) + " is " + std::to_string(spec.width) + " x " +
-                std::to_string(spec.height) +
-                " pixels without MIP levels, more than the 4096 x 4096 that are MIP-mapped "
-                "while rendering; make a tiled, MIP-mapped copy with maketx (Debian's "
-                "openimageio-tools), e.g. `maketx '" +
-                path + "' -o copy.exr`, and use that";
-        return {};
-    }
+    error = readHeader(path, spec, mipmapped);
+    if (!error.empty()) return {};
 
     TextureHandle handle;
     handle.srgb = isSrgbEncoded(spec.format);
     handle.channels = spec.nchannels;
     const OIIO::ustring name(path);
-    {
-        // Register the file with the reader it needs the first time, and afresh when it has
-        // changed on disk (handles already given out stay valid and see the new pixels).
-        std::lock_guard<std::mutex> lock(impl_->registerMutex);
-        const FileStamp stamp{modified, size, handle.srgb};
-        auto found = impl_->registered.find(path);
-        if (found == impl_->registered.end() || !(found->second == stamp)) {
-            const bool replace = found != impl_->registered.end();
-            if (replace) impl_->system->invalidate(name, true);
-            if (!impl_->cache->add_file(name, handle.srgb ? &createSrgbLinearInput : nullptr,
-                                        nullptr, replace)) {
-                std::string detail = impl_->cache->geterror();
-                error = describeFile(path) + " cannot be read: " +
-                        (detail.empty() ? std::string("unknown error") : detail);
-                return {};
-            }
-            impl_->registered[path] = stamp;
-        }
-    }
+    error = impl_->registerFile(path, name, FileStamp{modified, size, handle.srgb});
+    if (!error.empty()) return {};
     auto* oiioHandle = impl_->system->get_texture_handle(name, impl_->perthread());
     if (!oiioHandle || !impl_->system->good(oiioHandle)) {
         std::string detail = impl_->system->geterror();
