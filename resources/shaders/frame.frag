@@ -1,6 +1,8 @@
 #version 330 core
 // Shows the deep frame: exposure + tone operator + sRGB on the HDR texture (or a ready
 // debug image), and an outline where the id differs from a neighbour and one is selected.
+// toneMap and srgb are render/image/tonemap.cpp's, constant for constant:
+// tests/unit/frame_shader_tonemap_test.cpp reads them here and fails when the two differ.
 in vec2 uv;
 out vec4 fragColor;
 uniform sampler2D colorTex;
