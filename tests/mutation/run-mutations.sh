@@ -15,7 +15,8 @@ set -euo pipefail
 # minutes each) and run with `setup.sh mutate`. setup.sh --help shows this list.
 readonly QUICK=(dirty-footprint refit-parent-box stale-tile tonemap-reinhard
     deferred-shadows-dropped interleave-one-half box-proxy-kept asset-material-rough-metal-mirror
-    asset-light-own-position asset-camera-gltf-position-twice)
+    asset-light-own-position asset-camera-gltf-position-twice frame-shader-aces
+    snapshot-highlight-cutoff cost-tree-levels)
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "${here}/../.." && pwd)"
