@@ -78,6 +78,175 @@ bool meshChanged(const Object& before, const Object& after) {
     return a && b && (!(*a == *b) || a->data != b->data);
 }
 
+/// Document-wide changes: the image's sides, the camera and traced settings (everything),
+/// the environment, lights and display-only settings. True when the environment changed.
+bool diffDocumentWide(const SceneDocument& before, const SceneDocument& after, SceneEdit& edit) {
+    edit.resized =
+        before.render.width != after.render.width || before.render.height != after.render.height;
+    if (!(before.camera == after.camera) || !sameTracedSettings(before.render, after.render))
+        edit.everything = true;
+    // The environment is seen only by rays that leave the scene (it lights nothing).
+    const bool environmentChanged = !(before.environment == after.environment);
+    edit.environment = environmentChanged && !edit.everything;
+    edit.lights = changedLights(before.lights, after.lights);
+    edit.displayOnly = !edit.everything && (before.render.tonemap != after.render.tonemap ||
+                                            before.render.exposure != after.render.exposure);
+    return environmentChanged;
+}
+
+/// Materials: by name; a changed, added or removed definition retints its users.
+struct MaterialDiff {
+    std::set<std::string> changed;  ///< Names whose definition changed, appeared or went.
+    bool listChanged = false;       ///< Materials added, removed or reordered.
+};
+
+MaterialDiff diffMaterials(const SceneDocument& before, const SceneDocument& after) {
+    MaterialDiff d;
+    d.listChanged = before.materials.size() != after.materials.size();
+    for (std::size_t i = 0; i < after.materials.size(); ++i) {
+        const Material* old = before.findMaterial(after.materials[i].name);
+        if (!old || !sameMaterialData(*old, after.materials[i]))
+            d.changed.insert(after.materials[i].name);
+        if (i >= before.materials.size() || before.materials[i].name != after.materials[i].name)
+            d.listChanged = true;
+    }
+    for (const Material& m : before.materials)
+        if (!after.findMaterial(m.name)) d.changed.insert(m.name);
+    return d;
+}
+
+/// Whether any material of `o` passes `test`.
+template <class Test>
+bool anyMaterial(const Object& o, Test test) {
+    bool any = false;
+    forEachMaterialOf(o, [&](const std::string& name) { any = any || test(name); });
+    return any;
+}
+
+/// Objects: which moved, appeared or went (their old and new bounds are the edit's regions).
+class ObjectDiff {
+public:
+    ObjectDiff(const SceneDocument& before, const SceneDocument& after,
+               const MaterialDiff& materials, SceneEdit& edit)
+        : before_(before), after_(after), materials_(materials), edit_(edit) {}
+
+    /// Compares every object of `before` with its namesake in `after`.
+    void run() {
+        // Objects kept in place: the document diff names the changed ones without visiting
+        // the rest, unless a material definition changed (then its users are found by
+        // walking).
+        const DocumentChange change = describeChange(before_, after_);
+        if (!change.objectsRestructured && materials_.changed.empty()) {
+            for (const DocumentChange::ObjectEdit& e : change.objects)
+                compare(before_.objects[e.index], after_.objects[e.index]);
+            return;
+        }
+        std::map<ObjectId, const Object*> old;
+        for (const Object& o : before_.objects) old[o.id] = &o;
+        for (const Object& o : after_.objects) {
+            auto it = old.find(o.id);
+            if (it == old.end()) {
+                added.push_back(o.id);
+                structural = true;
+                if (isPlane(o) && o.visible) edit_.everything = true;
+                continue;
+            }
+            const Object& prev = *it->second;
+            old.erase(it);
+            compare(prev, o);
+        }
+        for (const auto& [id, o] : old) {
+            structural = true;
+            removed.push_back(id);
+            if (isPlane(*o) && o->visible) edit_.everything = true;
+        }
+    }
+
+    std::vector<ObjectId> moved, added, removed;
+    std::set<ObjectId> reshadowed;  ///< Retinted objects whose filtered shadows changed.
+    bool structural = false;        ///< Objects added, removed, shown, hidden or retyped.
+
+private:
+    /// Glass filters the shadows it casts (scenes/FORMAT.md "Shadows"): a material change of
+    /// an object that is or was transparent reaches every pixel whose shadow rays cross it.
+    bool filters(const SceneDocument& doc, const std::string& name) const {
+        const Material* m = doc.findMaterial(name);
+        return !doc.render.opaqueShadows && m && m->transparency > 0.0f;
+    }
+    bool castsFilteredShadow(const Object& prev, const Object& o) const {
+        return anyMaterial(prev, [&](const std::string& m) { return filters(before_, m); }) ||
+               anyMaterial(o, [&](const std::string& m) { return filters(after_, m); });
+    }
+
+    void compare(const Object& prev, const Object& o) {
+        const bool shapeChanged =
+            !(prev.geometry == o.geometry) || !(prev.transform == o.transform);
+        const bool kindChanged = prev.geometry.index() != o.geometry.index();
+        const bool materialChanged =
+            prev.material != o.material ||
+            anyMaterial(o, [&](const std::string& m) { return materials_.changed.count(m) > 0; });
+        if (isPlane(o) || isPlane(prev)) {
+            if (shapeChanged || kindChanged || prev.visible != o.visible)
+                edit_.everything = true;
+            else if (materialChanged && o.visible && castsFilteredShadow(prev, o))
+                edit_.everything = true;
+            else if (materialChanged && o.visible)
+                edit_.retinted.push_back(o.id);
+            structural |= kindChanged || prev.visible != o.visible;
+            return;
+        }
+        if (kindChanged || prev.visible != o.visible || meshChanged(prev, o)) {
+            structural = true;
+            added.push_back(o.id);
+            removed.push_back(o.id);
+            edit_.focus = o.id;
+        } else if (shapeChanged && o.visible) {
+            moved.push_back(o.id);
+            edit_.focus = o.id;
+        } else if (materialChanged && o.visible) {
+            moved.push_back(o.id);  // Recompiled for its material index; bounds unchanged.
+            edit_.retinted.push_back(o.id);
+            if (castsFilteredShadow(prev, o)) reshadowed.insert(o.id);
+        }
+    }
+
+    const SceneDocument& before_;
+    const SceneDocument& after_;
+    const MaterialDiff& materials_;
+    SceneEdit& edit_;
+};
+
+/// The snapshot of `after`: rebuilt (reusing mesh BVHs), refitted, or the same.
+std::shared_ptr<const CompiledScene> snapshotAfter(
+    const SceneDocument& after, const std::shared_ptr<const CompiledScene>& beforeSnapshot,
+    EngineKind engine, bool rebuild, const std::vector<ObjectId>& moved, SceneEdit& edit) {
+    if (rebuild) return std::make_shared<const CompiledScene>(after, beforeSnapshot.get(), engine);
+    if (!moved.empty() || !edit.retinted.empty()) {
+        edit.refitted = true;
+        return std::make_shared<const CompiledScene>(beforeSnapshot->refitted(after, moved));
+    }
+    return beforeSnapshot;
+}
+
+/// The edit's regions: the old bounds of what went, the new of what came, both of what moved
+/// (a material change alone re-shapes nothing: its pixels are retinted).
+void addRegions(const ObjectDiff& objects, const CompiledScene& b, const CompiledScene& a,
+                SceneEdit& edit) {
+    auto addRegion = [&](const Aabb& box) {
+        if (!box.empty()) edit.regions.push_back(box);
+    };
+    for (ObjectId id : objects.removed) addRegion(b.objectBounds(id));
+    for (ObjectId id : objects.added) addRegion(a.objectBounds(id));
+    for (ObjectId id : objects.moved) {
+        const Aabb ob = b.objectBounds(id), nb = a.objectBounds(id);
+        if (ob.min == nb.min && ob.max == nb.max && !objects.reshadowed.count(id) &&
+            std::find(edit.retinted.begin(), edit.retinted.end(), id) != edit.retinted.end())
+            continue;  // A material change only: its pixels are retinted, not re-shaped.
+        addRegion(ob);
+        addRegion(nb);
+    }
+}
+
 }  // namespace
 
 SceneUpdate updateScene(const SceneDocument& before,
@@ -91,137 +260,15 @@ SceneUpdate updateScene(const SceneDocument& before,
         edit.everything = edit.resized = true;
         return update;
     }
-    edit.resized =
-        before.render.width != after.render.width || before.render.height != after.render.height;
-    if (!(before.camera == after.camera) || !sameTracedSettings(before.render, after.render))
-        edit.everything = true;
-    // The environment is seen only by rays that leave the scene (it lights nothing).
-    const bool environmentChanged = !(before.environment == after.environment);
-    edit.environment = environmentChanged && !edit.everything;
-    edit.lights = changedLights(before.lights, after.lights);
-    edit.displayOnly = !edit.everything && (before.render.tonemap != after.render.tonemap ||
-                                            before.render.exposure != after.render.exposure);
-
-    // Materials: by name; a changed, added or removed definition retints its users.
-    std::set<std::string> changedMaterials;
-    bool materialListChanged = before.materials.size() != after.materials.size();
-    for (std::size_t i = 0; i < after.materials.size(); ++i) {
-        const Material* old = before.findMaterial(after.materials[i].name);
-        if (!old || !sameMaterialData(*old, after.materials[i]))
-            changedMaterials.insert(after.materials[i].name);
-        if (i >= before.materials.size() || before.materials[i].name != after.materials[i].name)
-            materialListChanged = true;
-    }
-    for (const Material& m : before.materials)
-        if (!after.findMaterial(m.name)) changedMaterials.insert(m.name);
-
-    // Glass filters the shadows it casts (scenes/FORMAT.md "Shadows"): a material change of
-    // an object that is or was transparent reaches every pixel whose shadow rays cross it.
-    auto filters = [](const SceneDocument& doc, const std::string& name) {
-        const Material* m = doc.findMaterial(name);
-        return !doc.render.opaqueShadows && m && m->transparency > 0.0f;
-    };
-    auto anyMaterial = [](const Object& o, auto test) {
-        bool any = false;
-        forEachMaterialOf(o, [&](const std::string& name) { any = any || test(name); });
-        return any;
-    };
-    auto castsFilteredShadow = [&](const Object& prev, const Object& o) {
-        return anyMaterial(prev, [&](const std::string& m) { return filters(before, m); }) ||
-               anyMaterial(o, [&](const std::string& m) { return filters(after, m); });
-    };
-    std::set<ObjectId> reshadowed;
-
-    std::vector<ObjectId> moved, added, removed;
-    bool structural = false;
-    auto compare = [&](const Object& prev, const Object& o) {
-        const bool shapeChanged =
-            !(prev.geometry == o.geometry) || !(prev.transform == o.transform);
-        const bool kindChanged = prev.geometry.index() != o.geometry.index();
-        const bool materialChanged =
-            prev.material != o.material ||
-            anyMaterial(o, [&](const std::string& m) { return changedMaterials.count(m) > 0; });
-        if (isPlane(o) || isPlane(prev)) {
-            if (shapeChanged || kindChanged || prev.visible != o.visible)
-                edit.everything = true;
-            else if (materialChanged && o.visible && castsFilteredShadow(prev, o))
-                edit.everything = true;
-            else if (materialChanged && o.visible)
-                edit.retinted.push_back(o.id);
-            structural |= kindChanged || prev.visible != o.visible;
-            return;
-        }
-        if (kindChanged || prev.visible != o.visible || meshChanged(prev, o)) {
-            structural = true;
-            added.push_back(o.id);
-            removed.push_back(o.id);
-            edit.focus = o.id;
-        } else if (shapeChanged && o.visible) {
-            moved.push_back(o.id);
-            edit.focus = o.id;
-        } else if (materialChanged && o.visible) {
-            moved.push_back(o.id);  // Recompiled for its material index; bounds unchanged.
-            edit.retinted.push_back(o.id);
-            if (castsFilteredShadow(prev, o)) reshadowed.insert(o.id);
-        }
-    };
-
-    // Objects kept in place: the document diff names the changed ones without visiting the
-    // rest, unless a material definition changed (then its users are found by walking).
-    const DocumentChange change = describeChange(before, after);
-    std::map<ObjectId, const Object*> old;
-    if (!change.objectsRestructured && changedMaterials.empty()) {
-        for (const DocumentChange::ObjectEdit& e : change.objects)
-            compare(before.objects[e.index], after.objects[e.index]);
-    } else {
-        for (const Object& o : before.objects) old[o.id] = &o;
-        for (const Object& o : after.objects) {
-            auto it = old.find(o.id);
-            if (it == old.end()) {
-                added.push_back(o.id);
-                structural = true;
-                if (isPlane(o) && o.visible) edit.everything = true;
-                continue;
-            }
-            const Object& prev = *it->second;
-            old.erase(it);
-            compare(prev, o);
-        }
-    }
-    for (const auto& [id, o] : old) {
-        structural = true;
-        removed.push_back(id);
-        if (isPlane(*o) && o->visible) edit.everything = true;
-    }
-
-    if (edit.everything || structural || materialListChanged || !edit.lights.empty() ||
-        environmentChanged) {
-        update.snapshot =
-            std::make_shared<const CompiledScene>(after, beforeSnapshot.get(), engine);
-    } else if (!moved.empty() || !edit.retinted.empty()) {
-        update.snapshot =
-            std::make_shared<const CompiledScene>(beforeSnapshot->refitted(after, moved));
-        edit.refitted = true;
-    } else {
-        update.snapshot = beforeSnapshot;
-    }
-    const CompiledScene& b = *beforeSnapshot;
-    const CompiledScene& a = *update.snapshot;
-    if (a.epsilon() != b.epsilon()) edit.everything = true;
-
-    auto addRegion = [&](const Aabb& box) {
-        if (!box.empty()) edit.regions.push_back(box);
-    };
-    for (ObjectId id : removed) addRegion(b.objectBounds(id));
-    for (ObjectId id : added) addRegion(a.objectBounds(id));
-    for (ObjectId id : moved) {
-        const Aabb ob = b.objectBounds(id), nb = a.objectBounds(id);
-        if (ob.min == nb.min && ob.max == nb.max && !reshadowed.count(id) &&
-            std::find(edit.retinted.begin(), edit.retinted.end(), id) != edit.retinted.end())
-            continue;  // A material change only: its pixels are retinted, not re-shaped.
-        addRegion(ob);
-        addRegion(nb);
-    }
+    const bool environmentChanged = diffDocumentWide(before, after, edit);
+    const MaterialDiff materials = diffMaterials(before, after);
+    ObjectDiff objects(before, after, materials, edit);
+    objects.run();
+    const bool rebuild = edit.everything || objects.structural || materials.listChanged ||
+                         !edit.lights.empty() || environmentChanged;
+    update.snapshot = snapshotAfter(after, beforeSnapshot, engine, rebuild, objects.moved, edit);
+    if (update.snapshot->epsilon() != beforeSnapshot->epsilon()) edit.everything = true;
+    addRegions(objects, *beforeSnapshot, *update.snapshot, edit);
     return update;
 }
 
