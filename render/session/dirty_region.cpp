@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "core/parallel.h"
+#include "session/dirty_bounds.h"
 #include "session/frame/byte_lanes.h"
 
 namespace rs {
@@ -60,58 +61,6 @@ bool shadowsMayCross(const Aabb& points, const CompiledLight& l, const Aabb& reg
     return segmentHitsBox(points.center(), l.position, grown(region, r));
 }
 
-/// How much wider than exact the shadow cone is taken, per unit of a point's distance from
-/// the region's centre (and of the sphere's radius): a hundred times float rounding, which
-/// the axis toward a light kSunDistance away carries (its position is rounded to 8 units).
-constexpr float kConeSlack = 1e-5f;
-
-/// The cone a region's bounding sphere (grown by the light's radius) subtends from a light:
-/// a point outside it cannot have a shadow ray to that light crossing the region. No
-/// divisions or roots per test, so it pre-filters the exact segment test cheaply.
-/// Points are measured from the sphere's centre, never from the light: for a sun, a point
-/// kSunDistance (1e8) away, p - light keeps none of the digits that place p (floats are 8
-/// apart there), and the cosine of the cone's half-angle (a few units at 1e8) rounds to 1, so
-/// the old test from the apex left out most of the points the sun's shadow rays reach the
-/// region from. From the centre the same cone is, for a sun, a cylinder a few units wide.
-struct ShadowCone {
-    Vec3 centre;    ///< Sphere centre.
-    Vec3 axis;      ///< Unit, from the light toward the centre.
-    float radius;   ///< Grown sphere radius (without the pixel's own hit radius).
-    float dist;     ///< Light to sphere centre.
-    float invDist;  ///< 1 / dist (0 when the light sits at the centre).
-    /// True when a segment from `p` (within `slack` of it) to the light may cross the region.
-    bool mayContain(const Vec3& p, float slack) const {
-        const Vec3 w = p - centre;
-        const float along = glm::dot(w, axis);  // p - light = (dist + along) axis + across
-        const Vec3 across = w - along * axis;
-        const float across2 = glm::dot(across, across);
-        // The rounding allowance grows with |w|, bounded by its 1-norm (no root).
-        const float grownBy = std::abs(w.x) + std::abs(w.y) + std::abs(w.z) + radius + slack;
-        const float r = radius + slack + kConeSlack * grownBy;
-        if (r >= dist) return true;  // The light sits in (or touches) the sphere.
-        const float fromLight = dist + along;
-        if (fromLight <= 0.0f) return false;  // Behind the light.
-        // Closer to the light than the region: |p - light|^2 < (dist - r)^2, written as a
-        // product so that no two squares of dist are subtracted.
-        if ((along + r) * (fromLight + dist - r) + across2 < 0.0f) return false;
-        // Within the half-angle: across2 / |p - light|^2 <= (r / dist)^2, that is
-        // across2 (dist^2 - r^2) <= fromLight^2 r^2, here divided by dist^2.
-        const float k = r * invDist, f = fromLight * invDist;
-        return across2 * (1.0f - k * k) <= f * f * (r * r);
-    }
-};
-
-ShadowCone makeCone(const CompiledLight& l, const Aabb& region) {
-    ShadowCone c;
-    c.centre = region.center();
-    const Vec3 toCenter = c.centre - l.position;
-    c.dist = glm::length(toCenter);
-    c.axis = c.dist > 0.0f ? toCenter / c.dist : Vec3(0, 0, 1);
-    c.invDist = c.dist > 0.0f ? 1.0f / c.dist : 0.0f;
-    c.radius = 0.5f * glm::length(region.extent()) + l.radius;
-    return c;
-}
-
 /// Can a segment from a point of `starts` to a point of `ends` cross `region`? Such segments
 /// stay within max(start radius, end radius) of the segment joining the two box centres.
 bool segmentsMayCross(const Aabb& starts, const Aabb& ends, const Aabb& region) {
@@ -138,10 +87,6 @@ struct MarkContext {
     float lightSlack = 0.0f;  ///< Rounding allowance of the light-facing test (scene scale).
 };
 
-/// How far (in cosine) outside a spot light's falloff cone a point must lie to be left alone:
-/// the cone test here and the integrator's round differently.
-constexpr float kSpotConeSlack = 1e-4f;
-
 /// Whether a changed light can add to pixel i: unless the pixel sees only one shading point
 /// (no mirror or glass in its tree, one sample) and every changed light sphere lies wholly
 /// below that point's horizon, where the integrator adds nothing (n . l <= 0 for every
@@ -154,20 +99,11 @@ bool lightMayChange(const MarkContext& c, std::size_t i) {
         hb.w != 0.0f)
         return true;
     const Vec3 p(hb);
-    // The integrator faces the normal toward the incoming camera ray.
     const Vec3 toEye = c.camera->orthographic() ? -c.camera->forward() : c.camera->origin() - p;
-    const Vec3 n = f.normal()[i];
-    const float facing = glm::dot(n, toEye);
-    if (std::abs(facing) <= 1e-4f * glm::length(toEye)) return true;  // Grazing: either side.
-    const Vec3 ns = facing > 0.0f ? n : -n;
-    for (const LightSphere& l : c.edit.lights) {
-        const Vec3 toPoint = p - l.position;
-        // Outside a spot light's falloff cone it adds nothing (spotFactor is 0 there).
-        if (l.spot &&
-            glm::dot(l.axis, toPoint) < (l.cosFalloff - kSpotConeSlack) * glm::length(toPoint))
-            continue;
-        if (glm::dot(ns, -toPoint) > -(l.radius + c.lightSlack)) return true;
-    }
+    Vec3 ns;
+    if (!faceViewer(f.normal()[i], toEye, ns)) return true;  // Grazing: either side.
+    for (const LightSphere& l : c.edit.lights)
+        if (lightMayReach(p, ns, l, c.lightSlack)) return true;
     return false;
 }
 
@@ -364,6 +300,137 @@ void resetMask(DirtyMask& mask, const DeepFrame& frame) {
     mask.blocks.clear();
 }
 
+/// Marks every pixel of the frame `mask` was reset for.
+std::size_t markEverything(DirtyMask& mask) {
+    mask.blocks.resize(mask.touched.size());  // Before any mark is written.
+    for (std::size_t b = 0; b < mask.blocks.size(); ++b) mask.blocks[b] = int(b);
+    std::fill(mask.touched.begin(), mask.touched.end(), 1);
+    std::fill(mask.pixels.begin(), mask.pixels.end(), 1);
+    return mask.pixels.size();
+}
+
+/// Fills in what marking `c.edit` in `scope` needs: false when the scope leaves nothing to
+/// mark.
+bool prepareContext(MarkContext& c, const CompiledScene& after, MarkScope scope) {
+    const SceneEdit& edit = c.edit;
+    c.camera = &after.camera();
+    c.lightSlack = 1e-4f * std::max(1.0f, glm::length(after.sceneBounds().extent()));
+    if (scope == MarkScope::WithoutShadows) c.shadows = false;
+    if (scope == MarkScope::ShadowsOnly) {
+        // Retints, light and environment edits are never deferred.
+        if (!c.shadows || !edit.retinted.empty() || !edit.lights.empty() || edit.environment)
+            return false;
+        c.segments = false;
+    }
+    c.regions = mergeOverlapping(edit.regions);
+    if (scope != MarkScope::ShadowsOnly)
+        for (const Aabb& box : edit.regions)
+            c.footprints.push_back(screenFootprint(after.camera(), box));
+    for (const Aabb& box : c.regions) {
+        for (const CompiledLight& l : c.lights) {
+            c.cones.push_back(makeCone(l, box));
+            c.grownRegions.push_back(grown(box, l.radius));
+        }
+    }
+    return true;
+}
+
+/// How many blocks and pixels marking looked at.
+struct Looked {
+    std::size_t blocks = 0, pixels = 0;
+};
+
+/// Marks into `core` (frame-sized, zero) the pixels that may change, and each block's
+/// BlockMarks into `blockMarked`. A tile whose summary (the union of its blocks') passes no
+/// test is skipped whole.
+Looked markCore(const MarkContext& c, std::vector<uint8_t>& core,
+                std::vector<uint8_t>& blockMarked) {
+    const DeepFrame& frame = c.frame;
+    const int w = frame.width(), h = frame.height();
+    const int blocksX = frame.blocksX(), blocksY = frame.blocksY();
+    const int B = DeepFrame::kBlock, T = frame.tileSize(), perTile = T / B;
+    std::atomic<std::size_t> blocksTested{0}, pixelsTested{0};
+    parallelForIndex(0, frame.tilesX() * frame.tilesY(), [&](int t) {
+        const int tx = t % frame.tilesX(), ty = t / frame.tilesX();
+        const PixelRect tr{tx * T, ty * T, std::min(w, (tx + 1) * T), std::min(h, (ty + 1) * T)};
+        if (!tileTests(c, tr, frame.tileSummary()[std::size_t(t)]).any()) return;
+        std::size_t tested = 0, pixels = 0;
+        for (int by = ty * perTile; by < std::min(blocksY, (ty + 1) * perTile); ++by) {
+            for (int bx = tx * perTile; bx < std::min(blocksX, (tx + 1) * perTile); ++bx) {
+                const int b = by * blocksX + bx;
+                const PixelRect r{bx * B, by * B, std::min(w, (bx + 1) * B),
+                                  std::min(h, (by + 1) * B)};
+                const TileTests tests = tileTests(c, r, frame.blockSummary()[std::size_t(b)]);
+                ++tested;
+                if (!tests.any()) continue;
+                if (tests.footprint && insideFootprint(c, r)) {
+                    // Every pixel passes its first test: no need to ask each one.
+                    for (int y = r.y0; y < r.y1; ++y)
+                        markRow(core.data() + frame.index(r.x0, y), r.x1 - r.x0);
+                    blockMarked[std::size_t(b)] = kWhole;
+                    continue;
+                }
+                bool any = false;
+                pixels += std::size_t(r.area());
+                for (int y = r.y0; y < r.y1; ++y)
+                    for (int x = r.x0; x < r.x1; ++x)
+                        if (pixelMayChange(c, tests, x, y, t)) core[frame.index(x, y)] = any = true;
+                blockMarked[std::size_t(b)] = any ? kSome : kNone;
+            }
+        }
+        blocksTested += tested;
+        pixelsTested += pixels;
+    });
+    return {blocksTested.load(), pixelsTested.load()};
+}
+
+/// The blocks next to (or at) a marked one, in increasing order: only those can get a mark.
+std::vector<int> blocksNearMarks(const std::vector<uint8_t>& blockMarked, int blocksX,
+                                 int blocksY) {
+    const int blocks = blocksX * blocksY;
+    std::vector<uint8_t> near(std::size_t(blocks), 0);
+    for (int b = 0; b < blocks; ++b) {
+        if (!blockMarked[std::size_t(b)]) continue;
+        const int bx = b % blocksX, by = b / blocksX;
+        for (int ny = std::max(0, by - 1); ny <= std::min(blocksY - 1, by + 1); ++ny)
+            for (int nx = std::max(0, bx - 1); nx <= std::min(blocksX - 1, bx + 1); ++nx)
+                near[std::size_t(ny * blocksX + nx)] = 1;
+    }
+    std::vector<int> nearBlocks;
+    for (int b = 0; b < blocks; ++b)
+        if (near[std::size_t(b)]) nearBlocks.push_back(b);
+    return nearBlocks;
+}
+
+/// Grows the marks of `core` to their 8 neighbours into `mask` over mask.blocks; returns the
+/// pixels marked, and adds the pixels looked at to `pixelsGrown`.
+std::size_t growMarks(const DeepFrame& frame, const std::vector<uint8_t>& core,
+                      const std::vector<uint8_t>& blockMarked, DirtyMask& mask,
+                      std::size_t& pixelsGrown) {
+    const int w = frame.width(), h = frame.height(), blocksX = frame.blocksX();
+    const int B = DeepFrame::kBlock;
+    std::atomic<std::size_t> count{0}, grownPixels{0};
+    parallelForIndex(0, int(mask.blocks.size()), [&](int k) {
+        const int b = mask.blocks[std::size_t(k)];
+        const int bx = b % blocksX, by = b / blocksX;
+        mask.touched[std::size_t(b)] = 1;
+        const int y1 = std::min(h, (by + 1) * B), x1 = std::min(w, (bx + 1) * B);
+        if (blockMarked[std::size_t(b)] == kWhole) {
+            // Every pixel is marked itself, so its grown mark is too.
+            for (int y = by * B; y < y1; ++y)
+                markRow(mask.pixels.data() + frame.index(bx * B, y), x1 - bx * B);
+            count += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
+            return;
+        }
+        const std::size_t local =
+            growBlockMarks(core.data(), w, h, bx * B, by * B, mask.pixels.data());
+        count += local;
+        grownPixels += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
+    });
+    pixelsGrown = grownPixels.load();
+    return count.load();
+}
+
 }  // namespace
 
 std::size_t growBlockMarks(const uint8_t* core, int width, int height, int x0, int y0,
@@ -410,44 +477,17 @@ std::size_t growBlockMarks(const uint8_t* core, int width, int height, int x0, i
 std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
                             const DeepFrame& frame, DirtyMask& mask, MarkScope scope,
                             MarkStats* stats) {
-    const int w = frame.width(), h = frame.height();
     if (stats) *stats = MarkStats{};
     resetMask(mask, frame);
-    if (edit.everything) {
-        mask.blocks.resize(mask.touched.size());  // Before any mark is written.
-        for (std::size_t b = 0; b < mask.blocks.size(); ++b) mask.blocks[b] = int(b);
-        std::fill(mask.touched.begin(), mask.touched.end(), 1);
-        std::fill(mask.pixels.begin(), mask.pixels.end(), 1);
-        return mask.pixels.size();
-    }
+    if (edit.everything) return markEverything(mask);
     if (!edit.traced()) return 0;
 
     MarkContext c{edit, frame, after.lights(), {}, after.settings().shadowSamples > 0, {}, {}, {}};
-    c.camera = &after.camera();
-    c.lightSlack = 1e-4f * std::max(1.0f, glm::length(after.sceneBounds().extent()));
-    if (scope == MarkScope::WithoutShadows) c.shadows = false;
-    if (scope == MarkScope::ShadowsOnly) {
-        // Retints, light and environment edits are never deferred.
-        if (!c.shadows || !edit.retinted.empty() || !edit.lights.empty() || edit.environment)
-            return 0;
-        c.segments = false;
-    }
-    c.regions = mergeOverlapping(edit.regions);
-    if (scope != MarkScope::ShadowsOnly)
-        for (const Aabb& box : edit.regions)
-            c.footprints.push_back(screenFootprint(after.camera(), box));
-    for (const Aabb& box : c.regions) {
-        for (const CompiledLight& l : c.lights) {
-            c.cones.push_back(makeCone(l, box));
-            c.grownRegions.push_back(grown(box, l.radius));
-        }
-    }
+    if (!prepareContext(c, after, scope)) return 0;
 
     // Mark, then grow each mark to its 8 neighbours (a neighbour's change can flip an
-    // adaptive supersampling decision). A tile whose summary (the union of its blocks') passes
-    // no test is skipped whole; growing visits only blocks next to marked ones.
-    const int blocksX = frame.blocksX(), blocksY = frame.blocksY(), blocks = blocksX * blocksY;
-    const int B = DeepFrame::kBlock, T = frame.tileSize(), perTile = T / B;
+    // adaptive supersampling decision). Growing visits only blocks next to marked ones.
+    const int blocks = frame.blocksX() * frame.blocksY();
     std::vector<uint8_t> blockMarked(std::size_t(blocks), 0);
     // The marks before growing. Reused between edits and zero between them: each marking
     // clears the blocks it marked, not the frame. Bound to references here because a
@@ -458,71 +498,11 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     bool& coreZero = coreBufferZero;
     if (!coreZero || core.size() != mask.pixels.size()) core.assign(mask.pixels.size(), 0);
     coreZero = false;
-    std::atomic<std::size_t> blocksTested{0}, pixelsTested{0};
-    parallelForIndex(0, frame.tilesX() * frame.tilesY(), [&](int t) {
-        const int tx = t % frame.tilesX(), ty = t / frame.tilesX();
-        const PixelRect tr{tx * T, ty * T, std::min(w, (tx + 1) * T), std::min(h, (ty + 1) * T)};
-        if (!tileTests(c, tr, frame.tileSummary()[std::size_t(t)]).any()) return;
-        std::size_t tested = 0, pixels = 0;
-        for (int by = ty * perTile; by < std::min(blocksY, (ty + 1) * perTile); ++by) {
-            for (int bx = tx * perTile; bx < std::min(blocksX, (tx + 1) * perTile); ++bx) {
-                const int b = by * blocksX + bx;
-                const PixelRect r{bx * B, by * B, std::min(w, (bx + 1) * B),
-                                  std::min(h, (by + 1) * B)};
-                const TileTests tests = tileTests(c, r, frame.blockSummary()[std::size_t(b)]);
-                ++tested;
-                if (!tests.any()) continue;
-                if (tests.footprint && insideFootprint(c, r)) {
-                    // Every pixel passes its first test: no need to ask each one.
-                    for (int y = r.y0; y < r.y1; ++y)
-                        markRow(core.data() + frame.index(r.x0, y), r.x1 - r.x0);
-                    blockMarked[std::size_t(b)] = kWhole;
-                    continue;
-                }
-                bool any = false;
-                pixels += std::size_t(r.area());
-                for (int y = r.y0; y < r.y1; ++y)
-                    for (int x = r.x0; x < r.x1; ++x)
-                        if (pixelMayChange(c, tests, x, y, t)) core[frame.index(x, y)] = any = true;
-                blockMarked[std::size_t(b)] = any ? kSome : kNone;
-            }
-        }
-        blocksTested += tested;
-        pixelsTested += pixels;
-    });
-    // The blocks next to (or at) a marked one: only those can get a mark.
-    std::vector<int> nearBlocks;
-    {
-        std::vector<uint8_t> near(std::size_t(blocks), 0);
-        for (int b = 0; b < blocks; ++b) {
-            if (!blockMarked[std::size_t(b)]) continue;
-            const int bx = b % blocksX, by = b / blocksX;
-            for (int ny = std::max(0, by - 1); ny <= std::min(blocksY - 1, by + 1); ++ny)
-                for (int nx = std::max(0, bx - 1); nx <= std::min(blocksX - 1, bx + 1); ++nx)
-                    near[std::size_t(ny * blocksX + nx)] = 1;
-        }
-        for (int b = 0; b < blocks; ++b)
-            if (near[std::size_t(b)]) nearBlocks.push_back(b);
-    }
-    mask.blocks = std::move(nearBlocks);  // Before any mark is written (the mask's invariant).
-    std::atomic<std::size_t> count{0}, pixelsGrown{0};
-    parallelForIndex(0, int(mask.blocks.size()), [&](int k) {
-        const int b = mask.blocks[std::size_t(k)];
-        const int bx = b % blocksX, by = b / blocksX;
-        mask.touched[std::size_t(b)] = 1;
-        const int y1 = std::min(h, (by + 1) * B), x1 = std::min(w, (bx + 1) * B);
-        if (blockMarked[std::size_t(b)] == kWhole) {
-            // Every pixel is marked itself, so its grown mark is too.
-            for (int y = by * B; y < y1; ++y)
-                markRow(mask.pixels.data() + frame.index(bx * B, y), x1 - bx * B);
-            count += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
-            return;
-        }
-        const std::size_t local =
-            growBlockMarks(core.data(), w, h, bx * B, by * B, mask.pixels.data());
-        count += local;
-        pixelsGrown += std::size_t(y1 - by * B) * std::size_t(x1 - bx * B);
-    });
+    const Looked looked = markCore(c, core, blockMarked);
+    // Before any mark is written (the mask's invariant).
+    mask.blocks = blocksNearMarks(blockMarked, frame.blocksX(), frame.blocksY());
+    std::size_t pixelsGrown = 0;
+    const std::size_t count = growMarks(frame, core, blockMarked, mask, pixelsGrown);
     // Only blocks with a mark wrote to `core`.
     std::vector<int> markedBlocks;
     for (int b = 0; b < blocks; ++b)
@@ -530,12 +510,12 @@ std::size_t markDirtyPixels(const SceneEdit& edit, const CompiledScene& after,
     clearBlocks(core, frame, markedBlocks);
     coreZero = true;
     if (stats) {
-        stats->blocksTested = blocksTested.load();
+        stats->blocksTested = looked.blocks;
         stats->blocksGrown = mask.blocks.size();
-        stats->pixelsTested = pixelsTested.load();
-        stats->pixelsGrown = pixelsGrown.load();
+        stats->pixelsTested = looked.pixels;
+        stats->pixelsGrown = pixelsGrown;
     }
-    return count.load();
+    return count;
 }
 
 }  // namespace rs

@@ -16,7 +16,7 @@ set -euo pipefail
 readonly QUICK=(dirty-footprint refit-parent-box stale-tile tonemap-reinhard
     deferred-shadows-dropped interleave-one-half box-proxy-kept asset-material-rough-metal-mirror
     asset-light-own-position asset-camera-gltf-position-twice frame-shader-aces
-    snapshot-highlight-cutoff cost-tree-levels)
+    snapshot-highlight-cutoff cost-tree-levels dirty-light-radius)
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "${here}/../.." && pwd)"
