@@ -1,8 +1,8 @@
-// RenderSession API and scheduler: edits, generations, pass planning, waiting.
+// RenderSession API and scheduler: edits, generations, applying documents, running passes,
+// waiting. Its parts: DocumentInbox, PassPlanner (pass_planner.cpp), FrameBook, TileArena.
 #include "session/render_session.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
@@ -28,22 +28,13 @@ std::string failureMessage(std::exception_ptr failure) {
     return "rendering failed: " + describeFailure(failure);
 }
 
-/// More regions than this are merged into their bounding box (a long, winding drag).
-constexpr std::size_t kMaxDeferredShadowRegions = 64;
-/// A governed interactive pass that has run this many times the governor's target is cut
-/// by the next edit: the edits that wait for it should not wait for ever (a pass the
-/// governor predicted far too cheap). Cut at 1.5 or 3 targets, a loaded machine's orbit
-/// passes (40-90 ms at a 33 ms target) were cut as before and showed 2-18 whole frames a
-/// second against 10-16 never cut (measure-designer, load 5).
-constexpr double kHoldPassForTargets = 6.0;
-}  // namespace
-
-int RenderSession::arenaSize(int threads) {
-    return threads > 0 ? threads : tbb::info::default_concurrency();
+double msBetween(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-RenderSession::RenderSession(int threads)
-    : threads_(threads), arena_(std::make_unique<BackgroundArena>(arenaSize(threads))) {
+}  // namespace
+
+RenderSession::RenderSession(int threads) : arena_(threads) {
     scheduler_ = std::thread(&RenderSession::run, this);
 }
 
@@ -61,7 +52,7 @@ void RenderSession::setObserver(SessionObserver* observer) {
     std::unique_lock lock(mutex_);
     // Between passes, with no call to the observer under way: then the workers' next reads of
     // observer_ come after this lock is released (a pass starts under it).
-    done_.wait(lock, [&] { return !running_ && notifying_ == 0; });
+    done_.wait(lock, [&] { return !planner_.running() && notifying_ == 0; });
     observer_ = observer;
 }
 
@@ -86,15 +77,13 @@ void RenderSession::notifyObserver(std::unique_lock<std::mutex>& lock, Call&& ca
 
 void RenderSession::setThreads(int threads) {
     std::lock_guard lock(mutex_);
-    if (threads == threads_) return;
-    threads_ = threads;
-    threadsChanged_ = true;
+    arena_.setThreads(threads);
 }
 
 void RenderSession::setPolicy(const InteractionPolicy& policy) {
     {
         std::lock_guard lock(mutex_);
-        policy_ = policy;
+        planner_.setPolicy(policy);
     }
     wake_.notify_all();
 }
@@ -102,32 +91,32 @@ void RenderSession::setPolicy(const InteractionPolicy& policy) {
 void RenderSession::wholeFrameShown(uint64_t mark) {
     {
         std::lock_guard lock(mutex_);
-        wholeShown_ = std::max(wholeShown_, mark);
+        book_.shown(mark);
     }
     wake_.notify_all();
 }
 
 void RenderSession::setDisplayWaits(bool on) {
     std::lock_guard lock(mutex_);
-    displayWaits_ = on;
+    book_.setDisplayWaits(on);
 }
 
 void RenderSession::setEngine(EngineKind engine) {
-    engine_.store(engine);
+    inbox_.setEngine(engine);
 }
 
 EngineKind RenderSession::engine() const {
-    return engine_.load();
+    return inbox_.engine();
 }
 
 InteractionPolicy RenderSession::policy() const {
     std::lock_guard lock(mutex_);
-    return policy_;
+    return planner_.policy();
 }
 
 std::shared_ptr<const CompiledScene> RenderSession::snapshot() const {
     std::lock_guard lock(mutex_);
-    return snapshot_;
+    return inbox_.snapshot();
 }
 
 SessionStats RenderSession::stats() const {
@@ -144,7 +133,7 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
     } catch (...) {
         const std::string message = failureMessage(std::current_exception());
         std::unique_lock lock(mutex_);
-        const uint64_t current = postedGeneration_;
+        const uint64_t current = inbox_.postedGeneration();
         notifyObserver(lock, [&](SessionObserver& o) { o.error(message); });
         return current;
     }
@@ -153,16 +142,15 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
         std::lock_guard lock(mutex_);
         // The bump alone stops running tiles; the old document's frame is out of date anyway.
         // Tiles that commit before the scheduler applies this document are marked with the rest.
-        gen = ++postedGeneration_;
+        gen = ++inbox_.postedGeneration();
         const auto now = std::chrono::steady_clock::now();
         // While the user drags or orbits, a governed interactive pass within its time runs on:
         // the edits coalesce (the latest wins) and are applied when it ends, so the user sees
         // whole frames. Cut at every mouse move, an orbit's pass never ended: 50 frames a
         // second, each torn between cameras, none whole. Else the bump stops running tiles.
-        if (!letsThePassFinishLocked(now) && !passOwed_) generation_.store(gen);
-        pendingDoc_ = std::move(*copy);  // A document not yet applied is dropped: the latest wins.
-        pendingGeneration_ = gen;
-        editTime_ = now;
+        const bool letFinish = !stop_ && planner_.letsThePassFinish(now);
+        if (!letFinish && !planner_.passOwed()) generation_.store(gen);
+        inbox_.post(std::move(*copy), gen, now);  // The latest wins.
         ++stats_.postedUpdates;
     }
     wake_.notify_all();
@@ -171,139 +159,103 @@ uint64_t RenderSession::update(const SceneDocument& doc) {
 
 void RenderSession::setSceneUpdater(SceneUpdater updater) {
     std::lock_guard lock(mutex_);
-    updater_ = std::move(updater);
+    inbox_.setUpdater(std::move(updater));
 }
 
 bool RenderSession::waitForUpdate(uint64_t generation, std::chrono::milliseconds timeout) {
     std::unique_lock lock(mutex_);
     done_.wait_for(lock, timeout, [&] {
-        return appliedGeneration_ >= generation || failedGeneration_ >= generation;
+        return inbox_.appliedGeneration() >= generation || inbox_.failedGeneration() >= generation;
     });
-    return appliedGeneration_ >= generation;
+    return inbox_.appliedGeneration() >= generation;
 }
 
 void RenderSession::applyPendingLocked(std::unique_lock<std::mutex>& lock) {
-    SceneDocument doc = std::move(*pendingDoc_);
-    pendingDoc_.reset();
-    const uint64_t gen = pendingGeneration_;
+    DocumentToApply job = inbox_.takePending();
     // No pass runs: an edit that let the last one finish takes its generation now.
-    if (generation_.load() < gen) generation_.store(gen);
+    if (generation_.load() < job.generation) generation_.store(job.generation);
     const auto start = std::chrono::steady_clock::now();
-    applying_ = true;
-    const std::shared_ptr<const CompiledScene> before = hasDocument_ ? snapshot_ : nullptr;
-    const EngineKind engine = engine_.load();
-    const SceneUpdater updater = updater_ ? updater_ : SceneUpdater(updateScene);
-    // Without the lock: update() may post the next document meanwhile. Only this thread
-    // writes doc_ and snapshot_.
-    lock.unlock();
-    SceneUpdate u;
     std::exception_ptr failure;
-    try {
-        u = updater(doc_, before, doc, engine);
-    } catch (...) {
-        failure = std::current_exception();
-    }
-    lock.lock();
-    if (failure) {
+    const std::optional<SceneUpdate> u = buildUnlocked(lock, job, failure);
+    if (!u) {
         // The document applied last stays; its work goes on. Reported before waiters learn
         // of it.
         const std::string message = failureMessage(failure);
         notifyObserver(lock, [&](SessionObserver& o) { o.error(message); });
-        applying_ = false;
-        failedGeneration_ = std::max(failedGeneration_, gen);
+        inbox_.failed(job.generation);
         done_.notify_all();
         return;
     }
-    applying_ = false;
-
-    auto frameLock = frameLock_.exclusive();  // Readers wait while pixels change state.
-    doc_ = std::move(doc);
-    hasDocument_ = true;
-    snapshot_ = u.snapshot;
-    appliedGeneration_ = gen;
-    ++stats_.appliedUpdates;
-    if (u.edit.resized || frame_.width() != doc_.render.width ||
-        frame_.height() != doc_.render.height)
-        pendingResize_ = true;
-
-    std::size_t marked = 0;
-    if (u.edit.traced()) {  // Else nothing traced changed (names, tone mapping, ...).
-        const auto markStart = std::chrono::steady_clock::now();
-        marked = markEditLocked(u.edit);
-        const auto markEnd = std::chrono::steady_clock::now();
-        stats_.lastMarkMs = std::chrono::duration<double, std::milli>(markEnd - markStart).count();
-        if (u.edit.focus != kNoObject) {
-            const PixelRect r =
-                screenFootprint(snapshot_->camera(), snapshot_->objectBounds(u.edit.focus));
-            if (!r.empty()) {
-                focusX_ = 0.5f * float(r.x0 + r.x1);
-                focusY_ = 0.5f * float(r.y0 + r.y1);
-            }
-        }
-        stats_.lastDirtyPixels = marked;
-        passOwed_ = marked > 0 && interacting_ && policy_.wholeFramesWhileMoving;
-        stats_.lastEditRefitted = u.edit.refitted;
-        stats_.lastUpdateMs = std::chrono::duration<double, std::milli>(markEnd - start).count();
-    }
-    // Nothing left to trace: the frame is current for this generation (no pass will say so).
-    if (marked == 0 && !pendingResize_ && !frame_.anyBelow(targetStateLocked()))
-        completedPassGeneration_ = std::max(completedPassGeneration_, gen);
-    if (pendingResize_) tornLocked();
-    frameLock.unlock();
+    inbox_.finishApplying();
+    commitUpdateLocked(std::move(job), *u, start);
     lock.unlock();
     done_.notify_all();
     lock.lock();
 }
 
-std::size_t RenderSession::markEditLocked(const SceneEdit& traced) {
-    if (pendingResize_ || traced.everything || !policy_.dirtyRegions)
-        deferredShadowRegions_.clear();  // Every pixel is traced again anyway.
-    if (pendingResize_) return std::size_t(doc_.render.width) * std::size_t(doc_.render.height);
-    SceneEdit edit = traced;
-    if (!policy_.dirtyRegions) edit.everything = true;
-    if (edit.everything) {
-        // Every pixel: no mask to build or read, one pass over the states and flags.
-        frame_.markAllStale();
-        lastTouchedBlocks_.assign(std::size_t(frame_.blocksX()) * std::size_t(frame_.blocksY()), 1);
-        stats_.lastMarkBlocksTested = stats_.lastMarkBlocksGrown = 0;
-        return frame_.pixelCount();
+std::optional<SceneUpdate> RenderSession::buildUnlocked(std::unique_lock<std::mutex>& lock,
+                                                        const DocumentToApply& job,
+                                                        std::exception_ptr& failure) {
+    // Without the lock: update() may post the next document meanwhile. Only this thread
+    // writes the applied document and snapshot, so it reads them without the lock.
+    std::optional<SceneUpdate> u;
+    lock.unlock();
+    try {
+        u = job.updater(inbox_.doc(), job.before, job.doc, job.engine);
+    } catch (...) {
+        failure = std::current_exception();
+        u.reset();
     }
-    // While dragging with shadows off or deferred, the moving object's shadow is not on
-    // screen: its pixels are marked once, on release, instead of on every step.
-    const bool deferShadows =
-        interacting_ && !edit.everything &&
-        (policy_.shadows == MovingShadows::Off || policy_.shadows == MovingShadows::Deferred);
-    MarkStats markStats;
-    const std::size_t marked =
-        markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_,
-                        deferShadows ? MarkScope::WithoutShadows : MarkScope::All, &markStats);
-    stats_.lastMarkBlocksTested = markStats.blocksTested;
-    stats_.lastMarkBlocksGrown = markStats.blocksGrown;
-    if (deferShadows) {
-        deferredShadowRegions_.insert(deferredShadowRegions_.end(), edit.regions.begin(),
-                                      edit.regions.end());
-        if (deferredShadowRegions_.size() > kMaxDeferredShadowRegions) {
-            Aabb all;
-            for (const Aabb& b : deferredShadowRegions_) all.expand(b);
-            deferredShadowRegions_.assign(1, all);
+    lock.lock();
+    return u;
+}
+
+void RenderSession::commitUpdateLocked(DocumentToApply&& job, const SceneUpdate& u,
+                                       std::chrono::steady_clock::time_point start) {
+    auto frameLock = frameLock_.exclusive();  // Readers wait while pixels change state.
+    const uint64_t gen = job.generation;
+    inbox_.applied(std::move(job.doc), u.snapshot, gen);
+    const SceneDocument& doc = inbox_.doc();
+    const CompiledScene& snapshot = *inbox_.snapshot();
+    ++stats_.appliedUpdates;
+    if (u.edit.resized || book_.frame().width() != doc.render.width ||
+        book_.frame().height() != doc.render.height)
+        book_.requestResize();
+
+    std::size_t marked = 0;
+    if (u.edit.traced()) {  // Else nothing traced changed (names, tone mapping, ...).
+        const auto markStart = std::chrono::steady_clock::now();
+        const EditMarks marks =
+            book_.markEdit(u.edit, snapshot, planner_.policy(), planner_.interacting(),
+                           doc.render.width, doc.render.height);
+        marked = marks.pixels;
+        if (marks.blocksCounted) {
+            stats_.lastMarkBlocksTested = marks.blocksTested;
+            stats_.lastMarkBlocksGrown = marks.blocksGrown;
         }
+        const auto markEnd = std::chrono::steady_clock::now();
+        stats_.lastMarkMs = msBetween(markStart, markEnd);
+        if (u.edit.focus != kNoObject) {
+            const PixelRect r =
+                screenFootprint(snapshot.camera(), snapshot.objectBounds(u.edit.focus));
+            if (!r.empty()) planner_.setFocus(0.5f * float(r.x0 + r.x1), 0.5f * float(r.y0 + r.y1));
+        }
+        stats_.lastDirtyPixels = marked;
+        planner_.setPassOwed(marked > 0 && planner_.interacting() &&
+                             planner_.policy().wholeFramesWhileMoving);
+        stats_.lastEditRefitted = u.edit.refitted;
+        stats_.lastUpdateMs = msBetween(start, markEnd);
     }
-    // Only blocks this edit or the previous one touched can change flags: the previous
-    // edit's re-traced overlay is cleared, this edit's pixels go stale.
-    const std::vector<uint8_t>& touched = dirtyMask_.touched;
-    if (lastTouchedBlocks_.size() != touched.size()) lastTouchedBlocks_.assign(touched.size(), 1);
-    for (std::size_t b = 0; b < touched.size(); ++b) {
-        if (touched[b] || lastTouchedBlocks_[b]) frame_.applyBlockMarks(b, dirtyMask_.pixels);
-    }
-    lastTouchedBlocks_ = touched;
-    return marked;
+    // Nothing left to trace: the frame is current for this generation (no pass will say so).
+    if (marked == 0 && !book_.resizePending() && !book_.frame().anyBelow(targetStateLocked()))
+        book_.completed(gen);
+    if (book_.resizePending()) book_.torn();
 }
 
 void RenderSession::beginInteraction(ObjectId moving) {
     {
         std::lock_guard lock(mutex_);
-        interacting_ = true;
-        moving_ = moving;
+        planner_.beginInteraction(moving);
     }
     wake_.notify_all();
 }
@@ -311,82 +263,46 @@ void RenderSession::beginInteraction(ObjectId moving) {
 void RenderSession::endInteraction() {
     {
         std::lock_guard lock(mutex_);
-        interacting_ = false;
-        moving_ = kNoObject;
-        releasePending_ = true;  // The scheduler marks the shadows the drag moved.
+        planner_.endInteraction();
+        inbox_.requestRelease();  // The scheduler marks the shadows the drag moved.
     }
     wake_.notify_all();
 }
 
 void RenderSession::markReleasedShadowsLocked() {
-    releasePending_ = false;
-    if (!deferredShadowRegions_.empty() && snapshot_ && !pendingResize_) {
-        // The shadows the drag moved: pixels still showing an older shadow go back to stale.
-        // Pixels traced during the drag already wait for refinement (and keep their deferred
-        // records). No pass runs now, so no tile commits meanwhile.
-        auto frameLock = frameLock_.exclusive();
-        SceneEdit edit;
-        edit.regions.swap(deferredShadowRegions_);
-        if (markDirtyPixels(edit, *snapshot_, frame_, dirtyMask_, MarkScope::ShadowsOnly) > 0) {
-            for (const int b : dirtyMask_.blocks)
-                frame_.applyShadowMarks(std::size_t(b), dirtyMask_.pixels);
-        }
-    }
-    deferredShadowRegions_.clear();
+    inbox_.releaseHandled();
+    book_.markReleasedShadows(inbox_.snapshot().get(), frameLock_);
 }
 
 void RenderSession::setFocus(float px, float py) {
     std::lock_guard lock(mutex_);
-    focusX_ = px;
-    focusY_ = py;
+    planner_.setFocus(px, py);
 }
 
 bool RenderSession::waitForPass(uint64_t generation, std::chrono::milliseconds timeout,
                                 PassInfo* info) {
     std::unique_lock lock(mutex_);
     const bool ok = done_.wait_for(lock, timeout, [&] {
-        return completedPassGeneration_ >= generation || generation_.load() > generation ||
-               failedGeneration_ >= generation;
+        return book_.completedGeneration() >= generation || generation_.load() > generation ||
+               inbox_.failedGeneration() >= generation;
     });
     if (info) *info = stats_.lastPass;
-    return ok && completedPassGeneration_ >= generation;
+    return ok && book_.completedGeneration() >= generation;
 }
 
 bool RenderSession::waitUntilComplete(std::chrono::milliseconds timeout) {
     std::unique_lock lock(mutex_);
     return done_.wait_for(lock, timeout, [&] {
-        return hasDocument_ && !pendingDoc_ && !applying_ && !releasePending_ && !running_ &&
-               notifying_ == 0 && !pendingResize_ && !frame_.anyBelow(kFinal);
+        return inbox_.hasApplied() && !inbox_.hasPending() && !inbox_.applying() &&
+               !inbox_.releasePending() && !planner_.running() && notifying_ == 0 &&
+               !book_.resizePending() && !book_.frame().anyBelow(kFinal);
     });
 }
 
-bool RenderSession::fullQualityWhileMoving() const {
-    const InteractionPolicy& p = policy_;
-    return p.resolution == MovingResolution::Full && !p.interleaved && !p.boxProxy &&
-           p.refraction == RefractionMode::Full && p.reflection == ReflectionMode::Full &&
-           (p.maxDepthWhileMoving < 0 ||
-            (snapshot_ && p.maxDepthWhileMoving >= snapshot_->settings().maxDepth)) &&
-           p.shadows == MovingShadows::Full && p.governorTargetMs <= 0.0;
-}
-
-uint8_t RenderSession::targetStateLocked() const {
-    if (!interacting_) return kFinal;
-    if (!fullQualityWhileMoving()) return kInteractive;
-    return policy_.supersampleWhileMoving ? kFinal : kBase;
-}
-
-bool RenderSession::letsThePassFinishLocked(std::chrono::steady_clock::time_point now) const {
-    if (!policy_.wholeFramesWhileMoving || !interacting_ || !running_ ||
-        passKind_ != PassKind::Interactive || passLevel_ < 0 || stop_)
-        return false;
-    const double ran = std::chrono::duration<double, std::milli>(now - passStart_).count();
-    return ran < kHoldPassForTargets * policy_.governorTargetMs;
-}
-
 bool RenderSession::hasWorkLocked() const {
-    if (pendingDoc_ || releasePending_) return true;
-    if (!hasDocument_) return false;
-    return pendingResize_ || frame_.anyBelow(targetStateLocked());
+    if (inbox_.hasPending() || inbox_.releasePending()) return true;
+    if (!inbox_.hasApplied()) return false;
+    return book_.resizePending() || book_.frame().anyBelow(targetStateLocked());
 }
 
 void RenderSession::run() {
@@ -401,109 +317,112 @@ void RenderSession::run() {
             // (the same work would fail the same way).
             const std::string message = failureMessage(std::current_exception());
             if (!lock.owns_lock()) lock.lock();
-            running_ = false;
-            if (pendingResize_) {
-                // A resize that threw leaves sides and buffers disagreeing: readers must see an
-                // empty frame instead (the next update sizes it again).
-                auto frameLock = frameLock_.exclusive();
-                frame_ = DeepFrame{};
-            }
+            planner_.passEnded();
+            book_.dropFrameIfResizing(frameLock_);
             const uint64_t failed = generation_.load();
             notifyObserver(lock, [&](SessionObserver& o) { o.error(message); });
-            wake_.wait(lock, [&] { return stop_ || pendingDoc_ || generation_.load() != failed; });
+            wake_.wait(
+                lock, [&] { return stop_ || inbox_.hasPending() || generation_.load() != failed; });
             if (stop_) return;
         }
     }
 }
 
 void RenderSession::runPasses(std::unique_lock<std::mutex>& lock) {
-    Plan plan;
+    PassPlan plan;
     for (;;) {
         wake_.wait(lock, [&] { return stop_ || hasWorkLocked(); });
         if (stop_) return;
-        if (pendingDoc_ && !passOwed_) {
+        if (inbox_.hasPending() && !planner_.passOwed()) {
             applyPendingLocked(lock);
             continue;
         }
-        if (releasePending_) {
+        if (inbox_.releasePending()) {
             markReleasedShadowsLocked();
             done_.notify_all();  // Waiters for a complete frame may have waited on this alone.
             continue;
         }
-        if (!hasDocument_) continue;
-        if (pendingResize_) {
-            const std::string tooLarge = imageSizeError(doc_.render.width, doc_.render.height);
-            if (!tooLarge.empty()) throw std::length_error(tooLarge);
-        }
+        if (!inbox_.hasApplied()) continue;
         plan.reset();
         const auto planStart = std::chrono::steady_clock::now();
         const bool planned = planLocked(plan);
-        passOwed_ = false;  // Planned and run now, or nothing to show: the next edit applies.
+        planner_.setPassOwed(
+            false);  // Planned and run now, or nothing to show: the next edit applies.
         if (!planned) continue;
         stats_.lastPassTiles = plan.tiles.size();
-        const double planMs =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planStart)
-                .count();
-        if ((plan.kind == PassKind::Interactive || plan.kind == PassKind::Base) &&
-            frame_.anyBelow(kInteractive)) {
-            // This pass re-traces stale pixels: the frame is torn until one leaves none.
-            const uint64_t whole = wholeMark_.load(std::memory_order_relaxed);
-            if (displayWaits_ && policy_.wholeFramesWhileMoving && interacting_ &&
-                tears_.load() == whole && wholeShown_ < whole) {
-                wake_.wait_for(lock, kDisplayWait,
-                               [&] { return stop_ || wholeShown_ >= whole || !interacting_; });
-                if (stop_) return;
-            }
-            tornLocked();
-        }
-        running_ = true;
-        passStart_ = std::chrono::steady_clock::now();
-        passKind_ = plan.kind;
-        passLevel_ = plan.governorLevel;
-        lock.unlock();
-        PassInfo info;
-        execute(plan, info);
-        info.planMs = planMs;
-        lock.lock();
-        running_ = false;
-        const auto now = std::chrono::steady_clock::now();
-        // Between passes the scheduler reads the frame under mutex_ alone; every tile of the
-        // pass has been announced to the observer by now.
-        if (!frame_.anyBelow(kInteractive))
-            wholeMark_.store(tears_.load(std::memory_order_relaxed), std::memory_order_release);
-        if (info.cancelled) {
-            stats_.lastCancelLatencyMs =
-                std::chrono::duration<double, std::milli>(now - editTime_).count();
-            // What the pass traced before the edit cut it is what this level costs now: a
-            // governor fed finished passes alone never learns what an orbit step costs.
-            if (plan.kind == PassKind::Interactive)
-                governor_.record(plan.governorLevel, info.ms, info.tracedPixels);
-        } else {
-            completedPassGeneration_ = std::max(completedPassGeneration_, plan.generation);
-            if (plan.kind == PassKind::Interactive) {
-                if (plan.interleaved) interleaveParity_ ^= 1;
-                governor_.record(plan.governorLevel, info.ms, info.tracedPixels);
-            } else if (plan.kind == PassKind::Base && info.tracedPixels > 4096) {
-                governor_.calibrate(info.ms / double(info.tracedPixels));
-            }
-        }
-        stats_.lastPass = info;
-        if (plan.kind == PassKind::Interactive) stats_.lastInteractivePass = info;
-        ++stats_.passes;
-        const bool complete = !info.cancelled && !pendingDoc_ && !releasePending_ &&
-                              !pendingResize_ && !frame_.anyBelow(kFinal);
-        const uint64_t gen = generation_.load();
-        notifyObserver(lock, [&](SessionObserver& o) {
-            o.passDone(info);
-            if (complete && gen == plan.generation) o.frameComplete(gen);
-        });
+        const double planMs = msBetween(planStart, std::chrono::steady_clock::now());
+        if (!tearLocked(lock, plan)) return;
+        runPassUnlocked(lock, plan, planMs);
     }
 }
 
-void RenderSession::execute(Plan& plan, PassInfo& info) {
+bool RenderSession::planLocked(PassPlan& plan) {
+    const SceneDocument& doc = inbox_.doc();
+    if (book_.resizePending()) {
+        const std::string tooLarge = imageSizeError(doc.render.width, doc.render.height);
+        if (!tooLarge.empty()) throw std::length_error(tooLarge);
+    }
+    arena_.refresh();
+    const RenderSettings& settings = inbox_.snapshot()->settings();
+    book_.resizeIfPending(settings.width, settings.height, frameLock_);
+    return planner_.plan(plan, book_.frame(), inbox_.snapshot(), generation_.load(),
+                         stats_.lastUpdateMs, stats_.lastInteractivePass.planMs);
+}
+
+bool RenderSession::tearLocked(std::unique_lock<std::mutex>& lock, const PassPlan& plan) {
+    if ((plan.kind != PassKind::Interactive && plan.kind != PassKind::Base) ||
+        !book_.frame().anyBelow(kInteractive))
+        return true;
+    // This pass re-traces stale pixels: the frame is torn until one leaves none.
+    uint64_t whole = 0;
+    if (book_.wholeUnseen(whole) && planner_.policy().wholeFramesWhileMoving &&
+        planner_.interacting()) {
+        wake_.wait_for(lock, kDisplayWait, [&] {
+            return stop_ || book_.wholeShown() >= whole || !planner_.interacting();
+        });
+        if (stop_) return false;
+    }
+    book_.torn();
+    return true;
+}
+
+void RenderSession::runPassUnlocked(std::unique_lock<std::mutex>& lock, PassPlan& plan,
+                                    double planMs) {
+    planner_.passStarted(plan, std::chrono::steady_clock::now());
+    lock.unlock();
+    PassInfo info;
+    execute(plan, info);
+    info.planMs = planMs;
+    lock.lock();
+    planner_.passEnded();
+    passDoneLocked(lock, plan, info);
+}
+
+void RenderSession::passDoneLocked(std::unique_lock<std::mutex>& lock, const PassPlan& plan,
+                                   const PassInfo& info) {
+    const auto now = std::chrono::steady_clock::now();
+    book_.passEnded();
+    if (info.cancelled)
+        stats_.lastCancelLatencyMs = msBetween(inbox_.editTime(), now);
+    else
+        book_.completed(plan.generation);
+    planner_.recordPass(plan, info);
+    stats_.lastPass = info;
+    if (plan.kind == PassKind::Interactive) stats_.lastInteractivePass = info;
+    ++stats_.passes;
+    const bool complete = !info.cancelled && !inbox_.hasPending() && !inbox_.releasePending() &&
+                          !book_.resizePending() && !book_.frame().anyBelow(kFinal);
+    const uint64_t gen = generation_.load();
+    notifyObserver(lock, [&](SessionObserver& o) {
+        o.passDone(info);
+        if (complete && gen == plan.generation) o.frameComplete(gen);
+    });
+}
+
+void RenderSession::execute(PassPlan& plan, PassInfo& info) {
     const auto start = std::chrono::steady_clock::now();
     PassCounters counters;
-    arenaExecute(*arena_, [&] {
+    arenaExecute(arena_.arena(), [&] {
         parallelFor(
             tbb::blocked_range<std::size_t>(0, plan.tiles.size(), 1),
             [&](const tbb::blocked_range<std::size_t>& r) {

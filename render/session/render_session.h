@@ -14,20 +14,23 @@
 #include <thread>
 #include <vector>
 
-#include "core/thread_priority.h"
 #include "scene/document.h"
-#include "session/dirty_region.h"
+#include "session/document_inbox.h"
 #include "session/frame/deep_frame.h"
+#include "session/frame_book.h"
 #include "session/frame_lock.h"
-#include "session/governor.h"
 #include "session/interaction_policy.h"
+#include "session/pass_planner.h"
 #include "session/scene_update.h"
 #include "session/session_observer.h"
+#include "session/tile_arena.h"
 #include "snapshot/compiled_scene.h"
 
 namespace rs {
 
 struct PassCounters;
+struct PassPlan;
+struct TileJob;
 
 /// Counters for the status bar and benchmarks.
 struct SessionStats {
@@ -48,14 +51,13 @@ struct SessionStats {
     std::size_t lastPassTiles = 0;  ///< Tiles the latest pass was planned over.
 };
 
-/// Diffs two documents and builds the snapshot of the second (updateScene's signature).
-using SceneUpdater = std::function<SceneUpdate(
-    const SceneDocument& before, const std::shared_ptr<const CompiledScene>& beforeSnapshot,
-    const SceneDocument& after, EngineKind engine)>;
-
 /// Schedules tiles on a oneTBB arena from a scheduler thread. Every edit bumps a generation;
 /// workers drop stale tiles within one row, and a tile of an older generation is never written.
 /// Edits are applied on the scheduler thread: update() only posts the document.
+///
+/// A facade over its parts, all guarded by its mutex: the DocumentInbox (documents posted and
+/// applied), the PassPlanner (what the user does, policy, governor, the pass running), the
+/// FrameBook (the deep frame, its marks and whole-frame bookkeeping) and the TileArena.
 class RenderSession {
 public:
     /// `threads` = 0: all cores.
@@ -108,7 +110,7 @@ public:
     template <class F>
     void withFrame(F&& f) const {
         auto lock = frameLock_.read();
-        f(frame_, snapshot_);
+        f(book_.frame(), inbox_.snapshot());
     }
     /// withFrame if the frame can be had within kReaderBudget (tile commits that have not
     /// begun hold off meanwhile), else false and `f` does not run: the display comes back
@@ -117,14 +119,14 @@ public:
     bool tryWithFrame(F&& f) const {
         auto lock = frameLock_.tryExclusive(kReaderBudget);
         if (!lock.owns_lock()) return false;
-        f(frame_, snapshot_);
+        f(book_.frame(), inbox_.snapshot());
         return true;
     }
     /// How long tryWithFrame may wait: a few tile commits, far below a GUI stall.
     static constexpr std::chrono::microseconds kReaderBudget{1500};
     SessionStats stats() const;
     /// The generation update() gave last (the one being traced may be older: see update()).
-    uint64_t generation() const { return postedGeneration_.load(); }
+    uint64_t generation() const { return inbox_.postedGeneration().load(); }
     /// Whole frames, for the display: a frame is whole when all its pixels show one
     /// document. Edits only mark pixels stale (their colours stay), so a frame is torn from
     /// the start of a pass that re-traces stale pixels (or a resize) until a pass leaves no
@@ -132,11 +134,8 @@ public:
     /// before taking the tiles announced so far (every tile of that pass has been announced
     /// by then), then, inside withFrame or tryWithFrame, wholeSince(mark): not torn since,
     /// so those tiles' pixels complete the picture of one document.
-    uint64_t wholeMark() const { return wholeMark_.load(std::memory_order_acquire); }
-    bool wholeSince(uint64_t mark) const {
-        return tears_.load(std::memory_order_acquire) == mark &&
-               wholeMark_.load(std::memory_order_acquire) == mark;
-    }
+    uint64_t wholeMark() const { return book_.wholeMark(); }
+    bool wholeSince(uint64_t mark) const { return book_.wholeSince(mark); }
     /// The display showed the whole frame of `mark`. With setDisplayWaits(true) and the
     /// policy's wholeFramesWhileMoving, while the user drags or orbits, a pass that would tear
     /// a whole frame the display has not taken yet waits for it (up to kDisplayWait): else
@@ -147,28 +146,37 @@ public:
     static constexpr std::chrono::milliseconds kDisplayWait{12};
     std::shared_ptr<const CompiledScene> snapshot() const;
 
-    /// Internal: a planned pass and one of its tiles (session_plan.h).
-    struct Plan;
-    struct TileJob;
-
 private:
     void run();
     void runPasses(std::unique_lock<std::mutex>& lock);
     void applyPendingLocked(std::unique_lock<std::mutex>& lock);
-    std::size_t markEditLocked(const SceneEdit& edit);
+    /// Runs the document's updater with the mutex (held by `lock`) released, so that
+    /// update() may post the next meanwhile, and takes it again; null when it threw
+    /// (`failure` says why).
+    std::optional<SceneUpdate> buildUnlocked(std::unique_lock<std::mutex>& lock,
+                                             const DocumentToApply& job,
+                                             std::exception_ptr& failure);
+    /// Makes the built update the applied document and marks what it changed.
+    void commitUpdateLocked(DocumentToApply&& job, const SceneUpdate& u,
+                            std::chrono::steady_clock::time_point start);
     void markReleasedShadowsLocked();
     bool hasWorkLocked() const;
-    bool planLocked(Plan& plan);
-    void execute(Plan& plan, PassInfo& info);
-    void processTile(const Plan& plan, const TileJob& job, PassCounters& counters);
-    bool fullQualityWhileMoving() const;
-    uint8_t targetStateLocked() const;
-    /// Whether an edit posted now lets the running pass finish first (see update()).
-    bool letsThePassFinishLocked(std::chrono::steady_clock::time_point now) const;
-    /// Tiles of another picture are about to be written: the frame is no longer whole.
-    void tornLocked() { tears_.fetch_add(1, std::memory_order_release); }
+    uint8_t targetStateLocked() const { return planner_.targetState(inbox_.snapshot().get()); }
+    /// Plans the next pass into `plan`, resizing the frame first if the document asks;
+    /// false when there is nothing to trace.
+    bool planLocked(PassPlan& plan);
+    /// With the display waiting for whole frames while the user moves: waits (briefly) for
+    /// it to take the whole frame before a pass that re-traces stale pixels tears it.
+    /// False when the session stops meanwhile.
+    bool tearLocked(std::unique_lock<std::mutex>& lock, const PassPlan& plan);
+    /// Runs the pass with the mutex released; then records what it did and tells the observer.
+    void runPassUnlocked(std::unique_lock<std::mutex>& lock, PassPlan& plan, double planMs);
+    void passDoneLocked(std::unique_lock<std::mutex>& lock, const PassPlan& plan,
+                        const PassInfo& info);
+    void execute(PassPlan& plan, PassInfo& info);
+    void processTile(const PassPlan& plan, const TileJob& job, PassCounters& counters);
 
-    mutable std::mutex mutex_;  ///< Scheduler state; taken before frameLock_.
+    mutable std::mutex mutex_;  ///< Guards the parts below; taken before frameLock_.
     /// Frame pixels. Tiles commit disjoint pixels under a shared lock; edits (generation bump
     /// and dirty marking) and readers take it exclusively. Between passes no tile writes, so
     /// the scheduler reads the frame under mutex_ alone.
@@ -177,69 +185,23 @@ private:
     std::condition_variable done_;
     /// The generation being traced: tiles of another stop and are not written.
     std::atomic<uint64_t> generation_{0};
-    std::atomic<uint64_t> postedGeneration_{0};  ///< The last update()'s (>= generation_).
-    std::atomic<uint64_t> tears_{0};             ///< See wholeMark().
-    std::atomic<uint64_t> wholeMark_{0};
-    uint64_t wholeShown_ = 0;  ///< wholeFrameShown's latest mark.
-    bool displayWaits_ = false;
 
-    /// The document applied last; only the scheduler thread writes it (under mutex_) and
-    /// reads it without the lock while applying the next.
-    SceneDocument doc_;
-    std::optional<SceneDocument> pendingDoc_;  ///< Posted, not yet applied (the latest wins).
-    uint64_t pendingGeneration_ = 0;           ///< Generation update() gave pendingDoc_.
-    bool applying_ = false;                    ///< The scheduler is applying a document.
-    uint64_t appliedGeneration_ = 0;           ///< Generation of the document applied last.
-    uint64_t failedGeneration_ = 0;            ///< Generation whose document failed to apply.
-    bool releasePending_ = false;              ///< endInteraction left shadows to mark.
-    SceneUpdater updater_;
-    std::shared_ptr<const CompiledScene> snapshot_;
-    DeepFrame frame_;
-    DirtyMask dirtyMask_;                     ///< The latest marking (kept: see DirtyMask).
-    std::vector<uint8_t> lastTouchedBlocks_;  ///< Blocks whose overlay flags may be set.
-    /// Regions of this interaction's edits whose shadow effects were left unmarked
-    /// (MarkScope::WithoutShadows); endInteraction marks them.
-    std::vector<Aabb> deferredShadowRegions_;
-    bool pendingResize_ = false;
-    bool hasDocument_ = false;
-
-    InteractionPolicy policy_;
-    Governor governor_;
-    bool interacting_ = false;
-    /// While moving, an applied edit is shown before the next is applied: set by an apply
-    /// that marked pixels, cleared when a pass has run. Otherwise edits that take longer to
-    /// apply than the mouse takes to send the next (a refit of 100,000 objects) left no time
-    /// for a single pass.
-    bool passOwed_ = false;
-    ObjectId moving_ = kNoObject;
-    float focusX_ = -1.0f, focusY_ = -1.0f;
-    int interleaveParity_ = 0;
-    int threads_ = 0;
-    std::atomic<EngineKind> engine_{EngineKind::Embree};
-    bool threadsChanged_ = false;
-
-    uint64_t completedPassGeneration_ = 0;
-    uint64_t completeGeneration_ = 0;
-    bool completeValid_ = false;
-    bool running_ = false;
-    std::chrono::steady_clock::time_point editTime_;
-    std::chrono::steady_clock::time_point passStart_;  ///< Of the pass running (running_).
-    PassKind passKind_ = PassKind::Base;
-    int passLevel_ = -1;  ///< Its governor level (-1: not governed).
+    DocumentInbox inbox_;
+    PassPlanner planner_;
+    FrameBook book_;
+    TileArena arena_;
     SessionStats stats_;
+
     SessionObserver* observer_ = nullptr;
     /// Calls to the observer under way outside mutex_ from the scheduler or update(): what
     /// waitUntilComplete() and setObserver() wait for. Workers' tileDone calls are inside a
-    /// pass (running_).
+    /// pass (planner_.running()).
     int notifying_ = 0;
     /// Calls `call(observer)` with mutex_ (held by `lock`) released, counted in notifying_;
     /// waiters are woken before and after it.
     template <class Call>
     void notifyObserver(std::unique_lock<std::mutex>& lock, Call&& call);
 
-    std::unique_ptr<BackgroundArena> arena_;  ///< Its tracers run below the GUI thread.
-    /// The arena's size for a thread count (0: the machine's).
-    static int arenaSize(int threads);
     bool stop_ = false;
     std::thread scheduler_;
 };

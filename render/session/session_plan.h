@@ -7,7 +7,8 @@
 
 #include "integrator/trace_kernel.h"
 #include "session/dirty_region.h"
-#include "session/render_session.h"
+#include "session/session_observer.h"
+#include "snapshot/compiled_scene.h"
 
 namespace rs {
 
@@ -18,7 +19,7 @@ struct PassCounters {
 };
 
 /// One tile of a pass.
-struct RenderSession::TileJob {
+struct TileJob {
     PixelRect rect;
     int tile = 0;
 };
@@ -27,7 +28,7 @@ struct RenderSession::TileJob {
 /// each tile's pixel states from the frame itself: edits change states only between passes
 /// (they are applied on the scheduler thread, which runs the pass), and a tile's pixels are
 /// written only by that tile's commit, after it has read them.
-struct RenderSession::Plan {
+struct PassPlan {
     PassKind kind = PassKind::Base;
     uint64_t generation = 0;
     int width = 0, height = 0;
@@ -49,7 +50,7 @@ struct RenderSession::Plan {
     /// Back to a default plan, keeping the tile list's storage.
     void reset() {
         std::vector<TileJob> keepTiles = std::move(tiles);
-        *this = Plan{};
+        *this = PassPlan{};
         keepTiles.clear();
         tiles = std::move(keepTiles);
     }

@@ -6,6 +6,7 @@
 #include "integrator/pixel_samples.h"
 #include "integrator/renderer.h"
 #include "integrator/trace_kernel.h"
+#include "session/render_session.h"
 #include "session/session_plan.h"
 #include "session/tile_output.h"
 
@@ -16,8 +17,8 @@ namespace {
 /// What a pass kind's tile function reads: the plan, the frame as the plan left it (this
 /// tile's pixels are written by nobody else meanwhile) and the kernel.
 struct TileInput {
-    const RenderSession::Plan& plan;
-    const RenderSession::TileJob& job;
+    const PassPlan& plan;
+    const TileJob& job;
     const DeepFrame& frame;
     const TraceKernel& kernel;
     const CameraModel& camera;
@@ -53,7 +54,7 @@ struct TileInput {
 
 /// Interactive pass at full resolution: stale pixels (every other one when interleaved).
 bool interactiveTile(const TileInput& in, TileResult& out) {
-    const RenderSession::Plan& plan = in.plan;
+    const PassPlan& plan = in.plan;
     const PixelRect& r = in.job.rect;
     const uint8_t* state = in.frame.state().data();
     for (int y = r.y0; y < r.y1; ++y) {
@@ -71,7 +72,7 @@ bool interactiveTile(const TileInput& in, TileResult& out) {
 /// Interactive pass undersampled: one ray per step x step block with a stale pixel, shown
 /// over the whole block.
 bool blockTile(const TileInput& in, TileResult& out) {
-    const RenderSession::Plan& plan = in.plan;
+    const PassPlan& plan = in.plan;
     const PixelRect& r = in.job.rect;
     const int step = plan.step;
     const auto firstMultiple = [step](int v) { return (v + step - 1) / step * step; };
@@ -161,7 +162,7 @@ glm::vec4 growBound(glm::vec4 b, const Vec3& p) {
 /// Supersample pass: pixels at kBase get up to sppChunk samples more, in the order
 /// renderPixel sums them, unless adaptive supersampling says the centre sample is final.
 bool supersampleTile(const TileInput& in, TileResult& out) {
-    const RenderSession::Plan& plan = in.plan;
+    const PassPlan& plan = in.plan;
     const DeepFrame& f = in.frame;
     const PixelRect& r = in.job.rect;
     thread_local std::vector<std::size_t> sampledPixels;
@@ -221,7 +222,7 @@ bool supersampleTile(const TileInput& in, TileResult& out) {
 
 }  // namespace
 
-void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounters& counters) {
+void RenderSession::processTile(const PassPlan& plan, const TileJob& job, PassCounters& counters) {
     thread_local TileResult result;
     result.clear();
     result.generation = plan.generation;
@@ -239,7 +240,7 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
     columns.resize(std::size_t(job.rect.x1 - job.rect.x0));
     for (int x = job.rect.x0; x < job.rect.x1; ++x)
         columns[std::size_t(x - job.rect.x0)] = scene.camera().columnTerm(float(x) + 0.5f);
-    const TileInput in{plan, job, frame_, kernel, scene.camera(), stale, tc, columns.data()};
+    const TileInput in{plan, job, book_.frame(), kernel, scene.camera(), stale, tc, columns.data()};
     bool traced = false;
     switch (plan.kind) {
         case PassKind::Interactive:
@@ -257,7 +258,7 @@ void RenderSession::processTile(const Plan& plan, const TileJob& job, PassCounte
         // Shared: other tiles commit their own pixels concurrently; an edit's marking holds it
         // exclusively, after every tile of the pass has returned; a waiting reader goes first.
         auto lock = frameLock_.commit();
-        if (!frame_.commit(result, generation_.load())) return;
+        if (!book_.frame().commit(result, generation_.load())) return;
     }
     counters.pixels += result.tracedPixels();
     counters.rays += tc.total();
