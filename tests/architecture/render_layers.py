@@ -10,6 +10,8 @@ import re
 import sys
 import tempfile
 
+import include_check
+
 # Lowest first. A new folder of render/ must be given its place here and in render/README.md.
 LAYERS = ["core", "geometry", "scene", "image", "texture", "accel", "snapshot", "integrator",
           "io", "session"]
@@ -85,18 +87,8 @@ def self_test():
 
 
 def main(argv):
-    if argv[1:] == ["--self-test"]:
-        return self_test()
-    if len(argv) != 2 or not os.path.isdir(argv[1]):
-        print(__doc__, file=sys.stderr)
-        return 2
-    found = problems(argv[1])
-    for p in found:
-        print(p, file=sys.stderr)
-    if found:
-        print(f"render_layers: {len(found)} include(s) against render/'s floors", file=sys.stderr)
-        return 1
-    return 0
+    return include_check.run(argv, "render_layers", __doc__, os.path.isdir, problems, self_test,
+                             "include(s) against render/'s floors")
 
 
 if __name__ == "__main__":

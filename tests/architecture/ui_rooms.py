@@ -12,6 +12,8 @@ import re
 import sys
 import tempfile
 
+import include_check
+
 # Who may include whom: a room's own headers always, and those of the rooms named here.
 # Lowest first; no room names one after it, so the rooms make no circle.
 ROOMS = {
@@ -150,18 +152,8 @@ def self_test():
 
 
 def main(argv):
-    if argv[1:] == ["--self-test"]:
-        return self_test()
-    if len(argv) != 2 or not os.path.isdir(os.path.join(argv[1], "ui")):
-        print(__doc__, file=sys.stderr)
-        return 2
-    found = problems(argv[1])
-    for p in found:
-        print(p, file=sys.stderr)
-    if found:
-        print(f"ui_rooms: {len(found)} breach(es) of ui/'s rooms", file=sys.stderr)
-        return 1
-    return 0
+    return include_check.run(argv, "ui_rooms", __doc__, lambda root: os.path.isdir(os.path.join(root, "ui")), problems, self_test,
+                             "breach(es) of ui/'s rooms")
 
 
 if __name__ == "__main__":
