@@ -27,6 +27,7 @@
 #include "gui_test_support.h"
 #include "image/image_io.h"
 #include "io/scene_io.h"
+#include "panel_fields.h"
 #include "panels/color_pattern_editor.h"
 #include "panels/image_preview.h"
 #include "panels/property_panel.h"
@@ -72,13 +73,10 @@ private:
     int undoCount() { return window_->editor()->undoStack()->count(); }
     void clickObject(const std::string& name);
     QComboBox* modeCombo();
-    /// The widget of row `label` in the property panel's group whose title starts with `group`.
-    QWidget* propertyField(const QString& group, const QString& label);
     /// Moves the mode selector one item down (Key_Down) or up, as the keyboard does.
     void stepMode(Qt::Key key);
     /// Steps the selector to Image, choosing `path` in the file dialog it opens.
     void chooseImage(const QString& path);
-    static void typeInto(QDoubleSpinBox* spin, const QString& text);
     /// Drops a file URL of `path` on the main window at viewport point `at`.
     void dropFile(const QString& path, const QPoint& at);
     QPoint viewportPointOf(const std::string& name);
@@ -129,21 +127,6 @@ QComboBox* TexturesTest::modeCombo() {
     return window_->propertyPanel()->findChild<QComboBox*>(QStringLiteral("colorMode"));
 }
 
-QWidget* TexturesTest::propertyField(const QString& group, const QString& label) {
-    for (QGroupBox* box : window_->propertyPanel()->findChildren<QGroupBox*>()) {
-        if (!box->title().startsWith(group) || !box->isVisibleTo(window_->propertyPanel()))
-            continue;
-        auto* form = qobject_cast<QFormLayout*>(box->layout());
-        for (int row = 0; form && row < form->rowCount(); ++row) {
-            auto* l = form->itemAt(row, QFormLayout::LabelRole);
-            auto* f = form->itemAt(row, QFormLayout::FieldRole);
-            auto* text = l ? qobject_cast<QLabel*>(l->widget()) : nullptr;
-            if (text && f && text->text() == label && text->isVisibleTo(box)) return f->widget();
-        }
-    }
-    return nullptr;
-}
-
 void TexturesTest::stepMode(Qt::Key key) {
     QComboBox* combo = modeCombo();
     QVERIFY(combo);
@@ -167,13 +150,6 @@ void TexturesTest::chooseImage(const QString& path) {
     QVERIFY(ran);
 }
 
-void TexturesTest::typeInto(QDoubleSpinBox* spin, const QString& text) {
-    spin->setFocus();
-    spin->selectAll();
-    QTest::keyClicks(spin, text);
-    QTest::keyClick(spin, Qt::Key_Return);
-}
-
 void TexturesTest::dropFile(const QString& path, const QPoint& at) {
     auto* mime = new QMimeData;
     mime->setUrls({QUrl::fromLocalFile(path)});
@@ -191,7 +167,7 @@ void TexturesTest::colourMode_EachSwitchIsOneUndoStep_AndColourBringsTheFlatColo
     clickObject("chalk ball");
     const Material before = material("chalk");
     QVERIFY(std::holds_alternative<std::monostate>(before.pattern));
-    QVERIFY(propertyField(QStringLiteral("Material \""), QStringLiteral("Colour")));
+    QVERIFY(panelField(*window_, QStringLiteral("Material \""), QStringLiteral("Colour")));
 
     stepMode(Qt::Key_Down);  // Colour -> Checker
     QCOMPARE(undoCount(), 1);
@@ -201,16 +177,16 @@ void TexturesTest::colourMode_EachSwitchIsOneUndoStep_AndColourBringsTheFlatColo
     QCOMPARE(checker->scale, 1.0f);          // scenes/FORMAT.md: the scale defaults to 1.
     QVERIFY(material("chalk").color == before.color);
     // The panel shows the checker's fields and hides the flat colour.
-    QVERIFY(propertyField(QStringLiteral("Checker"), QStringLiteral("Colour 1")));
-    QVERIFY(propertyField(QStringLiteral("Checker"), QStringLiteral("Colour 2")));
-    QVERIFY(propertyField(QStringLiteral("Checker"), QStringLiteral("Cell size")));
-    QVERIFY(!propertyField(QStringLiteral("Material \""), QStringLiteral("Colour")));
+    QVERIFY(panelField(*window_, QStringLiteral("Checker"), QStringLiteral("Colour 1")));
+    QVERIFY(panelField(*window_, QStringLiteral("Checker"), QStringLiteral("Colour 2")));
+    QVERIFY(panelField(*window_, QStringLiteral("Checker"), QStringLiteral("Cell size")));
+    QVERIFY(!panelField(*window_, QStringLiteral("Material \""), QStringLiteral("Colour")));
 
     stepMode(Qt::Key_Up);  // Checker -> Colour
     QCOMPARE(undoCount(), 2);
     QVERIFY(material("chalk") == before);  // The same flat colour, nothing else changed.
-    QVERIFY(propertyField(QStringLiteral("Material \""), QStringLiteral("Colour")));
-    QVERIFY(!propertyField(QStringLiteral("Checker"), QStringLiteral("Colour 1")));
+    QVERIFY(panelField(*window_, QStringLiteral("Material \""), QStringLiteral("Colour")));
+    QVERIFY(!panelField(*window_, QStringLiteral("Checker"), QStringLiteral("Colour 1")));
 
     window_->editor()->undoStack()->undo();
     QVERIFY(std::holds_alternative<CheckerPattern>(material("chalk").pattern));
@@ -225,7 +201,7 @@ void TexturesTest::checkerFields_ReachTheDocument_AndRefuseWhatTheFormatRefuses(
     stepMode(Qt::Key_Down);
     QVERIFY(std::holds_alternative<CheckerPattern>(material("chalk").pattern));
     auto* size = qobject_cast<QDoubleSpinBox*>(
-        propertyField(QStringLiteral("Checker"), QStringLiteral("Cell size"))
+        panelField(*window_, QStringLiteral("Checker"), QStringLiteral("Cell size"))
             ->findChild<QDoubleSpinBox*>());
     QVERIFY(size);
     typeInto(size, QStringLiteral("0.25"));
@@ -234,7 +210,7 @@ void TexturesTest::checkerFields_ReachTheDocument_AndRefuseWhatTheFormatRefuses(
     QVERIFY(panel->applyEdit(QStringLiteral("checker"), "odd", Vec3(0.2f, 0.4f, 0.6f)));
     QVERIFY(std::get<CheckerPattern>(material("chalk").pattern).odd == Vec3(0.2f, 0.4f, 0.6f));
     // The colour button shows the new colour after the edit.
-    auto* swatch = propertyField(QStringLiteral("Checker"), QStringLiteral("Colour 2"))
+    auto* swatch = panelField(*window_, QStringLiteral("Checker"), QStringLiteral("Colour 2"))
                        ->findChild<QPushButton*>(QStringLiteral("colorButton"));
     QVERIFY(swatch);
     QVERIFY2(swatch->text().startsWith(QStringLiteral("0.2, 0.4, 0.6")),
@@ -276,7 +252,7 @@ void TexturesTest::imageMode_ChosenFile_Thumbnail_AndRepeatReachTheDocument() {
     QVERIFY2(left.red() > 200 && left.green() < 60, qPrintable(left.name()));
     QVERIFY2(right.green() > 200 && right.red() < 60, qPrintable(right.name()));
 
-    auto* repeat = propertyField(QStringLiteral("Image texture"), QStringLiteral("Repeat U"))
+    auto* repeat = panelField(*window_, QStringLiteral("Image texture"), QStringLiteral("Repeat U"))
                        ->findChild<QDoubleSpinBox*>();
     QVERIFY(repeat);
     typeInto(repeat, QStringLiteral("3"));
