@@ -1,5 +1,7 @@
 // Measures what the user feels while dragging or orbiting: the real window, mouse events
 // posted to the viewport at 60 Hz, and timestamps from the event queue to the swapped frame.
+// This file drives the window and records (measurement_record.h); measurement_analysis.cpp
+// turns the recording into figures.
 #include "drag_measurement.h"
 
 #include <QCommandLineParser>
@@ -21,6 +23,8 @@
 #include "display/display_choice.h"
 #include "document/scene_editor.h"
 #include "integrator/renderer.h"
+#include "measurement_analysis.h"
+#include "measurement_record.h"
 #include "shell/error_reporter.h"
 #include "shell/main_window.h"
 #include "shell/preferences.h"
@@ -30,11 +34,7 @@ namespace rs::ui {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double msBetween(Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
-}
+using Clock = MeasureClock;
 
 struct Request {
     bool orbit = false;
@@ -44,36 +44,6 @@ struct Request {
     bool json = false;
     DisplayKind display = DisplayKind::Automatic;  ///< --view: who draws the viewport.
     std::function<void(QWidget&)> afterOpen;       ///< Called once the scene is shown.
-};
-
-/// One posted mouse event: when it was due (its event time), when the viewport had handled
-/// it, and the controller's request serial after it (an edit when it went up).
-struct Input {
-    Clock::time_point due, dispatched, handled;
-    uint64_t request = 0;
-};
-
-/// Notes when each mouse event reaches the viewport, to time its handling.
-class DispatchRecorder : public QObject {
-public:
-    explicit DispatchRecorder(std::vector<Input>& inputs) : inputs_(inputs) {}
-    bool eventFilter(QObject*, QEvent* e) override {
-        const auto t = e->type();
-        if ((t == QEvent::MouseButtonPress || t == QEvent::MouseMove ||
-             t == QEvent::MouseButtonRelease) &&
-            next_ < inputs_.size())
-            inputs_[next_++].dispatched = Clock::now();
-        return false;
-    }
-
-private:
-    std::vector<Input>& inputs_;
-    std::size_t next_ = 0;
-};
-
-struct Present {
-    Clock::time_point time;
-    PresentedFrame frame;
 };
 
 class Measurement {
@@ -107,28 +77,8 @@ private:
     bool findObjectCentre(const DisplayFrame& frame, QPoint& start) const;
     /// Posts the press, the moves and the release at 60 Hz and waits for the final frame.
     bool driveGesture(QPoint start);
-    /// The gesture's figures (analyse's), then the report's other facts and the text.
-    QJsonObject analyse(Clock::time_point begin, Clock::time_point end) const;
+    /// The report's facts besides the gesture's figures (measurement_analysis.h).
     void addRunFacts(QJsonObject& o, const DisplayFrame& frame) const;
-    void printReport(const QJsonObject& o) const;
-
-    // analyse's parts.
-    struct Shown {  ///< Frames presented between two times.
-        int frames = 0, generations = 0, wholeFrames = 0;
-        std::vector<double> paint, compose;
-    };
-    struct Latencies {  ///< From each edit's input to the first frame, and whole frame, showing it.
-        std::vector<double> toShown, toWhole;
-        int neverShown = 0;
-    };
-    struct Passes {  ///< Interactive passes between two times.
-        std::vector<double> ms, levels;
-        int cancelled = 0;
-    };
-    bool isWhole(const Present& p) const;
-    Shown shownBetween(Clock::time_point begin, Clock::time_point end) const;
-    Latencies editLatencies() const;
-    Passes interactivePasses(Clock::time_point begin, Clock::time_point end) const;
 
     /// What run gathers besides the gesture's events, for the report.
     struct Facts {
@@ -141,13 +91,7 @@ private:
 
     Request request_;
     MainWindow window_;
-    std::vector<Present> presents_;
-    std::vector<uint64_t> wholeSerials_;  ///< Hand-overs of whole frames (ascending serials).
-    std::vector<std::pair<uint64_t, uint64_t>> posted_;  ///< (request serial, generation).
-    std::vector<std::pair<Clock::time_point, PassInfo>> passes_;
-    uint64_t completed_ = 0;
-    std::vector<Input> inputs_;
-    std::vector<double> probeGaps_;
+    Recording rec_;
     FrameView* view_ = nullptr;
     Facts facts_;
 };
@@ -168,12 +112,14 @@ bool Measurement::waitUntil(const std::function<bool()>& done, int timeoutMs) {
 /// Waits until the session's current generation is final and a paint has shown it.
 bool Measurement::waitFinalShown(Clock::time_point* shownAt) {
     SessionController* c = window_.session();
-    if (!waitUntil([&] { return completed_ >= c->session().generation(); }, 120000)) return false;
+    if (!waitUntil([&] { return rec_.completed >= c->session().generation(); }, 120000))
+        return false;
     const uint64_t serial = window_.viewport()->frame() ? window_.viewport()->frame()->serial : 0;
     window_.viewport()->frameView()->repaintOverlay();  // Paints again, whichever view.
     const bool ok = waitUntil(
-        [&] { return !presents_.empty() && presents_.back().frame.serial >= serial; }, 10000);
-    if (ok && shownAt) *shownAt = presents_.back().time;
+        [&] { return !rec_.presents.empty() && rec_.presents.back().frame.serial >= serial; },
+        10000);
+    if (ok && shownAt) *shownAt = rec_.presents.back().time;
     return ok;
 }
 
@@ -187,7 +133,7 @@ QPoint Measurement::pathPoint(QPoint start, int i) const {
 }
 
 void Measurement::post(int i, QPoint start) {
-    const int last = int(inputs_.size()) - 1;
+    const int last = int(rec_.inputs.size()) - 1;
     const QEvent::Type type = i == 0      ? QEvent::MouseButtonPress
                               : i == last ? QEvent::MouseButtonRelease
                                           : QEvent::MouseMove;
@@ -203,8 +149,8 @@ void Measurement::post(int i, QPoint start) {
     QMetaObject::invokeMethod(
         vp,
         [this, i] {
-            inputs_[std::size_t(i)].handled = Clock::now();
-            inputs_[std::size_t(i)].request = window_.session()->requestSerial();
+            rec_.inputs[std::size_t(i)].handled = Clock::now();
+            rec_.inputs[std::size_t(i)].request = window_.session()->requestSerial();
         },
         Qt::QueuedConnection);
 }
@@ -248,7 +194,7 @@ bool Measurement::measureFullFrames(FullFrames& out) {
         if (!waitViewSettled()) return false;
         SceneDocument doc = window_.viewport()->viewDocument();  // At the size traced now.
         if (k % 2 == 0) doc.camera.target.x += 1e-3f;            // Odd rounds go back to the view.
-        const std::size_t seen = passes_.size();
+        const std::size_t seen = rec_.passes.size();
         const auto start = Clock::now();
         c->requestUpdate(doc);
         c->flushUpdate();
@@ -264,8 +210,8 @@ bool Measurement::measureFullFrames(FullFrames& out) {
         }
         double ms = 0.0;
         std::size_t traced = 0;
-        for (std::size_t p = seen; p < passes_.size(); ++p) {
-            const PassInfo& info = passes_[p].second;
+        for (std::size_t p = seen; p < rec_.passes.size(); ++p) {
+            const PassInfo& info = rec_.passes[p].second;
             if (info.generation != generation || info.cancelled) continue;
             ms += info.ms;
             if (info.kind == PassKind::Base) traced += info.tracedPixels;
@@ -285,183 +231,23 @@ bool Measurement::measureFullFrames(FullFrames& out) {
     return true;
 }
 
-bool Measurement::isWhole(const Present& p) const {
-    return std::binary_search(wholeSerials_.begin(), wholeSerials_.end(), p.frame.serial);
-}
-
-Measurement::Shown Measurement::shownBetween(Clock::time_point begin, Clock::time_point end) const {
-    Shown s;
-    uint64_t lastSerial = 0, lastGeneration = 0;
-    for (const Present& p : presents_) {
-        if (p.time > end) break;
-        if (p.time >= begin) {
-            s.paint.push_back(p.frame.paintMs);
-            s.compose.push_back(p.frame.composeMs);
-            s.frames += p.frame.serial != lastSerial;
-            // What the user really gets: a new frame none of whose pixels is left from an
-            // older camera or position (no pass cut short in it).
-            s.wholeFrames += p.frame.serial != lastSerial && isWhole(p);
-            s.generations += p.frame.generation > lastGeneration;
-        }
-        lastSerial = p.frame.serial;
-        lastGeneration = std::max(lastGeneration, p.frame.generation);
-    }
-    return s;
-}
-
-Measurement::Latencies Measurement::editLatencies() const {
-    Latencies l;
-    for (std::size_t i = 1; i < inputs_.size(); ++i) {
-        if (inputs_[i].request <= inputs_[i - 1].request) continue;  // No edit.
-        const auto post = std::find_if(posted_.begin(), posted_.end(), [&](const auto& p) {
-            return p.first >= inputs_[i].request;
-        });
-        const auto shown =
-            post == posted_.end()
-                ? presents_.end()
-                : std::find_if(presents_.begin(), presents_.end(), [&](const Present& p) {
-                      return p.time >= inputs_[i].handled && p.frame.generation >= post->second;
-                  });
-        if (shown == presents_.end())
-            ++l.neverShown;
-        else
-            l.toShown.push_back(msBetween(inputs_[i].due, shown->time));
-        // The same to the first whole frame that shows the edit (never: not counted).
-        const auto whole = std::find_if(shown, presents_.end(), [&](const Present& p) {
-            return p.frame.generation >= post->second && isWhole(p);
-        });
-        if (whole != presents_.end()) l.toWhole.push_back(msBetween(inputs_[i].due, whole->time));
-    }
-    return l;
-}
-
-Measurement::Passes Measurement::interactivePasses(Clock::time_point begin,
-                                                   Clock::time_point end) const {
-    Passes s;
-    for (const auto& [t, info] : passes_) {
-        if (t < begin || t > end || info.kind != PassKind::Interactive) continue;
-        s.levels.push_back(info.governorLevel);
-        if (info.cancelled)
-            ++s.cancelled;
-        else
-            s.ms.push_back(info.ms);
-    }
-    return s;
-}
-
-QJsonObject Measurement::analyse(Clock::time_point begin, Clock::time_point end) const {
-    const double seconds = msBetween(begin, end) / 1000.0;
-    const Shown shown = shownBetween(begin, end);
-    const Latencies latency = editLatencies();
-    std::vector<double> handling;
-    for (const Input& in : inputs_) handling.push_back(msBetween(in.dispatched, in.handled));
-    // Which event took longest: the press (selection, panels) is not what a move costs.
-    const auto slowest = std::max_element(handling.begin(), handling.end());
-    const int slowestAt = slowest == handling.end() ? -1 : int(slowest - handling.begin());
-    const Passes passes = interactivePasses(begin, end);
-    QJsonObject o;
-    o[QStringLiteral("seconds")] = seconds;
-    o[QStringLiteral("frames_per_s")] = shown.frames / seconds;
-    o[QStringLiteral("generations_per_s")] = shown.generations / seconds;
-    o[QStringLiteral("whole_frames_per_s")] = shown.wholeFrames / seconds;
-    o[QStringLiteral("whole_latency_median_ms")] = median(latency.toWhole);
-    o[QStringLiteral("latency_median_ms")] = median(latency.toShown);
-    o[QStringLiteral("latency_p90_ms")] = quantile(latency.toShown, 0.9);
-    o[QStringLiteral("edits")] = int(latency.toShown.size()) + latency.neverShown;
-    o[QStringLiteral("edits_never_shown")] = latency.neverShown;
-    o[QStringLiteral("interactive_pass_median_ms")] = median(passes.ms);
-    o[QStringLiteral("interactive_passes")] = int(passes.ms.size());
-    o[QStringLiteral("interactive_passes_cancelled")] = passes.cancelled;
-    o[QStringLiteral("governor_level_median")] = median(passes.levels);
-    o[QStringLiteral("governor_level_max")] = quantile(passes.levels, 1.0);
-    o[QStringLiteral("input_handling_median_ms")] = median(handling);
-    o[QStringLiteral("input_handling_max_ms")] = quantile(handling, 1.0);
-    o[QStringLiteral("input_handling_max_at")] = slowestAt;
-    o[QStringLiteral("paint_median_ms")] = median(shown.paint);
-    o[QStringLiteral("paint_max_ms")] = quantile(shown.paint, 1.0);
-    o[QStringLiteral("compose_median_ms")] = median(shown.compose);
-    o[QStringLiteral("gui_stall_max_ms")] = std::max(0.0, quantile(probeGaps_, 1.0) - 1.0);
-    o[QStringLiteral("gui_stall_p99_ms")] = std::max(0.0, quantile(probeGaps_, 0.99) - 1.0);
-    double blocked = 0.0, probed = 0.0;
-    for (double g : probeGaps_) blocked += g > 16.0 ? g : 0.0, probed += g;
-    o[QStringLiteral("gui_blocked_share")] = probed > 0.0 ? blocked / probed : 0.0;
-    return o;
-}
-
-void Measurement::printReport(const QJsonObject& o) const {
-    auto num = [&](const char* key) { return o[QLatin1String(key)].toDouble(); };
-    std::printf("%s %s%s: %d moves at 60 Hz, viewport %s (%s), frame %s\n",
-                qPrintable(o[QStringLiteral("kind")].toString()), qPrintable(request_.scene),
-                request_.orbit ? "" : qPrintable(QStringLiteral(" \"%1\"").arg(request_.object)),
-                request_.frames, qPrintable(o[QStringLiteral("viewport")].toString()),
-                view_->usesOpenGL() ? "OpenGL" : "raster",
-                qPrintable(o[QStringLiteral("frame")].toString()));
-    std::printf("  frames shown          %6.1f /s distinct, %.1f /s with a newer edit\n",
-                num("frames_per_s"), num("generations_per_s"));
-    std::printf(
-        "  whole frames shown    %6.1f /s (no pixel of an older edit), input to one "
-        "median %.1f ms\n",
-        num("whole_frames_per_s"), num("whole_latency_median_ms"));
-    std::printf(
-        "  input to display     median %6.1f ms   p90 %6.1f ms   (%d edits, %d never shown)\n",
-        num("latency_median_ms"), num("latency_p90_ms"), o[QStringLiteral("edits")].toInt(),
-        o[QStringLiteral("edits_never_shown")].toInt());
-    std::printf("  interactive pass     median %6.1f ms   (%d passes, %d cancelled)\n",
-                num("interactive_pass_median_ms"), o[QStringLiteral("interactive_passes")].toInt(),
-                o[QStringLiteral("interactive_passes_cancelled")].toInt());
-    std::printf("  governor level       median %4.0f (%s)   max %.0f\n",
-                num("governor_level_median"),
-                Governor::levelName(int(num("governor_level_median"))), num("governor_level_max"));
-    std::printf(
-        "  frame hand-over      mean   %6.2f ms   max %6.2f ms   (copying %.2f ms of the mean)\n",
-        num("handover_mean_ms"), num("handover_max_ms"), num("handover_copy_mean_ms"));
-    std::printf("  hand-overs           %6d        %d found the frame lock held and came back\n",
-                o[QStringLiteral("handovers")].toInt(),
-                o[QStringLiteral("handovers_busy")].toInt());
-    const int slowestAt = o[QStringLiteral("input_handling_max_at")].toInt();
-    const int events = o[QStringLiteral("moves")].toInt() + 2;  // The press, moves, the release.
-    const char* slowest = slowestAt == 0            ? "the press"
-                          : slowestAt == events - 1 ? "the release"
-                                                    : "a move";
-    std::printf("  mouse event handling median %6.2f ms   max %6.2f ms   (event %d of %d: %s)\n",
-                num("input_handling_median_ms"), num("input_handling_max_ms"), slowestAt, events,
-                slowest);
-    std::printf(
-        "  paint                median %6.2f ms   max %6.2f ms   then %.2f ms to the swap\n",
-        num("paint_median_ms"), num("paint_max_ms"), num("compose_median_ms"));
-    std::printf("  idle repaint         paint %6.2f ms   then %.2f ms to the swap\n",
-                num("idle_paint_median_ms"), num("idle_compose_median_ms"));
-    std::printf(
-        "  GUI thread stalls    longest %5.1f ms   p99 %5.1f ms   %3.0f %% of the time in blocks "
-        "over 16 ms\n",
-        num("gui_stall_max_ms"), num("gui_stall_p99_ms"), 100.0 * num("gui_blocked_share"));
-    std::printf("  release to final     %6.1f ms\n", num("release_to_final_shown_ms"));
-    std::printf(
-        "  full frame           viewport pass %.1f ms, renderImage %.1f ms: %.2fx (medians of %d "
-        "interleaved; edit to shown %.1f ms)\n",
-        num("viewport_full_frame_ms"), num("render_image_ms"), num("full_frame_ratio"),
-        o[QStringLiteral("full_frame_rounds")].toInt(), num("full_frame_to_shown_ms"));
-    std::printf("  first frame on open  viewport pass %.1f ms (open to shown %.1f ms)\n",
-                num("open_full_frame_ms"), num("open_to_final_shown_ms"));
-}
-
 void Measurement::connectRecorders() {
     SessionController* controller = window_.session();
     window_.viewport()->setDisplay(request_.display);
     view_ = window_.viewport()->frameView();
     view_->setPresentedHandler([this](const PresentedFrame& f) {
-        presents_.push_back({Clock::now(), f});
+        rec_.presents.push_back({Clock::now(), f});
     });
     QObject::connect(controller, &SessionController::documentPosted, &window_,
-                     [this](quint64 r, quint64 g) { posted_.emplace_back(r, g); });
+                     [this](quint64 r, quint64 g) { rec_.posted.emplace_back(r, g); });
     QObject::connect(controller, &SessionController::frameHandedOver, &window_,
                      [this](quint64 serial, bool whole) {
-                         if (whole) wholeSerials_.push_back(serial);
+                         if (whole) rec_.wholeSerials.push_back(serial);
                      });
     QObject::connect(controller, &SessionController::passFinished, &window_,
-                     [this](const PassInfo& p) { passes_.emplace_back(Clock::now(), p); });
+                     [this](const PassInfo& p) { rec_.passes.emplace_back(Clock::now(), p); });
     QObject::connect(controller, &SessionController::frameCompleted, &window_,
-                     [this](quint64 g) { completed_ = std::max<uint64_t>(completed_, g); });
+                     [this](quint64 g) { rec_.completed = std::max<uint64_t>(rec_.completed, g); });
 }
 
 int Measurement::openScene() {
@@ -480,7 +266,7 @@ int Measurement::openScene() {
     }
     // The scene's first full pass, right after the open (while the window fills its panels
     // and caches are cold): reported, but not what the full frame is compared by.
-    for (const auto& [t, p] : passes_)
+    for (const auto& [t, p] : rec_.passes)
         if (p.generation >= openGeneration && !p.cancelled && p.kind == PassKind::Base &&
             p.tracedPixels == p.totalPixels) {
             facts_.openPassMs = p.ms;
@@ -491,12 +277,12 @@ int Measurement::openScene() {
 
 void Measurement::measureIdleRepaint() {
     for (int k = 0; k < 10; ++k) {
-        const std::size_t seen = presents_.size();
+        const std::size_t seen = rec_.presents.size();
         window_.viewport()->refresh();
         window_.viewport()->frameView()->repaintOverlay();  // Nothing new: paint all the same.
-        if (!waitUntil([&] { return presents_.size() > seen; }, 5000)) break;
-        facts_.idlePaint.push_back(presents_.back().frame.paintMs);
-        facts_.idleCompose.push_back(presents_.back().frame.composeMs);
+        if (!waitUntil([&] { return rec_.presents.size() > seen; }, 5000)) break;
+        facts_.idlePaint.push_back(rec_.presents.back().frame.paintMs);
+        facts_.idleCompose.push_back(rec_.presents.back().frame.composeMs);
     }
 }
 
@@ -523,10 +309,10 @@ bool Measurement::findObjectCentre(const DisplayFrame& frame, QPoint& start) con
 }
 
 bool Measurement::driveGesture(QPoint start) {
-    inputs_.assign(std::size_t(request_.frames) + 2, Input{});
+    rec_.inputs.assign(std::size_t(request_.frames) + 2, Input{});
     const auto t0 = Clock::now() + std::chrono::milliseconds(50);
-    for (std::size_t i = 0; i < inputs_.size(); ++i)
-        inputs_[i].due = t0 + std::chrono::microseconds(int64_t(i * 1000000 / 60));
+    for (std::size_t i = 0; i < rec_.inputs.size(); ++i)
+        rec_.inputs[i].due = t0 + std::chrono::microseconds(int64_t(i * 1000000 / 60));
     std::size_t next = 0;
     QTimer driver, probe;
     driver.setTimerType(Qt::PreciseTimer);
@@ -534,22 +320,24 @@ bool Measurement::driveGesture(QPoint start) {
     QObject::connect(&driver, &QTimer::timeout, [&] {
         // Events due while the GUI thread was blocked are posted late but keep their due time,
         // as a window system would queue them.
-        while (next < inputs_.size() && Clock::now() >= inputs_[next].due) post(int(next++), start);
+        while (next < rec_.inputs.size() && Clock::now() >= rec_.inputs[next].due)
+            post(int(next++), start);
     });
     probe.setTimerType(Qt::PreciseTimer);
     probe.setInterval(1);
     auto lastProbe = Clock::now();
     QObject::connect(&probe, &QTimer::timeout, [&] {
         const auto now = Clock::now();
-        probeGaps_.push_back(msBetween(lastProbe, now));
+        rec_.probeGaps.push_back(msBetween(lastProbe, now));
         lastProbe = now;
     });
-    DispatchRecorder recorder(inputs_);
+    DispatchRecorder recorder(rec_.inputs);
     window_.viewport()->installEventFilter(&recorder);
     driver.start();
     probe.start();
-    const bool handled = waitUntil([&] { return inputs_.back().handled != Clock::time_point{}; },
-                                   60000 + request_.frames * 100);
+    const bool handled =
+        waitUntil([&] { return rec_.inputs.back().handled != Clock::time_point{}; },
+                  60000 + request_.frames * 100);
     probe.stop();
     driver.stop();
     window_.viewport()->removeEventFilter(&recorder);
@@ -577,7 +365,7 @@ void Measurement::addRunFacts(QJsonObject& o, const DisplayFrame& frame) const {
     o[QStringLiteral("handovers")] = handovers;
     o[QStringLiteral("handovers_busy")] = handover.busy - handover0.busy;
     o[QStringLiteral("release_to_final_shown_ms")] =
-        msBetween(inputs_.back().due, facts_.finalShown);
+        msBetween(rec_.inputs.back().due, facts_.finalShown);
     o[QStringLiteral("viewport_full_frame_ms")] = full.passMs;
     o[QStringLiteral("full_frame_to_shown_ms")] = full.shownMs;
     o[QStringLiteral("render_image_ms")] = full.renderMs;
@@ -611,7 +399,7 @@ int Measurement::run() {
         return 1;
     }
 
-    QJsonObject o = analyse(inputs_.front().due, inputs_.back().due);
+    QJsonObject o = analyseGesture(rec_, rec_.inputs.front().due, rec_.inputs.back().due);
     addRunFacts(o, *frame);
     window_.editor()->undoStack()->setClean();  // No save prompt.
 
@@ -619,7 +407,8 @@ int Measurement::run() {
         std::printf("%s\n", QJsonDocument(o).toJson(QJsonDocument::Compact).constData());
         return 0;
     }
-    printReport(o);
+    printMeasurementReport(
+        {request_.scene, request_.object, request_.orbit, request_.frames, view_->usesOpenGL()}, o);
     return 0;
 }
 
