@@ -78,6 +78,7 @@ private Q_SLOTS:
     void largeMeshImport_IsScaledToFitTheView_AndTheFactorIsEditable();
     void meshImportedAtTheCursor_LandsOnTheSurfaceUnderIt_Unscaled();
     void importedAsset_BringsItsPartsMaterials_AsOneUndoStep();
+    void importedAssetOfOneMaterial_PanelEditsThatMaterial_AssignTakesItWhole();
     void importedImagesOfAnUnsavedScene_GoNextToItOnSave();
 
 private:
@@ -282,6 +283,57 @@ void PlacementTest::importedAsset_BringsItsPartsMaterials_AsOneUndoStep() {
     QCOMPARE(idOf(*window_, "two-tone-box"), kNoObject);
     QCOMPARE(doc().materials.size(), before);
 }
+void PlacementTest::importedAssetOfOneMaterial_PanelEditsThatMaterial_AssignTakesItWhole() {
+    // An OBJ of one material: its only part has its own, so the panel shows and edits that
+    // one, not the object's (which none of its triangles use).
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(writeCube(dir.filePath(QStringLiteral("crate.obj")), 0.6f));
+    QFile obj(dir.filePath(QStringLiteral("crate.obj")));
+    QVERIFY(obj.open(QIODevice::ReadOnly));
+    const QByteArray faces = obj.readAll();
+    obj.close();
+    QVERIFY(obj.open(QIODevice::WriteOnly));
+    obj.write("mtllib crate.mtl\nusemtl paint\n" + faces);
+    obj.close();
+    QFile mtl(dir.filePath(QStringLiteral("crate.mtl")));
+    QVERIFY(mtl.open(QIODevice::WriteOnly));
+    mtl.write("newmtl paint\nKd 0.8 0.2 0.1\n");
+    mtl.close();
+    window_->importMesh(dir.filePath(QStringLiteral("crate.obj")));
+    QTRY_VERIFY_WITH_TIMEOUT(idOf(*window_, "crate") != kNoObject, 20000);
+    const ObjectId id = idOf(*window_, "crate");
+    QCOMPARE(window_->editor()->selection(), id);
+    const std::vector<std::string> parts =
+        std::get<MeshGeometry>(doc().findObject(id)->geometry).partMaterials;
+    QVERIFY(std::count(parts.begin(), parts.end(), std::string("paint")) == 1);
+
+    auto* partsBox = window_->findChild<QGroupBox*>(QStringLiteral("parts"));
+    QVERIFY(partsBox);
+    const auto combos = partsBox->findChildren<QComboBox*>();
+    QCOMPARE(combos.size(), 1);
+    QCOMPARE(combos[0]->currentText(), QStringLiteral("paint"));
+    auto* usage = window_->propertyPanel()->findChild<QLabel*>(QStringLiteral("materialUsage"));
+    QVERIFY(usage);
+    QVERIFY2(usage->text().contains(QStringLiteral("own material")), qPrintable(usage->text()));
+    // The editable section is the part's material: changing its colour there changes it.
+    QVERIFY(panelField(*window_, QStringLiteral("Material \"paint\""), QStringLiteral("Colour")));
+
+    // Assign to Selection gives the whole asset the material: its parts give theirs up.
+    const int before = undoCount();
+    QVERIFY(window_->materialList()->setCurrent("glass"));
+    QTest::mouseClick(
+        window_->materialList()->findChild<QPushButton*>(QStringLiteral("assignMaterial")),
+        Qt::LeftButton);
+    QCOMPARE(undoCount(), before + 1);
+    const Object* o = doc().findObject(id);
+    QCOMPARE(o->material, std::string("glass"));
+    QVERIFY(std::get<MeshGeometry>(o->geometry).partMaterials.empty());
+    QVERIFY(!window_->findChild<QGroupBox*>(QStringLiteral("parts")));
+    window_->editor()->undoStack()->undo();
+    QCOMPARE(std::get<MeshGeometry>(doc().findObject(id)->geometry).partMaterials, parts);
+}
+
 // An asset imported before the scene has a file writes its embedded images into the data
 // folder; saving the scene copies them next to it and the file refers to the copies.
 void PlacementTest::importedImagesOfAnUnsavedScene_GoNextToItOnSave() {

@@ -90,6 +90,18 @@ void UiLogicTest::materials_DeleteRefusedWhileUsed_RenameFollowsUsers_NamesValid
     QCOMPARE(materialDeleteError(doc, "a"),
              std::string("\"a\" is used by \"a\", \"c\", \"d\" and 2 more; assign those another "
                          "material first"));
+
+    // An imported asset whose parts have their own materials takes it as a whole.
+    Object asset;
+    asset.name = "asset";
+    asset.material = "a";
+    MeshGeometry parts;
+    parts.partMaterials = {"a", ""};
+    asset.geometry = parts;
+    const ObjectId meshId = doc.addObject(std::move(asset));
+    QCOMPARE(assignMaterial(doc, {meshId}, "a"), 1);
+    QVERIFY(std::get<MeshGeometry>(doc.findObject(meshId)->geometry).partMaterials.empty());
+    QCOMPARE(assignMaterial(doc, {meshId}, "a"), 0);
 }
 
 void UiLogicTest::placement_RestsOnTheSurfaceHit_OrSnapsToTheFloorBelow() {

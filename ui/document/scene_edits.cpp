@@ -236,11 +236,19 @@ std::string deleteMaterial(SceneDocument& doc, const std::string& name) {
 int assignMaterial(SceneDocument& doc, const std::vector<ObjectId>& ids, const std::string& name) {
     if (!name.empty() && !doc.findMaterial(name)) return 0;
     int changed = 0;
-    for (ObjectId id : ids)
-        if (Object* o = doc.findObject(id); o && o->material != name) {
-            o->material = name;
-            ++changed;
-        }
+    for (ObjectId id : ids) {
+        Object* o = doc.findObject(id);
+        if (!o) continue;
+        // An imported asset's parts give up their own materials: the whole object shows it.
+        auto* mesh = std::get_if<MeshGeometry>(&o->geometry);
+        const bool ownParts =
+            mesh && std::any_of(mesh->partMaterials.begin(), mesh->partMaterials.end(),
+                                [](const std::string& m) { return !m.empty(); });
+        if (o->material == name && !ownParts) continue;
+        o->material = name;
+        if (ownParts) mesh->partMaterials.clear();
+        ++changed;
+    }
     return changed;
 }
 

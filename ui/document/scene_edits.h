@@ -56,7 +56,8 @@ std::string renameMaterial(SceneDocument& doc, const std::string& from, const st
 std::string materialDeleteError(const SceneDocument& doc, const std::string& name);
 /// Deletes material `name` when nothing uses it; the error (unchanged document), or empty.
 std::string deleteMaterial(SceneDocument& doc, const std::string& name);
-/// Gives the objects among `ids` material `name` (empty: the built-in grey); how many changed.
+/// Gives the objects among `ids` material `name` (empty: the built-in grey), the whole object:
+/// a mesh's parts lose their own materials; how many changed.
 int assignMaterial(SceneDocument& doc, const std::vector<ObjectId>& ids, const std::string& name);
 
 }  // namespace rs::ui

@@ -9,6 +9,7 @@
 #include <QScrollBar>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "document/color_pattern_edits.h"
 #include "document/scene_editor.h"
@@ -38,6 +39,31 @@ void reloadMeshIfNeeded(Geometry& g, const std::string& key) {
     MeshLoadResult r = loadMesh(mesh->resolvedPath, mesh->smoothNormals);
     if (r.ok()) mesh->data = r.mesh;
 }
+
+/// The loaded parts of `o` when it is a mesh, else none.
+const std::vector<MeshPart>* meshParts(const Object& o) {
+    const auto* mesh = std::get_if<MeshGeometry>(&o.geometry);
+    return mesh && mesh->data ? &mesh->data->parts : nullptr;
+}
+
+/// Whether every part of `o` (a loaded mesh with parts) has a material of its own, so that
+/// the object's material shows nowhere: an imported asset's usual case.
+bool everyPartHasItsOwn(const Object& o) {
+    const auto* parts = meshParts(o);
+    return parts && !parts->empty() &&
+           std::all_of(parts->begin(), parts->end(), [&](const MeshPart& p) {
+               return &partMaterial(o, p.material) != &o.material;
+           });
+}
+
+/// The material the panel edits for `o`: the one part's own (an imported asset of one
+/// material), so that editing what is selected edits what is seen, else the object's.
+const std::string& editedMaterial(const Object& o) {
+    const auto* parts = meshParts(o);
+    return parts && parts->size() == 1 && everyPartHasItsOwn(o)
+               ? partMaterial(o, parts->front().material)
+               : o.material;
+}
 }  // namespace
 
 PropertyPanel::PropertyPanel(SceneEditor* editor, QWidget* parent)
@@ -63,7 +89,7 @@ QString PropertyPanel::signature() const {
             for (const std::string& part : mesh->partMaterials)
                 s += QStringLiteral("/m") + QString::fromStdString(part);
         // Its material's colour form decides which sections are shown.
-        if (const Material* m = doc.findMaterial(o->material))
+        if (const Material* m = doc.findMaterial(editedMaterial(*o)))
             s += QStringLiteral("/p%1").arg(m->pattern.index());
     }
     if (const Light* l = doc.findLight(id)) s += QStringLiteral("/l%1").arg(int(l->type));
@@ -178,7 +204,11 @@ void PropertyPanel::addPartMaterials(ObjectId id) {
     const SceneDocument& doc = editor_->document();
     const Object* o = doc.findObject(id);
     const auto* mesh = o ? std::get_if<MeshGeometry>(&o->geometry) : nullptr;
-    if (!mesh || mesh->partMaterials.empty() || !mesh->data || mesh->data->parts.size() < 2) return;
+    // One part shows its row too when it has its own material, else the panel would name the
+    // object's material, which none of its triangles use.
+    if (!mesh || mesh->partMaterials.empty() || !mesh->data || mesh->data->parts.empty() ||
+        (mesh->data->parts.size() < 2 && !everyPartHasItsOwn(*o)))
+        return;
     auto* box = new QGroupBox(tr("Parts"), content_);
     box->setObjectName(QStringLiteral("parts"));
     auto* form = new QFormLayout(box);
@@ -229,11 +259,13 @@ void PropertyPanel::addMaterialChooser(ObjectId id) {
     });
     form->addRow(tr("Material"), combo);
     const int users = o->material.empty() ? 0 : materialUsers(doc, o->material);
-    auto* usage =
-        new QLabel(users > 1 ? tr("Shared: used by %1 objects; edits change all of them").arg(users)
-                   : o->material.empty() ? tr("Built-in, not editable")
-                                         : tr("Used by this object only"),
-                   box);
+    const bool unused = everyPartHasItsOwn(*o);
+    auto* usage = new QLabel(
+        unused      ? tr("Every part has its own material (Parts); this one shows on none of them")
+        : users > 1 ? tr("Shared: used by %1 objects; edits change all of them").arg(users)
+        : o->material.empty() ? tr("Built-in, not editable")
+                              : tr("Used by this object only"),
+        box);
     usage->setObjectName(QStringLiteral("materialUsage"));
     usage->setWordWrap(true);
     form->addRow(usage);
@@ -249,8 +281,8 @@ void PropertyPanel::addMaterialChooser(ObjectId id) {
         form->addRow(unique);
     }
     layout_->addWidget(box);
-    if (o->material.empty() || !doc.findMaterial(o->material)) return;
-    const std::string name = o->material;
+    const std::string name = editedMaterial(*o);
+    if (name.empty() || !doc.findMaterial(name)) return;
     QFormLayout* materialForm = addSection(
         tr("Material \"%1\"").arg(QString::fromStdString(name)), QStringLiteral("material"),
         Part::Material, ParamKind::Material, [name](auto& d) { return materialNamed(d, name); });
