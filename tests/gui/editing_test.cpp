@@ -30,10 +30,6 @@ bool near(const Vec3& a, const Vec3& b, float tol = 1e-4f) {
     return glm::length(a - b) <= tol;
 }
 
-QString str(const Vec3& v) {
-    return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z);
-}
-
 /// True when `p` lies inside every plane of `doc` (the room's walls face inwards).
 bool insideWalls(const SceneDocument& doc, const Vec3& p, QString* which) {
     for (const Object& o : doc.objects) {

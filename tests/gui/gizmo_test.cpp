@@ -19,10 +19,6 @@ using namespace rs::ui::test;
 
 namespace {
 
-QString str(const Vec3& v) {
-    return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z);
-}
-
 /// A left-button move with `mods` held (QTest::mouseMove sends no modifiers).
 void moveHeld(QWidget* w, const QPointF& to, Qt::KeyboardModifiers mods = {}) {
     QMouseEvent e(QEvent::MouseMove, to, w->mapToGlobal(to), Qt::NoButton, Qt::LeftButton, mods);

@@ -108,6 +108,11 @@ inline ObjectId idOf(const MainWindow& w, const std::string& name) {
     return kNoObject;
 }
 
+/// A vector as "(x, y, z)", for test messages.
+inline QString str(const Vec3& v) {
+    return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z);
+}
+
 /// Centre of the pixels showing `id` in the viewport's frame (x, y), or (-1, -1).
 inline std::pair<int, int> pixelOf(const DisplayFrame& f, ObjectId id) {
     long sx = 0, sy = 0, n = 0;

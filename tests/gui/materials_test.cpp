@@ -42,10 +42,6 @@ using namespace rs::ui::test;
 
 namespace {
 
-QString str(const Vec3& v) {
-    return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z);
-}
-
 /// Mean linear colour of the pixels showing `id`.
 Vec3 meanColourOf(const DisplayFrame& f, ObjectId id) {
     Vec3 sum(0.0f);

@@ -44,10 +44,6 @@ using namespace rs::ui::test;
 
 namespace {
 
-QString str(const Vec3& v) {
-    return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z);
-}
-
 /// A cube of side `size` centred at the origin, as an OBJ file.
 bool writeCube(const QString& path, float size) {
     QFile f(path);

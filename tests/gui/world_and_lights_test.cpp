@@ -25,10 +25,6 @@ using namespace rs::ui::test;
 
 namespace {
 
-QString str(const Vec3& v) {
-    return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z);
-}
-
 bool near(const Vec3& a, const Vec3& b, float tol = 1e-4f) {
     return glm::length(a - b) <= tol;
 }
