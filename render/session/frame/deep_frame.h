@@ -52,9 +52,6 @@ struct TileSummary {
 };
 
 struct TileResult;
-class SegmentPool;
-class RecordPool;
-class TouchedBlocks;
 
 /// What the designer's display copy does with a channel (pixel_channels.h).
 enum ChannelShown {
@@ -105,7 +102,10 @@ constexpr std::size_t pixelChannelBytes() {
 /// and only these write: resize() allocates; tiles write only through commit(), under the
 /// session's shared frame lock, each tile its own pixels; edits (the session's dirty
 /// marking) change only `state` and `flags`, through applyBlockMarks(), applyShadowMarks()
-/// or markAllStale(), under the exclusive lock. commit() keeps these invariants:
+/// or markAllStale(), under the exclusive lock. commit() lends its helpers only what each
+/// changes: a segment or record pool (tile_pools.h) gets its tile's pool and the channels
+/// that index it, and the blocks it wrote (touched_blocks.h) nothing: it says what it knows of
+/// their summaries and commit() writes them. commit() keeps these invariants:
 /// - a result of another generation than the live one writes nothing;
 /// - `base` holds the centre sample of pixels at kBase or above when the scene supersamples
 ///   (only supersampling reads it), `sampleSum`/`sampleCount` the samples (zero below kBase);
@@ -228,9 +228,6 @@ public:
     void copyDisplayWhole(Out& out, bool debug) const;
 
 private:
-    friend class SegmentPool;           // commit()'s segment pools (tile_pools.h),
-    friend class RecordPool;            // its record pools
-    friend class TouchedBlocks;         // and the block summaries it rewrites (frame_commit.cpp).
     friend struct DeepFrameTestAccess;  // Tests that set pixels up by hand.
 
     /// resize() without the clean-up on failure.
@@ -256,6 +253,9 @@ private:
     void commitResolved(const TileResult& t, Commit& c);
     void commitFinished(const TileResult& t, const Commit& c);
     void commitSampled(const TileResult& t, Commit& c);
+    /// Rewrites the summaries of the blocks the commit wrote (from what it knows of them, or
+    /// from their pixels), then the tile's.
+    void summarizeWritten(const Commit& c);
     /// Asks for the lines of pixels [i, i + n) of the channels a traced run writes, in the
     /// list's `ahead` order; its steps: the channels at positions P + 1, one after the other,
     /// and the one at Position.

@@ -1,8 +1,11 @@
 // A tile's segment and record pools as DeepFrame::commit appends to them and compacts them
-// (frame_commit.cpp): where a written pixel's secondary segments and deferred records go.
+// (frame_commit.cpp): where a written pixel's secondary segments and deferred records go. The
+// frame hands each pool what it may change, a tile's pool and the frame's index of it, and
+// nothing else of itself.
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -11,24 +14,34 @@
 
 namespace rs {
 
+/// Where each pixel's items lie in its tile's pool: the frame's start and count channels
+/// (row-major, `width` pixels a row), which a pool rewrites as it appends and compacts.
+struct PoolIndex {
+    uint32_t* start;
+    uint8_t* count;
+    std::size_t width;
+
+    std::size_t at(int x, int y) const { return std::size_t(y) * width + std::size_t(x); }
+};
+
 /// A tile's segment pool, append-only: a written pixel's segments go to the end and its old
 /// ones become garbage, so a commit costs what it writes, not the whole tile; compact() drops
 /// the garbage when it outweighs what is live.
 class SegmentPool {
 public:
-    SegmentPool(DeepFrame& frame, int tile)
-        : frame_(frame),
-          pool_(frame.tileSegments_[std::size_t(tile)]),
-          live_(frame.tileLiveSegments_[std::size_t(tile)]) {}
+    /// The tile's `pool`, `live` the number of its segments pixels reference, `index` the
+    /// frame's segmentStart and segmentCount.
+    SegmentPool(SegmentVector& pool, uint32_t& live, const PoolIndex& index)
+        : pool_(pool), live_(live), index_(index) {}
 
     /// Pixel i's segments become its old ones (when `keepOld`) followed by `count` from `first`
     /// (several lists: call add() for each, then end()).
     void begin(std::size_t i, bool keepOld) {
         pixel_ = i;
-        oldCount_ = fresh_ ? 0 : frame_.segmentCount_[i];
+        oldCount_ = fresh_ ? 0 : index_.count[i];
         start_ = uint32_t(pool_.size());
         if (keepOld) {
-            const uint32_t oldStart = frame_.segmentStart_[i];
+            const uint32_t oldStart = index_.start[i];
             for (uint32_t k = 0; k < oldCount_; ++k) pool_.push_back(pool_[oldStart + k]);
         }
     }
@@ -48,9 +61,9 @@ public:
     void replaceRun(std::size_t i, std::size_t n, const RayList& list, std::size_t k) {
         uint32_t removed = 0, added = 0;
         if (!fresh_)
-            for (std::size_t j = 0; j < n; ++j) removed += frame_.segmentCount_[i + j];
-        uint32_t* startOut = frame_.segmentStart_.data() + i;
-        uint8_t* countOut = frame_.segmentCount_.data() + i;
+            for (std::size_t j = 0; j < n; ++j) removed += index_.count[i + j];
+        uint32_t* startOut = index_.start + i;
+        uint8_t* countOut = index_.count + i;
         const uint32_t base = uint32_t(pool_.size());
         if (!list.withSegments) {
             std::fill_n(startOut, n, base);
@@ -71,16 +84,19 @@ public:
         }
         live_ = live_ - removed + added;
     }
-    void end() {
+    /// False when the pixel's segments were too many to index: they are forgotten, and the
+    /// caller flags its tree unknown (always re-traced).
+    [[nodiscard]] bool end() {
         std::size_t count = pool_.size() - start_;
-        if (count > 255) {  // Too many to index: forget them and always re-trace.
+        const bool kept = count <= 255;
+        if (!kept) {
             pool_.resize(start_);
             count = 0;
-            frame_.flags_[pixel_] |= kTreeUnknown;
         }
-        frame_.segmentStart_[pixel_] = start_;
-        frame_.segmentCount_[pixel_] = uint8_t(count);
+        index_.start[pixel_] = start_;
+        index_.count[pixel_] = uint8_t(count);
         live_ = live_ - oldCount_ + uint32_t(count);
+        return kept;
     }
     /// Whether no pixel of the tile keeps a segment: every count is 0 (live_ is their sum),
     /// so clearRun() would change nothing. Not after restart(): counts not rewritten yet stay.
@@ -88,10 +104,10 @@ public:
     /// Pixels [i, i + n) of one row keep no segments.
     void clearRun(std::size_t i, std::size_t n) {
         uint32_t removed = 0;
-        for (std::size_t j = 0; j < n; ++j) removed += frame_.segmentCount_[i + j];
+        for (std::size_t j = 0; j < n; ++j) removed += index_.count[i + j];
         if (!fresh_) live_ -= removed;
-        std::fill_n(frame_.segmentStart_.begin() + std::ptrdiff_t(i), n, uint32_t(pool_.size()));
-        std::fill_n(frame_.segmentCount_.begin() + std::ptrdiff_t(i), n, uint8_t(0));
+        std::fill_n(index_.start + i, n, uint32_t(pool_.size()));
+        std::fill_n(index_.count + i, n, uint8_t(0));
     }
     /// Rewrites the pool with only the segments pixels of `r` still reference, when it is
     /// mostly garbage.
@@ -101,20 +117,20 @@ public:
         fresh.reserve(live_);
         for (int y = r.y0; y < r.y1; ++y) {
             for (int x = r.x0; x < r.x1; ++x) {
-                const std::size_t i = frame_.index(x, y);
-                const uint32_t start = frame_.segmentStart_[i];
-                frame_.segmentStart_[i] = uint32_t(fresh.size());
+                const std::size_t i = index_.at(x, y);
+                const uint32_t start = index_.start[i];
+                index_.start[i] = uint32_t(fresh.size());
                 fresh.insert(fresh.end(), pool_.begin() + start,
-                             pool_.begin() + start + frame_.segmentCount_[i]);
+                             pool_.begin() + start + index_.count[i]);
             }
         }
         pool_.swap(fresh);
     }
 
 private:
-    DeepFrame& frame_;
     SegmentVector& pool_;
     uint32_t& live_;
+    PoolIndex index_;
     std::size_t pixel_ = 0;
     uint32_t oldCount_ = 0, start_ = 0;
     bool fresh_ = false;
@@ -128,10 +144,12 @@ private:
 /// keeps a compaction's scan of the tile amortized over as many appended records.
 class RecordPool {
 public:
-    RecordPool(DeepFrame& frame, int tile)
-        : frame_(frame),
-          pool_(frame.tileRecords_[std::size_t(tile)]),
-          kept_(frame.tileRecordsKept_[std::size_t(tile)]) {}
+    /// The tile's `pool`, `kept` its size after its last compaction, `index` the frame's
+    /// recordStart and recordCount, `flags` its flags (whose kDeferredValid says which
+    /// pixels' records are still wanted).
+    RecordPool(std::vector<ShadingRecord>& pool, uint32_t& kept, const PoolIndex& index,
+               const uint8_t* flags)
+        : pool_(pool), kept_(kept), index_(index), flags_(flags) {}
 
     /// Every pixel of the tile is traced again: no old record stays referenced.
     void restart() {
@@ -139,8 +157,8 @@ public:
         kept_ = 0;
     }
     void append(std::size_t i, const ShadingRecord* first, uint8_t count) {
-        frame_.recordStart_[i] = uint32_t(pool_.size());
-        frame_.recordCount_[i] = count;
+        index_.start[i] = uint32_t(pool_.size());
+        index_.count[i] = count;
         pool_.insert(pool_.end(), first, first + count);
     }
     /// Keeps only the records of the pixels of `r` that still wait for deferred shadows.
@@ -149,12 +167,12 @@ public:
         std::vector<ShadingRecord> fresh;
         for (int y = r.y0; y < r.y1; ++y) {
             for (int x = r.x0; x < r.x1; ++x) {
-                const std::size_t i = frame_.index(x, y);
-                if (!(frame_.flags_[i] & kDeferredValid)) continue;
-                const uint32_t start = frame_.recordStart_[i];
-                frame_.recordStart_[i] = uint32_t(fresh.size());
+                const std::size_t i = index_.at(x, y);
+                if (!(flags_[i] & kDeferredValid)) continue;
+                const uint32_t start = index_.start[i];
+                index_.start[i] = uint32_t(fresh.size());
                 fresh.insert(fresh.end(), pool_.begin() + start,
-                             pool_.begin() + start + frame_.recordCount_[i]);
+                             pool_.begin() + start + index_.count[i]);
             }
         }
         pool_.swap(fresh);
@@ -162,9 +180,10 @@ public:
     }
 
 private:
-    DeepFrame& frame_;
     std::vector<ShadingRecord>& pool_;
     uint32_t& kept_;
+    PoolIndex index_;
+    const uint8_t* flags_;
 };
 
 }  // namespace rs
