@@ -20,49 +20,27 @@
 
 namespace rs::ui {
 
-namespace {
-constexpr int kDragThresholdPx = 3;
-
-/// The point of line (a + s * axis) closest to the ray (o + t * d).
-Vec3 closestOnAxis(const Vec3& a, const Vec3& axis, const Vec3& o, const Vec3& d) {
-    const Vec3 w = a - o;
-    const float b = glm::dot(axis, d), dd = glm::dot(d, d), aa = glm::dot(axis, axis);
-    const float denom = aa * dd - b * b;
-    if (std::abs(denom) < 1e-8f) return a;
-    const float s = (b * glm::dot(d, w) - dd * glm::dot(axis, w)) / denom;
-    return a + axis * s;
-}
-}  // namespace
-
 Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* parent,
                    DisplayKind display)
     : QWidget(parent),
       editor_(editor),
       session_(session),
-      overlay_(new ViewportOverlay(
-          [this](QPainter& p) {
-              // Any paint, a tile's too, draws the overlay as it is at that moment.
-              overlayShown_ += overlayRegion();
-              paintOverlay(p);
-          },
-          this)) {
+      overlay_(new ViewportOverlay([this](QPainter& p) { paintOverlay(p); },
+                                   [this] { return overlayRegion(); }, this)),
+      pace_([this] { showNewPixels(); }),
+      posting_(this, session, [this] { return viewDocument(); }) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     installFrameView(createFrameView(this, display));
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setMinimumSize(320, 180);
-    resizeSettle_.setSingleShot(true);
-    resizeSettle_.setInterval(kResizeSettleMs);
-    connect(&resizeSettle_, &QTimer::timeout, this, &Viewport::postView);
+    connect(&posting_, &ViewPosting::posted, this, &Viewport::redraw);
     connect(session_, &SessionController::frameUpdated, this, &Viewport::showNewPixels);
     // A still frame's tiles wait for the pace; the end of a pass is shown at once.
-    paceClock_.start();
-    paceTimer_.setSingleShot(true);
-    connect(&paceTimer_, &QTimer::timeout, this, &Viewport::showNewPixels);
     connect(session_, &SessionController::passFinished, this, [this](const PassInfo& info) {
         if (info.cancelled) return;
-        pacing_.passCompleted();
+        pace_.passCompleted();
         showNewPixels();
     });
     connect(editor_, &SceneEditor::selectionChanged, this, &Viewport::redraw);
@@ -99,35 +77,26 @@ void Viewport::setViewMode(ViewMode mode) {
 void Viewport::refresh() {
     const QSize before = frame_ ? QSize(frame_->width, frame_->height) : QSize();
     frame_ = session_->displayFrame();
-    pacing_.handedOver(paceClock_.elapsed());
+    pace_.handedOver();
     showHandedOver(before);
 }
 
 void Viewport::setRepaintPacing(const RepaintPacing& pacing) {
-    pacing_ = pacing;
-    pacing_.handedOver(paceClock_.elapsed());
-    paceTimer_.stop();
+    pace_.setPacing(pacing);
 }
 
 bool Viewport::interacting() const {
-    return gesture_.has_value() || drag_ == Drag::Object || drag_ == Drag::Orbit ||
-           drag_ == Drag::Pan;
+    return gesture_.has_value() || drag_.interacting();
 }
 
 void Viewport::showNewPixels() {
-    pacing_.setInteracting(interacting());
-    if (const int64_t wait = pacing_.delay(paceClock_.elapsed()); wait > 0) {
-        // Tiles that come meanwhile are all in the one hand-over the timer brings.
-        if (!paceTimer_.isActive()) paceTimer_.start(int(std::min<int64_t>(wait, 1 << 30)));
-        return;
-    }
-    paceTimer_.stop();
+    if (pace_.waits(interacting())) return;
     const QSize before = frame_ ? QSize(frame_->width, frame_->height) : QSize();
     const uint64_t serial = frame_ ? frame_->serial : 0;
     const int busy = session_->handoverStats().busy;
     frame_ = session_->displayFrame(SessionController::FrameWait::TryOnly);
     // A busy lock brings frameUpdated again shortly (the pass's end still pending then).
-    if (session_->handoverStats().busy == busy) pacing_.handedOver(paceClock_.elapsed());
+    if (session_->handoverStats().busy == busy) pace_.handedOver();
     if (frame_->serial != serial)
         showHandedOver(before);  // Else the lock was busy, or nothing new.
 }
@@ -152,15 +121,7 @@ void Viewport::repaintOverlay() {
         view_->repaintOverlay();
         return;
     }
-    // Only where the overlay was or is now drawn: the frame under the rest stays on screen.
-    const QRegion now = overlayRegion();
-    const QRectF output = throughScene_ ? projection().outputRect() : QRectF();
-    if (output != outputShown_)
-        overlay_->update();
-    else
-        overlay_->update(now | overlayShown_);
-    overlayShown_ = now;
-    outputShown_ = output;
+    overlay_->repaintChanged(camera_.throughScene() ? projection().outputRect() : QRectF());
 }
 
 QRegion Viewport::overlayRegion() const {
@@ -169,8 +130,8 @@ QRegion Viewport::overlayRegion() const {
     QRegion r;
     for (const LightGlyph& g : glyphs_) r += glyphRegion(g, kMargin);
     if (const auto g = gizmo()) r += g->bounds().toAlignedRect();
-    if (drag_ == Drag::Box)
-        r += QRect(pressPos_, lastPos_).normalized().adjusted(-kMargin, -kMargin, kMargin, kMargin);
+    if (drag_.kind() == MouseDrag::Kind::Box)
+        r += drag_.box().adjusted(-kMargin, -kMargin, kMargin, kMargin);
     return r;
 }
 
@@ -194,8 +155,8 @@ void Viewport::setLocalOrientation(bool local) {
 }
 
 void Viewport::beginBoxSelect() {
-    if (gesture_ || drag_ != Drag::None) return;
-    boxArmed_ = true;
+    if (gesture_ || drag_.active()) return;
+    drag_.armBox();
     syncModal();
     Q_EMIT statusMessage(
         tr("Box select: drag a rectangle (Shift or Ctrl adds to the selection, "
@@ -204,43 +165,34 @@ void Viewport::beginBoxSelect() {
 
 void Viewport::paintOverlay(QPainter& p) const {
     // Through the scene camera, what lies outside the output frame is dimmed (passepartout).
-    if (throughScene_) paintPassepartout(p, rect(), projection().outputRect());
+    if (camera_.throughScene()) paintPassepartout(p, rect(), projection().outputRect());
     paintLightGlyphs(p, glyphs_, editor_->selectedIds());
-    if (const auto g = gizmo()) g->paint(p, gizmoHandle_);
-    if (drag_ == Drag::Box) {
+    if (const auto g = gizmo()) g->paint(p, gesture_ ? gesture_->handle() : std::nullopt);
+    if (drag_.kind() == MouseDrag::Kind::Box) {
         p.setRenderHint(QPainter::Antialiasing, false);
         p.setPen(QPen(QColor(240, 240, 240), 1.0, Qt::DashLine));
         p.setBrush(QColor(255, 255, 255, 30));
-        p.drawRect(QRect(pressPos_, lastPos_).normalized());
+        p.drawRect(drag_.box());
     }
 }
 
 void Viewport::resizeEvent(QResizeEvent* e) {
     QWidget::resizeEvent(e);
     overlay_->setGeometry(rect());
-    // While the window edge moves, the old frame stays (letterboxed); the session restarts
-    // at the new size once it rests.
-    if (tracedSize_.isEmpty())
-        postView();
-    else
-        resizeSettle_.start();
+    posting_.resized();
     redraw();
 }
 
 void Viewport::setPreviewDivider(int divider) {
-    divider = validPreviewDivider(divider) ? divider : 1;
-    if (divider == divider_) return;
-    divider_ = divider;
-    postView();
+    if (posting_.setDivider(divider)) postView();
 }
 
 ViewProjection Viewport::projection() const {
     // The frame shown, or before the first one arrives, the size posted for it.
-    const QSize frameSize = frame_ && !frame_->empty() ? QSize(frame_->width, frame_->height)
-                            : !tracedSize_.isEmpty()   ? tracedSize_
-                                                       : sizeToTrace();
+    const QSize frameSize =
+        frame_ && !frame_->empty() ? QSize(frame_->width, frame_->height) : posting_.traced();
     const RenderSettings& output = editor_->document().render;
-    return ViewProjection(viewCamera_, QSize(output.width, output.height), frameSize, size());
+    return ViewProjection(camera_.camera(), QSize(output.width, output.height), frameSize, size());
 }
 
 std::optional<QPoint> Viewport::pixelAt(const QPoint& p) const {
@@ -260,8 +212,8 @@ bool Viewport::event(QEvent* e) {
     if (e->type() == QEvent::ShortcutOverride) {
         const auto* k = static_cast<QKeyEvent*>(e);
         const bool undoKey = k->matches(QKeySequence::Undo) || k->matches(QKeySequence::Redo);
-        if (gesture_ || (drag_ != Drag::None && undoKey) ||
-            (boxArmed_ && k->key() == Qt::Key_Escape)) {
+        if (gesture_ || (drag_.active() && undoKey) ||
+            (drag_.boxArmed() && k->key() == Qt::Key_Escape)) {
             e->accept();
             return true;
         }
@@ -272,7 +224,7 @@ bool Viewport::event(QEvent* e) {
 }
 
 void Viewport::syncModal() {
-    setProperty(kTakesAllKeys, gesture_.has_value() || drag_ != Drag::None || boxArmed_);
+    setProperty(kTakesAllKeys, gesture_.has_value() || drag_.active() || drag_.boxArmed());
 }
 
 void Viewport::mousePressEvent(QMouseEvent* e) {
@@ -282,30 +234,30 @@ void Viewport::mousePressEvent(QMouseEvent* e) {
         return;
     }
     editor_->closeMerge();
-    pressPos_ = lastPos_ = e->position().toPoint();
-    if (boxArmed_ && e->button() != Qt::LeftButton) {
-        boxArmed_ = false;  // Any other button cancels B.
+    drag_.press(e->position().toPoint());
+    if (drag_.boxArmed() && e->button() != Qt::LeftButton) {
+        drag_.disarmBox();  // Any other button cancels B.
         Q_EMIT statusMessage({});
         return;
     }
     if (e->button() == Qt::RightButton ||
         (e->button() == Qt::LeftButton && (e->modifiers() & Qt::AltModifier))) {
-        drag_ = Drag::Orbit;
-        orbitPivot_ = orbitPivot(pressPos_);
+        drag_.startOrbit(startOrbit(drag_.pressPos()));
     } else if (e->button() == Qt::MiddleButton) {
-        drag_ = Drag::Pan;
+        drag_.startPan();
     } else if (e->button() == Qt::LeftButton) {
         pressLeft(e);
         return;
     }
-    if (drag_ == Drag::Orbit || drag_ == Drag::Pan) session_->beginInteraction(kNoObject);
+    if (drag_.kind() == MouseDrag::Kind::Orbit || drag_.kind() == MouseDrag::Kind::Pan)
+        session_->beginInteraction(kNoObject);
 }
 
 void Viewport::pressLeft(QMouseEvent* e) {
     const bool extend = e->modifiers() & (Qt::ShiftModifier | Qt::ControlModifier);
-    if (boxArmed_) {
-        boxArmed_ = false;
-        drag_ = Drag::Box;
+    if (drag_.boxArmed()) {
+        drag_.disarmBox();
+        drag_.startBox();
         return;
     }
     // The gizmo is drawn over everything: its handles win.
@@ -318,12 +270,12 @@ void Viewport::pressLeft(QMouseEvent* e) {
     // A light's glyph is drawn in front of every surface, so it is picked next.
     ObjectId id = pickLight(glyphs_, e->position());
     if (id == kNoObject) {
-        const auto px = pixelAt(pressPos_);
+        const auto px = pixelAt(drag_.pressPos());
         id = px ? frame_->idAt(px->x(), px->y()) : kNoObject;
     }
     if (id == kNoObject) {
         // Empty space: a drag draws a box, a click clears the selection.
-        drag_ = Drag::PendingBox;
+        drag_.pressEmpty();
         return;
     }
     if (extend) {
@@ -333,56 +285,54 @@ void Viewport::pressLeft(QMouseEvent* e) {
     // Pressing one of several selected keeps the group, so a drag moves them all; a click
     // without a drag selects it alone (on release).
     if (!editor_->isSelected(id)) editor_->setSelection(id);
-    drag_ = Drag::PendingObject;
-    dragId_ = id;
+    drag_.pressEntity(id);
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent* e) {
     const QPoint pos = e->position().toPoint();
-    const QPoint delta = pos - lastPos_;
-    lastPos_ = pos;
+    const QPoint delta = drag_.moveTo(pos);
     if (gesture_) {
-        gesture_->setCursor(e->position(), e->modifiers() & Qt::ControlModifier);
+        gesture_->transform().setCursor(e->position(), e->modifiers() & Qt::ControlModifier);
         updateGesture();
         return;
     }
-    const bool moved = (pos - pressPos_).manhattanLength() >= kDragThresholdPx;
-    if (drag_ == Drag::PendingObject && moved) startObjectDrag();
-    if (drag_ == Drag::PendingBox && moved) drag_ = Drag::Box;
-    if (drag_ == Drag::Box) {
+    using Kind = MouseDrag::Kind;
+    const bool moved = drag_.pastThreshold();
+    if (drag_.kind() == Kind::PendingObject && moved) startObjectDrag();
+    if (drag_.kind() == Kind::PendingBox && moved) drag_.startBox();
+    if (drag_.kind() == Kind::Box) {
         repaintOverlay();
-    } else if (drag_ == Drag::Object) {
+    } else if (drag_.kind() == Kind::Object) {
         updateObjectDrag(pos);
-    } else if (drag_ == Drag::Orbit || drag_ == Drag::Pan) {
-        if (drag_ == Drag::Orbit) {
-            orbitView(delta);
-        } else {
-            Camera c = viewCamera_;
-            pan(c, float(delta.x()) / std::max(1, height()),
-                float(delta.y()) / std::max(1, height()));
-            setView(c);
-        }
+    } else if (Orbit* orbit = drag_.orbit()) {
+        orbitView(*orbit, delta);
+    } else if (drag_.kind() == Kind::Pan) {
+        Camera c = camera_.camera();
+        pan(c, float(delta.x()) / std::max(1, height()), float(delta.y()) / std::max(1, height()));
+        setView(c);
     }
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* e) {
     if (gesture_) {
         // A gizmo drag ends with its button; a key-started gesture ends with a click.
-        if (gizmoHandle_) finishGesture(false);
+        if (gesture_->handle()) finishGesture(false);
         return;
     }
     const bool extend = e->modifiers() & (Qt::ShiftModifier | Qt::ControlModifier);
-    if (drag_ == Drag::Box) {
-        drag_ = Drag::None;
-        finishBox(QRect(pressPos_, e->position().toPoint()).normalized(), extend);
+    if (drag_.kind() == MouseDrag::Kind::Box) {
+        const QPoint press = drag_.pressPos();
+        drag_.finish();
+        finishBox(QRect(press, e->position().toPoint()).normalized(), extend);
         return;
     }
-    if (drag_ == Drag::PendingBox) {
-        drag_ = Drag::None;
+    if (drag_.kind() == MouseDrag::Kind::PendingBox) {
+        drag_.finish();
         if (!extend) editor_->setSelection(kNoObject);
         return;
     }
-    if (drag_ == Drag::PendingObject) editor_->setSelection(dragId_);  // A click: it alone.
+    if (drag_.kind() == MouseDrag::Kind::PendingObject)
+        editor_->setSelection(drag_.pressedEntity());  // A click: it alone.
     finishDrag(false);
 }
 
@@ -406,7 +356,7 @@ void Viewport::finishBox(const QRect& box, bool add) {
 }
 
 void Viewport::wheelEvent(QWheelEvent* e) {
-    pacing_.input(paceClock_.elapsed());  // More steps may follow: show them as they come.
+    pace_.input();  // More steps may follow: show them as they come.
     const float clicks = e->angleDelta().y() / 120.0f;
     if (clicks == 0.0f) return;
     setView(dollied(clicks, e->position()));
@@ -418,17 +368,17 @@ void Viewport::keyPressEvent(QKeyEvent* e) {
         finishGesture(true);  // Undo mid-gesture cancels it, back to where it began.
         return;
     }
-    if (drag_ != Drag::None && undoKey) {
+    if (drag_.active() && undoKey) {
         finishDrag(true);
         return;
     }
-    if (boxArmed_ && e->key() == Qt::Key_Escape) {
-        boxArmed_ = false;
+    if (drag_.boxArmed() && e->key() == Qt::Key_Escape) {
+        drag_.disarmBox();
         Q_EMIT statusMessage({});
         return;
     }
     if (gesture_) {
-        switch (gesture_->keyPress(e->key(), e->text())) {
+        switch (gesture_->transform().keyPress(e->key(), e->text())) {
             case ModalTransform::KeyResult::Confirm:
                 finishGesture(false);
                 return;
@@ -440,20 +390,20 @@ void Viewport::keyPressEvent(QKeyEvent* e) {
                 return;
             case ModalTransform::KeyResult::Unhandled:
                 if (e->key() == Qt::Key_Control) {
-                    gesture_->setSnap(true);
+                    gesture_->transform().setSnap(true);
                     updateGesture();
                 }
                 return;  // Nothing else happens mid-gesture.
         }
     }
-    if (drag_ == Drag::Object) {
+    if (ObjectDrag* objects = drag_.objects()) {
         const int axis = e->key() == Qt::Key_X   ? 0
                          : e->key() == Qt::Key_Y ? 1
                          : e->key() == Qt::Key_Z ? 2
                                                  : -1;
         if (axis >= 0) {
-            axisLock_ = axisLock_ == axis ? -1 : axis;
-            updateObjectDrag(lastPos_);
+            objects->toggleAxis(axis);
+            updateObjectDrag(drag_.lastPos());
             return;
         }
         if (e->key() == Qt::Key_Escape) {
@@ -466,7 +416,7 @@ void Viewport::keyPressEvent(QKeyEvent* e) {
 
 void Viewport::keyReleaseEvent(QKeyEvent* e) {
     if (gesture_ && e->key() == Qt::Key_Control) {
-        gesture_->setSnap(false);
+        gesture_->transform().setSnap(false);
         updateGesture();
         return;
     }
@@ -484,65 +434,38 @@ void Viewport::startObjectDrag() {
     // The frame may have changed size since the press (a resize, a new render size): when the
     // press point no longer lies on the image there is nothing to grab, and the press stays
     // a click.
-    const auto px = pixelAt(pressPos_);
+    const auto px = pixelAt(drag_.pressPos());
     if (!px) {
-        drag_ = Drag::None;
+        drag_.finish();
         return;
     }
-    drag_ = Drag::Object;
-    axisLock_ = -1;
-    dragStartDoc_ = editor_->document();
-    dragIds_ = editor_->isSelected(dragId_) ? editor_->selectedIds() : std::vector{dragId_};
-    if (const Light* l = dragStartDoc_.findLight(dragId_)) {
-        anchor_ = l->position;
-    } else {
-        const auto snapshot = session_->session().snapshot();
-        const Aabb bounds = snapshot ? snapshot->objectBounds(dragId_) : Aabb{};
-        const std::size_t i = std::size_t(px->y()) * frame_->width + px->x();
-        const Ray ray = projection().pixelRay(px->x(), px->y());
-        const float depth = i < frame_->depth.size() ? frame_->depth[i] : kInfinity;
-        const Vec3 hit = ray.at(std::isfinite(depth) ? depth : 1.0f);
-        // Planes are unbounded: drag them through the point that was clicked.
-        anchor_ = bounds.empty() ? hit : bounds.center();
-    }
-    grabOffset_ = Vec3(0.0f);
-    grabOffset_ = dragPoint(pressPos_) - anchor_;
-    session_->beginInteraction(dragId_);
+    const ObjectId id = drag_.pressedEntity();
+    SceneDocument start = editor_->document();
+    std::vector<ObjectId> ids = editor_->isSelected(id) ? editor_->selectedIds() : std::vector{id};
+    const Vec3 anchor = anchorAt(*px);
+    drag_.startObjects(
+        ObjectDrag(id, std::move(ids), std::move(start), anchor, projection(), drag_.pressPos()));
+    session_->beginInteraction(id);
 }
 
-Vec3 Viewport::dragPoint(const QPoint& pos) const {
-    // The current view, not the one at press: the user may dolly during the drag.
-    const ViewProjection view = projection();
-    const Ray ray = view.rayThrough(QPointF(pos));
-    if (axisLock_ >= 0) {
-        Vec3 axis(0.0f);
-        axis[axisLock_] = 1.0f;
-        return closestOnAxis(anchor_, axis, ray.origin, ray.dir) + grabOffset_;
-    }
-    // Plane parallel to the image through the anchor.
-    const Vec3 n = view.camera().forward();
-    const float denom = glm::dot(ray.dir, n);
-    if (std::abs(denom) < 1e-6f) return anchor_ + grabOffset_;
-    const float t = glm::dot(anchor_ + grabOffset_ - ray.origin, n) / denom;
-    return ray.at(t);
+Vec3 Viewport::anchorAt(const QPoint& px) const {
+    const ObjectId id = drag_.pressedEntity();
+    if (const Light* l = editor_->document().findLight(id)) return l->position;
+    const auto snapshot = session_->session().snapshot();
+    const Aabb bounds = snapshot ? snapshot->objectBounds(id) : Aabb{};
+    const std::size_t i = std::size_t(px.y()) * frame_->width + px.x();
+    const Ray ray = projection().pixelRay(px.x(), px.y());
+    const float depth = i < frame_->depth.size() ? frame_->depth[i] : kInfinity;
+    const Vec3 hit = ray.at(std::isfinite(depth) ? depth : 1.0f);
+    // Planes are unbounded: drag them through the point that was clicked.
+    return bounds.empty() ? hit : bounds.center();
 }
 
 void Viewport::updateObjectDrag(const QPoint& pos) {
-    Vec3 delta = dragPoint(pos) - grabOffset_ - anchor_;
-    if (axisLock_ >= 0) {
-        const float d = delta[axisLock_];
-        delta = Vec3(0.0f);
-        delta[axisLock_] = d;
-    }
-    // Everything but the dragged object comes from the current document, so any other edit
-    // made during the drag survives the next step.
-    SceneDocument doc = editor_->document();
-    for (ObjectId id : dragIds_) {
-        restoreEntity(doc, dragStartDoc_, id);
-        moveBy(doc, id, delta);
-    }
+    const ObjectDrag* objects = drag_.objects();
+    SceneDocument doc = objects->moved(editor_->document(), projection(), pos);
     if (const auto px = pixelAt(pos)) session_->session().setFocus(px->x() + 0.5f, px->y() + 0.5f);
-    dragEdit(tr("Move object"), std::move(doc), QString::number(dragId_));
+    dragEdit(tr("Move object"), std::move(doc), QString::number(objects->pressed()));
 }
 
 void Viewport::dragEdit(const QString& text, SceneDocument doc, const QString& mergeKey) {
@@ -554,20 +477,18 @@ void Viewport::dragEdit(const QString& text, SceneDocument doc, const QString& m
 void Viewport::onUndoIndexChanged() {
     // Undo from the menu (a mouse click) while a gesture or drag runs: the undo has already
     // put the document back, so the gesture ends without restoring (or editing) anything.
-    if (ownEdit_ || (!gesture_ && drag_ != Drag::Object)) return;
+    if (ownEdit_ || (!gesture_ && drag_.kind() != MouseDrag::Kind::Object)) return;
     abandonDrag();
 }
 
 void Viewport::finishDrag(bool cancel) {
-    const Drag was = drag_;
-    drag_ = Drag::None;
-    if (was == Drag::Object && cancel) {
-        SceneDocument doc = editor_->document();
-        for (ObjectId id : dragIds_) restoreEntity(doc, dragStartDoc_, id);
-        dragEdit(tr("Move object"), std::move(doc), QString::number(dragId_));
-    }
-    if (was == Drag::Object || was == Drag::Orbit || was == Drag::Pan) session_->endInteraction();
-    if (was == Drag::Box) repaintOverlay();
+    const bool interacted = drag_.interacting(), box = drag_.kind() == MouseDrag::Kind::Box;
+    const std::optional<ObjectDrag> objects = drag_.finish();
+    if (objects && cancel)
+        dragEdit(tr("Move object"), objects->restored(editor_->document()),
+                 QString::number(objects->pressed()));
+    if (interacted) session_->endInteraction();
+    if (box) repaintOverlay();
     editor_->closeMerge();
 }
 

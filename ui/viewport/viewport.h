@@ -3,10 +3,8 @@
 // G/R/S gestures and view navigation.
 #pragma once
 
-#include <QElapsedTimer>
 #include <QPoint>
 #include <QRegion>
-#include <QTimer>
 #include <QWidget>
 #include <memory>
 #include <optional>
@@ -15,9 +13,13 @@
 #include "display/display_frame.h"
 #include "display/frame_view.h"
 #include "scene/document.h"
+#include "viewport/gesture.h"
 #include "viewport/light_overlay.h"
 #include "viewport/modal_transform.h"
+#include "viewport/mouse_drag.h"
 #include "viewport/transform_gizmo.h"
+#include "viewport/view_camera.h"
+#include "viewport/view_posting.h"
 #include "viewport/view_projection.h"
 #include "viewport/viewport_pacing.h"
 
@@ -55,12 +57,12 @@ public:
     /// Preview scale 1 / `divider` (1, 2 or 4; anything else means 1): the session traces the
     /// widget's device pixels divided by it (Blender's pixel size).
     void setPreviewDivider(int divider);
-    int previewDivider() const { return divider_; }
+    int previewDivider() const { return posting_.divider(); }
     /// The frame size posted to the session last: tracedFrameSize() of the widget when it
     /// was posted (a resize is posted once the window edge rests, kResizeSettleMs).
-    QSize tracedSize() const { return tracedSize_; }
+    QSize tracedSize() const { return posting_.postedSize(); }
     /// How long a resize must rest before the session traces the new size.
-    static constexpr int kResizeSettleMs = 120;
+    static constexpr int kResizeSettleMs = ViewPosting::kResizeSettleMs;
     /// Widget point at the centre of frame pixel (x, y).
     QPoint widgetPointOf(int x, int y) const;
     /// Copies the session's frame (waiting for its lock) and redraws.
@@ -71,9 +73,9 @@ public:
 
     // View camera: navigation moves it, never the document (Blender's model).
     /// The camera the viewport looks through.
-    const Camera& viewCamera() const { return viewCamera_; }
+    const Camera& viewCamera() const { return camera_.camera(); }
     /// True while the view is the scene camera and follows its edits (the default on open).
-    bool throughSceneCamera() const { return throughScene_; }
+    bool throughSceneCamera() const { return camera_.throughScene(); }
     /// The document as the session renders it: the open document seen through the view camera
     /// (fitted to the traced frame), at the viewport's traced size instead of the output size.
     SceneDocument viewDocument() const;
@@ -128,15 +130,15 @@ protected:
     void focusOutEvent(QFocusEvent* e) override;
 
 private:
-    enum class Drag { None, PendingObject, Object, Orbit, Pan, PendingBox, Box };
     void pressLeft(QMouseEvent* e);
     void startObjectDrag();
+    /// Where the pressed entity is held at `px` (its centre, or a plane's point there).
+    Vec3 anchorAt(const QPoint& px) const;
     void updateObjectDrag(const QPoint& pos);
     void finishDrag(bool cancel);
-    Vec3 dragPoint(const QPoint& pos) const;
     void redraw();
     /// frameUpdated: copies what the session committed if its frame lock is free, and draws;
-    /// while the frame is still, at pacing_'s pace (paceTimer_ brings the rest).
+    /// while the frame is still, at pace_'s pace (its timer brings the rest).
     void showNewPixels();
     /// A drag, orbit, pan or gesture is running: every hand-over is taken.
     bool interacting() const;
@@ -160,12 +162,12 @@ private:
     // viewport_navigation.cpp
     void onDocumentReset();
     void onDocumentChanged();
+    /// Posts viewDocument() to the session at the size it traces now, and redraws.
     void postView();
-    /// tracedFrameSize() of the widget as it is now.
-    QSize sizeToTrace() const;
-    /// The orbit's pivot for a press at `pos` (and the orbit's start).
-    Vec3 orbitPivot(const QPoint& pos);
-    void orbitView(const QPoint& delta);
+    /// The orbit for a press at `pos`: about the selection's centre, else the surface under
+    /// the cursor, else the view's target.
+    Orbit startOrbit(const QPoint& pos) const;
+    void orbitView(Orbit& orbit, const QPoint& delta);
     /// How far from `from` along unit `dir` the first surface not of `ignore` lies.
     float freeDistance(const Vec3& from, const Vec3& dir, ObjectId ignore) const;
     /// The view camera after `clicks` wheel clicks (positive: in) at widget point `cursor`:
@@ -188,46 +190,20 @@ private:
 
     SceneEditor* editor_;
     SessionController* session_;
-    FrameView* view_;
-    ViewportOverlay* overlay_;
-    std::vector<LightGlyph> glyphs_;
-    /// Everywhere the overlay may be on screen: overlayRegion() at the last repaintOverlay()
-    /// and at every paint since (a repaint of frame tiles draws the overlay of that moment).
-    QRegion overlayShown_;
-    QRectF outputShown_;  ///< The passepartout's output frame then.
-    std::shared_ptr<const DisplayFrame> frame_;
+    FrameView* view_;                 ///< The frame drawer (OpenGL or raster).
+    ViewportOverlay* overlay_;        ///< The raster view's overlay widget (hidden over OpenGL).
+    std::vector<LightGlyph> glyphs_;  ///< The light glyphs as drawn now.
+    std::shared_ptr<const DisplayFrame> frame_;  ///< The frame handed over last.
     ViewMode mode_ = ViewMode::Color;
-    RepaintPacing pacing_;
-    QElapsedTimer paceClock_;  ///< pacing_'s clock.
-    QTimer paceTimer_;         ///< A still frame's next hand-over.
-
-    Camera viewCamera_;
-    bool throughScene_ = true;
-    Vec3 worldUp_{0.0f, 1.0f, 0.0f};
-    Vec3 orbitPivot_{0.0f};
-    Camera orbitFree_;                  ///< The orbit's camera before clipping.
-    ObjectId orbitIgnore_ = kNoObject;  ///< The entity the pivot lies in or on.
-
-    Drag drag_ = Drag::None;
-    QPoint pressPos_, lastPos_;
-    ObjectId dragId_ = kNoObject;    ///< The entity pressed.
-    std::vector<ObjectId> dragIds_;  ///< Every entity the drag moves (the selection).
-    bool boxArmed_ = false;
-    bool localAxes_ = false;
+    HandoverPace pace_;  ///< When the session's new pixels are taken.
+    ViewCamera camera_;
+    ViewPosting posting_;             ///< The view's document to the session, and its size.
+    MouseDrag drag_;                  ///< The held button's drag, and B's armed box.
+    std::optional<Gesture> gesture_;  ///< The running G / R / S gesture.
+    bool localAxes_ = false;  ///< Local axes (else the world's) for the gizmo and G/R/S locks.
     bool gizmoVisible_ = true;
+    /// The viewport's own drag or gesture edit is being made (the undo guard lets it be).
     bool ownEdit_ = false;
-    SceneDocument dragStartDoc_;
-    Vec3 anchor_{0.0f};      ///< Centre of the dragged object at press.
-    Vec3 grabOffset_{0.0f};  ///< Press point on the drag plane minus the anchor.
-    int axisLock_ = -1;      ///< -1 free, else 0/1/2 for X/Y/Z.
-
-    int divider_ = 1;
-    QSize tracedSize_;     ///< Empty until the first post.
-    QTimer resizeSettle_;  ///< Restarted by each resize; posts the new size when it fires.
-
-    std::optional<ModalTransform> gesture_;
-    /// The gizmo handle the gesture was started from (it ends on release), if any.
-    std::optional<GizmoHandle> gizmoHandle_;
 };
 
 }  // namespace rs::ui

@@ -5,7 +5,6 @@
 
 #include "adapter/session_controller.h"
 #include "document/scene_editor.h"
-#include "document/scene_edits.h"
 #include "viewport/viewport.h"
 
 namespace rs::ui {
@@ -27,10 +26,10 @@ QString gestureText(TransformKind kind) {
 }  // namespace
 
 bool Viewport::beginTransform(TransformKind kind) {
-    if (gesture_ || drag_ != Drag::None) return false;
+    if (gesture_ || drag_.active()) return false;
     // The gesture measures from where the cursor is now; a key press gives no position.
     QPointF cursor = mapFromGlobal(QCursor::pos());
-    if (!rect().contains(cursor.toPoint())) cursor = lastPos_;
+    if (!rect().contains(cursor.toPoint())) cursor = drag_.lastPos();
     return startGesture(kind, cursor, std::nullopt);
 }
 
@@ -38,19 +37,16 @@ bool Viewport::startGesture(TransformKind kind, const QPointF& cursor,
                             const std::optional<GizmoHandle>& handle) {
     std::vector<ObjectId> ids = editor_->selectedIds();
     if (ids.empty()) return false;
-    boxArmed_ = false;
+    drag_.disarmBox();
     editor_->closeMerge();
     const SceneDocument& doc = editor_->document();
-    gesture_.emplace(kind, doc, ids, cursor);
-    gesture_->setOrientation(gizmoAxes(doc, ids.back(), localAxes_));
-    if (handle) gesture_->lock(handle->axis, handle->plane);
-    gizmoHandle_ = handle;
-    lastPos_ = cursor.toPoint();
+    gesture_.emplace(kind, doc, ids, cursor, gizmoAxes(doc, ids.back(), localAxes_), handle);
+    drag_.moveTo(cursor.toPoint());
     setFocus(Qt::OtherFocusReason);
     // A gizmo drag holds a button, which tracks the mouse anyway.
     if (!handle) setMouseTracking(true);
-    session_->beginInteraction(gesture_->ids().front());
-    Q_EMIT statusMessage(gesture_->describe(projection()));
+    session_->beginInteraction(gesture_->transform().ids().front());
+    Q_EMIT statusMessage(gesture_->transform().describe(projection()));
     repaintOverlay();
     syncModal();
     return true;
@@ -60,27 +56,23 @@ void Viewport::updateGesture() {
     if (!gesture_) return;
     // Only the selection comes from the gesture; the rest is the current document, as in
     // the mouse drag.
-    const SceneDocument moved = gesture_->result(projection());
-    SceneDocument doc = editor_->document();
-    for (ObjectId id : gesture_->ids()) restoreEntity(doc, moved, id);
-    Q_EMIT statusMessage(gesture_->describe(projection()));
+    SceneDocument doc = gesture_->applied(editor_->document(), projection());
+    Q_EMIT statusMessage(gesture_->transform().describe(projection()));
     if (doc.sameContent(editor_->document())) return;
-    dragEdit(gestureText(gesture_->kind()), std::move(doc), kGestureMergeKey);
+    dragEdit(gestureText(gesture_->transform().kind()), std::move(doc), kGestureMergeKey);
 }
 
 void Viewport::finishGesture(bool cancel) {
     if (!gesture_) return;
     if (cancel) {
         // Merged into the gesture's step, the restore leaves it empty and the stack drops it.
-        SceneDocument doc = editor_->document();
-        for (ObjectId id : gesture_->ids()) restoreEntity(doc, gesture_->start(), id);
+        SceneDocument doc = gesture_->restored(editor_->document());
         if (!doc.sameContent(editor_->document()))
-            dragEdit(gestureText(gesture_->kind()), std::move(doc), kGestureMergeKey);
+            dragEdit(gestureText(gesture_->transform().kind()), std::move(doc), kGestureMergeKey);
     } else {
         updateGesture();
     }
     gesture_.reset();
-    gizmoHandle_.reset();
     setMouseTracking(false);
     session_->endInteraction();
     editor_->closeMerge();
@@ -91,16 +83,15 @@ void Viewport::finishGesture(bool cancel) {
 
 void Viewport::cancelInteraction() {
     if (gesture_) finishGesture(true);
-    if (drag_ != Drag::None) finishDrag(true);
-    boxArmed_ = false;
+    if (drag_.active()) finishDrag(true);
+    drag_.disarmBox();
     syncModal();
 }
 
 void Viewport::abandonDrag() {
-    const bool interacting = gesture_ || drag_ == Drag::Object;
+    const bool interacting = gesture_ || drag_.kind() == MouseDrag::Kind::Object;
     gesture_.reset();
-    gizmoHandle_.reset();
-    drag_ = Drag::None;
+    drag_.finish();
     setMouseTracking(false);
     if (interacting) session_->endInteraction();
     editor_->closeMerge();

@@ -29,61 +29,51 @@ SceneDocument Viewport::viewDocument() const {
     SceneDocument doc = editor_->document();
     // The output size stays the document's (Render Image, Export, the CLI); the viewport
     // traces its own.
-    const QSize traced = tracedSize_.isEmpty() ? sizeToTrace() : tracedSize_;
-    doc.camera = fitOutputFrame(viewCamera_, traced, QSize(doc.render.width, doc.render.height));
+    const QSize traced = posting_.traced();
+    doc.camera =
+        fitOutputFrame(camera_.camera(), traced, QSize(doc.render.width, doc.render.height));
     doc.render.width = traced.width();
     doc.render.height = traced.height();
     return doc;
 }
 
 void Viewport::onDocumentReset() {
-    viewCamera_ = editor_->document().camera;
-    throughScene_ = true;
-    const float len = glm::length(viewCamera_.up);
-    worldUp_ = len > 1e-6f ? viewCamera_.up / len : Vec3(0.0f, 1.0f, 0.0f);
+    camera_.reset(editor_->document().camera);
 }
 
 void Viewport::onDocumentChanged() {
     // Looking through the scene camera, its edits (property panel, undo) move the view too.
-    if (throughScene_) viewCamera_ = editor_->document().camera;
+    camera_.sceneEdited(editor_->document().camera);
     postView();
 }
 
 void Viewport::setView(const Camera& camera) {
-    viewCamera_ = camera;
-    throughScene_ = false;
+    camera_.look(camera);
     postView();
 }
 
-QSize Viewport::sizeToTrace() const {
-    return tracedFrameSize(size() * devicePixelRatioF(), divider_);
-}
-
 void Viewport::postView() {
-    resizeSettle_.stop();
-    tracedSize_ = sizeToTrace();
-    session_->requestUpdate(viewDocument());
-    redraw();
-}
+    posting_.post();
+}  // Redraws when posted.
 
 void Viewport::viewThroughSceneCamera() {
-    viewCamera_ = editor_->document().camera;
-    throughScene_ = true;
+    camera_.lookThroughScene(editor_->document().camera);
     postView();
 }
 
 void Viewport::sceneCameraFromView() {
     SceneDocument doc = editor_->document();
-    if (doc.camera == viewCamera_) {
-        throughScene_ = true;
+    const Camera& view = camera_.camera();
+    if (doc.camera == view) {
+        camera_.adoptedByScene();
         redraw();
         return;
     }
     // Only the pose: lens and extras stay the scene camera's.
-    doc.camera.position = viewCamera_.position;
-    doc.camera.target = viewCamera_.target;
-    doc.camera.up = viewCamera_.up;
-    throughScene_ = true;
+    doc.camera.position = view.position;
+    doc.camera.target = view.target;
+    doc.camera.up = view.up;
+    camera_.adoptedByScene();
     editor_->closeMerge();
     editor_->edit(tr("Scene camera from view"), std::move(doc));
     editor_->closeMerge();
@@ -93,29 +83,29 @@ void Viewport::setAxisView(AxisView v) {
     static const Vec3 kDirs[] = {{0, 0, -1}, {0, 0, 1},  {-1, 0, 0},
                                  {1, 0, 0},  {0, -1, 0}, {0, 1, 0}};
     static const Vec3 kUps[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
-    Camera c = viewCamera_;
+    Camera c = camera_.camera();
     alignView(c, kDirs[int(v)], kUps[int(v)]);
     setView(c);
 }
 
-Vec3 Viewport::orbitPivot(const QPoint& pos) {
+Orbit Viewport::startOrbit(const QPoint& pos) const {
     // The selection's centre; else the surface under the cursor; else the view's target.
     const ObjectId sel = editor_->selection();
     const SceneDocument& doc = editor_->document();
     const Object* o = doc.findObject(sel);
     const bool unbounded = o && std::holds_alternative<PlaneGeometry>(o->geometry);
-    orbitFree_ = viewCamera_;
-    orbitIgnore_ = sel;
+    const Camera& view = camera_.camera();
     if (!unbounded)
-        if (const auto c = entityCentre(doc, sel)) return *c;
-    orbitIgnore_ = kNoObject;
+        if (const auto c = entityCentre(doc, sel)) return Orbit(view, *c, sel);
+    ObjectId ignore = kNoObject;
     if (const auto px = pixelAt(pos)) {
-        orbitIgnore_ = frame_->idAt(px->x(), px->y());
+        ignore = frame_->idAt(px->x(), px->y());
         const std::size_t i = std::size_t(px->y()) * frame_->width + px->x();
         const float depth = i < frame_->depth.size() ? frame_->depth[i] : kInfinity;
-        if (std::isfinite(depth)) return projection().pixelRay(px->x(), px->y()).at(depth);
+        if (std::isfinite(depth))
+            return Orbit(view, projection().pixelRay(px->x(), px->y()).at(depth), ignore);
     }
-    return viewCamera_.target;
+    return Orbit(view, view.target, ignore);
 }
 
 void Viewport::frameSelection() {
@@ -136,11 +126,11 @@ void Viewport::frameSelection() {
     }
     // Cast from the centre towards where the view will stand: the first surface that is not
     // the selection itself (a wall of the room) limits the distance.
-    const Vec3 back = viewCamera_.position - viewCamera_.target;
+    const Vec3 back = camera_.camera().position - camera_.camera().target;
     const float maxDistance = glm::length(back) > 1e-6f
                                   ? freeDistance(center, glm::normalize(back), id) * kWallClearance
                                   : kInfinity;
-    Camera c = viewCamera_;
+    Camera c = camera_.camera();
     ui::frame(c, center, radius, maxDistance);
     setView(c);
 }
@@ -184,7 +174,7 @@ float Viewport::dollyRoom(float free) const {
 }
 
 Camera Viewport::dollied(float clicks, const QPointF& cursor) const {
-    Camera c = viewCamera_;
+    Camera c = camera_.camera();
     if (c.projection == Projection::Orthographic) {
         dolly(c, clicks * kDollyShare);
         return c;
@@ -218,24 +208,12 @@ Camera Viewport::dollied(float clicks, const QPointF& cursor) const {
     return c;
 }
 
-void Viewport::orbitView(const QPoint& delta) {
-    // The orbit turns a camera of its own, unclipped, so the view comes back out to its
-    // distance once the way is clear; what is shown stops short of the first surface between
-    // the pivot and the camera (orbiting about a far wall would swing out through the side
-    // walls of the room).
-    orbitAround(orbitFree_, orbitPivot_, worldUp_, delta.x() * 0.4f, delta.y() * 0.4f);
-    Camera c = orbitFree_;
-    const Vec3 out = c.position - orbitPivot_;
-    const float dist = glm::length(out);
-    if (dist > 1e-6f) {
-        const float free = freeDistance(orbitPivot_, out / dist, orbitIgnore_) * kWallClearance;
-        if (free < dist) {
-            const Vec3 in = out * (free / dist - 1.0f);
-            c.position += in;
-            c.target += in;
-        }
-    }
-    setView(c);
+void Viewport::orbitView(Orbit& orbit, const QPoint& delta) {
+    // Stops short of the first surface between the pivot and the camera, as F does.
+    setView(orbit.turn(delta, camera_.worldUp(),
+                       [this](const Vec3& from, const Vec3& dir, ObjectId ignore) {
+                           return freeDistance(from, dir, ignore) * kWallClearance;
+                       }));
 }
 
 }  // namespace rs::ui

@@ -2,7 +2,10 @@
 // turns the wheel, at a slower pace while the frame is still, and at once when a pass ends.
 #pragma once
 
+#include <QElapsedTimer>
+#include <QTimer>
 #include <cstdint>
+#include <functional>
 
 namespace rs::ui {
 
@@ -49,6 +52,33 @@ private:
     static constexpr int64_t kNever = INT64_MIN;
     int64_t lastInput_ = kNever;
     int64_t lastHandOver_ = kNever;
+};
+
+/// RepaintPacing on a steady clock of its own, with the timer that brings a still frame's
+/// next hand-over: the viewport asks it before each hand-over whether to wait.
+class HandoverPace {
+public:
+    /// `due` is called when a hand-over that had to wait may happen.
+    explicit HandoverPace(std::function<void()> due);
+
+    /// Replaces the pace (tests slow a still frame's to an hour), counting the frame shown
+    /// now as just handed over.
+    void setPacing(const RepaintPacing& pacing);
+    /// A discrete input that changes the view now (a wheel step).
+    void input() { pacing_.input(clock_.elapsed()); }
+    /// A pass completed: its last tiles are handed over at once.
+    void passCompleted() { pacing_.passCompleted(); }
+    /// A hand-over succeeded now.
+    void handedOver() { pacing_.handedOver(clock_.elapsed()); }
+    /// New pixels are ready while the user does (`interacting`) or does not drag: true when
+    /// they must wait (the timer then calls `due` once the pace allows), false to take them
+    /// now.
+    bool waits(bool interacting);
+
+private:
+    RepaintPacing pacing_;
+    QElapsedTimer clock_;
+    QTimer timer_;  ///< A still frame's next hand-over.
 };
 
 }  // namespace rs::ui
