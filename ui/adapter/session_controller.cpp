@@ -11,8 +11,6 @@
 namespace rs::ui {
 
 namespace {
-/// More committed tiles than this between two looks: copy the frame whole instead.
-constexpr std::size_t kMaxListedTiles = 16384;
 /// How soon a hand-over that found the frame lock held tries again. A tile commit holds it
 /// for microseconds, an edit's dirty marking for a few milliseconds.
 constexpr int kBusyRetryMs = 2;
@@ -46,22 +44,10 @@ std::shared_ptr<const CompiledScene> SessionHandle::snapshot() const {
 SessionController::SessionController(int threads, QObject* parent)
     : QObject(parent), session_(std::make_unique<RenderSession>(threads)), mailbox_(this) {
     qRegisterMetaType<rs::PassInfo>();
-    repaintTimer_.setSingleShot(true);
-    connect(&repaintTimer_, &QTimer::timeout, this, &SessionController::onRepaintTimer);
     // Zero: fires when this event-loop pass has handled what was queued.
     updateTimer_.setSingleShot(true);
     updateTimer_.setInterval(0);
     connect(&updateTimer_, &QTimer::timeout, this, &SessionController::onUpdateTimer);
-    rateTimer_.setInterval(1000);
-    connect(&rateTimer_, &QTimer::timeout, this, [this] {
-        const bool changed = updatesPerSecond_ != updatesThisSecond_;
-        updatesPerSecond_ = updatesThisSecond_;
-        updatesThisSecond_ = 0;
-        // Also when it falls to 0: passes stop when the user does, and with them
-        // passFinished, so a status bar updated only there kept the drag's rate while idle.
-        if (changed) Q_EMIT updateRateChanged(updatesPerSecond_);
-    });
-    rateTimer_.start();
     session_->setObserver(this);
     session_->setDisplayWaits(true);  // Whether whole frames are waited for is the policy's.
 }
@@ -89,12 +75,9 @@ void SessionController::onUpdateTimer() {
     const uint64_t generation = session_->update(*pendingDoc_);
     postedGeneration_ = generation;
     // Tone mapping and exposure trace nothing, so no tile will announce them: repaint here.
-    const bool displayChanged = pendingDoc_->render.tonemap != postedTonemap_ ||
-                                pendingDoc_->render.exposure != postedExposure_;
-    postedTonemap_ = pendingDoc_->render.tonemap;
-    postedExposure_ = pendingDoc_->render.exposure;
+    const bool displayChanged = postedLook_.post(pendingDoc_->render);
     pendingDoc_.reset();
-    ++updatesThisSecond_;
+    updateRate_.count();
     Q_EMIT documentPosted(requestSerial_, generation);
     if (displayChanged) Q_EMIT frameUpdated();
 }
@@ -128,70 +111,16 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
     if (FrameStorage room = frameStorage_.take(); room.pixels > 0) frame_->adopt(std::move(room));
     // Before the tiles are taken: every tile of the pass that made the frame whole is in them.
     const uint64_t wholeMark = session_->wholeMark();
-    const bool onlyWhole =
-        wait == FrameWait::TryOnly && interacting_ && session_->policy().wholeFramesWhileMoving;
-    bool whole = false, torn = false;
-    std::vector<QRect> tiles;
-    bool everything = false;
-    uint64_t committed = 0;
-    {
-        // Every tile announced so far is copied below, so the copy holds their generation.
-        std::lock_guard lock(tilesMutex_);
-        tiles.swap(committedTiles_);
-        everything = tilesOverflowed_;
-        tilesOverflowed_ = false;
-        committed = committedGeneration_;
-    }
-    tiles.insert(tiles.end(), heldTiles_.begin(), heldTiles_.end());
-    heldTiles_.clear();
-    everything = everything || std::exchange(heldEverything_, false);
-    committed = std::max(committed, std::exchange(heldGeneration_, 0));
+    const bool tryOnly = wait == FrameWait::TryOnly;
+    const bool onlyWhole = tryOnly && interacting_ && session_->policy().wholeFramesWhileMoving;
+    // Every tile announced so far is copied below, so the copy holds their generation.
+    CommittedTiles::Batch batch = tiles_.take();
     DisplayFrame& d = *frame_;
-    const auto copy = [&](const DeepFrame& f, const std::shared_ptr<const CompiledScene>&) {
-        const auto locked = std::chrono::steady_clock::now();
-        whole = session_->wholeSince(wholeMark);
-        if (onlyWhole && !whole) {
-            torn = true;  // The last whole frame stays; these tiles wait for the next.
-            return;
-        }
-        if (everything) tiles.assign(1, QRect(0, 0, f.width(), f.height()));
-        // Edits clear the previous edit's re-traced overlay outside any tile: the flags follow
-        // whole when the generation moved (a byte a pixel).
-        const uint64_t generation = session_->generation();
-        refreshFrame(d, f, mergeRects(std::move(tiles), QSize(f.width(), f.height())),
-                     generation != frameSessionGeneration_);
-        frameSessionGeneration_ = generation;
-        handover_.copyMs +=
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - locked)
-                .count();
-    };
     const uint64_t serialBefore = d.serial;
-    if (wait == FrameWait::Block) {
-        session_->withFrame(copy);
-    } else if (const bool got = session_->tryWithFrame(copy); !got || torn) {
-        if (torn) {
-            // Not busy: the pass that makes the frame whole ends with a hand-over (the
-            // viewport's passFinished).
-            heldTiles_ = std::move(tiles);
-            heldEverything_ = everything;
-            heldGeneration_ = committed;
-            return frame_;
-        }
-        // Kept for the next look, which comes soon whether or not more tiles arrive.
-        heldTiles_ = std::move(tiles);
-        heldEverything_ = everything;
-        heldGeneration_ = committed;
-        ++handover_.busy;
-        framePending_.store(true);
-        if (!repaintTimer_.isActive()) repaintTimer_.start(kBusyRetryMs);
-        return frame_;
-    }
-    if (d.tonemap != postedTonemap_ || d.exposure != postedExposure_) {
-        d.tonemap = postedTonemap_;
-        d.exposure = postedExposure_;
-        ++d.serial;
-    }
-    d.generation = std::max(d.generation, committed);
+    bool whole = false;
+    if (!copyFrame(batch, tryOnly, onlyWhole, wholeMark, whole)) return frame_;
+    postedLook_.applyTo(d);
+    d.generation = std::max(d.generation, batch.generation);
     if (d.serial != serialBefore) Q_EMIT frameHandedOver(d.serial, whole);
     if (whole) session_->wholeFrameShown(wholeMark);
     const double ms =
@@ -202,30 +131,45 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
     return frame_;
 }
 
-void SessionController::tileDone(int x0, int y0, int x1, int y1, uint64_t generation) {
-    {
-        std::lock_guard lock(tilesMutex_);
-        if (committedTiles_.size() < kMaxListedTiles)
-            committedTiles_.emplace_back(QPoint(x0, y0), QPoint(x1 - 1, y1 - 1));
-        else
-            tilesOverflowed_ = true;
-        committedGeneration_ = std::max(committedGeneration_, generation);
+bool SessionController::copyFrame(CommittedTiles::Batch& batch, bool tryOnly, bool onlyWhole,
+                                  uint64_t wholeMark, bool& whole) {
+    bool torn = false;
+    const auto copy = [&](const DeepFrame& f, const std::shared_ptr<const CompiledScene>&) {
+        const auto locked = std::chrono::steady_clock::now();
+        whole = session_->wholeSince(wholeMark);
+        if (onlyWhole && !whole) {
+            torn = true;  // The last whole frame stays; these tiles wait for the next.
+            return;
+        }
+        if (batch.everything) batch.tiles.assign(1, QRect(0, 0, f.width(), f.height()));
+        // Edits clear the previous edit's re-traced overlay outside any tile: the flags follow
+        // whole when the generation moved (a byte a pixel).
+        const uint64_t generation = session_->generation();
+        refreshFrame(*frame_, f, mergeRects(std::move(batch.tiles), QSize(f.width(), f.height())),
+                     generation != frameSessionGeneration_);
+        frameSessionGeneration_ = generation;
+        handover_.copyMs +=
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - locked)
+                .count();
+    };
+    if (!tryOnly) {
+        session_->withFrame(copy);
+        return true;
     }
-    if (framePending_.exchange(true)) return;
-    mailbox_.post([this] { scheduleFrame(); });
+    if (session_->tryWithFrame(copy) && !torn) return true;
+    tiles_.hold(std::move(batch));
+    // Torn is not busy: the pass that makes the frame whole ends with a hand-over (the
+    // viewport's passFinished).
+    if (torn) return false;
+    // Kept for the next look, which comes soon whether or not more tiles arrive.
+    ++handover_.busy;
+    pacer_.retry(kBusyRetryMs);
+    return false;
 }
 
-void SessionController::scheduleFrame() {
-    if (repaintTimer_.isActive()) return;
-    // The first tiles after a quiet spell are shown at once, later ones at the display's pace.
-    const qint64 since = lastFrame_.isValid() ? lastFrame_.elapsed() : kMinFrameIntervalMs;
-    repaintTimer_.start(int(std::max<qint64>(0, kMinFrameIntervalMs - since)));
-}
-
-void SessionController::onRepaintTimer() {
-    framePending_.store(false);
-    lastFrame_.start();
-    Q_EMIT frameUpdated();
+void SessionController::tileDone(int x0, int y0, int x1, int y1, uint64_t generation) {
+    tiles_.add(x0, y0, x1, y1, generation);
+    if (pacer_.announce()) mailbox_.post([this] { pacer_.schedule(); });
 }
 
 void SessionController::passDone(const PassInfo& info) {

@@ -2,18 +2,17 @@
 // to the display, and the frame is handed to the display without waiting on the session.
 #pragma once
 
-#include <QElapsedTimer>
 #include <QObject>
-#include <QRect>
 #include <QTimer>
-#include <atomic>
 #include <memory>
-#include <mutex>
 #include <optional>
-#include <vector>
 
 #include "accel/ray_engine.h"
+#include "adapter/committed_tiles.h"
+#include "adapter/frame_pacer.h"
+#include "adapter/posted_look.h"
 #include "adapter/session_terms.h"
+#include "adapter/update_rate.h"
 #include "display/display_frame.h"
 #include "display/frame_storage.h"
 #include "jobs/gui_mailbox.h"
@@ -76,7 +75,7 @@ public:
     void endInteraction();
 
     /// Updates per second over the last second.
-    double updatesPerSecond() const { return updatesPerSecond_; }
+    double updatesPerSecond() const { return updateRate_.perSecond(); }
 
     /// Whether displayFrame may wait for the session's frame lock.
     enum class FrameWait { Block, TryOnly };
@@ -127,48 +126,36 @@ Q_SIGNALS:
 
 public:
     /// Shortest time between two frameUpdated signals.
-    static constexpr int kMinFrameIntervalMs = 16;
+    static constexpr int kMinFrameIntervalMs = FramePacer::kMinIntervalMs;
 
 private:
-    void onRepaintTimer();
     void onUpdateTimer();
-    /// Tiles were committed: frameUpdated now, or when kMinFrameIntervalMs has passed.
-    void scheduleFrame();
+    /// Copies `batch` into the displayed frame under the frame lock (or only tries to take it,
+    /// `tryOnly`). False when it did not: the lock was held, or `onlyWhole` and the frame is
+    /// not whole since `wholeMark`. Sets `whole`.
+    bool copyFrame(CommittedTiles::Batch& batch, bool tryOnly, bool onlyWhole, uint64_t wholeMark,
+                   bool& whole);
 
     friend struct SessionControllerTestAccess;  ///< The GUI tests reach the whole session.
 
     std::unique_ptr<RenderSession> session_;
     SessionHandle handle_{*session_};
     GuiMailbox mailbox_;  ///< Worker callbacks to the GUI thread.
-    std::atomic<bool> framePending_{false};
-    QTimer repaintTimer_;
+    /// When frameUpdated is emitted for committed tiles.
+    FramePacer pacer_{[this] { Q_EMIT frameUpdated(); }};
     QTimer updateTimer_;
     std::optional<SceneDocument> pendingDoc_;
     uint64_t requestSerial_ = 0;
     uint64_t postedGeneration_ = 0;  ///< Generation of the document posted last.
-    /// Tiles committed since displayFrame() last looked (worker threads add, GUI drains), and
-    /// the highest generation of any tile announced.
-    std::mutex tilesMutex_;
-    std::vector<QRect> committedTiles_;
-    uint64_t committedGeneration_ = 0;
-    bool tilesOverflowed_ = false;  ///< Too many to list: copy everything.
-    /// Tiles a TryOnly hand-over took but could not copy (GUI thread only).
-    std::vector<QRect> heldTiles_;
-    bool heldEverything_ = false;
-    uint64_t heldGeneration_ = 0;
-    QElapsedTimer lastFrame_;  ///< Since frameUpdated was last emitted.
+    PostedLook postedLook_;          ///< Display settings of the document posted last.
+    CommittedTiles tiles_;           ///< Committed since displayFrame() last copied.
     std::shared_ptr<DisplayFrame> frame_ = std::make_shared<DisplayFrame>();
     /// Room for frames of the size posted, made off this thread before they come.
     FrameStorageMaker frameStorage_;
     uint64_t frameSessionGeneration_ = 0;  ///< Session generation at the last refresh.
-    /// Display settings of the document posted last.
-    ToneMap postedTonemap_ = ToneMap::Clamp;
-    float postedExposure_ = 0.0f;
     HandoverStats handover_;
     bool interacting_ = false;  ///< Between beginInteraction and endInteraction.
-    int updatesThisSecond_ = 0;
-    double updatesPerSecond_ = 0.0;
-    QTimer rateTimer_;
+    UpdateRate updateRate_{[this](double rate) { Q_EMIT updateRateChanged(rate); }};
 };
 
 }  // namespace rs::ui
