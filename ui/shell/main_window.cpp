@@ -6,14 +6,11 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileInfo>
-#include <QLabel>
-#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
-#include <QVBoxLayout>
 #include <algorithm>
 #include <tuple>
 
@@ -23,18 +20,13 @@
 #include "jobs/background_jobs.h"
 #include "jobs/cluster_submit_dialog.h"
 #include "jobs/render_queue.h"
-#include "jobs/render_status.h"
-#include "jobs/render_window.h"
-#include "panels/material_list.h"
-#include "panels/outliner_view.h"
-#include "panels/property_panel.h"
-#include "panels/world_panel.h"
 #include "shell/action_icons.h"
 #include "shell/autosave.h"
 #include "shell/command_shortcut_filter.h"
-#include "shell/error_reporter.h"
+#include "shell/docked_panels.h"
+#include "shell/pass_status.h"
+#include "shell/render_jobs.h"
 #include "shell/shortcuts_dialog.h"
-#include "shell/user_confirmation.h"
 #include "shell/view_bookmarks.h"
 #include "viewport/viewport.h"
 
@@ -78,16 +70,17 @@ MainWindow::MainWindow(QWidget* parent)
     connect(editor_->undoStack(), &QUndoStack::cleanChanged, this,
             [this](bool clean) { setWindowModified(!clean); });
     connect(editor_, &SceneEditor::filePathChanged, this, &MainWindow::updateTitle);
-    connect(session_.get(), &SessionController::passFinished, this, &MainWindow::onPassFinished);
+    connect(session_.get(), &SessionController::passFinished, this,
+            [this](const PassInfo& info) { passStatus_->showPass(info); });
     connect(session_.get(), &SessionController::updateRateChanged, this,
-            [this](double rate) { statusUps_->setText(tr("%1 upd/s").arg(rate, 0, 'f', 0)); });
+            [this](double rate) { passStatus_->showUpdateRate(rate); });
     connect(autosave_, &Autosave::failed, this, [this](const QString& error) {
         statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 10000);
     });
 
-    createRenderQueue();
+    renders_ = new RenderJobs(session_.get(), this);
     createActions();
-    createDocks();
+    panels_ = new DockedPanels(editor_, {deleteAct_, duplicateAct_}, this);
     createMenus();
     createStatusBar();
     new CommandShortcutFilter(this);
@@ -96,12 +89,34 @@ MainWindow::MainWindow(QWidget* parent)
     editor_->resetDocument(SceneDocument{}, {});
 }
 
+OutlinerView* MainWindow::outliner() const {
+    return panels_->outliner();
+}
+PropertyPanel* MainWindow::propertyPanel() const {
+    return panels_->properties();
+}
+MaterialList* MainWindow::materialList() const {
+    return panels_->materials();
+}
+WorldPanel* MainWindow::worldPanel() const {
+    return panels_->world();
+}
+RenderQueue* MainWindow::renderQueue() const {
+    return renders_->queue();
+}
+RenderWindow* MainWindow::renderWindow() const {
+    return renders_->window();
+}
+RenderStatus* MainWindow::renderStatus() const {
+    return renders_->status();
+}
+
 MainWindow::~MainWindow() {
     // A gesture still running would end (focus lost) when the viewport goes, after the
     // session it edits through.
     viewport_->cancelInteraction();
     // Before the session and the widgets a job reports to go.
-    renders_->cancelAll();
+    renders_->queue()->cancelAll();
     cancelJobs(this);
 }
 
@@ -154,42 +169,6 @@ void MainWindow::createActions() {
         QSettings().value(QStringLiteral("placement/snapToFloor")).toBool());
     connect(snapToFloorAct_, &QAction::toggled, this,
             [](bool on) { QSettings().setValue(QStringLiteral("placement/snapToFloor"), on); });
-}
-
-void MainWindow::createDocks() {
-    auto* outlinerPane = new QWidget(this);
-    auto* outlinerLayout = new QVBoxLayout(outlinerPane);
-    outlinerLayout->setContentsMargins(0, 0, 0, 0);
-    outlinerLayout->setSpacing(2);
-    auto* nameFilter = new QLineEdit(outlinerPane);
-    nameFilter->setObjectName(QStringLiteral("outlinerFilter"));
-    nameFilter->setPlaceholderText(tr("Filter by name"));
-    nameFilter->setClearButtonEnabled(true);
-    outliner_ = new OutlinerView(editor_, {deleteAct_, duplicateAct_}, outlinerPane);
-    connect(nameFilter, &QLineEdit::textChanged, outliner_, &OutlinerView::setNameFilter);
-    outlinerLayout->addWidget(nameFilter);
-    outlinerLayout->addWidget(outliner_);
-    auto* left = new QDockWidget(tr("Outliner"), this);
-    left->setObjectName(QStringLiteral("outlinerDock"));
-    left->setWidget(outlinerPane);
-    addDockWidget(Qt::LeftDockWidgetArea, left);
-    properties_ = new PropertyPanel(editor_, this);
-    auto* right = new QDockWidget(tr("Properties"), this);
-    right->setObjectName(QStringLiteral("propertiesDock"));
-    right->setWidget(properties_);
-    addDockWidget(Qt::RightDockWidgetArea, right);
-    materials_ = new MaterialList(editor_, this);
-    auto* materialsDock = new QDockWidget(tr("Materials"), this);
-    materialsDock->setObjectName(QStringLiteral("materialsDock"));
-    materialsDock->setWidget(materials_);
-    addDockWidget(Qt::RightDockWidgetArea, materialsDock);
-    world_ = new WorldPanel(editor_, this);
-    auto* worldDock = new QDockWidget(tr("World"), this);
-    worldDock->setObjectName(QStringLiteral("worldDock"));
-    worldDock->setWidget(world_);
-    addDockWidget(Qt::RightDockWidgetArea, worldDock);
-    tabifyDockWidget(materialsDock, worldDock);  // Beside the materials: the scene's looks.
-    materialsDock->raise();
 }
 
 void MainWindow::addAimedLightAction(LightType type) {
@@ -350,10 +329,7 @@ QAction* MainWindow::createRenderMenu() {
     if (clusterSubmitAvailable())  // only where Slurm's client is installed
         render->addAction(tr("Submit to &Cluster..."), this, &MainWindow::submitToClusterDialog);
     render->addAction(tr("&Export Current Frame..."), this, &MainWindow::exportImageDialog);
-    render->addAction(tr("Show Render &Window"), this, [this] {
-        renderWindow_->show();
-        renderWindow_->raise();
-    });
+    render->addAction(tr("Show Render &Window"), renders_, &RenderJobs::showWindow);
 
     return renderAct;
 }
@@ -367,100 +343,15 @@ void MainWindow::createHelpMenu() {
 }
 
 void MainWindow::createStatusBar() {
-    // Each field as wide as its widest text, fixed: neighbours do not jump sideways and no
-    // text is cut as the numbers change.
-    auto label = [this](const QString& tip, const QString& widest) {
-        auto* l = new QLabel(this);
-        l->setToolTip(tip);
-        l->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        l->setFixedWidth(l->fontMetrics().horizontalAdvance(widest) + 2 * l->margin() + 12);
-        statusBar()->addPermanentWidget(l);
-        return l;
-    };
-    statusFrame_ = label(tr("Wall time of the last pass"), tr("%1 ms").arg(9999.9, 0, 'f', 1));
-    statusUps_ =
-        label(tr("Document updates sent to the renderer per second"), tr("%1 upd/s").arg(999));
-    statusRetraced_ = label(tr("Share of the frame's pixels the last pass re-traced"),
-                            tr("%1% re-traced").arg(100.0, 0, 'f', 1));
-    statusPass_ = label(tr("Kind of the last pass (interactive, base, supersampling)"),
-                        tr("pass: %1%2").arg(QStringLiteral("interactive"), tr(" (cut short)")));
-    statusRays_ =
-        label(tr("Rays per second in the last pass"), tr("%1 Mrays/s").arg(999.99, 0, 'f', 2));
-    QString widestLevel;
-    for (int level = 0; level < Governor::kLevels; ++level) {
-        const QString name = QString::fromLatin1(Governor::levelName(level));
-        if (name.size() > widestLevel.size()) widestLevel = name;
-    }
-    statusGovernor_ = label(tr("What the governor turned down in the last interactive pass to "
-                               "keep its frame rate; \"as set\" once the frame refines at the "
-                               "scene's settings (Preferences)"),
-                            tr("governor: %1").arg(widestLevel));
-    statusGovernor_->setObjectName(QStringLiteral("statusGovernor"));
-    // Leftmost of the permanent widgets: a running render is what the user looks for first.
-    renderStatus_ = new RenderStatus(renders_, this);
-    statusBar()->insertPermanentWidget(0, renderStatus_);
+    passStatus_ = new PassStatus(statusBar(), this);
+    renders_->addStatusField(statusBar());
     statusBar()->showMessage(tr("Ready"), 2000);
-}
-
-void MainWindow::createRenderQueue() {
-    renders_ = new RenderQueue(this);
-    // The viewport first: while the user drags or orbits, Render Image waits between tiles.
-    connect(session_.get(), &SessionController::interactionChanged, renders_,
-            &RenderQueue::setHeld);
-    renderWindow_ = new RenderWindow(this);
-    connect(renders_, &RenderQueue::started, this, [this](const QString& path, int w, int h) {
-        renderWindow_->begin(path, w, h);
-        if (!renderWindow_->isVisible()) renderWindow_->showOver(this);
-    });
-    connect(renders_, &RenderQueue::tileReady, renderWindow_, &RenderWindow::putTile);
-    connect(renders_, &RenderQueue::finished, this,
-            [this](const QString& path, bool ok, const QString& error) {
-                if (ok) {
-                    renderWindow_->end(tr("done"));
-                    statusBar()->showMessage(tr("Rendered %1").arg(path), 5000);
-                } else if (!error.isEmpty()) {
-                    renderWindow_->end(tr("failed"));
-                    reportError(this, tr("Cannot render image"), error);
-                } else {
-                    renderWindow_->end(tr("cancelled"));
-                    statusBar()->showMessage(tr("Render cancelled"), 3000);
-                }
-            });
-}
-
-bool MainWindow::maybeCancelRenders() {
-    if (!renders_->busy()) return true;
-    const int queued = renders_->queued();
-    const QString text =
-        queued
-            ? tr("A render is running and %1 more are queued. Cancel them and close?").arg(queued)
-            : tr("A render is running. Cancel it and close?");
-    return confirm(this, tr("Render running"), text);
-}
-
-void MainWindow::onPassFinished(const PassInfo& info) {
-    static const char* const kinds[] = {"interactive", "base", "supersample"};
-    statusFrame_->setText(tr("%1 ms").arg(info.ms, 0, 'f', 1));
-    const double share =
-        info.totalPixels ? 100.0 * double(info.tracedPixels) / double(info.totalPixels) : 0.0;
-    statusRetraced_->setText(tr("%1% re-traced").arg(share, 0, 'f', 1));
-    statusPass_->setText(tr("pass: %1%2")
-                             .arg(QString::fromLatin1(kinds[int(info.kind)]),
-                                  info.cancelled ? tr(" (cut short)") : QString()));
-    const double mrays = info.ms > 0.0 ? double(info.rays) / info.ms / 1000.0 : 0.0;
-    statusRays_->setText(tr("%1 Mrays/s").arg(mrays, 0, 'f', 2));
-    // Refining passes (base, supersampling) are at the scene's own settings: a level the
-    // last drag needed (the box proxy, say) no longer describes the picture after release.
-    const int level = info.kind == PassKind::Interactive ? info.governorLevel : 0;
-    statusGovernor_->setText(
-        level < 0 ? tr("governor: off")
-                  : tr("governor: %1").arg(QString::fromLatin1(Governor::levelName(level))));
 }
 
 void MainWindow::onSessionError(const QString& message) {
     // The status bar, not a dialog: a failure while dragging must not grab the mouse. The
     // session keeps the document and tries again at the next edit.
-    statusPass_->setText(tr("pass: failed"));
+    passStatus_->showFailed();
     statusBar()->showMessage(
         tr("The viewport could not render: %1. The scene is unchanged; edit it (e.g. a smaller "
            "render size) to try again.")
@@ -481,11 +372,9 @@ void MainWindow::writeSettings() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (maybeCancelRenders() && maybeSave()) {
+    if (renders_->maybeCancel() && maybeSave()) {
         writeSettings();
-        // A render still running would keep the process alive after the window is gone.
-        renders_->cancelAll();
-        renderWindow_->close();  // A window of this one, not a reason to stay open.
+        renders_->closeAll();
         cancelJobs(this);
         autosave_->discard();  // A clean exit: nothing to recover next time.
         event->accept();

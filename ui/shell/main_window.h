@@ -14,7 +14,6 @@
 
 class QAction;
 class QDialog;
-class QLabel;
 class QMenu;
 
 namespace rs {
@@ -25,11 +24,14 @@ struct PassInfo;
 namespace rs::ui {
 
 class Autosave;
+class DockedPanels;
 class MaterialList;
 class ClusterSubmitDialog;
 class OutlinerView;
+class PassStatus;
 class ViewBookmarks;
 class PropertyPanel;
+class RenderJobs;
 class RenderQueue;
 class RenderStatus;
 class RenderWindow;
@@ -88,13 +90,13 @@ public:
     SceneEditor* editor() const { return editor_; }
     SessionController* session() const { return session_.get(); }
     Viewport* viewport() const { return viewport_; }
-    OutlinerView* outliner() const { return outliner_; }
-    PropertyPanel* propertyPanel() const { return properties_; }
-    MaterialList* materialList() const { return materials_; }
-    WorldPanel* worldPanel() const { return world_; }
-    RenderQueue* renderQueue() const { return renders_; }
-    RenderWindow* renderWindow() const { return renderWindow_; }
-    RenderStatus* renderStatus() const { return renderStatus_; }
+    OutlinerView* outliner() const;
+    PropertyPanel* propertyPanel() const;
+    MaterialList* materialList() const;
+    WorldPanel* worldPanel() const;
+    RenderQueue* renderQueue() const;
+    RenderWindow* renderWindow() const;
+    RenderStatus* renderStatus() const;
     ViewBookmarks* viewBookmarks() const { return bookmarks_; }
 
 protected:
@@ -114,11 +116,7 @@ private:
     /// Returns Render Image (the toolbar shows it too).
     QAction* createRenderMenu();
     void createHelpMenu();
-    void createDocks();
     void createStatusBar();
-    void createRenderQueue();
-    /// Asks before a close cancels running renders; true when none runs or the user agrees.
-    bool maybeCancelRenders();
     void readSettings();
     void writeSettings();
     bool maybeSave();
@@ -133,7 +131,6 @@ private:
     void addRecentFile(const QString& path);
     void updateRecentFileActions();
     void updateTitle();
-    void onPassFinished(const rs::PassInfo& info);
     /// Where a new object goes: the view ray through widget point `at` of the viewport (its
     /// centre when none), cast into the session's scene.
     Placement placementAt(std::optional<QPoint> at) const;
@@ -161,13 +158,8 @@ private:
     std::unique_ptr<SessionErrorRelay> sessionErrors_;  ///< Outlives session_'s threads.
     std::unique_ptr<SessionController> session_;
     Viewport* viewport_;
-    OutlinerView* outliner_ = nullptr;
-    PropertyPanel* properties_ = nullptr;
-    MaterialList* materials_ = nullptr;
-    WorldPanel* world_ = nullptr;
-    RenderQueue* renders_ = nullptr;
-    RenderWindow* renderWindow_ = nullptr;
-    RenderStatus* renderStatus_ = nullptr;
+    DockedPanels* panels_ = nullptr;
+    RenderJobs* renders_ = nullptr;
     ViewBookmarks* bookmarks_ = nullptr;
     Preferences prefs_;
 
@@ -175,12 +167,7 @@ private:
     QAction* duplicateAct_ = nullptr;
     QAction* snapToFloorAct_ = nullptr;
     QMenu* recentMenu_ = nullptr;
-    QLabel* statusFrame_ = nullptr;
-    QLabel* statusUps_ = nullptr;
-    QLabel* statusRetraced_ = nullptr;
-    QLabel* statusPass_ = nullptr;
-    QLabel* statusRays_ = nullptr;
-    QLabel* statusGovernor_ = nullptr;
+    PassStatus* passStatus_ = nullptr;
     QList<QAction*> addActions_;
 };
 

@@ -34,6 +34,7 @@
 #include "shell/error_reporter.h"
 #include "shell/imported_images.h"
 #include "shell/main_window.h"
+#include "shell/render_jobs.h"
 #include "shell/responsive_wait.h"
 #include "shell/user_confirmation.h"
 #include "snapshot/compiled_scene.h"
@@ -382,10 +383,11 @@ bool MainWindow::renderImage(const QString& path, int width, int height) {
         }
     }
     // Its own thread count (Preferences): on few cores the viewport keeps what is left.
-    renders_->enqueue(doc, path, prefs_.renderThreads, prefs_.engine);
-    if (renders_->queued() > 0)
+    RenderQueue* queue = renders_->queue();
+    queue->enqueue(doc, path, prefs_.renderThreads, prefs_.engine);
+    if (queue->queued() > 0)
         statusBar()->showMessage(
-            tr("Render of %1 queued behind %2 more render(s)").arg(path).arg(renders_->queued()),
+            tr("Render of %1 queued behind %2 more render(s)").arg(path).arg(queue->queued()),
             3000);
     return true;
 }
