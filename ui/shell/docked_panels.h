@@ -22,8 +22,7 @@ class DockedPanels : public QObject {
     Q_OBJECT
 public:
     /// `outlinerActions`: the outliner's context menu (Delete, Duplicate).
-    DockedPanels(SceneEditor* editor, const QList<QAction*>& outlinerActions,
-                 QMainWindow* window);
+    DockedPanels(SceneEditor* editor, const QList<QAction*>& outlinerActions, QMainWindow* window);
 
     OutlinerView* outliner() const { return outliner_; }
     PropertyPanel* properties() const { return properties_; }

@@ -59,9 +59,9 @@ void PassStatus::showPass(const PassInfo& info) {
     // Refining passes (base, supersampling) are at the scene's own settings: a level the
     // last drag needed (the box proxy, say) no longer describes the picture after release.
     const int level = info.kind == PassKind::Interactive ? info.governorLevel : 0;
-    governor_->setText(level < 0
-                           ? tr("governor: off")
-                           : tr("governor: %1").arg(QString::fromLatin1(Governor::levelName(level))));
+    governor_->setText(
+        level < 0 ? tr("governor: off")
+                  : tr("governor: %1").arg(QString::fromLatin1(Governor::levelName(level))));
 }
 
 void PassStatus::showUpdateRate(double perSecond) {
