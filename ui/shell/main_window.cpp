@@ -219,7 +219,7 @@ void MainWindow::createFileMenu() {
         ->setShortcuts(
             standardOr(QKeySequence::SaveAs, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)));
     file->addSeparator();
-    file->addAction(tr("&Import Mesh..."), QKeySequence(Qt::CTRL | Qt::Key_I), this,
+    file->addAction(tr("&Import..."), QKeySequence(Qt::CTRL | Qt::Key_I), this,
                     &MainWindow::importMeshDialog);
     file->addAction(tr("&Export Image..."), QKeySequence(Qt::CTRL | Qt::Key_E), this,
                     &MainWindow::exportImageDialog);

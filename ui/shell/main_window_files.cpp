@@ -44,8 +44,8 @@ namespace rs::ui {
 
 namespace {
 const QString kSceneFilter = QObject::tr("RayStudio scenes (*.scene.json *.json)");
-const QString kMeshFilter =
-    QObject::tr("Meshes (*.obj *.ply *.stl *.gltf *.glb *.fbx *.dae *.3ds *.off);;All files (*)");
+const QString kMeshFilter = QObject::tr(
+    "3D models (*.obj *.ply *.stl *.gltf *.glb *.fbx *.dae *.3ds *.off);;All files (*)");
 const QString kImageFilter = QObject::tr(
     "PNG (*.png);;JPEG (*.jpg *.jpeg);;TIFF (*.tif *.tiff);;OpenEXR (*.exr);;Radiance HDR (*.hdr)");
 
@@ -180,7 +180,7 @@ void MainWindow::setRenderSize(int width, int height) {
 
 void MainWindow::importMeshDialog() {
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Import Mesh"), dialogFolder(FileKind::Mesh, editor_->filePath()), kMeshFilter);
+        this, tr("Import"), dialogFolder(FileKind::Mesh, editor_->filePath()), kMeshFilter);
     rememberDialogFolder(FileKind::Mesh, path);
     if (!path.isEmpty()) importMesh(path);
 }
