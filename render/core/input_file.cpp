@@ -34,6 +34,18 @@ const char* describeNonRegular(fs::file_type type) {
 }
 }  // namespace
 
+FileStamp fileStampOf(const std::string& path) {
+    std::error_code ec;
+    FileStamp stamp;
+    const auto modified = fs::last_write_time(path, ec);
+    if (ec) return stamp;
+    const auto size = fs::file_size(path, ec);
+    stamp.exists = true;
+    stamp.modified = static_cast<long long>(modified.time_since_epoch().count());
+    stamp.size = ec ? 0 : size;
+    return stamp;
+}
+
 std::string describeByteCount(std::uintmax_t bytes) {
     static const char* const units[] = {"B", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
     double value = double(bytes);

@@ -23,6 +23,20 @@ std::string checkInputFile(const std::string& path, std::uintmax_t limit,
 bool readInputFile(const std::string& path, std::uintmax_t limit, std::string& text,
                    std::string& error);
 
+/// What a file on disk was when looked at: its modification time and size. Equal stamps mean
+/// the file is taken to be unchanged (a re-saved image gets a new one); a missing file has
+/// `exists` false.
+struct FileStamp {
+    bool exists = false;
+    long long modified = 0;  ///< file_time_type ticks
+    std::uintmax_t size = 0;
+    bool operator==(const FileStamp& o) const {
+        return exists == o.exists && modified == o.modified && size == o.size;
+    }
+    bool operator!=(const FileStamp& o) const { return !(*this == o); }
+};
+FileStamp fileStampOf(const std::string& path);
+
 /// "512 B", "3.5 MiB", "2 GiB": a byte count for messages.
 std::string describeByteCount(std::uintmax_t bytes);
 

@@ -35,13 +35,10 @@ std::string describeFile(const std::string& path) {
 }
 
 /// What a file was when it was last registered with the cache; a change means a re-read.
-struct FileStamp {
-    std::filesystem::file_time_type modified;
-    std::uintmax_t size = 0;
+struct Registration {
+    FileStamp file;
     bool srgb = false;
-    bool operator==(const FileStamp& o) const {
-        return modified == o.modified && size == o.size && srgb == o.srgb;
-    }
+    bool operator==(const Registration& o) const { return file == o.file && srgb == o.srgb; }
 };
 
 /// This thread's OpenImageIO record for `system`, fetched once per thread.
@@ -117,10 +114,10 @@ struct TextureStore::Impl {
     TextureSystem* system = nullptr;
     std::atomic<float> megabytes{kDefaultTextureCacheMegabytes};
     std::mutex registerMutex;
-    std::map<std::string, FileStamp> registered;
+    std::map<std::string, Registration> registered;
     /// Handles given out, by path, with the file's stamp then: a snapshot compiled per edit
     /// (every drag step) asks again for the same files, and needs no header read for them.
-    std::map<std::string, std::pair<FileStamp, TextureHandle>> opened;
+    std::map<std::string, std::pair<Registration, TextureHandle>> opened;
 
     /// Every pyramid handed out (a handle may outlive any snapshot that holds it).
     std::deque<std::unique_ptr<OiioTexels>> pyramids;
@@ -131,7 +128,7 @@ struct TextureStore::Impl {
     /// changed on disk (handles already given out stay valid and see the new pixels). Empty,
     /// or why the cache cannot read it.
     std::string registerFile(const std::string& path, const OIIO::ustring& name,
-                             const FileStamp& stamp) {
+                             const Registration& stamp) {
         std::lock_guard<std::mutex> lock(registerMutex);
         auto found = registered.find(path);
         if (found != registered.end() && found->second == stamp) return {};
@@ -206,19 +203,16 @@ float TextureStore::cacheMegabytes() const {
 
 TextureHandle TextureStore::open(const std::string& path, std::string& error) {
     error.clear();
-    std::uintmax_t size = 0;
-    const std::string why = checkInputFile(path, kMaxTextureFileBytes, &size);
+    const std::string why = checkInputFile(path, kMaxTextureFileBytes);
     if (!why.empty()) {
         error = describeFile(path) + (why.rfind("is ", 0) == 0 ? " " : ": ") + why;
         return {};
     }
-    std::error_code ec;
-    const auto modified = std::filesystem::last_write_time(path, ec);
+    const FileStamp stamp = fileStampOf(path);
     {
         std::lock_guard<std::mutex> lock(impl_->registerMutex);
         const auto known = impl_->opened.find(path);
-        if (known != impl_->opened.end() && known->second.first.modified == modified &&
-            known->second.first.size == size)
+        if (known != impl_->opened.end() && known->second.first.file == stamp)
             return known->second.second;
     }
 
@@ -231,7 +225,7 @@ TextureHandle TextureStore::open(const std::string& path, std::string& error) {
     handle.srgb = isSrgbEncoded(spec.format);
     handle.channels = spec.nchannels;
     const OIIO::ustring name(path);
-    error = impl_->registerFile(path, name, FileStamp{modified, size, handle.srgb});
+    error = impl_->registerFile(path, name, Registration{stamp, handle.srgb});
     if (!error.empty()) return {};
     auto* oiioHandle = impl_->system->get_texture_handle(name, impl_->perthread());
     if (!oiioHandle || !impl_->system->good(oiioHandle)) {
@@ -248,7 +242,7 @@ TextureHandle TextureStore::open(const std::string& path, std::string& error) {
         error = describeFile(path) + " cannot be read: its MIP levels are not readable";
         return {};
     }
-    impl_->opened[path] = {FileStamp{modified, size, handle.srgb}, handle};
+    impl_->opened[path] = {Registration{stamp, handle.srgb}, handle};
     return handle;
 }
 

@@ -8,9 +8,13 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QtTest>
+#include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <memory>
+#include <variant>
 
 #include "document/scene_editor.h"
 #include "document/scene_edits.h"
@@ -72,6 +76,7 @@ private Q_SLOTS:
     void movingAnObject_OrRenamingAMaterial_RendersNothing();
     void previewArrivingDuringAnInPlaceRename_KeepsWhatIsTyped();
     void environmentEdits_RenderEveryMaterialOnce_AndTexturesAreTraced();
+    void textureFileResavedOnDisk_IsANewPreview();
 
 private:
     /// The icon of material `name` as the list draws it, at its full resolution.
@@ -336,6 +341,44 @@ void MaterialPreviewTest::environmentEdits_RenderEveryMaterialOnce_AndTexturesAr
     editor_->edit(QStringLiteral("Turn the sky"), std::move(doc));
     QVERIFY(waitIdle());
     QCOMPARE(renders() - turned, 6);
+}
+
+void MaterialPreviewTest::textureFileResavedOnDisk_IsANewPreview() {
+    // A texture painted red, previewed; then re-saved green in an image editor. Going back to
+    // the same fields must not bring back the red preview of the old file.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("paint.png"));
+    QImage paint(16, 16, QImage::Format_RGB888);
+    paint.fill(QColor(220, 20, 20));
+    QVERIFY(paint.save(path));
+    SceneDocument doc = editor_->document();
+    Material painted = diffuse("painted", Color(0.8f, 0.8f, 0.8f));
+    ImageTexture texture;
+    texture.image.file = path.toStdString();
+    painted.pattern = texture;
+    doc.materials.push_back(painted);
+    editor_->edit(QStringLiteral("Painted"), std::move(doc));
+    QVERIFY(waitIdle());
+    const int side = icon(QStringLiteral("painted")).width();
+    const QVector3D red =
+        meanAround(icon(QStringLiteral("painted")), side / 2.0, side / 2.0, side / 12.0);
+    QVERIFY2(red.x() > 2 * red.y(), qPrintable(describe(red)));
+
+    paint.fill(QColor(20, 200, 20));
+    QVERIFY(paint.save(path));
+    const auto later =
+        std::filesystem::last_write_time(path.toStdString()) + std::chrono::seconds(2);
+    std::filesystem::last_write_time(path.toStdString(), later);
+    const auto scale = [this](float s) {
+        editMaterial("painted", [s](Material& m) { std::get<ImageTexture>(m.pattern).scaleU = s; });
+        QVERIFY(waitIdle());
+    };
+    scale(2.0f);
+    scale(1.0f);
+    const QVector3D green =
+        meanAround(icon(QStringLiteral("painted")), side / 2.0, side / 2.0, side / 12.0);
+    QVERIFY2(green.y() > 2 * green.x(), qPrintable(describe(green)));
 }
 
 QTEST_MAIN(MaterialPreviewTest)

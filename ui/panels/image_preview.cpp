@@ -5,10 +5,10 @@
 #include <QLabel>
 #include <QPixmap>
 #include <QVBoxLayout>
-#include <filesystem>
 #include <map>
 #include <tuple>
 
+#include "core/input_file.h"
 #include "texture/texture_store.h"
 #include "texture/thumbnail.h"
 
@@ -22,17 +22,11 @@ struct Preview {
     QString error;
 };
 
-long long stampOf(const std::string& path) {
-    std::error_code ec;
-    const auto modified = std::filesystem::last_write_time(path, ec);
-    return ec ? -1LL : static_cast<long long>(modified.time_since_epoch().count());
-}
-
 /// Previews by path, modification time and size read: panels are rebuilt on every selection
 /// change, and a file is read once while it stays the same.
-Preview previewOf(const std::string& path, long long stamp, int readSide) {
-    static std::map<std::tuple<std::string, long long, int>, Preview> cache;
-    const std::tuple key{path, stamp, readSide};
+Preview previewOf(const std::string& path, const FileStamp& stamp, int readSide) {
+    static std::map<std::tuple<std::string, bool, long long, std::uintmax_t, int>, Preview> cache;
+    const std::tuple key{path, stamp.exists, stamp.modified, stamp.size, readSide};
     if (auto it = cache.find(key); it != cache.end()) return it->second;
     Preview p;
     std::string error;
@@ -77,7 +71,7 @@ ImagePreview::ImagePreview(QSize box, int readSide, Qt::Alignment alignment,
 }
 
 void ImagePreview::setImage(const std::string& path) {
-    const long long stamp = path.empty() ? -1 : stampOf(path);
+    const FileStamp stamp = path.empty() ? FileStamp{} : fileStampOf(path);
     if (path == shown_ && stamp == shownStamp_) return;
     shown_ = path;
     shownStamp_ = stamp;

@@ -7,6 +7,8 @@
 #include <QWidget>
 #include <string>
 
+#include "core/input_file.h"
+
 class QLabel;
 
 namespace rs::ui {
@@ -32,7 +34,7 @@ private:
     QLabel* image_;
     QLabel* error_;
     std::string shown_;
-    long long shownStamp_ = -1;
+    FileStamp shownStamp_;
 };
 
 }  // namespace rs::ui

@@ -8,6 +8,7 @@
 #include <exception>
 #include <variant>
 
+#include "core/input_file.h"
 #include "core/thread_priority.h"
 #include "image/tonemap.h"
 #include "integrator/renderer.h"
@@ -87,6 +88,13 @@ QImage renderPreview(const SceneDocument& scene, const std::atomic<bool>* cancel
     }
 }
 
+/// The file's stamp in a key: an image re-saved on disk is a new preview.
+std::string stampText(const std::string& path) {
+    const FileStamp stamp = fileStampOf(path);
+    return stamp.exists ? std::to_string(stamp.modified) + "/" + std::to_string(stamp.size) + "|"
+                        : std::string("missing|");
+}
+
 }  // namespace
 
 SceneDocument materialPreviewScene(const Material& material, const Environment& environment,
@@ -153,12 +161,13 @@ std::string materialPreviewKey(const Material& m, const Environment& environment
         appendColor(key, checker->odd);
         appendFloat(key, checker->scale);
     } else if (const auto* texture = std::get_if<ImageTexture>(&m.pattern)) {
-        key += ";texture " + texture->image.source() + "|";
+        key += ";texture " + texture->image.source() + "|" + stampText(texture->image.source());
         for (float v : {texture->scaleU, texture->scaleV, texture->offsetU, texture->offsetV})
             appendFloat(key, v);
     }
     if (environment.present()) {
-        key += ";environment " + environment.image.source() + "|";
+        key += ";environment " + environment.image.source() + "|" +
+               stampText(environment.image.source());
         appendFloat(key, environment.intensity);
         appendFloat(key, environment.rotation);
     }

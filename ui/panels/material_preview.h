@@ -27,7 +27,8 @@ SceneDocument materialPreviewScene(const Material& material, const Environment& 
                                    int side);
 
 /// Everything a preview depends on: the material's fields (not its name or `x-` keys), the
-/// environment when present, and the size. Equal keys give the same picture.
+/// environment when present, the image files' stamps (a file re-saved on disk is a new
+/// preview), and the size. Equal keys give the same picture.
 std::string materialPreviewKey(const Material& material, const Environment& environment, int side);
 
 /// What the list shows until the preview is ready: a disc of the material's base colour (a
