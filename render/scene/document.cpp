@@ -116,4 +116,19 @@ std::string imageSizeError(int width, int height) {
     return {};
 }
 
+bool everyPartHasItsOwn(const Object& o) {
+    const auto* mesh = std::get_if<MeshGeometry>(&o.geometry);
+    if (!mesh || !mesh->data || mesh->data->parts.empty()) return false;
+    return std::all_of(mesh->data->parts.begin(), mesh->data->parts.end(), [&](const MeshPart& p) {
+        return &partMaterial(o, p.material) != &o.material;
+    });
+}
+
+const std::string& shownMaterial(const Object& o) {
+    const auto* mesh = std::get_if<MeshGeometry>(&o.geometry);
+    return mesh && mesh->data && mesh->data->parts.size() == 1 && everyPartHasItsOwn(o)
+               ? partMaterial(o, mesh->data->parts.front().material)
+               : o.material;
+}
+
 }  // namespace rs

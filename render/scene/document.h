@@ -252,6 +252,15 @@ void forEachMaterialOf(const Object& o, F f) {
             if (!name.empty()) f(name);
 }
 
+/// True when `o` is a loaded mesh with parts and every part has a material of its own, so
+/// the object's own material shows nowhere (an imported asset's usual case).
+bool everyPartHasItsOwn(const Object& o);
+
+/// The material that shows on `o` when one does: for a loaded mesh of one part with a material
+/// of its own (an imported asset of one material), that part's; else the object's own. What
+/// the designer edits when `o` is selected.
+const std::string& shownMaterial(const Object& o);
+
 /// True when `o` or one of its parts uses material `name`.
 inline bool usesMaterial(const Object& o, const std::string& name) {
     bool used = false;

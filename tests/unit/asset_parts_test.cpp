@@ -390,5 +390,42 @@ TEST(AssetParts, TexturePathFromAnotherMachine_IsFoundByNameInTheAssetsFolder) {
     EXPECT_NE(notes.find("using \"wood.png\" from the asset's folder"), std::string::npos) << notes;
 }
 
+TEST(AssetParts, ShownMaterial_IsTheOnePartsOwn_OnlyWhenEveryPartHasItsOwn) {
+    auto asset = [](std::vector<MeshPart> parts, std::vector<std::string> partMaterials) {
+        auto data = std::make_shared<MeshData>();
+        data->parts = std::move(parts);
+        MeshGeometry mesh;
+        mesh.data = data;
+        mesh.partMaterials = std::move(partMaterials);
+        Object o;
+        o.material = "object";
+        o.geometry = mesh;
+        return o;
+    };
+    // One part with its own material: that material is what shows.
+    const Object one = asset({{0, 4, 2}}, {"", "", "painted"});
+    EXPECT_TRUE(everyPartHasItsOwn(one));
+    EXPECT_EQ(shownMaterial(one), "painted");
+    // One part without: the object's.
+    const Object plain = asset({{0, 4, 0}}, {"", "painted"});
+    EXPECT_FALSE(everyPartHasItsOwn(plain));
+    EXPECT_EQ(shownMaterial(plain), "object");
+    // Two parts, each its own: the object's material shows nowhere, but no one part speaks
+    // for the object.
+    const Object two = asset({{0, 2, 0}, {2, 2, 1}}, {"red", "blue"});
+    EXPECT_TRUE(everyPartHasItsOwn(two));
+    EXPECT_EQ(shownMaterial(two), "object");
+    // Not loaded, or not a mesh: the object's.
+    Object unloaded = asset({}, {"red"});
+    std::get<MeshGeometry>(unloaded.geometry).data.reset();
+    EXPECT_FALSE(everyPartHasItsOwn(unloaded));
+    EXPECT_EQ(shownMaterial(unloaded), "object");
+    Object ball;
+    ball.material = "object";
+    ball.geometry = SphereGeometry{Vec3(0.0f), 1.0f};
+    EXPECT_FALSE(everyPartHasItsOwn(ball));
+    EXPECT_EQ(shownMaterial(ball), "object");
+}
+
 }  // namespace
 }  // namespace rs

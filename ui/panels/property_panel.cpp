@@ -40,30 +40,6 @@ void reloadMeshIfNeeded(Geometry& g, const std::string& key) {
     if (r.ok()) mesh->data = r.mesh;
 }
 
-/// The loaded parts of `o` when it is a mesh, else none.
-const std::vector<MeshPart>* meshParts(const Object& o) {
-    const auto* mesh = std::get_if<MeshGeometry>(&o.geometry);
-    return mesh && mesh->data ? &mesh->data->parts : nullptr;
-}
-
-/// Whether every part of `o` (a loaded mesh with parts) has a material of its own, so that
-/// the object's material shows nowhere: an imported asset's usual case.
-bool everyPartHasItsOwn(const Object& o) {
-    const auto* parts = meshParts(o);
-    return parts && !parts->empty() &&
-           std::all_of(parts->begin(), parts->end(), [&](const MeshPart& p) {
-               return &partMaterial(o, p.material) != &o.material;
-           });
-}
-
-/// The material the panel edits for `o`: the one part's own (an imported asset of one
-/// material), so that editing what is selected edits what is seen, else the object's.
-const std::string& editedMaterial(const Object& o) {
-    const auto* parts = meshParts(o);
-    return parts && parts->size() == 1 && everyPartHasItsOwn(o)
-               ? partMaterial(o, parts->front().material)
-               : o.material;
-}
 }  // namespace
 
 PropertyPanel::PropertyPanel(SceneEditor* editor, QWidget* parent)
@@ -89,7 +65,7 @@ QString PropertyPanel::signature() const {
             for (const std::string& part : mesh->partMaterials)
                 s += QStringLiteral("/m") + QString::fromStdString(part);
         // Its material's colour form decides which sections are shown.
-        if (const Material* m = doc.findMaterial(editedMaterial(*o)))
+        if (const Material* m = doc.findMaterial(shownMaterial(*o)))
             s += QStringLiteral("/p%1").arg(m->pattern.index());
     }
     if (const Light* l = doc.findLight(id)) s += QStringLiteral("/l%1").arg(int(l->type));
@@ -281,7 +257,7 @@ void PropertyPanel::addMaterialChooser(ObjectId id) {
         form->addRow(unique);
     }
     layout_->addWidget(box);
-    const std::string name = editedMaterial(*o);
+    const std::string name = shownMaterial(*o);
     if (name.empty() || !doc.findMaterial(name)) return;
     QFormLayout* materialForm = addSection(
         tr("Material \"%1\"").arg(QString::fromStdString(name)), QStringLiteral("material"),
