@@ -285,6 +285,19 @@ void TexturesTest::unreadableTexture_ShowsTheErrorInsteadOfAThumbnail() {
     QVERIFY2(preview->error().contains(QStringLiteral("broken.png")), qPrintable(preview->error()));
     auto* error = preview->findChild<QLabel*>(QStringLiteral("textureError"));
     QVERIFY(error && error->isVisibleTo(preview));
+
+    // The viewport's render says so too, naming the key and the file, and only once: a
+    // further edit of the same material does not say it again.
+    const auto said = [this] {
+        const QString m = window_->statusBar()->currentMessage();
+        return m.contains(QStringLiteral("/color/texture")) &&
+               m.contains(QStringLiteral("broken.png"));
+    };
+    QVERIFY2(QTest::qWaitFor(said, 20000), qPrintable(window_->statusBar()->currentMessage()));
+    window_->statusBar()->clearMessage();
+    QVERIFY(window_->propertyPanel()->applyEdit(QStringLiteral("material"), "diffuse", 0.5f));
+    QTest::qWait(500);
+    QVERIFY2(!said(), qPrintable(window_->statusBar()->currentMessage()));
 }
 
 void TexturesTest::exrThumbnail_IsLinearEncodedToSrgb() {

@@ -28,6 +28,7 @@
 #include "shell/render_jobs.h"
 #include "shell/shortcuts_dialog.h"
 #include "shell/view_bookmarks.h"
+#include "snapshot/compiled_scene.h"
 #include "viewport/viewport.h"
 
 namespace rs::ui {
@@ -70,8 +71,11 @@ MainWindow::MainWindow(QWidget* parent)
     connect(editor_->undoStack(), &QUndoStack::cleanChanged, this,
             [this](bool clean) { setWindowModified(!clean); });
     connect(editor_, &SceneEditor::filePathChanged, this, &MainWindow::updateTitle);
-    connect(session_.get(), &SessionController::passFinished, this,
-            [this](const PassInfo& info) { passStatus_->showPass(info); });
+    connect(session_.get(), &SessionController::passFinished, this, [this](const PassInfo& info) {
+        passStatus_->showPass(info);
+        if (const auto snapshot = session_->session().snapshot())
+            passStatus_->showImageProblems(snapshot->problems());
+    });
     connect(session_.get(), &SessionController::updateRateChanged, this,
             [this](double rate) { passStatus_->showUpdateRate(rate); });
     connect(autosave_, &Autosave::failed, this, [this](const QString& error) {

@@ -12,6 +12,8 @@
 #include <QStatusBar>
 #include <algorithm>
 #include <cstdio>
+#include <set>
+#include <string>
 
 #include "adapter/session_controller.h"
 #include "display/display_frame.h"
@@ -34,6 +36,7 @@
 #include "shell/error_reporter.h"
 #include "shell/imported_images.h"
 #include "shell/main_window.h"
+#include "shell/pass_status.h"
 #include "shell/render_jobs.h"
 #include "shell/responsive_wait.h"
 #include "shell/user_confirmation.h"
@@ -105,6 +108,9 @@ bool MainWindow::openFile(const QString& path) {
         return false;
     }
     anchorSunGlyphs(result.document);
+    std::set<std::string> warned;
+    for (const SceneError& w : result.warnings) warned.insert(w.pointer);
+    passStatus_->imageProblemsSaid(std::move(warned));
     editor_->resetDocument(std::move(result.document), QFileInfo(path).absoluteFilePath());
     addRecentFile(QFileInfo(path).absoluteFilePath());
     if (result.warnings.empty()) {

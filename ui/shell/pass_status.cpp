@@ -3,6 +3,7 @@
 
 #include <QLabel>
 #include <QStatusBar>
+#include <cstdio>
 
 #include "adapter/session_terms.h"
 
@@ -20,7 +21,7 @@ QString widestLevelName() {
 }
 }  // namespace
 
-PassStatus::PassStatus(QStatusBar* bar, QWidget* window) : QObject(window) {
+PassStatus::PassStatus(QStatusBar* bar, QWidget* window) : QObject(window), bar_(bar) {
     // Each field as wide as its widest text, fixed: neighbours do not jump sideways and no
     // text is cut as the numbers change.
     auto label = [bar, window](const QString& tip, const QString& widest) {
@@ -70,6 +71,26 @@ void PassStatus::showUpdateRate(double perSecond) {
 
 void PassStatus::showFailed() {
     pass_->setText(tr("pass: failed"));
+}
+
+void PassStatus::showImageProblems(const std::vector<std::string>& problems) {
+    const auto keyOf = [](const std::string& problem) {
+        return problem.substr(0, problem.find(": "));
+    };
+    std::set<std::string> now;
+    std::vector<const std::string*> fresh;
+    for (const std::string& p : problems) {
+        const std::string key = keyOf(p);
+        if (!saidProblems_.count(key)) fresh.push_back(&p);
+        now.insert(key);
+    }
+    saidProblems_ = std::move(now);  // A mended image is said again if it breaks again.
+    if (fresh.empty()) return;
+    for (const std::string* p : fresh) std::fprintf(stderr, "%s (warning)\n", p->c_str());
+    bar_->showMessage(tr("%n image(s) could not be read and show as the missing pattern: %1", "",
+                         int(fresh.size()))
+                          .arg(QString::fromStdString(*fresh.front())),
+                      15000);
 }
 
 }  // namespace rs::ui
