@@ -87,9 +87,13 @@ void PassStatus::showImageProblems(const std::vector<std::string>& problems) {
     saidProblems_ = std::move(now);  // A mended image is said again if it breaks again.
     if (fresh.empty()) return;
     for (const std::string* p : fresh) std::fprintf(stderr, "%s (warning)\n", p->c_str());
-    bar_->showMessage(tr("%n image(s) could not be read and show as the missing pattern: %1", "",
-                         int(fresh.size()))
-                          .arg(QString::fromStdString(*fresh.front())),
+    // The problem first (key, file, why): the status bar's permanent fields leave the message
+    // half the bar's width.
+    const QString first = QString::fromStdString(*fresh.front());
+    bar_->showMessage(fresh.size() == 1 ? tr("%1 (shown as the missing pattern)").arg(first)
+                                        : tr("%1, and %n more (shown as the missing pattern)", "",
+                                             int(fresh.size()) - 1)
+                                              .arg(first),
                       15000);
 }
 
