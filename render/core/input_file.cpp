@@ -1,6 +1,8 @@
 // Input file guards: stat() before open, so directories, devices and FIFOs never block a read.
 #include "core/input_file.h"
 
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <filesystem>
@@ -35,14 +37,12 @@ const char* describeNonRegular(fs::file_type type) {
 }  // namespace
 
 FileStamp fileStampOf(const std::string& path) {
-    std::error_code ec;
     FileStamp stamp;
-    const auto modified = fs::last_write_time(path, ec);
-    if (ec) return stamp;
-    const auto size = fs::file_size(path, ec);
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return stamp;
     stamp.exists = true;
-    stamp.modified = static_cast<long long>(modified.time_since_epoch().count());
-    stamp.size = ec ? 0 : size;
+    stamp.modified = static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
+    stamp.size = static_cast<std::uintmax_t>(st.st_size);
     return stamp;
 }
 

@@ -28,13 +28,12 @@ bool readInputFile(const std::string& path, std::uintmax_t limit, std::string& t
 /// `exists` false.
 struct FileStamp {
     bool exists = false;
-    long long modified = 0;  ///< file_time_type ticks
+    long long modified = 0;  ///< Nanoseconds since the epoch.
     std::uintmax_t size = 0;
-    bool operator==(const FileStamp& o) const {
-        return exists == o.exists && modified == o.modified && size == o.size;
-    }
-    bool operator!=(const FileStamp& o) const { return !(*this == o); }
+    bool operator==(const FileStamp&) const = default;
 };
+/// The stamp of `path`, from one stat() (it runs per textured material on every snapshot
+/// compile, i.e. every drag step).
 FileStamp fileStampOf(const std::string& path);
 
 /// "512 B", "3.5 MiB", "2 GiB": a byte count for messages.

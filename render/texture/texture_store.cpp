@@ -9,7 +9,6 @@
 #include <atomic>
 #include <cmath>
 #include <deque>
-#include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -38,7 +37,7 @@ std::string describeFile(const std::string& path) {
 struct Registration {
     FileStamp file;
     bool srgb = false;
-    bool operator==(const Registration& o) const { return file == o.file && srgb == o.srgb; }
+    bool operator==(const Registration&) const = default;
 };
 
 /// This thread's OpenImageIO record for `system`, fetched once per thread.
