@@ -111,16 +111,18 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
     if (FrameStorage room = frameStorage_.take(); room.pixels > 0) frame_->adopt(std::move(room));
     // Before the tiles are taken: every tile of the pass that made the frame whole is in them.
     const uint64_t wholeMark = session_->wholeMark();
+    const bool tryOnly = wait == FrameWait::TryOnly;
+    const bool onlyWhole = tryOnly && interacting_ && session_->policy().wholeFramesWhileMoving;
     // Every tile announced so far is copied below, so the copy holds their generation.
     CommittedTiles::Batch batch = tiles_.take();
     DisplayFrame& d = *frame_;
     const uint64_t serialBefore = d.serial;
-    const FrameCopy copied = copyFrame(batch, wait, wholeMark);
-    if (!copied.done) return frame_;
+    bool whole = false;
+    if (!copyFrame(batch, tryOnly, onlyWhole, wholeMark, whole)) return frame_;
     postedLook_.applyTo(d);
     d.generation = std::max(d.generation, batch.generation);
-    if (d.serial != serialBefore) Q_EMIT frameHandedOver(d.serial, copied.whole);
-    if (copied.whole) session_->wholeFrameShown(wholeMark);
+    if (d.serial != serialBefore) Q_EMIT frameHandedOver(d.serial, whole);
+    if (whole) session_->wholeFrameShown(wholeMark);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++handover_.count;
@@ -129,11 +131,9 @@ std::shared_ptr<const DisplayFrame> SessionController::displayFrame(FrameWait wa
     return frame_;
 }
 
-SessionController::FrameCopy SessionController::copyFrame(CommittedTiles::Batch& batch,
-                                                          FrameWait wait, uint64_t wholeMark) {
-    const bool tryOnly = wait == FrameWait::TryOnly;
-    const bool onlyWhole = tryOnly && interacting_ && session_->policy().wholeFramesWhileMoving;
-    bool torn = false, whole = false;
+bool SessionController::copyFrame(CommittedTiles::Batch& batch, bool tryOnly, bool onlyWhole,
+                                  uint64_t wholeMark, bool& whole) {
+    bool torn = false;
     const auto copy = [&](const DeepFrame& f, const std::shared_ptr<const CompiledScene>&) {
         const auto locked = std::chrono::steady_clock::now();
         whole = session_->wholeSince(wholeMark);
@@ -154,17 +154,17 @@ SessionController::FrameCopy SessionController::copyFrame(CommittedTiles::Batch&
     };
     if (!tryOnly) {
         session_->withFrame(copy);
-        return {true, whole};
+        return true;
     }
-    if (session_->tryWithFrame(copy) && !torn) return {true, whole};
+    if (session_->tryWithFrame(copy) && !torn) return true;
     tiles_.hold(std::move(batch));
     // Torn is not busy: the pass that makes the frame whole ends with a hand-over (the
     // viewport's passFinished).
-    if (torn) return {};
+    if (torn) return false;
     // Kept for the next look, which comes soon whether or not more tiles arrive.
     ++handover_.busy;
     pacer_.retry(kBusyRetryMs);
-    return {};
+    return false;
 }
 
 void SessionController::tileDone(int x0, int y0, int x1, int y1, uint64_t generation) {

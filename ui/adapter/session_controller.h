@@ -130,17 +130,11 @@ public:
 
 private:
     void onUpdateTimer();
-    /// What copyFrame did: `done` when the tiles were copied, `whole` when the session's
-    /// frame was whole since the mark then.
-    struct FrameCopy {
-        bool done = false;
-        bool whole = false;
-    };
-    /// Copies `batch` into the displayed frame under the frame lock (or, FrameWait::TryOnly,
-    /// only tries to take it). Not done when the lock was held, or while moving under the
-    /// whole-frames policy and the frame is not whole since `wholeMark`: the batch is then
-    /// held for the next look.
-    FrameCopy copyFrame(CommittedTiles::Batch& batch, FrameWait wait, uint64_t wholeMark);
+    /// Copies `batch` into the displayed frame under the frame lock (or only tries to take it,
+    /// `tryOnly`). False when it did not: the lock was held, or `onlyWhole` and the frame is
+    /// not whole since `wholeMark`. Sets `whole`.
+    bool copyFrame(CommittedTiles::Batch& batch, bool tryOnly, bool onlyWhole, uint64_t wholeMark,
+                   bool& whole);
 
     friend struct SessionControllerTestAccess;  ///< The GUI tests reach the whole session.
 
