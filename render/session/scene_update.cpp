@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "core/input_file.h"
 #include "scene/document_change.h"
 
 namespace rs {
@@ -66,6 +67,13 @@ bool sameMaterialData(Material a, const Material& b) {
     return a == b;
 }
 
+/// Whether `image`, shown through `opened` by the applied snapshot, was saved again since it
+/// was opened (from a paint program, say): the document is the same, the picture is not.
+/// One stat().
+bool resavedSince(const ImageFile& image, const TextureHandle& opened) {
+    return !image.source().empty() && !(fileStampOf(image.source()) == opened.file);
+}
+
 bool isPlane(const Object& o) {
     return std::holds_alternative<PlaneGeometry>(o.geometry);
 }
@@ -79,14 +87,19 @@ bool meshChanged(const Object& before, const Object& after) {
 }
 
 /// Document-wide changes: the image's sides, the camera and traced settings (everything),
-/// the environment, lights and display-only settings. True when the environment changed.
-bool diffDocumentWide(const SceneDocument& before, const SceneDocument& after, SceneEdit& edit) {
+/// the environment (its file saved again included), lights and display-only settings. True
+/// when the environment changed.
+bool diffDocumentWide(const SceneDocument& before, const CompiledScene& beforeSnapshot,
+                      const SceneDocument& after, SceneEdit& edit) {
     edit.resized =
         before.render.width != after.render.width || before.render.height != after.render.height;
     if (!(before.camera == after.camera) || !sameTracedSettings(before.render, after.render))
         edit.everything = true;
     // The environment is seen only by rays that leave the scene (it lights nothing).
-    const bool environmentChanged = !(before.environment == after.environment);
+    const bool environmentChanged =
+        !(before.environment == after.environment) ||
+        (after.environment.present() &&
+         resavedSince(after.environment.image, beforeSnapshot.environment().texture));
     edit.environment = environmentChanged && !edit.everything;
     edit.lights = changedLights(before.lights, after.lights);
     edit.displayOnly = !edit.everything && (before.render.tonemap != after.render.tonemap ||
@@ -94,18 +107,25 @@ bool diffDocumentWide(const SceneDocument& before, const SceneDocument& after, S
     return environmentChanged;
 }
 
-/// Materials: by name; a changed, added or removed definition retints its users.
+/// Materials: by name; a changed, added or removed definition retints its users, and so
+/// does a texture file saved again since the applied snapshot opened it.
 struct MaterialDiff {
     std::set<std::string> changed;  ///< Names whose definition changed, appeared or went.
     bool listChanged = false;       ///< Materials added, removed or reordered.
 };
 
-MaterialDiff diffMaterials(const SceneDocument& before, const SceneDocument& after) {
+MaterialDiff diffMaterials(const SceneDocument& before, const CompiledScene& beforeSnapshot,
+                           const SceneDocument& after) {
     MaterialDiff d;
     d.listChanged = before.materials.size() != after.materials.size();
+    const auto& compiled = beforeSnapshot.materials();  // the built-in grey first
     for (std::size_t i = 0; i < after.materials.size(); ++i) {
         const Material* old = before.findMaterial(after.materials[i].name);
-        if (!old || !sameMaterialData(*old, after.materials[i]))
+        const auto* image = std::get_if<ImageTexture>(&after.materials[i].pattern);
+        const std::size_t slot = old ? std::size_t(old - before.materials.data()) + 1 : 0;
+        if (!old || !sameMaterialData(*old, after.materials[i]) ||
+            (image && slot < compiled.size() &&
+             resavedSince(image->image, compiled[slot].pattern.texture)))
             d.changed.insert(after.materials[i].name);
         if (i >= before.materials.size() || before.materials[i].name != after.materials[i].name)
             d.listChanged = true;
@@ -260,8 +280,8 @@ SceneUpdate updateScene(const SceneDocument& before,
         edit.everything = edit.resized = true;
         return update;
     }
-    const bool environmentChanged = diffDocumentWide(before, after, edit);
-    const MaterialDiff materials = diffMaterials(before, after);
+    const bool environmentChanged = diffDocumentWide(before, *beforeSnapshot, after, edit);
+    const MaterialDiff materials = diffMaterials(before, *beforeSnapshot, after);
     ObjectDiff objects(before, after, materials, edit);
     objects.run();
     const bool rebuild = edit.everything || objects.structural || materials.listChanged ||

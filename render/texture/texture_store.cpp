@@ -201,6 +201,12 @@ float TextureStore::cacheMegabytes() const {
 }
 
 TextureHandle TextureStore::open(const std::string& path, std::string& error) {
+    TextureHandle handle = openFile(path, error);
+    if (!handle) handle.file = fileStampOf(path);
+    return handle;
+}
+
+TextureHandle TextureStore::openFile(const std::string& path, std::string& error) {
     error.clear();
     const std::string why = checkInputFile(path, kMaxTextureFileBytes);
     if (!why.empty()) {
@@ -221,6 +227,7 @@ TextureHandle TextureStore::open(const std::string& path, std::string& error) {
     if (!error.empty()) return {};
 
     TextureHandle handle;
+    handle.file = stamp;
     handle.srgb = isSrgbEncoded(spec.format);
     handle.channels = spec.nchannels;
     const OIIO::ustring name(path);

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <string>
 
+#include "core/input_file.h"
 #include "core/math.h"
 
 namespace rs {
@@ -31,6 +32,9 @@ struct TextureHandle {
     const TexelSource* texels = nullptr;
     bool srgb = false;  ///< 8- or 16-bit integer texels, decoded from sRGB to linear.
     int channels = 0;   ///< Channels in the file (1 grey, 2 grey + alpha, 3 RGB, 4 RGBA).
+    /// The file's stamp when it was opened, or when it failed to open: a stamp on disk that
+    /// differs says the file was saved again since (from a paint program, say).
+    FileStamp file;
     explicit operator bool() const { return handle != nullptr; }
 };
 
@@ -89,6 +93,8 @@ public:
 
 private:
     TextureStore();
+    /// open() but for the stamp of a file that fails.
+    TextureHandle openFile(const std::string& path, std::string& error);
     struct Impl;
     Impl* impl_;  // Never freed: lookups may run from threads that outlive static destructors.
 };
