@@ -2,7 +2,9 @@
 // undo step each way and Colour brings the flat colour back; the checker's and the texture's
 // fields reach the document; the texture's thumbnail, or the error of a file that cannot be
 // read; an image dropped on an object gives it the texture in one undo step without changing
-// the objects that shared its material; the texture cache preference reaches the store.
+// the objects that shared its material; the texture cache preference reaches the store; an
+// image saved again on disk shows after File > Reload Images (or the window's return to the
+// front), in the viewport and the thumbnail, without an undo step.
 #include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -23,7 +25,9 @@
 #include <QUrl>
 #include <QtTest>
 #include <cmath>
+#include <filesystem>
 
+#include "display/display_frame.h"
 #include "gui_test_support.h"
 #include "image/image_io.h"
 #include "io/scene_io.h"
@@ -49,6 +53,17 @@ bool writeRedGreen(const QString& path) {
     return image.save(path, "PNG");
 }
 
+/// A 4 x 4 PNG of one colour, dated `age` seconds from now (each version its own stamp).
+bool writeFlat(const QString& path, const QColor& c, int age) {
+    QImage image(4, 4, QImage::Format_RGB888);
+    image.fill(c);
+    if (!image.save(path, "PNG")) return false;
+    namespace fs = std::filesystem;
+    const fs::path file = path.toStdString();
+    fs::last_write_time(file, fs::file_time_type::clock::now() + std::chrono::seconds(age));
+    return true;
+}
+
 }  // namespace
 
 class TexturesTest : public QObject {
@@ -66,6 +81,7 @@ private Q_SLOTS:
     void imageDroppedOnASharedMaterial_MakesItsOwn_InOneUndoStep();
     void imageDroppedOnAnOwnMaterial_TexturesIt_AndEmptySpaceSaysWhere();
     void textureCachePreference_SetsTheStore_AndIsKept();
+    void imageSavedAgain_ReloadImagesShowsIt_WithoutAnUndoStep();
 
 private:
     const SceneDocument& doc() { return window_->editor()->document(); }
@@ -79,6 +95,7 @@ private:
     void chooseImage(const QString& path);
     /// Drops a file URL of `path` on the main window at viewport point `at`.
     void dropFile(const QString& path, const QPoint& at);
+    QPoint framePixelOf(const std::string& name);
     QPoint viewportPointOf(const std::string& name);
 
     std::unique_ptr<MainWindow> window_;
@@ -105,6 +122,11 @@ void TexturesTest::clickObject(const std::string& name) {
 }
 
 QPoint TexturesTest::viewportPointOf(const std::string& name) {
+    const QPoint p = framePixelOf(name);
+    return p.x() < 0 ? p : window_->viewport()->widgetPointOf(p.x(), p.y());
+}
+
+QPoint TexturesTest::framePixelOf(const std::string& name) {
     // A pixel showing the object (its pixels' centre may show another one in front of it).
     const DisplayFrame& f = *window_->viewport()->frame();
     const ObjectId id = idOf(*window_, name);
@@ -120,7 +142,7 @@ QPoint TexturesTest::viewportPointOf(const std::string& name) {
             const int d = (x - cx) * (x - cx) + (y - cy) * (y - cy);
             if (best < 0 || d < best) best = d, bx = x, by = y;
         }
-    return best < 0 ? QPoint(-1, -1) : window_->viewport()->widgetPointOf(bx, by);
+    return best < 0 ? QPoint(-1, -1) : QPoint(bx, by);
 }
 
 QComboBox* TexturesTest::modeCombo() {
@@ -397,6 +419,45 @@ void TexturesTest::textureCachePreference_SetsTheStore_AndIsKept() {
     TextureStore::shared().setCacheMegabytes(100.0f);
     QCOMPARE(loadPreferences().textureCacheMegabytes, 512);
     QCOMPARE(TextureStore::shared().cacheMegabytes(), 512.0f);
+}
+
+void TexturesTest::imageSavedAgain_ReloadImagesShowsIt_WithoutAnUndoStep() {
+    const QString path = dir_.filePath(QStringLiteral("paint.png"));
+    QVERIFY(writeFlat(path, Qt::red, -20));
+    clickObject("chalk ball");
+    stepMode(Qt::Key_Down);
+    chooseImage(path);
+    const int steps = undoCount();
+    // The ball's colour in the viewport's frame.
+    const QPoint at = framePixelOf("chalk ball");
+    QVERIFY(at.x() >= 0);
+    const auto shown = [&] {
+        settle(*window_);
+        return toneMappedImage(*window_->viewport()->frame()).pixelColor(at);
+    };
+    const QColor red = shown();
+    QVERIFY2(red.red() > 2 * red.green(), qPrintable(red.name()));
+    auto* thumb = window_->propertyPanel()->findChild<QLabel*>(QStringLiteral("textureThumbnail"));
+    QVERIFY(thumb);
+    QCOMPARE(thumb->pixmap().toImage().pixelColor(1, 1), QColor(Qt::red));
+
+    // Saved again in green, as a paint program would while the designer is open.
+    QVERIFY(writeFlat(path, Qt::green, -10));
+    auto* reload = window_->findChild<QAction*>(QStringLiteral("reloadImages"));
+    QVERIFY(reload);
+    reload->trigger();
+    const QColor green = shown();
+    QVERIFY2(green.green() > 2 * green.red(), qPrintable(green.name()));
+    // Only what sees the ball was traced again.
+    const DisplayFrame& f = *window_->viewport()->frame();
+    const std::size_t marked = renderSession(*window_).stats().lastDirtyPixels;
+    QVERIFY2(marked > 0 && marked < std::size_t(f.width) * std::size_t(f.height) / 3,
+             qPrintable(QString::number(marked)));
+    thumb = window_->propertyPanel()->findChild<QLabel*>(QStringLiteral("textureThumbnail"));
+    QVERIFY(thumb);
+    QCOMPARE(thumb->pixmap().toImage().pixelColor(1, 1), QColor(Qt::green));
+    QCOMPARE(undoCount(), steps);
+    QVERIFY(window_->editor()->undoStack()->canUndo());
 }
 
 QTEST_MAIN(TexturesTest)

@@ -57,6 +57,13 @@ void SceneEditor::setFilePath(const QString& path) {
     Q_EMIT filePathChanged(path);
 }
 
+void SceneEditor::reloadImages() {
+    bool names = doc_.environment.present();
+    for (const Material& m : doc_.materials)
+        names = names || std::holds_alternative<ImageTexture>(m.pattern);
+    if (names) Q_EMIT imagesReloaded();
+}
+
 ObjectId SceneEditor::selection() const {
     if (cameraSelected_) return kCameraSelection;
     return selected_.empty() ? kNoObject : selected_.back();

@@ -70,6 +70,13 @@ public:
     /// Pseudo id of the camera in selections (never a real document id in practice).
     static constexpr ObjectId kCameraSelection = 0xFFFFFFFFu;
 
+    /// The image files the document names (textures, the environment) may have been saved
+    /// again on disk: when it names any, imagesReloaded() asks whoever shows them to look
+    /// again (the viewport's session, thumbnails, material previews). The document does not
+    /// change; no undo step. The window calls it when it comes back to the front (from a
+    /// paint program, say) and from File > Reload Images.
+    void reloadImages();
+
     /// Serial used by commands to decide whether they may merge.
     int mergeSerial() const { return mergeSerial_; }
 
@@ -80,6 +87,8 @@ Q_SIGNALS:
     void documentReset();
     void selectionChanged(rs::ObjectId id);
     void filePathChanged(const QString& path);
+    /// reloadImages(): image files the document names may have changed on disk.
+    void imagesReloaded();
 
 private:
     SceneDocument doc_;

@@ -81,6 +81,8 @@ MaterialList::MaterialList(SceneEditor* editor, QWidget* parent)
         updateButtons();
     });
     connect(editor_, &SceneEditor::documentChanged, this, &MaterialList::onDocumentChanged);
+    // A preview's key has its texture's stamp: an image saved again is a new picture.
+    connect(editor_, &SceneEditor::imagesReloaded, this, [this] { refreshPreviews(true); });
     connect(previews_, &MaterialPreviews::previewReady, this, &MaterialList::onPreviewReady);
     // Queued: the view leaves its editing state after the delegate has signalled.
     connect(

@@ -48,6 +48,8 @@ PropertyPanel::PropertyPanel(SceneEditor* editor, QWidget* parent)
     setMinimumWidth(kMinimumWidth);
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     connect(editor_, &SceneEditor::documentChanged, this, &PropertyPanel::onDocumentChanged);
+    // The texture's thumbnail is read again when its file changed.
+    connect(editor_, &SceneEditor::imagesReloaded, this, [this] { refresh(); });
     connect(editor_, &SceneEditor::selectionChanged, this, &PropertyPanel::rebuild);
     rebuild();
 }

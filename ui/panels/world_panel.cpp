@@ -75,6 +75,7 @@ WorldPanel::WorldPanel(SceneEditor* editor, QWidget* parent) : QWidget(parent), 
     layout->addStretch(1);
 
     connect(editor_, &SceneEditor::documentChanged, this, &WorldPanel::refresh);
+    connect(editor_, &SceneEditor::imagesReloaded, this, &WorldPanel::refresh);
     connect(editor_, &SceneEditor::documentReset, this, &WorldPanel::refresh);
     refresh();
 }

@@ -71,6 +71,11 @@ MainWindow::MainWindow(QWidget* parent)
     connect(editor_->undoStack(), &QUndoStack::cleanChanged, this,
             [this](bool clean) { setWindowModified(!clean); });
     connect(editor_, &SceneEditor::filePathChanged, this, &MainWindow::updateTitle);
+    // Back from another program (a paint program, say): show the images saved meanwhile.
+    connect(qApp, &QGuiApplication::applicationStateChanged, editor_,
+            [this](Qt::ApplicationState state) {
+                if (state == Qt::ApplicationActive) editor_->reloadImages();
+            });
     connect(session_.get(), &SessionController::passFinished, this, [this](const PassInfo& info) {
         passStatus_->showPass(info);
         if (const auto snapshot = session_->session().snapshot())
@@ -227,6 +232,8 @@ void MainWindow::createFileMenu() {
                     &MainWindow::importMeshDialog);
     file->addAction(tr("&Export Image..."), QKeySequence(Qt::CTRL | Qt::Key_E), this,
                     &MainWindow::exportImageDialog);
+    file->addAction(tr("Re&load Images"), editor_, &SceneEditor::reloadImages)
+        ->setObjectName(QStringLiteral("reloadImages"));
     file->addSeparator();
     file->addAction(tr("&Quit"), this, &QWidget::close)
         ->setShortcuts(standardOr(QKeySequence::Quit, QKeySequence(Qt::CTRL | Qt::Key_Q)));

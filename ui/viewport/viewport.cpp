@@ -46,6 +46,8 @@ Viewport::Viewport(SceneEditor* editor, SessionController* session, QWidget* par
     connect(editor_, &SceneEditor::selectionChanged, this, &Viewport::redraw);
     connect(editor_, &SceneEditor::documentReset, this, &Viewport::onDocumentReset);
     connect(editor_, &SceneEditor::documentChanged, this, &Viewport::onDocumentChanged);
+    // The same document again: the session re-traces what shows an image saved again since.
+    connect(editor_, &SceneEditor::imagesReloaded, this, &Viewport::postView);
     connect(editor_->undoStack(), &QUndoStack::indexChanged, this, &Viewport::onUndoIndexChanged);
 }
 
