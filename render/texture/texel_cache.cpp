@@ -20,7 +20,7 @@ constexpr std::size_t kTableSize = std::size_t(1) << kTableBits;
 constexpr float kMagnifyingHalfAxis = 0.5f;
 
 struct Block {
-    const TexelSource* source = nullptr;
+    std::uint64_t source = 0;  ///< Its source's serial (0: none; serials start at 1).
     int level = -1, bx = -1, by = -1;
     bool ok = false;
     float texels[kBlock * kBlock * 4];  // RGB and a spare lane: one 16-byte load a texel
@@ -33,14 +33,15 @@ public:
     /// when the source could not deliver it.
     const Block* find(const TexelSource& source, int level, int x, int y) {
         const int bx = x >> kBlockBits, by = y >> kBlockBits;
-        const std::uintptr_t key = reinterpret_cast<std::uintptr_t>(&source);
-        const std::size_t slot = (std::size_t(bx) * 0x9E3779B1u ^ std::size_t(by) * 0x85EBCA77u ^
-                                  std::size_t(level) * 0xC2B2AE3Du ^ (key >> 4) * 0x27D4EB2Fu) >>
-                                     (32 - kTableBits) &
-                                 (kTableSize - 1);
+        const std::uint64_t key = source.serial;
+        const std::size_t slot =
+            (std::size_t(bx) * 0x9E3779B1u ^ std::size_t(by) * 0x85EBCA77u ^
+             std::size_t(level) * 0xC2B2AE3Du ^ std::size_t(key) * 0x27D4EB2Fu) >>
+                (32 - kTableBits) &
+            (kTableSize - 1);
         Block& b = blocks_[slot];
-        if (b.source != &source || b.level != level || b.bx != bx || b.by != by) {
-            b.source = &source;
+        if (b.source != key || b.level != level || b.bx != bx || b.by != by) {
+            b.source = key;
             b.level = level;
             b.bx = bx;
             b.by = by;
@@ -71,6 +72,7 @@ private:
 
 std::atomic<std::size_t> residentBudget{std::size_t(128) << 20};
 std::atomic<std::size_t> residentBytes{0};
+std::atomic<std::uint64_t> lastSerial{0};
 
 BlockTable& table() {
     thread_local BlockTable blocks;
@@ -363,6 +365,24 @@ void setResidentTexelBudget(std::size_t bytes) {
     residentBudget.store(bytes);
 }
 
+std::size_t residentTexelBytes() {
+    return residentBytes.load();
+}
+
+TexelSource::TexelSource() : serial(++lastSerial) {}
+
+TexelSource::~TexelSource() {
+    for (int level = 0; level < kMaxMipLevels; ++level)
+        if (whole_[std::size_t(level)]) residentBytes.fetch_sub(wholeBytes(level));
+}
+
+std::size_t TexelSource::wholeBytes(int level) const {
+    const std::size_t w = std::size_t(width[std::size_t(level)]);
+    const std::size_t h = std::size_t(height[std::size_t(level)]);
+    const std::size_t texelBytes = unitRange ? 4 * sizeof(std::uint16_t) : 4 * sizeof(float);
+    return (w + 1) * h * texelBytes;  // each row's first texel twice
+}
+
 const void* TexelSource::decideResident(int level) const {
     auto& state = state_[std::size_t(level)];
     std::lock_guard lock(mutex_);
@@ -371,7 +391,7 @@ const void* TexelSource::decideResident(int level) const {
         const std::size_t h = std::size_t(height[std::size_t(level)]);
         const std::size_t texels = w * h;
         const std::size_t texelBytes = unitRange ? 4 * sizeof(std::uint16_t) : 4 * sizeof(float);
-        const std::size_t bytes = (w + 1) * h * texelBytes;  // each row's first texel twice
+        const std::size_t bytes = wholeBytes(level);
         std::size_t spent = residentBytes.load();
         bool granted = false;
         while (texels <= kMaxResidentTexels && spent + bytes <= residentBudget.load() &&

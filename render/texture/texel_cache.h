@@ -4,6 +4,7 @@
 #include <array>
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 
@@ -18,15 +19,22 @@ inline constexpr int kMaxAnisotropy = 8;
 
 /// Where the texels come from: one open texture's MIP pyramid (level 0 the full image, each
 /// further level half the size). Immutable after construction; fetch() is thread-safe.
+/// Destroying it gives its whole levels' bytes back to the resident budget.
 class TexelSource {
 public:
-    virtual ~TexelSource() = default;
+    TexelSource();
+    virtual ~TexelSource();
+    TexelSource(const TexelSource&) = delete;
+    TexelSource& operator=(const TexelSource&) = delete;
     /// Copies the texels [x0, x1) x [y0, y1) of `level` into `out` as linear RGB floats,
     /// row by row, the top row first. False when they cannot be read.
     virtual bool fetch(int level, int x0, int x1, int y0, int y1, float* out) const = 0;
 
     int levels = 0;
     std::array<int, kMaxMipLevels> width{}, height{};
+    /// This source's number, never given to another in the process: what the threads'
+    /// blocks are keyed by (an address may be reused once a source is freed).
+    const std::uint64_t serial;
 
     /// Every channel of every texel lies in [0, 1] and 16-bit fractions hold it as well as
     /// the file does (textures decoded from 8-bit sRGB): whole levels are then kept as 16-bit
@@ -48,6 +56,8 @@ public:
 private:
     /// The first call for `level`: fetches it whole if it fits, under the lock.
     const void* decideResident(int level) const;
+    /// What level `level` takes kept whole.
+    std::size_t wholeBytes(int level) const;
 
     enum : unsigned char { kUntried, kResident, kRefused };
     mutable std::array<std::atomic<unsigned char>, kMaxMipLevels> state_{};
@@ -60,6 +70,8 @@ inline constexpr std::size_t kMaxResidentTexels = std::size_t(1) << 20;
 /// Sets how many bytes all whole levels together may take (default 128 MiB); levels already
 /// kept stay. TextureStore keeps it at half its cache's bound.
 void setResidentTexelBudget(std::size_t bytes);
+/// How many bytes all whole levels of the sources alive now take.
+std::size_t residentTexelBytes();
 
 /// The texture filter every image lookup goes through: trilinear (bilinear within the two
 /// MIP levels whose texels are nearest half the footprint's width, blended by the fraction),
@@ -78,7 +90,7 @@ void setResidentTexelBudget(std::size_t bytes);
 /// lookups mostly read: a 4096^2 texture seen across 300 pixels is read at its 512^2 and
 /// 256^2 levels). Larger levels come in blocks of 16 x 16 that each thread keeps in its own
 /// direct-mapped table of 1024 blocks (4 MiB a thread). Blocks are keyed by the source's
-/// address and sources are never freed, so a block is never mistaken for another texture's.
+/// serial, so a block is never mistaken for another texture's, nor for a freed source's.
 ///
 /// Returns false (and leaves `out` alone) when a block could not be fetched.
 bool filteredLookup(const TexelSource& source, float s, float t, float dsdx, float dtdx, float dsdy,

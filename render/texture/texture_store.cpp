@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <deque>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -118,9 +117,6 @@ struct TextureStore::Impl {
     /// (every drag step) asks again for the same files, and needs no header read for them.
     std::map<std::string, std::pair<Registration, TextureHandle>> opened;
 
-    /// Every pyramid handed out (a handle may outlive any snapshot that holds it).
-    std::deque<std::unique_ptr<OiioTexels>> pyramids;
-
     TextureSystem::Perthread* perthread() const { return perthreadOf(system); }
 
     /// Registers the file with the reader it needs the first time, and afresh when it has
@@ -145,8 +141,9 @@ struct TextureStore::Impl {
 
     /// The MIP pyramid of the file registered as `name`, or null when its levels cannot be
     /// read. Call with registerMutex held.
-    const TexelSource* pyramid(const OIIO::ustring& name, TextureSystem::TextureHandle* handle,
-                               int channels, bool eightBitSrgb) {
+    std::shared_ptr<const TexelSource> pyramid(const OIIO::ustring& name,
+                                               TextureSystem::TextureHandle* handle, int channels,
+                                               bool eightBitSrgb) {
         int levels = 0;
         if (!cache->get_image_info(name, 0, 0, OIIO::ustring("miplevels"), OIIO::TypeInt,
                                    &levels) ||
@@ -154,7 +151,7 @@ struct TextureStore::Impl {
             (void)cache->geterror();
             return nullptr;
         }
-        auto texels = std::make_unique<OiioTexels>(system, handle, channels);
+        auto texels = std::make_shared<OiioTexels>(system, handle, channels);
         texels->levels = std::min(levels, kMaxMipLevels);
         // 8-bit sRGB decoded to linear: every channel in [0, 1], and 16-bit linear fractions
         // are finer than the file's steps (its darkest, 1/255 decoded, is 20 of them).
@@ -168,8 +165,7 @@ struct TextureStore::Impl {
             texels->width[std::size_t(level)] = spec->width;
             texels->height[std::size_t(level)] = spec->height;
         }
-        pyramids.push_back(std::move(texels));
-        return pyramids.back().get();
+        return texels;
     }
 };
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "core/input_file.h"
@@ -24,12 +25,13 @@ inline constexpr std::int64_t kMaxAutoMipPixels = std::int64_t(4096) * 4096;
 /// The texture cache's default bound: 256 MB of decoded tiles (OpenImageIO's max_memory_MB).
 inline constexpr float kDefaultTextureCacheMegabytes = 256.0f;
 
-/// An open texture: cheap to copy, valid for the life of the process.
+/// An open texture: cheap to copy. Its texels live as long as a handle to them does.
 struct TextureHandle {
     void* handle = nullptr;  ///< OpenImageIO's TextureSystem::TextureHandle.
     /// The file's MIP pyramid as the lookups read it (texel_cache.h); one per version of the
-    /// file opened, never freed.
-    const TexelSource* texels = nullptr;
+    /// file opened, freed with the last handle to it (the snapshots that show that version,
+    /// and the store while it is the file's latest).
+    std::shared_ptr<const TexelSource> texels;
     bool srgb = false;  ///< 8- or 16-bit integer texels, decoded from sRGB to linear.
     int channels = 0;   ///< Channels in the file (1 grey, 2 grey + alpha, 3 RGB, 4 RGBA).
     /// The file's stamp when it was opened, or when it failed to open: a stamp on disk that

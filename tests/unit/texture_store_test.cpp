@@ -15,6 +15,8 @@
 #include <thread>
 #include <vector>
 
+#include "texture/texel_cache.h"
+
 namespace rs {
 namespace {
 
@@ -273,6 +275,37 @@ TEST_F(TextureStoreTest, FileChangedOnDiskIsReadAfresh) {
     fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(5));
     const TextureHandle second = open(file);
     expectColor(at(second, 0.5f, 0.5f), 0.0, 0.0, 1.0, 1e-3, 1e-5);
+}
+
+TEST_F(TextureStoreTest, FileSavedAgainAndAgain_KeepsOnlyTheVersionsStillHeld) {
+    // A paint program saving the same texture over and over: each version's whole levels go
+    // back to the resident budget once no handle holds that version, so the tenth version
+    // is kept whole as the first was (lookups stay on the fast path).
+    std::vector<std::uint8_t> texels(64 * 64 * 3);
+    const auto save = [&](int version) {
+        for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = std::uint8_t(i * 7 + version);
+        const std::string file = write("painted.png", 64, 64, 3, TypeDesc::UINT8, texels.data());
+        fs::last_write_time(file, fs::file_time_type::clock::now() + std::chrono::seconds(version));
+        return file;
+    };
+    const std::size_t before = residentTexelBytes();
+    std::size_t one = 0;
+    {
+        const TextureHandle first = open(save(1));
+        at(first, 0.5f, 0.5f);  // level 0 kept whole
+        one = residentTexelBytes() - before;
+        ASSERT_GT(one, 64u * 64u * 4u);
+        TextureHandle held = first;
+        for (int version = 2; version <= 10; ++version) {
+            const TextureHandle next = open(save(version));
+            ASSERT_NE(next.texels, held.texels) << version;
+            at(next, 0.5f, 0.5f);
+            held = next;  // the version before is held by nobody now but `first`'s
+        }
+        // `first` (still held) and the tenth, which the store holds as the file's latest.
+        EXPECT_EQ(residentTexelBytes() - before, 2 * one);
+    }
+    EXPECT_EQ(residentTexelBytes() - before, one);
 }
 
 TEST_F(TextureStoreTest, LookupsFromManyThreadsAgreeWithOneThread) {
