@@ -230,8 +230,8 @@ bool pixelMayChange(const MarkContext& c, const TileTests& tests, int x, int y, 
         for (ObjectId id : c.edit.retinted)
             if (c.frame.id()[i] == id) return true;
         // The id is the centre sample's; a supersampled pixel also averages samples that
-        // may have hit a retinted object.
-        if (c.frame.sampleCount()[i] > 0) return true;
+        // may have hit a retinted object: one whose samples hit some other object.
+        if (c.frame.sampleCount()[i] > 0 && (c.frame.flags()[i] & kSampleOtherObject)) return true;
     }
     if (tests.tree && (c.frame.flags()[i] & kTouchedSpecular)) {
         // A retinted object may be seen in a mirror: then any specular pixel.

@@ -200,10 +200,12 @@ bool supersampleTile(const TileInput& in, TileResult& out) {
             const std::size_t q = std::size_t(j);
             s.sum += samples.color[q];
             const PrimaryInfo& info = samples.info[q];
-            if (info.id != kNoObject)
+            if (info.id != kNoObject) {
                 s.hitBound = growBound(s.hitBound, samples.origin[q] + samples.dir[q] * info.depth);
-            else
+                if (info.id != f.id()[i]) s.flags |= kSampleOtherObject;
+            } else {
                 s.flags |= kSampleMissed;
+            }
             if (info.touchedSpecular) s.flags |= kTouchedSpecular;
             s.cost += samples.rays[q];
             // The pixel's segments of all its new samples, as one list of kSegmentsPerPixel.

@@ -119,9 +119,10 @@ TEST(FrugalLooks, TurningANarrowSpot_RetracesOnlyWhatItsConeReaches_AndEndsExact
     }
 }
 
-TEST(FrugalLooks, ACheckerOnTheBallsMaterial_RetracesTheBallAndItsReflection_AndEndsExact) {
+void checkerOnTheBall(int supersampling) {
     SceneDocument doc = openAir();
     doc.environment = Environment{};
+    doc.render.supersampling = supersampling;
     test::addMaterial(doc, "ball paint", Color(0.8f, 0.3f, 0.2f), 1.0f);
     doc.objects[1].material = "ball paint";
     RenderSession session(2);
@@ -139,6 +140,16 @@ TEST(FrugalLooks, ACheckerOnTheBallsMaterial_RetracesTheBallAndItsReflection_And
     EXPECT_LT(marked, total / 3);
     ASSERT_TRUE(session.waitUntilComplete(60s));
     EXPECT_LE(test::maxDiffToFullRender(session, doc), 1e-5f);
+}
+
+TEST(FrugalLooks, ACheckerOnTheBallsMaterial_RetracesTheBallAndItsReflection_AndEndsExact) {
+    checkerOnTheBall(1);
+}
+
+TEST(FrugalLooks, ACheckerOnTheBallsMaterial_Supersampled_RetracesOnlyPixelsWhoseSamplesSeeIt) {
+    // A supersampled pixel is re-traced only when its centre or one of its samples saw the
+    // ball (or it touched a mirror), not because it is supersampled.
+    checkerOnTheBall(4);
 }
 
 /// A 4 x 4 image of one colour, written over `path` (PNG: 8-bit sRGB; HDR: float), and

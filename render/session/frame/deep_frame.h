@@ -33,6 +33,8 @@ enum PixelFlag : uint8_t {
     kTracedLastUpdate = 4,  ///< Re-traced by the latest edit (debug overlay).
     kTreeUnknown = 8,       ///< Its secondary segments were not all kept: always re-trace.
     kSampleMissed = 16,     ///< A supersample's camera ray hit nothing (saw the environment).
+    /// A supersample's camera ray hit an object other than the one at the pixel's centre.
+    kSampleOtherObject = 32,
 };
 
 /// The flags of a pixel an edit marks stale: its deferred records no longer hold, and the
