@@ -1,7 +1,8 @@
 // Shadows through glass (scenes/FORMAT.md "Shadows"): a shadow ray the engine reports
 // blocked walks on by closest hits, keeping transparency x colour at each transparent
 // surface, and what it kept is added to the light's term. Also the one place a surface's colour
-// at a point is decided (its checker or image, else its flat colour).
+// at a point is decided (its checker or image, else its flat colour); patternLooks gathers a
+// level's checkered points to run their filters together, to the same bits.
 #include "integrator/trace_kernel.h"
 #include "integrator/trace_workspace.h"
 

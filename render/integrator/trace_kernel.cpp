@@ -246,11 +246,27 @@ template <bool AsDiffuse>
                                                              const HitBatch& hits) const {
     // Patterned points: the pattern's colour there, filtered over the cone's footprint,
     // in place of the material's colour in every term (scenes/FORMAT.md "color"); every
-    // point's ambient terms, which the local sums below then take point by point.
+    // point's ambient terms, which the local sums below then take point by point. Checkered
+    // points are gathered and their box filters run several at a time (CheckerBatch), each
+    // giving the colour surfaceColor would.
     const ShadingPoints& sp = pts.shading;
     const CompiledMaterial* materials = scene_.materials().data();
     const uint32_t *pointMaterial = pts.material.data(), *pointRay = pts.ray.data();
     const Color ambient = scene_.settings().ambient;
+    const auto setLook = [&](std::size_t j, const CompiledMaterial& m, const Color& c) {
+        const SurfaceLook look = materialLook(m, c, ambient);
+        pts.surface.r[j] = look.terms.r;
+        pts.surface.g[j] = look.terms.g;
+        pts.surface.b[j] = look.terms.b;
+        pts.ambient[j] = look.ambient;
+        if (AsDiffuse) {
+            const SurfaceLook lambert = lambertLook(c, ambient);
+            pts.lambert.set(j, lambert.terms);
+            pts.lambertAmbient[j] = lambert.ambient;
+        }
+    };
+    CheckerBatch& checkers = pts.checkers;
+    checkers.reset(sp.count);
     for (std::size_t j = 0, count = sp.count; j < count; ++j) {
         const uint32_t mi = pointMaterial[j];
         const CompiledMaterial& m = materials[mi];
@@ -263,17 +279,21 @@ template <bool AsDiffuse>
         const Vec3 p(sp.px[j], sp.py[j], sp.pz[j]), d(level.dx[i], level.dy[i], level.dz[i]);
         const Vec3 normal(hits.nx[i], hits.ny[i], hits.nz[i]);
         const float width = level.cone[i] + hits.t[i] * spread_;
-        const Color c = surfaceColor(m, hits.slot[i], p, normal, footprintAt(d, normal, width));
-        const SurfaceLook look = materialLook(m, c, ambient);
-        pts.surface.r[j] = look.terms.r;
-        pts.surface.g[j] = look.terms.g;
-        pts.surface.b[j] = look.terms.b;
-        pts.ambient[j] = look.ambient;
-        if (AsDiffuse) {
-            const SurfaceLook lambert = lambertLook(c, ambient);
-            pts.lambert.set(j, lambert.terms);
-            pts.lambertAmbient[j] = lambert.ambient;
+        const Footprint footprint = footprintAt(d, normal, width);
+        if (m.pattern.kind == MaterialPattern::Kind::Checker) {
+            checkers.add(uint32_t(j),
+                         checkerBoxAt(scene_.patterns().at(hits.slot[i]), p, footprint),
+                         m.pattern.checkerScale);
+            continue;
         }
+        setLook(j, m, surfaceColor(m, hits.slot[i], p, normal, footprint));
+    }
+    if (checkers.size() == 0) return;
+    const float* odd = checkers.evaluate();
+    for (std::size_t k = 0, n = checkers.size(); k < n; ++k) {
+        const std::size_t j = checkers.point(k);
+        const CompiledMaterial& m = materials[pointMaterial[j]];
+        setLook(j, m, checkerColor(m.pattern, odd[k]));
     }
 }
 

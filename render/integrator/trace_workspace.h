@@ -10,6 +10,7 @@
 #include "integrator/centre_shadows.h"
 #include "integrator/light_sampling.h"
 #include "integrator/trace_level.h"
+#include "snapshot/surface_patterns.h"
 
 namespace rs {
 
@@ -26,6 +27,7 @@ struct LevelPoints {
     ScratchVector<float> asDiffuse;  ///< Mirror/glass share shown as Lambert while moving.
     ScratchVector<uint32_t> ray;     ///< The level's ray whose hit each point is.
     ScratchVector<uint8_t> inside;   ///< Per ray of the level: whether its normal was turned.
+    CheckerBatch checkers;           ///< Checkered points, while their looks are decided.
 
     /// Room for n points; none written yet (count() is 0 until finish()). `patterns`: room
     /// for the per-point ambient terms too.

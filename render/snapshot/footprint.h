@@ -18,7 +18,7 @@ struct Footprint {
 /// The footprint of a cone of full width `width` (world units) arriving along unit `dir` at
 /// a surface with unit normal `n`: stretched by 1 / |cos| along the direction's projection on
 /// the surface, at most 100 times (grazing angles).
-inline Footprint footprintAt(const Vec3& dir, const Vec3& n, float width) {
+[[gnu::always_inline]] inline Footprint footprintAt(const Vec3& dir, const Vec3& n, float width) {
     if (!(width > 0.0f)) return {};
     const float half = 0.5f * width;
     const float cosine = std::abs(glm::dot(dir, n));

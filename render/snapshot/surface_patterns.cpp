@@ -37,11 +37,6 @@ std::shared_ptr<const MeshAccel> uvAccelFor(const std::shared_ptr<const MeshData
     return accel;
 }
 
-/// Half-widths along the object's axes of the box that holds the footprint's ellipse.
-Vec3 boxHalfWidths(const Vec3& a1, const Vec3& a2) {
-    return glm::sqrt(a1 * a1 + a2 * a2);
-}
-
 /// The file's first UV channel at object-space point `po` (world normal `n`), interpolated
 /// over the triangle under it; (0, 0) with no gradient when the mesh has no texture
 /// coordinates or no triangle lies there.
@@ -103,16 +98,29 @@ const PatternSurface& SurfacePatterns::at(uint32_t slot) const {
     return (slot & kPlaneSlot) ? planes_[slot & ~kPlaneSlot] : primitives_[slot];
 }
 
+void CheckerBatch::reset(std::size_t capacity) {
+    count_ = 0;
+    if (point_.size() >= capacity) return;
+    for (auto* v : {&px_, &py_, &pz_, &hx_, &hy_, &hz_, &scale_, &odd_}) v->resize(capacity);
+    point_.resize(capacity);
+}
+
+const float* CheckerBatch::evaluate() {
+    checkerOddFractions(
+        count_,
+        {px_.data(), py_.data(), pz_.data(), hx_.data(), hy_.data(), hz_.data(), scale_.data()},
+        odd_.data());
+    return odd_.data();
+}
+
 Color patternColor(const MaterialPattern& pattern, const PatternSurface& surface, const Vec3& p,
                    const Vec3& n, const Footprint& footprint) {
-    const bool world = surface.shape == PatternSurface::Shape::Plane;
-    const Vec3 po = world ? p : Vec3(surface.objectFromWorld * glm::vec4(p, 1.0f));
-    const Vec3 a1 = world ? footprint.a1 : surface.dirToObject * footprint.a1;
-    const Vec3 a2 = world ? footprint.a2 : surface.dirToObject * footprint.a2;
     if (pattern.kind == MaterialPattern::Kind::Checker) {
-        const float odd = checkerOddFraction(po, boxHalfWidths(a1, a2), pattern.checkerScale);
-        return pattern.even + (pattern.odd - pattern.even) * odd;
+        const CheckerBox box = checkerBoxAt(surface, p, footprint);
+        return checkerColor(pattern,
+                            checkerOddFraction(box.p, box.halfWidth, pattern.checkerScale));
     }
+    const auto [po, a1, a2] = inObject(surface, p, footprint);
     ShapeUV uv{0.0f, 0.0f, Vec3(0.0f), Vec3(0.0f)};
     switch (surface.shape) {
         case PatternSurface::Shape::Sphere:

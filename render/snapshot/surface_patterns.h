@@ -9,6 +9,7 @@
 #include "accel/mesh_accel.h"
 #include "accel/ray_engine.h"
 #include "core/math.h"
+#include "core/scratch_arena.h"
 #include "scene/document.h"
 #include "snapshot/footprint.h"
 #include "texture/shape_uv.h"
@@ -69,5 +70,57 @@ private:
 /// mip-mapped lookup. A missing image shows the loud "missing" pattern.
 Color patternColor(const MaterialPattern& pattern, const PatternSurface& surface, const Vec3& p,
                    const Vec3& n, const Footprint& footprint);
+
+/// A hit point and its footprint's half-axes in the surface's own space.
+struct InObject {
+    Vec3 p, a1, a2;
+};
+[[gnu::always_inline]] inline InObject inObject(const PatternSurface& surface, const Vec3& p,
+                                                const Footprint& footprint) {
+    if (surface.shape == PatternSurface::Shape::Plane) return {p, footprint.a1, footprint.a2};
+    return {Vec3(surface.objectFromWorld * glm::vec4(p, 1.0f)), surface.dirToObject * footprint.a1,
+            surface.dirToObject * footprint.a2};
+}
+
+/// What the checker filters at a hit: the point in the object's own space and the half-widths
+/// (object units) of the axis-aligned box that holds the footprint's ellipse there.
+struct CheckerBox {
+    Vec3 p, halfWidth;
+};
+[[gnu::always_inline]] inline CheckerBox checkerBoxAt(const PatternSurface& surface, const Vec3& p,
+                                                      const Footprint& footprint) {
+    const InObject o = inObject(surface, p, footprint);
+    return {o.p, glm::sqrt(o.a1 * o.a1 + o.a2 * o.a2)};
+}
+
+/// A checker's colour where a fraction `odd` of the box lies on odd cells.
+inline Color checkerColor(const MaterialPattern& pattern, float odd) {
+    return pattern.even + (pattern.odd - pattern.even) * odd;
+}
+
+/// A level's checkered points gathered so that their box filters run several at a time
+/// (checkerOddFractions): each point's colour is the one patternColor gives it alone. Per-thread
+/// scratch (ScratchVector): keep it in the thread's workspace.
+class CheckerBatch {
+public:
+    /// Empty, with room for `capacity` points.
+    void reset(std::size_t capacity);
+    /// Adds shading point `point`, whose checker has cells of side `scale`.
+    void add(uint32_t point, const CheckerBox& box, float scale) {
+        const std::size_t k = count_++;
+        px_[k] = box.p.x, py_[k] = box.p.y, pz_[k] = box.p.z;
+        hx_[k] = box.halfWidth.x, hy_[k] = box.halfWidth.y, hz_[k] = box.halfWidth.z;
+        scale_[k] = scale, point_[k] = point;
+    }
+    std::size_t size() const { return count_; }
+    uint32_t point(std::size_t k) const { return point_[k]; }
+    /// The odd fraction of each point added, in the order added.
+    const float* evaluate();
+
+private:
+    std::size_t count_ = 0;
+    ScratchVector<float> px_, py_, pz_, hx_, hy_, hz_, scale_, odd_;
+    ScratchVector<uint32_t> point_;
+};
 
 }  // namespace rs

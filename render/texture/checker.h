@@ -1,6 +1,8 @@
 // POV-Ray's solid checker, box-filtered analytically over a ray's footprint.
 #pragma once
 
+#include <cstddef>
+
 #include "core/math.h"
 
 namespace rs {
@@ -31,5 +33,15 @@ inline constexpr double kCheckerTolerance = 0.001;
 /// of a cell) on an axis takes the point value on that axis. Very wide boxes tend to 1/2.
 /// A non-positive or non-finite `scale` gives 0 (the first colour everywhere).
 float checkerOddFraction(const Vec3& p, const Vec3& halfWidth, float scale);
+
+/// Many points' checker inputs, axis by axis (structure of arrays): point i is
+/// (px[i], py[i], pz[i]) with half-widths (hx[i], hy[i], hz[i]) and cells of side scale[i].
+struct CheckerPoints {
+    const float *px, *py, *pz, *hx, *hy, *hz, *scale;
+};
+
+/// checkerOddFraction of `count` points into odd[0, count), several points at a time: each
+/// answer is bit for bit the one checkerOddFraction gives that point alone.
+void checkerOddFractions(std::size_t count, const CheckerPoints& in, float* odd);
 
 }  // namespace rs

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
 
 namespace rs {
 namespace {
@@ -155,6 +158,54 @@ TEST(Checker, DegenerateScaleIsTheFirstColour) {
     EXPECT_EQ(checkerOddFraction(Vec3(1.5f, 0.5f, 0.5f), Vec3(0.0f), 0.0f), 0.0f);
     EXPECT_EQ(checkerOddFraction(Vec3(1.5f, 0.5f, 0.5f), Vec3(0.0f), -1.0f), 0.0f);
     EXPECT_EQ(checkerOddFraction(Vec3(1.5f, 0.5f, 0.5f), Vec3(0.0f), NAN), 0.0f);
+}
+
+TEST(Checker, ManyPointsAtOnce_GiveEachPointTheBitsItGetsAlone) {
+    // checkerOddFractions runs four points in the lanes of a vector (AVX2 where the processor
+    // has it, whose floor is one instruction); the renderer's shading takes a level's checkered
+    // points that way and shadows through glass take them one at a time, so the two must agree
+    // bit for bit. Inputs: random cells and widths at every scale, cell boundaries, and the
+    // values each branch of the scalar definition tells apart (zero, denormal, tiny and huge
+    // widths, huge and non-finite coordinates, bad scales); counts that leave lanes over.
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    const float specials[] = {0.0f,   -0.0f, 1e-39f, -1e-39f, 1e-7f,    1e-6f,     0.001f,
+                              0.999f, 1.0f,  -1.0f,  0.5f,    -0.999f,  1e6f,      2e6f,
+                              3e9f,   -3e9f, 5e15f,  1e30f,   INFINITY, -INFINITY, NAN};
+    const auto value = [&](unsigned kind) -> float {
+        switch (kind % 5) {
+            case 0:
+                return specials[rng() % std::size(specials)];
+            case 1:
+                return unit(rng) * 10.0f;
+            case 2:
+                return std::ldexp(unit(rng), int(rng() % 100) - 50);
+            case 3:
+                return float(int(rng() % 21) - 10) * 0.5f + (rng() % 2 ? 0.0f : unit(rng) * 1e-3f);
+            default:
+                return unit(rng) * 1e4f;
+        }
+    };
+    for (std::size_t count : {1u, 2u, 3u, 4u, 5u, 7u, 9u, 4099u}) {
+        std::vector<float> in[7], odd(count, -1.0f);
+        for (auto& axis : in) {
+            axis.resize(count);
+            for (float& v : axis) v = value(unsigned(rng()));
+        }
+        for (std::size_t i = 0; i < count; i += 3) in[6][i] = std::abs(in[6][i]);  // mostly valid
+        checkerOddFractions(count,
+                            {in[0].data(), in[1].data(), in[2].data(), in[3].data(), in[4].data(),
+                             in[5].data(), in[6].data()},
+                            odd.data());
+        for (std::size_t i = 0; i < count; ++i) {
+            const Vec3 p(in[0][i], in[1][i], in[2][i]), h(in[3][i], in[4][i], in[5][i]);
+            const float alone = checkerOddFraction(p, h, in[6][i]);
+            ASSERT_EQ(std::memcmp(&alone, &odd[i], sizeof alone), 0)
+                << "point " << i << " of " << count << ": (" << p.x << ", " << p.y << ", " << p.z
+                << ") +- (" << h.x << ", " << h.y << ", " << h.z << "), scale " << in[6][i]
+                << ": alone " << alone << ", with others " << odd[i];
+        }
+    }
 }
 
 }  // namespace
