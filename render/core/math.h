@@ -47,6 +47,7 @@ inline float floorInline(float x) {
 
 inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 inline constexpr float kPi = 3.14159265358979323846f;
+inline constexpr float kTwoPi = 2.0f * kPi;
 
 /// A ray with the reciprocal direction and its signs precomputed for the Williams et al. slab test.
 struct Ray {

@@ -163,13 +163,24 @@ template <bool AsDiffuse>
     uint32_t *pointMaterial = pts.material.data(), *pointSeed = pts.seed.data();
     uint32_t *pointOwner = pts.owner.data(), *pointRay = pts.ray.data();
     float* pointWeight = pts.weight.data();
+    // Misses with an environment: gathered, and looked up together after the loop (the only
+    // additions to their owners' colours in it, so in the same order).
+    EscapedRays& escaped = pts.escaped;
+    std::size_t escapes = 0;
+    if (environment) escaped.reserve(level.size());
+    float *escapedX = escaped.x.data(), *escapedY = escaped.y.data(), *escapedZ = escaped.z.data();
+    uint32_t* escapedRay = escaped.ray.data();
     for (std::size_t i = 0, n = level.size(); i < n; ++i) {
         const uint32_t owner = owners[i];
         const float weight = weights[i];
         if (slots[i] == kNoSlot) {  // a miss: the environment or the background
-            const Vec3 d(level.dx[i], level.dy[i], level.dz[i]);
-            out.color[owner] +=
-                weight * (environment ? scene_.environmentColor(d, spread_) : settings.background);
+            if (environment) {
+                const std::size_t k = escapes++;
+                escapedX[k] = level.dx[i], escapedY[k] = level.dy[i], escapedZ[k] = level.dz[i];
+                escapedRay[k] = uint32_t(i);
+            } else {
+                out.color[owner] += weight * settings.background;
+            }
             continue;
         }
         uint32_t materialIndex;
@@ -193,6 +204,14 @@ template <bool AsDiffuse>
                       Vec3(sp.nx[i], sp.ny[i], sp.nz[i]),
                       Vec3(level.dx[i], level.dy[i], level.dz[i]), pts.inside[i] != 0, weight,
                       seeds[i], owner, width, next);
+    }
+    if (escapes > 0) {
+        scene_.environmentColors(escapes, {escapedX, escapedY, escapedZ}, spread_,
+                                 escaped.spot.data(), escaped.color.data());
+        for (std::size_t k = 0; k < escapes; ++k) {
+            const uint32_t i = escapedRay[k];
+            out.color[owners[i]] += weights[i] * escaped.color[k];
+        }
     }
     return count;
 }

@@ -16,6 +16,19 @@ namespace rs {
 
 /// A level's shading points as structure of arrays: where and how each is lit (the light
 /// lanes read these), and what its sum goes back to.
+/// A level's rays that escaped to the environment, gathered to look it up four at a time.
+struct EscapedRays {
+    ScratchVector<float> x, y, z;  ///< Directions.
+    ScratchVector<uint32_t> ray;   ///< The level's ray each is.
+    ScratchVector<EnvironmentSpot> spot;
+    ScratchVector<Color> color;
+
+    void reserve(std::size_t n) {
+        if (ray.size() >= n) return;
+        x.resize(n), y.resize(n), z.resize(n), ray.resize(n), spot.resize(n), color.resize(n);
+    }
+};
+
 struct LevelPoints {
     ShadingPoints shading;           ///< Position, faced normal, direction to the viewer.
     SurfaceArrays surface, lambert;  ///< Their materials' terms, and as plain Lambert.
@@ -28,6 +41,7 @@ struct LevelPoints {
     ScratchVector<uint32_t> ray;     ///< The level's ray whose hit each point is.
     ScratchVector<uint8_t> inside;   ///< Per ray of the level: whether its normal was turned.
     CheckerBatch checkers;           ///< Checkered points, while their looks are decided.
+    EscapedRays escaped;             ///< The level's misses, with an environment.
 
     /// Room for n points; none written yet (count() is 0 until finish()). `patterns`: room
     /// for the per-point ambient terms too.

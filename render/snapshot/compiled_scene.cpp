@@ -337,6 +337,19 @@ Color CompiledScene::environmentColor(const Vec3& dir, float spread) const {
                                         environment_.texture, dir, environment_.rotation, spread);
 }
 
+void CompiledScene::environmentColors(std::size_t count, const Directions& dirs, float spread,
+                                      EnvironmentSpot* spots, Color* out) const {
+    if (!environment_.present || !environment_.texture) {
+        for (std::size_t i = 0; i < count; ++i)
+            out[i] = environmentColor(Vec3(dirs.x[i], dirs.y[i], dirs.z[i]), spread);
+        return;
+    }
+    environmentSpots(count, dirs, environment_.rotation, spread, spots);
+    const TextureStore& store = TextureStore::shared();
+    for (std::size_t i = 0; i < count; ++i)
+        out[i] = environment_.intensity * store.environmentAt(environment_.texture, spots[i]);
+}
+
 CompiledScene CompiledScene::withBoxProxy(ObjectId id) const {
     CompiledScene out = *this;
     const auto [first, end] = primitiveRange(id);

@@ -127,6 +127,11 @@ public:
     /// What an escaped ray along unit `dir` returns: the environment (filtered over a cone of
     /// full angle `spread`) times its intensity, else the background colour.
     Color environmentColor(const Vec3& dir, float spread) const;
+    /// environmentColor of `count` escaped rays at once (directions axis by axis) into
+    /// out[0, count), the environment's map for four at a time; `spots`: room for `count`.
+    /// Each colour is bit for bit the one environmentColor gives.
+    void environmentColors(std::size_t count, const Directions& dirs, float spread,
+                           EnvironmentSpot* spots, Color* out) const;
     const CompiledEnvironment& environment() const { return environment_; }
     /// True when some material has a checker or an image: only then does shading look
     /// patterns up (flat-colour scenes take the tables' colours, as before patterns).

@@ -8,9 +8,7 @@
 
 namespace rs {
 
-namespace {
-constexpr float kTwoPi = 2.0f * kPi;
-}  // namespace
+namespace {}  // namespace
 
 ShapeUV sphereUV(const Vec3& p, const Vec3& center, float radius) {
     (void)radius;

@@ -12,7 +12,6 @@
 #include <memory>
 #include <mutex>
 
-#include "core/fast_angles.h"
 #include "core/input_file.h"
 #include "texture/srgb_input.h"
 #include "texture/texel_cache.h"
@@ -24,7 +23,6 @@ namespace {
 using OIIO::TextureOpt;
 using OIIO::TextureSystem;
 
-constexpr float kTwoPi = 2.0f * kPi;
 /// Untiled images appear to the lookups as tiles of this many pixels square.
 constexpr int kAutoTile = 64;
 
@@ -259,26 +257,16 @@ Color TextureStore::lookup(const TextureHandle& texture, float s, float t, float
 
 Color TextureStore::environment(const TextureHandle& texture, const Vec3& d, float rotationDegrees,
                                 float coneAngle) const {
-    // Both angles are atan2s, which need no unit vector: |d| enters only the cone's width
-    // in s. (A zero or NaN direction looks straight up.)
-    float x = d.x, y = d.y, z = d.z;
-    float rho = std::sqrt(x * x + z * z);
-    float length = std::sqrt(rho * rho + y * y);
-    if (!(length > 0.0f)) x = 0.0f, y = 1.0f, z = 0.0f, rho = 0.0f, length = 1.0f;
-    constexpr float kInverseTwoPi = 1.0f / kTwoPi, kInversePi = 1.0f / kPi;
-    float phi = rho > 0.0f ? atan2Polynomial(z, x) : 0.0f;
-    if (phi < 0.0f) phi += kTwoPi;
-    float s = phi * kInverseTwoPi + rotationDegrees * (1.0f / 360.0f);
-    s -= floorInline(s);
-    // asin(y / |d|) is atan2(y, rho).
-    const float t = 0.5f - atan2Polynomial(y, rho) * kInversePi;
-    const float cone = std::max(coneAngle, 0.0f);
-    const float dt = cone * kInversePi;
-    const float ds = std::min(cone * length / (kTwoPi * std::max(rho, 1e-6f * length)), 1.0f);
+    EnvironmentSpot spot;
+    environmentSpots(1, {&d.x, &d.y, &d.z}, rotationDegrees, coneAngle, &spot);
+    return environmentAt(texture, spot);
+}
+
+Color TextureStore::environmentAt(const TextureHandle& texture, const EnvironmentSpot& spot) const {
     Color c;
-    if (!texture.texels ||
-        !filteredLookup(*texture.texels, s, t, ds, 0.0f, 0.0f, dt, /*clampT=*/true, c))
-        return missingTexture(s, t);
+    if (!texture.texels || !filteredLookup(*texture.texels, spot.s, spot.t, spot.ds, 0.0f, 0.0f,
+                                           spot.dt, /*clampT=*/true, c))
+        return missingTexture(spot.s, spot.t);
     return c;
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/input_file.h"
 #include "core/math.h"
+#include "texture/environment_spot.h"
 
 namespace rs {
 
@@ -92,6 +93,9 @@ public:
     /// coneAngle / (2 pi cos(latitude)) in s, at most one turn. Empty handle: missingTexture.
     Color environment(const TextureHandle& texture, const Vec3& d, float rotationDegrees,
                       float coneAngle) const;
+    /// The environment at a spot environmentSpots found (many directions at once):
+    /// environment() is environmentSpots for one direction, then this.
+    Color environmentAt(const TextureHandle& texture, const EnvironmentSpot& spot) const;
 
 private:
     TextureStore();

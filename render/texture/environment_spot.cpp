@@ -1,0 +1,75 @@
+// The latitude-longitude map, four directions in the lanes of an SSE vector.
+#include "texture/environment_spot.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/fast_angles.h"
+#include "core/math.h"
+
+namespace rs {
+
+namespace {
+
+constexpr int kWidth = 4;
+typedef float F __attribute__((vector_size(kWidth * sizeof(float))));
+
+F splat(float x) {
+    return F{} + x;
+}
+
+F sqrtLanes(F x) {
+    for (int k = 0; k < kWidth; ++k) x[k] = std::sqrt(x[k]);  // one sqrtps
+    return x;
+}
+
+/// floor() of each lane, exact: rounding |x| to an integer by adding and subtracting 2^23
+/// (below 2^23 a float's spacing reaches 1 there, and from 2^23 up every float is an
+/// integer), then stepping down where that rounded up.
+F floorLanes(F x) {
+    const F big = splat(8388608.0f);  // 2^23
+    const F ax = magnitude(x);
+    F r = (ax + big) - big;
+    r = ax < big ? r : ax;
+    const F rx = x < 0.0f ? -r : r;
+    return rx > x ? rx - 1.0f : rx;
+}
+
+}  // namespace
+
+void environmentSpots(std::size_t count, const Directions& d, float rotationDegrees,
+                      float coneAngle, EnvironmentSpot* out) {
+    // Both angles are atan2s, which need no unit vector: |d| enters only the cone's width in s.
+    constexpr float kInverseTwoPi = 1.0f / kTwoPi, kInversePi = 1.0f / kPi;
+    const float turn = rotationDegrees * (1.0f / 360.0f);
+    const float cone = std::max(coneAngle, 0.0f);
+    const float dt = cone * kInversePi;
+    for (std::size_t first = 0; first < count; first += kWidth) {
+        float lanes[3][kWidth];
+        for (int k = 0; k < kWidth; ++k) {
+            const std::size_t i = first + std::size_t(k) < count ? first + std::size_t(k) : first;
+            lanes[0][k] = d.x[i], lanes[1][k] = d.y[i], lanes[2][k] = d.z[i];
+        }
+        F x, y, z;
+        std::memcpy(&x, lanes[0], sizeof x);
+        std::memcpy(&y, lanes[1], sizeof y);
+        std::memcpy(&z, lanes[2], sizeof z);
+        F rho = sqrtLanes(x * x + z * z);
+        F length = sqrtLanes(rho * rho + y * y);
+        const auto up = !(length > 0.0f);  // zero or NaN: straight up
+        x = up ? F{} : x, z = up ? F{} : z, y = up ? splat(1.0f) : y;
+        rho = up ? F{} : rho, length = up ? splat(1.0f) : length;
+        F phi = rho > 0.0f ? atan2Polynomial(z, x) : F{};
+        phi = phi < 0.0f ? phi + kTwoPi : phi;
+        F s = phi * kInverseTwoPi + turn;
+        s -= floorLanes(s);
+        const F t = 0.5f - atan2Polynomial(y, rho) * kInversePi;
+        const F across = 1e-6f * length;
+        const F ds = cone * length / (kTwoPi * (rho < across ? across : rho));  // std::max
+        const F dsClamped = 1.0f < ds ? splat(1.0f) : ds;                       // std::min
+        for (int k = 0; k < kWidth && first + std::size_t(k) < count; ++k)
+            out[first + std::size_t(k)] = {s[k], t[k], dsClamped[k], dt};
+    }
+}
+
+}  // namespace rs
