@@ -43,8 +43,9 @@ on later runs), then:
                 loader's) for ${CI_FUZZ_SECONDS} s (build/fuzz), the unit and command-line tests
                 under ASan + UBSan (build/asan), the whole test suite (ctest), the Slurm farm
                 test (needs root) and the quick mutations (below), and exit with the status.
-  format-check  check that every C++ file git tracks (*.cpp, *.h, *.inl) is formatted as
-                .clang-format says (clang-format --dry-run --Werror); fails naming the files.
+  format-check  check that every C++ file git tracks or would track (*.cpp, *.h, *.inl; new
+                files too, not ignored ones) is formatted as .clang-format says
+                (clang-format --dry-run --Werror); fails naming the files.
   format        reformat those files in place (clang-format -i).
   mutate [NAME...]
                 the mutation check (tests/mutation): put each deliberate bug into the source
@@ -180,11 +181,12 @@ run_fuzzers() {
 # ---- End of fuzzing ------------------------------------------------------------------------
 
 # ---- Formatting (.clang-format) -------------------------------------------------------------
-# Every C++ file git tracks, in one clang-format call; the files it would change are named.
+# Every C++ file git tracks or would track (new files not yet added, not ignored ones), in one
+# clang-format call; the files it would change are named.
 tracked_cxx_files() {
     git rev-parse --is-inside-work-tree >/dev/null 2>&1 ||
         die "the formatting stages need a git checkout (they format the files git tracks)"
-    git ls-files -z '*.cpp' '*.h' '*.inl'
+    git ls-files -z --cached --others --exclude-standard '*.cpp' '*.h' '*.inl'
 }
 
 check_format() {

@@ -39,12 +39,15 @@ cat >"${scratch}/bin/ctest" <<'STUB'
 echo "ctest $*" >>"${STAGES_LOG}"
 exit 0
 STUB
-# A checkout of two C++ files.
+# A checkout of two C++ files and a new one not yet added (git lists it with --others, and
+# with --exclude-standard only if it is not ignored).
 cat >"${scratch}/bin/git" <<'STUB'
 #!/bin/sh
 case "$1" in
     rev-parse) exit 0 ;;
-    ls-files) printf 'render/a.cpp\0render/b.h\0' ;;
+    ls-files)
+        printf 'render/a.cpp\0render/b.h\0'
+        case "$*" in *--others*) printf 'render/c.cpp\0' ;; esac ;;
     *) echo "git stand-in: unexpected git $*" >&2; exit 2 ;;
 esac
 STUB
@@ -106,8 +109,8 @@ if ((status != 0)); then
 elif ! sed -n '/^clang-format --dry-run --Werror/,$p' "${scratch}/log" | grep -q '^cmake' ||
     sed -n '/^clang-format --dry-run --Werror/q;p' "${scratch}/log" | grep -q '^cmake'; then
     flunk "the formatting was not checked before the builds"
-elif ! grep -q -- '--dry-run --Werror render/a.cpp render/b.h' "${scratch}/log"; then
-    flunk "the formatting check did not take the files git tracks"
+elif ! grep -q -- '--dry-run --Werror render/a.cpp render/b.h render/c.cpp' "${scratch}/log"; then
+    flunk "the formatting check did not take the files git tracks and the new ones"
 elif ! sed -n '/^ctest --preset release/,$p' "${scratch}/log" | grep -qx 'mutations --quick'; then
     flunk "setup.sh test did not run the quick mutations after the test suite"
 else
@@ -149,13 +152,13 @@ else
     fi
 fi
 
-# format rewrites the files git tracks in place, and builds nothing.
+# format rewrites the files git tracks, and new ones, in place, and builds nothing.
 run_setup format
-if ((status != 0)) || ! grep -qx 'clang-format -i render/a.cpp render/b.h' "${scratch}/log" ||
+if ((status != 0)) || ! grep -qx 'clang-format -i render/a.cpp render/b.h render/c.cpp' "${scratch}/log" ||
     grep -q -e '^cmake' -e '^ctest' "${scratch}/log"; then
-    flunk "setup.sh format did not run clang-format -i on the tracked files alone"
+    flunk "setup.sh format did not run clang-format -i on the tracked and new files alone"
 else
-    echo "ok: setup.sh format runs clang-format -i on the files git tracks"
+    echo "ok: setup.sh format runs clang-format -i on the files git tracks and new ones"
 fi
 
 # mutate builds the release tree, then runs the named mutations; their failure is its own.
