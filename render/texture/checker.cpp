@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <cstring>
 
+#include "core/floor_lanes.h"
+
 namespace rs {
 
 namespace {

@@ -10,33 +10,25 @@ inline D splat(double x) {
     return D{} + x;
 }
 
-/// floor() of each lane, exact. With AVX, one instruction; without, rounding |x| to an integer
-/// by adding and subtracting 2^52 (below 2^52 a double's spacing reaches 1 there, and from
-/// 2^52 up every double is an integer), then stepping down where that rounded up. NaNs and
-/// infinities pass through.
-inline D floorLanes(D x) {
+/// floor() of each lane, exact: with AVX one instruction, else core/floor_lanes.h.
+inline D floorOf(D x) {
 #if defined(RS_CHECKER_AVX2)
     return D(_mm256_floor_pd(__m256d(x)));
 #else
-    const D big = splat(4503599627370496.0);  // 2^52
-    const D ax = x < 0.0 ? -x : x;
-    D r = (ax + big) - big;
-    r = ax < big ? r : ax;
-    const D rx = x < 0.0 ? -r : r;
-    return rx > x ? rx - 1.0 : rx;
+    return floorLanes(x);
 #endif
 }
 
 /// The +-1 square wave: +1 on cells with an even floor, -1 on odd ones.
 inline D squareWave(D c) {
-    const D cell = floorLanes(c);
-    const D parity = cell - 2.0 * floorLanes(0.5 * cell);  // 0 or 1, exact in double
+    const D cell = floorOf(c);
+    const D parity = cell - 2.0 * floorOf(0.5 * cell);  // 0 or 1, exact in double
     return 1.0 - 2.0 * parity;
 }
 
 /// The integral of the square wave from 0 to c: a triangle wave of period 2 between 0 and 1.
 inline D squareIntegral(D c) {
-    const D m = c - 2.0 * floorLanes(0.5 * c) - 1.0;  // in [-1, 1)
+    const D m = c - 2.0 * floorOf(0.5 * c) - 1.0;  // in [-1, 1)
     return 1.0 - (m < 0.0 ? -m : m);
 }
 

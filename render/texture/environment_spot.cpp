@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/fast_angles.h"
+#include "core/floor_lanes.h"
 #include "core/math.h"
 
 namespace rs {
@@ -21,18 +22,6 @@ F splat(float x) {
 F sqrtLanes(F x) {
     for (int k = 0; k < kWidth; ++k) x[k] = std::sqrt(x[k]);  // one sqrtps
     return x;
-}
-
-/// floor() of each lane, exact: rounding |x| to an integer by adding and subtracting 2^23
-/// (below 2^23 a float's spacing reaches 1 there, and from 2^23 up every float is an
-/// integer), then stepping down where that rounded up.
-F floorLanes(F x) {
-    const F big = splat(8388608.0f);  // 2^23
-    const F ax = magnitude(x);
-    F r = (ax + big) - big;
-    r = ax < big ? r : ax;
-    const F rx = x < 0.0f ? -r : r;
-    return rx > x ? rx - 1.0f : rx;
 }
 
 }  // namespace
