@@ -14,6 +14,37 @@ Color TraceKernel::surfaceColor(const CompiledMaterial& m, uint32_t slot, const 
     return patternColor(m.pattern, scene_.patterns().at(slot), p, n, footprint);
 }
 
+Color TraceKernel::transmission(const Vec3& origin, const Vec3& dir, float tmax) const {
+    // A shadow ray through glass (scenes/FORMAT.md "Shadows"): each transparent surface it
+    // crosses keeps transparency x colour of the light, no bending; anything opaque stops it.
+    constexpr int kMostCrossings = 64;
+    Color kept(1.0f);
+    Vec3 o = origin;
+    float left = tmax;
+    // The walk counts as the one shadow ray it continues (per-pixel counts stay exact).
+    for (int crossing = 0; crossing < kMostCrossings; ++crossing) {
+        EngineHit hit;
+        if (!scene_.engine().closestHit(Ray::make(o, dir), left, hit)) return kept;
+        uint32_t mi;
+        ObjectId id;
+        scene_.describe(hit.slot, mi, id);
+        const CompiledMaterial& m = scene_.materials()[mi];
+        if (!(m.transparency > 0.0f)) return Color(0.0f);
+        const Vec3 p = o + dir * hit.t;
+        // The tint is filtered as finely as the camera sees that point of the glass: a pixel's
+        // cone there (a shadow carries no cone of its own, and point samples of a texture
+        // alias and read its finest level at random).
+        const float width = originWidth_ + spread_ * glm::length(p - scene_.camera().origin());
+        kept *=
+            m.transparency * surfaceColor(m, hit.slot, p, hit.n, footprintAt(dir, hit.n, width));
+        if (kept == Color(0.0f)) return kept;
+        o = p + dir * eps_;
+        left -= hit.t + eps_;
+        if (!(left > 0.0f)) return kept;
+    }
+    return Color(0.0f);  // More glass than that: treated as blocking.
+}
+
 SurfaceTerms<float> TraceKernel::recordTerms(const ShadingRecord& r) const {
     const CompiledMaterial& m = scene_.materials()[r.material];
     return {r.diffuse.x, r.diffuse.y, r.diffuse.z, m.specular, m.specularCutoff, m.shininess};
