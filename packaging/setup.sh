@@ -68,8 +68,16 @@ $(quick_mutations)
   -h, --help    show this help.
 
 Works from any folder. Run as root, or as a user who may use sudo for apt-get.
-CMAKE_BUILD_PARALLEL_LEVEL limits the number of build jobs (default: all cores).
+CMAKE_BUILD_PARALLEL_LEVEL limits the number of build jobs, CTEST_PARALLEL_LEVEL the number
+of tests run at once (both default to all cores).
 EOF
+}
+
+# Tests at once in every ctest stage: most tests are a process that starts in a fraction of a
+# second and then runs on one core, so one at a time leaves the other cores idle.
+# main() has checked CTEST_PARALLEL_LEVEL.
+test_jobs() {
+    printf '%s' "${CTEST_PARALLEL_LEVEL:-$(nproc 2>/dev/null || echo 1)}"
 }
 
 say() { printf '==> %s\n' "$*"; }
@@ -133,8 +141,8 @@ run_thread_sanitizer_tests() {
     say "Building the unit tests and the designer's threading test with ThreadSanitizer."
     cmake --build --preset tsan --target raystudio_unit_tests raystudio_session_threads_test || return
     say "Running the session, renderer and designer-threading tests under ThreadSanitizer."
-    ctest --preset tsan -R 'RenderSession|Renderer|Sampling|gui\.session_threads' --no-tests=error \
-        --output-on-failure
+    ctest --preset tsan --parallel "$(test_jobs)" \
+        -R 'RenderSession|Renderer|Sampling|gui\.session_threads' --no-tests=error --output-on-failure
 }
 
 # ---- Fuzzing (tests/fuzz) ----------------------------------------------------------------
@@ -240,7 +248,8 @@ run_address_sanitizer_tests() {
     say "Running the unit and command-line tests under ASan + UBSan."
     ASAN_OPTIONS="detect_leaks=1:abort_on_error=1" \
         UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
-        ctest --preset asan -R '^[^.]+[.][^.]+$' --no-tests=error --output-on-failure
+        ctest --preset asan --parallel "$(test_jobs)" -R '^[^.]+[.][^.]+$' --no-tests=error \
+            --output-on-failure
 }
 # ---- End of ASan + UBSan ---------------------------------------------------------------------
 
@@ -273,7 +282,7 @@ run_tests() {
         return "${status}"
     fi
     say "Running the test suite."
-    ctest --preset release --no-tests=error --output-on-failure || status=$?
+    ctest --preset release --parallel "$(test_jobs)" --no-tests=error --output-on-failure || status=$?
     run_slurm_farm_test || status=$?
     if ((status != 0)); then
         printf 'setup.sh: tests failed (ctest exit status %d)\n' "${status}" >&2
@@ -371,6 +380,10 @@ main() {
             die "unknown command '${command}'"
             ;;
     esac
+
+    if [[ -n "${CTEST_PARALLEL_LEVEL:-}" && ! "${CTEST_PARALLEL_LEVEL}" =~ ^[1-9][0-9]*$ ]]; then
+        die "CTEST_PARALLEL_LEVEL must be a positive whole number, got '${CTEST_PARALLEL_LEVEL}'"
+    fi
 
     # Resolve the scene against the caller's folder before moving to the repository root.
     local scene=""
