@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "integrator/lanes.h"
+#include "core/lanes.h"
 
 namespace rs {
 

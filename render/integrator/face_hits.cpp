@@ -3,7 +3,7 @@
 
 #include <cstring>
 
-#include "integrator/lanes.h"
+#include "core/lanes.h"
 
 namespace rs {
 

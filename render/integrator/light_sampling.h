@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/lanes.h"
 #include "core/scratch_arena.h"
-#include "integrator/lanes.h"
 #include "integrator/sampling.h"
 #include "snapshot/compiled_scene.h"
 

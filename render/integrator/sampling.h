@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/lanes.h"
 #include "core/math.h"
-#include "integrator/lanes.h"
 #include "scene/document.h"
 
 namespace rs {

@@ -266,8 +266,8 @@ template <bool AsDiffuse>
     // Patterned points: the pattern's colour there, filtered over the cone's footprint,
     // in place of the material's colour in every term (scenes/FORMAT.md "color"); every
     // point's ambient terms, which the local sums below then take point by point. Checkered
-    // points are gathered and their box filters run several at a time (CheckerBatch), each
-    // giving the colour surfaceColor would.
+    // points are gathered and their footprints and box filters run several at a time
+    // (CheckerBatch), each giving the colour surfaceColor would.
     const ShadingPoints& sp = pts.shading;
     const CompiledMaterial* materials = scene_.materials().data();
     const uint32_t *pointMaterial = pts.material.data(), *pointRay = pts.ray.data();
@@ -298,14 +298,12 @@ template <bool AsDiffuse>
         const Vec3 p(sp.px[j], sp.py[j], sp.pz[j]), d(level.dx[i], level.dy[i], level.dz[i]);
         const Vec3 normal(hits.nx[i], hits.ny[i], hits.nz[i]);
         const float width = level.cone[i] + hits.t[i] * spread_;
-        const Footprint footprint = footprintAt(d, normal, width);
         if (m.pattern.kind == MaterialPattern::Kind::Checker) {
-            checkers.add(uint32_t(j),
-                         checkerBoxAt(scene_.patterns().at(hits.slot[i]), p, footprint),
+            checkers.add(uint32_t(j), scene_.patterns().at(hits.slot[i]), p, d, normal, width,
                          m.pattern.checkerScale);
             continue;
         }
-        setLook(j, m, surfaceColor(m, hits.slot[i], p, normal, footprint));
+        setLook(j, m, surfaceColor(m, hits.slot[i], p, normal, footprintAt(d, normal, width)));
     }
     if (checkers.size() == 0) return;
     const float* odd = checkers.evaluate();

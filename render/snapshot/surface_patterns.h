@@ -8,6 +8,7 @@
 
 #include "accel/mesh_accel.h"
 #include "accel/ray_engine.h"
+#include "core/lanes.h"
 #include "core/math.h"
 #include "core/scratch_arena.h"
 #include "scene/document.h"
@@ -82,6 +83,13 @@ struct InObject {
             surface.dirToObject * footprint.a2};
 }
 
+/// The half-width along one axis of the axis-aligned box that holds an ellipse whose
+/// half-axes have components a1 and a2 on that axis (one, or a lane of them).
+template <class F>
+[[gnu::always_inline]] inline F boxHalfWidth(F a1, F a2) {
+    return sqrtLanes(a1 * a1 + a2 * a2);
+}
+
 /// What the checker filters at a hit: the point in the object's own space and the half-widths
 /// (object units) of the axis-aligned box that holds the footprint's ellipse there.
 struct CheckerBox {
@@ -90,7 +98,8 @@ struct CheckerBox {
 [[gnu::always_inline]] inline CheckerBox checkerBoxAt(const PatternSurface& surface, const Vec3& p,
                                                       const Footprint& footprint) {
     const InObject o = inObject(surface, p, footprint);
-    return {o.p, glm::sqrt(o.a1 * o.a1 + o.a2 * o.a2)};
+    return {o.p, Vec3(boxHalfWidth(o.a1.x, o.a2.x), boxHalfWidth(o.a1.y, o.a2.y),
+                      boxHalfWidth(o.a1.z, o.a2.z))};
 }
 
 /// A checker's colour where a fraction `odd` of the box lies on odd cells.
@@ -98,19 +107,26 @@ inline Color checkerColor(const MaterialPattern& pattern, float odd) {
     return pattern.even + (pattern.odd - pattern.even) * odd;
 }
 
-/// A level's checkered points gathered so that their box filters run several at a time
-/// (checkerOddFractions): each point's colour is the one patternColor gives it alone. Per-thread
-/// scratch (ScratchVector): keep it in the thread's workspace.
+/// A level's checkered points gathered so that their footprints and box filters run several
+/// at a time (footprintAxes on lanes, then checkerOddFractions): each point's colour is the
+/// one patternColor gives it alone. Per-thread scratch (ScratchVector): keep it in the
+/// thread's workspace.
 class CheckerBatch {
 public:
     /// Empty, with room for `capacity` points.
     void reset(std::size_t capacity);
-    /// Adds shading point `point`, whose checker has cells of side `scale`.
-    void add(uint32_t point, const CheckerBox& box, float scale) {
+    /// Adds shading point `point`: world point p on `surface`, reached along unit direction
+    /// `dir` by a cone `width` wide there, with unit world normal n; cells of side `scale`.
+    /// `surface` must outlive evaluate().
+    [[gnu::always_inline]] void add(uint32_t point, const PatternSurface& surface, const Vec3& p,
+                                    const Vec3& dir, const Vec3& n, float width, float scale) {
         const std::size_t k = count_++;
-        px_[k] = box.p.x, py_[k] = box.p.y, pz_[k] = box.p.z;
-        hx_[k] = box.halfWidth.x, hy_[k] = box.halfWidth.y, hz_[k] = box.halfWidth.z;
-        scale_[k] = scale, point_[k] = point;
+        px_[k] = p.x, py_[k] = p.y, pz_[k] = p.z;
+        dx_[k] = dir.x, dy_[k] = dir.y, dz_[k] = dir.z;
+        nx_[k] = n.x, ny_[k] = n.y, nz_[k] = n.z;
+        width_[k] = width, scale_[k] = scale, point_[k] = point;
+        // Planes are in world space already (inObject): no transform to look up.
+        surface_[k] = surface.shape == PatternSurface::Shape::Plane ? nullptr : &surface;
     }
     std::size_t size() const { return count_; }
     uint32_t point(std::size_t k) const { return point_[k]; }
@@ -119,8 +135,10 @@ public:
 
 private:
     std::size_t count_ = 0;
-    ScratchVector<float> px_, py_, pz_, hx_, hy_, hz_, scale_, odd_;
+    ScratchVector<float> px_, py_, pz_, dx_, dy_, dz_, nx_, ny_, nz_, width_, hx_, hy_, hz_, scale_,
+        odd_;
     ScratchVector<uint32_t> point_;
+    ScratchVector<const PatternSurface*> surface_;  ///< Null for a plane.
 };
 
 }  // namespace rs
