@@ -1,41 +1,10 @@
-// Texture coordinates of spheres, planes, rectangles, boxes and mesh triangles, with their
-// gradients.
+// Texture coordinates of planes, rectangles, boxes and mesh triangles, with their gradients
+// (spheres': in the header, inlined where image lookups take them per point).
 #include "texture/shape_uv.h"
 
 #include <cmath>
 
-#include "core/fast_angles.h"
-
 namespace rs {
-
-namespace {}  // namespace
-
-ShapeUV sphereUV(const Vec3& p, const Vec3& center, float radius) {
-    (void)radius;
-    ShapeUV uv;
-    const Vec3 d = p - center;
-    const float rhoSquared = d.x * d.x + d.z * d.z;
-    const float lengthSquared = rhoSquared + d.y * d.y;
-    if (!(lengthSquared > 0.0f)) {  // the centre itself: no direction
-        uv.v = 0.5f;
-        return uv;
-    }
-    const float rho = std::sqrt(rhoSquared);
-    if (rhoSquared > 0.0f) {
-        // acos(x / rho), mirrored for z < 0: atan2 gives the same angle without the acos's
-        // loss of precision near +-X.
-        float phi = atan2Polynomial(d.z, d.x);
-        if (phi < 0.0f) phi += kTwoPi;
-        float u = phi / kTwoPi;
-        if (u >= 1.0f) u = 0.0f;  // -0 and rounding just below the seam
-        uv.u = u;
-        uv.dudp = Vec3(-d.z, 0.0f, d.x) / (kTwoPi * rhoSquared);
-        uv.dvdp = Vec3(-d.y * d.x / rho, rho, -d.y * d.z / rho) / (kPi * lengthSquared);
-    }
-    // asin(dy / |d|) is atan2(dy, rho).
-    uv.v = 0.5f + atan2Polynomial(d.y, rho) / kPi;
-    return uv;
-}
 
 PlaneAxes planeAxes(const Vec3& normal) {
     const Vec3 n = glm::normalize(normal);

@@ -1,6 +1,9 @@
 // Texture coordinates of the shapes and their gradients, in each shape's own space.
 #pragma once
 
+#include <cmath>
+
+#include "core/fast_angles.h"
 #include "core/math.h"
 
 namespace rs {
@@ -23,7 +26,32 @@ struct ShapeUV {
 /// grows without bound toward the poles (where u is singular; zero on the axis itself), and
 /// dv/dp = (-dy dx / rho, rho, -dy dz / rho) / (pi |p - c|^2), rho = sqrt(dx^2 + dz^2) (zero
 /// on the axis). `radius` is used only when p is the centre (u = 0, v = 0.5, zero gradients).
-ShapeUV sphereUV(const Vec3& p, const Vec3& center, float radius);
+[[gnu::always_inline]] inline ShapeUV sphereUV(const Vec3& p, const Vec3& center, float radius) {
+    (void)radius;
+    ShapeUV uv;
+    const Vec3 d = p - center;
+    const float rhoSquared = d.x * d.x + d.z * d.z;
+    const float lengthSquared = rhoSquared + d.y * d.y;
+    if (!(lengthSquared > 0.0f)) {  // the centre itself: no direction
+        uv.v = 0.5f;
+        return uv;
+    }
+    const float rho = std::sqrt(rhoSquared);
+    if (rhoSquared > 0.0f) {
+        // acos(x / rho), mirrored for z < 0: atan2 gives the same angle without the acos's
+        // loss of precision near +-X.
+        float phi = atan2Polynomial(d.z, d.x);
+        if (phi < 0.0f) phi += kTwoPi;
+        float u = phi / kTwoPi;
+        if (u >= 1.0f) u = 0.0f;  // -0 and rounding just below the seam
+        uv.u = u;
+        uv.dudp = Vec3(-d.z, 0.0f, d.x) / (kTwoPi * rhoSquared);
+        uv.dvdp = Vec3(-d.y * d.x / rho, rho, -d.y * d.z / rho) / (kPi * lengthSquared);
+    }
+    // asin(dy / |d|) is atan2(dy, rho).
+    uv.v = 0.5f + atan2Polynomial(d.y, rho) / kPi;
+    return uv;
+}
 
 /// A plane's planar projection, unit cells in scene units. With n = normalize(`normal`):
 ///   T1 = normalize(X - n (n.X)), or normalize(Z - n (n.Z)) when |n.x| > 0.9;  T2 = n x T1;
