@@ -4,29 +4,20 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/lanes.h"
 #include "core/math.h"
 
 namespace rs {
-
-/// |v| of a float or of each lane of a GCC vector of floats: the sign bit cleared.
-inline float magnitude(float v) {
-    return std::abs(v);
-}
-template <class F>
-inline F magnitude(F v) {
-    using Bits = decltype(v < v);
-    return (F)((Bits)v & 0x7fffffff);
-}
 
 /// atan2(y, x) in [-pi, pi] without a library call (libm's atan2f, and asinf for a
 /// sphere's latitude, were a tenth of the cost of a textured sphere or a sky): the octant's
 /// ratio in [0, 1] through Abramowitz and Stegun's 4.4.49 polynomial, within 2e-8 radians
 /// (a 16k-wide texture's texel is 4e-4). atan2Polynomial(0, 0) is 0; the sign of a zero y
-/// is not kept (-0 gives +0). F is float, or a GCC vector of floats for that many at once
+/// is not kept (-0 gives +0). F is float, or FloatLanes (core/lanes.h) for four at once
 /// (the same operations lane by lane, so the same bits as one float alone).
 template <class F>
 inline F atan2Polynomial(F y, F x) {
-    const F ax = magnitude(x), ay = magnitude(y);
+    const F ax = absLanes(x), ay = absLanes(y);
     const F big = ax < ay ? ay : ax, small = ay < ax ? ay : ax;  // std::max, std::min
     const F a = small / big, q = a * a;
     F r = -0.0040540580f * q + 0.0218612288f;

@@ -6,23 +6,15 @@
 
 #include "core/fast_angles.h"
 #include "core/floor_lanes.h"
+#include "core/lanes.h"
 #include "core/math.h"
 
 namespace rs {
 
 namespace {
 
-constexpr int kWidth = 4;
-typedef float F __attribute__((vector_size(kWidth * sizeof(float))));
-
-F splat(float x) {
-    return F{} + x;
-}
-
-F sqrtLanes(F x) {
-    for (int k = 0; k < kWidth; ++k) x[k] = std::sqrt(x[k]);  // one sqrtps
-    return x;
-}
+constexpr int kWidth = kLaneWidth;
+using F = FloatLanes;
 
 }  // namespace
 
