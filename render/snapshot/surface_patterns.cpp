@@ -94,46 +94,43 @@ void SurfacePatterns::resize(std::size_t primitives, std::size_t planes) {
     planes_.assign(planes, identitySurface(PatternSurface::Shape::Plane));
 }
 
-const PatternSurface& SurfacePatterns::at(uint32_t slot) const {
-    return (slot & kPlaneSlot) ? planes_[slot & ~kPlaneSlot] : primitives_[slot];
-}
-
 void CheckerBatch::reset(std::size_t capacity) {
     count_ = 0;
     // Room for whole lanes: evaluate() pads the last one.
     capacity = (capacity + kLaneWidth - 1) / kLaneWidth * kLaneWidth;
-    if (point_.size() >= capacity) return;
-    for (auto* v : {&px_, &py_, &pz_, &dx_, &dy_, &dz_, &nx_, &ny_, &nz_, &width_, &hx_, &hy_, &hz_,
-                    &scale_, &odd_})
-        v->resize(capacity);
-    point_.resize(capacity);
-    surface_.resize(capacity);
+    if (entries_.size() >= capacity) return;
+    entries_.resize(capacity);
+    for (auto* v : {&px_, &py_, &pz_, &hx_, &hy_, &hz_, &scale_, &odd_}) v->resize(capacity);
 }
 
 const float* CheckerBatch::evaluate() {
     // The last lane's spare places repeat the last point (their answers are not read).
     const std::size_t lanes = kLaneWidth;
-    for (std::size_t k = count_; k % lanes != 0; ++k) {
-        for (auto* v : {&px_, &py_, &pz_, &dx_, &dy_, &dz_, &nx_, &ny_, &nz_, &width_})
-            (*v)[k] = (*v)[count_ - 1];
-        surface_[k] = surface_[count_ - 1];
-    }
+    for (std::size_t k = count_; k % lanes != 0; ++k) entries_[k] = entries_[count_ - 1];
     for (std::size_t first = 0; first < count_; first += lanes) {
-        FootprintAxes<FloatLanes> f =
-            footprintAxes(loadLanes(&dx_[first]), loadLanes(&dy_[first]), loadLanes(&dz_[first]),
-                          loadLanes(&nx_[first]), loadLanes(&ny_[first]), loadLanes(&nz_[first]),
-                          loadLanes(&width_[first]));
+        FloatLanes dx, dy, dz, nx, ny, nz, width;
+        for (std::size_t k = 0; k < lanes; ++k) {
+            const Entry& e = entries_[first + k];
+            dx[k] = e.dir.x, dy[k] = e.dir.y, dz[k] = e.dir.z;
+            nx[k] = e.n.x, ny[k] = e.n.y, nz[k] = e.n.z;
+            width[k] = e.width;
+        }
+        FootprintAxes<FloatLanes> f = footprintAxes(dx, dy, dz, nx, ny, nz, width);
         // Into each surface's own space (inObject), point by point: planes need nothing.
         for (std::size_t k = 0; k < lanes; ++k) {
-            const PatternSurface* surface = surface_[first + k];
-            if (!surface) continue;
             const std::size_t i = first + k;
-            const InObject o =
-                inObject(*surface, Vec3(px_[i], py_[i], pz_[i]),
-                         {Vec3(f.a1x[k], f.a1y[k], f.a1z[k]), Vec3(f.a2x[k], f.a2y[k], f.a2z[k])});
-            px_[i] = o.p.x, py_[i] = o.p.y, pz_[i] = o.p.z;
-            f.a1x[k] = o.a1.x, f.a1y[k] = o.a1.y, f.a1z[k] = o.a1.z;
-            f.a2x[k] = o.a2.x, f.a2y[k] = o.a2.y, f.a2z[k] = o.a2.z;
+            const Entry& e = entries_[i];
+            Vec3 p = e.p;
+            if (e.surface) {
+                const InObject o = inObject(
+                    *e.surface, e.p,
+                    {Vec3(f.a1x[k], f.a1y[k], f.a1z[k]), Vec3(f.a2x[k], f.a2y[k], f.a2z[k])});
+                p = o.p;
+                f.a1x[k] = o.a1.x, f.a1y[k] = o.a1.y, f.a1z[k] = o.a1.z;
+                f.a2x[k] = o.a2.x, f.a2y[k] = o.a2.y, f.a2z[k] = o.a2.z;
+            }
+            px_[i] = p.x, py_[i] = p.y, pz_[i] = p.z;
+            scale_[i] = e.scale;
         }
         storeLanes(&hx_[first], boxHalfWidth(f.a1x, f.a2x));
         storeLanes(&hy_[first], boxHalfWidth(f.a1y, f.a2y));

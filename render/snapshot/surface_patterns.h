@@ -59,7 +59,9 @@ public:
     void resize(std::size_t primitives, std::size_t planes);
     void setPrimitive(std::size_t index, const PatternSurface& s) { primitives_[index] = s; }
     void setPlane(std::size_t index, const PatternSurface& s) { planes_[index] = s; }
-    const PatternSurface& at(uint32_t slot) const;
+    const PatternSurface& at(uint32_t slot) const {
+        return (slot & kPlaneSlot) ? planes_[slot & ~kPlaneSlot] : primitives_[slot];
+    }
     bool empty() const { return primitives_.empty() && planes_.empty(); }
 
 private:
@@ -120,25 +122,34 @@ public:
     /// `surface` must outlive evaluate().
     [[gnu::always_inline]] void add(uint32_t point, const PatternSurface& surface, const Vec3& p,
                                     const Vec3& dir, const Vec3& n, float width, float scale) {
-        const std::size_t k = count_++;
-        px_[k] = p.x, py_[k] = p.y, pz_[k] = p.z;
-        dx_[k] = dir.x, dy_[k] = dir.y, dz_[k] = dir.z;
-        nx_[k] = n.x, ny_[k] = n.y, nz_[k] = n.z;
-        width_[k] = width, scale_[k] = scale, point_[k] = point;
+        // One record a point: a few stores through one pointer (parallel arrays cost a
+        // reload of each array's address after every store, which might have changed it).
         // Planes are in world space already (inObject): no transform to look up.
-        surface_[k] = surface.shape == PatternSurface::Shape::Plane ? nullptr : &surface;
+        entries_[count_++] = {p,
+                              dir,
+                              n,
+                              width,
+                              scale,
+                              point,
+                              surface.shape == PatternSurface::Shape::Plane ? nullptr : &surface};
     }
     std::size_t size() const { return count_; }
-    uint32_t point(std::size_t k) const { return point_[k]; }
+    uint32_t point(std::size_t k) const { return entries_[k].point; }
     /// The odd fraction of each point added, in the order added.
     const float* evaluate();
 
 private:
+    struct Entry {
+        Vec3 p, dir, n;
+        float width, scale;
+        uint32_t point;
+        const PatternSurface* surface;  ///< Null for a plane.
+    };
     std::size_t count_ = 0;
-    ScratchVector<float> px_, py_, pz_, dx_, dy_, dz_, nx_, ny_, nz_, width_, hx_, hy_, hz_, scale_,
-        odd_;
-    ScratchVector<uint32_t> point_;
-    ScratchVector<const PatternSurface*> surface_;  ///< Null for a plane.
+    ScratchVector<Entry> entries_;
+    /// What the box filter reads (checkerOddFractions): points in their object's space, the
+    /// box's half-widths, the cells' sides; and its answers.
+    ScratchVector<float> px_, py_, pz_, hx_, hy_, hz_, scale_, odd_;
 };
 
 }  // namespace rs
