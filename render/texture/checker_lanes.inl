@@ -60,16 +60,26 @@ inline D oddFractions(const D (&p)[3], const D (&h)[3], D scale) {
 /// The odd fractions of `count` points, four at a time (the last lanes padded).
 inline void oddFractionsOf(std::size_t count, const CheckerPoints& in, float* odd) {
     for (std::size_t first = 0; first < count; first += kWidth) {
-        double lanes[7][kWidth];
-        for (int k = 0; k < kWidth; ++k) {
-            const std::size_t i = first + std::size_t(k) < count ? first + std::size_t(k) : first;
-            const float* from[7] = {in.px, in.py, in.pz, in.hx, in.hy, in.hz, in.scale};
-            for (int a = 0; a < 7; ++a) lanes[a][k] = double(from[a][i]);
+        const float* from[7] = {in.px, in.py, in.pz, in.hx, in.hy, in.hz, in.scale};
+        D lanes[7] = {};
+        if (first + kWidth <= count) {
+            // A whole group: four floats widened at once (lanes assembled from scalar stores
+            // would be read back through memory, a store-forwarding stall each).
+            typedef float F __attribute__((vector_size(kWidth * sizeof(float))));
+            for (int a = 0; a < 7; ++a) {
+                F v;
+                std::memcpy(&v, from[a] + first, sizeof v);
+                lanes[a] = __builtin_convertvector(v, D);
+            }
+        } else {
+            for (int k = 0; k < kWidth; ++k) {
+                const std::size_t i =
+                    first + std::size_t(k) < count ? first + std::size_t(k) : first;
+                for (int a = 0; a < 7; ++a) lanes[a][k] = double(from[a][i]);
+            }
         }
-        D p[3], h[3], scale;
-        for (int a = 0; a < 3; ++a)
-            std::memcpy(&p[a], lanes[a], sizeof(D)), std::memcpy(&h[a], lanes[3 + a], sizeof(D));
-        std::memcpy(&scale, lanes[6], sizeof(D));
+        const D p[3] = {lanes[0], lanes[1], lanes[2]}, h[3] = {lanes[3], lanes[4], lanes[5]};
+        const D scale = lanes[6];
         const D f = oddFractions(p, h, scale);
         for (int k = 0; k < kWidth && first + std::size_t(k) < count; ++k)
             odd[first + std::size_t(k)] = float(f[k]);
