@@ -345,9 +345,8 @@ void CompiledScene::environmentColors(std::size_t count, const Directions& dirs,
         return;
     }
     environmentSpots(count, dirs, environment_.rotation, spread, spots);
-    const TextureStore& store = TextureStore::shared();
-    for (std::size_t i = 0; i < count; ++i)
-        out[i] = environment_.intensity * store.environmentAt(environment_.texture, spots[i]);
+    TextureStore::shared().environmentAt(environment_.texture, count, spots, out);
+    for (std::size_t i = 0; i < count; ++i) out[i] = environment_.intensity * out[i];
 }
 
 CompiledScene CompiledScene::withBoxProxy(ObjectId id) const {

@@ -260,6 +260,36 @@ inline Float4 floorLanes(const Float4& x) {
     return t > x ? t - 1.0f : t;
 }
 
+/// footing() of four points at once, at levels of fw x fh texels (w x h as integers), lane by
+/// lane; the same operations, so each lane gets footing()'s bits. Whole levels need no x1:
+/// their rows repeat the first texel at the end.
+struct FootingLanes {
+    Int4 x0, y0, y1;
+    Float4 ax, ay;
+};
+template <bool ClampT>
+[[gnu::always_inline]] inline FootingLanes footingLanes(const Float4& s, const Float4& t,
+                                                        const Float4& fw, const Float4& fh,
+                                                        const Int4& w, const Int4& h) {
+    const Float4 x = s * fw - 0.5f, y = t * fh - 0.5f;
+    const Float4 yc = y < -1.0f ? Float4{} - 1.0f : (y > fh ? fh : y);
+    const Int4 ix = __builtin_convertvector(x + 1.0f, Int4) - 1;
+    const Int4 iy = __builtin_convertvector(yc + 1.0f, Int4) - 1;
+    FootingLanes f;
+    f.ax = x - __builtin_convertvector(ix, Float4);
+    f.ay = y - __builtin_convertvector(iy, Float4);
+    f.x0 = ix < 0 ? w - 1 : (ix < w - 1 ? ix : w - 1);
+    if (ClampT) {
+        const Int4 below = iy + 1;
+        f.y0 = iy < 0 ? Int4{} : (iy < h - 1 ? iy : h - 1);
+        f.y1 = below < 0 ? Int4{} : (below < h - 1 ? below : h - 1);
+    } else {
+        f.y0 = iy < 0 ? h - 1 : (iy < h - 1 ? iy : h - 1);
+        f.y1 = f.y0 + 1 == h ? Int4{} : f.y0 + 1;
+    }
+    return f;
+}
+
 /// The filter over two whole levels: no call and no lock, only loads. The bilinear samples
 /// of a lookup (each sample point at the fine level and, when `blend` > 0, the coarse one)
 /// find their texels four at a time in vector lanes; each is then two loads of two texels.
@@ -300,30 +330,15 @@ Float4 filterWhole(const Whole<T>& fine, const Whole<T>& coarse, const Spread& a
         Float4 s = a.s + a.ms * k, t = a.t + a.mt * k;
         s -= floorLanes(s);
         if (!ClampT) t -= floorLanes(t);
-        const Float4 x = s * fw - 0.5f, y = t * fh - 0.5f;
-        const Float4 yc = y < -1.0f ? Float4{} - 1.0f : (y > fh ? fh : y);
-        const Int4 ix = __builtin_convertvector(x + 1.0f, Int4) - 1;
-        const Int4 iy = __builtin_convertvector(yc + 1.0f, Int4) - 1;
-        const Float4 ax = x - __builtin_convertvector(ix, Float4);
-        const Float4 ay = y - __builtin_convertvector(iy, Float4);
-        const Int4 x0 = ix < 0 ? w - 1 : (ix < w - 1 ? ix : w - 1);
-        Int4 y0, y1;
-        if (ClampT) {
-            const Int4 below = iy + 1;
-            y0 = iy < 0 ? Int4{} : (iy < h - 1 ? iy : h - 1);
-            y1 = below < 0 ? Int4{} : (below < h - 1 ? below : h - 1);
-        } else {
-            y0 = iy < 0 ? h - 1 : (iy < h - 1 ? iy : h - 1);
-            y1 = y0 + 1 == h ? Int4{} : y0 + 1;
-        }
+        const FootingLanes f = footingLanes<ClampT>(s, t, fw, fh, w, h);
         const int count = std::min(4, lanes - first);
         for (int l = 0; l < count; ++l) {
             const int level = odd[l] ? 1 : 0;
-            const T* column = base[level] + std::size_t(x0[l]) * 4;
+            const T* column = base[level] + std::size_t(f.x0[l]) * 4;
             Float8 top, bottom;
-            loadPair(column + std::size_t(y0[l]) * stride[level], top);
-            loadPair(column + std::size_t(y1[l]) * stride[level], bottom);
-            sum += blend(top, bottom, ax[l], ay[l]) * (level ? coarseWeight : fineWeight);
+            loadPair(column + std::size_t(f.y0[l]) * stride[level], top);
+            loadPair(column + std::size_t(f.y1[l]) * stride[level], bottom);
+            sum += blend(top, bottom, f.ax[l], f.ay[l]) * (level ? coarseWeight : fineWeight);
         }
     }
     return sum;
@@ -494,6 +509,58 @@ bool filteredLookup(const TexelSource& source, float s, float t, float dsdx, flo
             return false;
     }
     out = Color(sum[0], sum[1], sum[2]);
+    return true;
+}
+
+namespace {
+
+/// magnifiedSpots at a whole level of w x h texels: filterWhole's one-sample path in lanes.
+template <class T>
+void magnifiedWhole(const T* texels, int w, int h, const Float4& s, const Float4& t, float scale,
+                    Color* out) {
+    const FootingLanes f =
+        footingLanes<true>(s, t, Float4{} + float(w), Float4{} + float(h), Int4{} + w, Int4{} + h);
+    const std::size_t stride = std::size_t(w + 1) * 4;
+    for (int l = 0; l < 4; ++l) {
+        const T* column = texels + std::size_t(f.x0[l]) * 4;
+        Float8 top, bottom;
+        loadPair(column + std::size_t(f.y0[l]) * stride, top);
+        loadPair(column + std::size_t(f.y1[l]) * stride, bottom);
+        const Float4 c = (Float4{} + blend(top, bottom, f.ax[l], f.ay[l])) * scale;
+        out[l] = Color(c[0], c[1], c[2]);
+    }
+}
+
+}  // namespace
+
+bool magnifiedSpots(const TexelSource& source, const EnvironmentSpot* spots, Color* out) {
+    if (source.levels <= 0) return false;
+    // The four spots' fields, lane by lane.
+    Float4 row[4];
+    std::memcpy(row, spots, sizeof row);
+    const Float4 st01 = __builtin_shufflevector(row[0], row[1], 0, 1, 4, 5);
+    const Float4 st23 = __builtin_shufflevector(row[2], row[3], 0, 1, 4, 5);
+    const Float4 wide01 = __builtin_shufflevector(row[0], row[1], 2, 3, 6, 7);
+    const Float4 wide23 = __builtin_shufflevector(row[2], row[3], 2, 3, 6, 7);
+    Float4 s = __builtin_shufflevector(st01, st23, 0, 2, 4, 6);
+    const Float4 t = __builtin_shufflevector(st01, st23, 1, 3, 5, 7);
+    const Float4 ds = __builtin_shufflevector(wide01, wide23, 0, 2, 4, 6);
+    const Float4 dt = __builtin_shufflevector(wide01, wide23, 1, 3, 5, 7);
+    // filteredLookup's test for one magnified sample at level 0, with derivatives (ds, 0) and
+    // (0, dt): the zero terms add nothing to the squares. Coordinates must be finite.
+    const float w0 = 0.5f * float(source.width[0]), h0 = 0.5f * float(source.height[0]);
+    const Float4 xs = ds * w0, yt = dt * h0;
+    const Int4 magnified =
+        (xs * xs <= 0.25f) & (yt * yt <= 0.25f) & (s - s == 0.0f) & (t - t == 0.0f);
+    if (!(magnified[0] & magnified[1] & magnified[2] & magnified[3])) return false;
+    const void* whole = source.residentLevel(0);
+    if (!whole) return false;
+    s -= floorLanes(s);  // wrapped()
+    const int w = source.width[0], h = source.height[0];
+    if (source.unitRange)
+        magnifiedWhole(static_cast<const std::uint16_t*>(whole), w, h, s, t, 1.0f / 65535.0f, out);
+    else
+        magnifiedWhole(static_cast<const float*>(whole), w, h, s, t, 1.0f, out);
     return true;
 }
 

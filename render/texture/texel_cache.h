@@ -9,6 +9,7 @@
 #include <mutex>
 
 #include "core/math.h"
+#include "texture/environment_spot.h"
 
 namespace rs {
 
@@ -95,5 +96,11 @@ std::size_t residentTexelBytes();
 /// Returns false (and leaves `out` alone) when a block could not be fetched.
 bool filteredLookup(const TexelSource& source, float s, float t, float dsdx, float dtdx, float dsdy,
                     float dtdy, bool clampT, Color& out);
+
+/// filteredLookup of four environment spots (derivatives (ds, 0) and (0, dt), t clamped) at
+/// once, each bit for bit what it gives alone, when the lookups are the common ones under a
+/// sky: every footprint magnifies (one bilinear sample at level 0) and level 0 is kept whole.
+/// False otherwise, `out` untouched: look them up one by one.
+bool magnifiedSpots(const TexelSource& source, const EnvironmentSpot* spots, Color* out);
 
 }  // namespace rs

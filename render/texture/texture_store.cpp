@@ -270,6 +270,16 @@ Color TextureStore::environmentAt(const TextureHandle& texture, const Environmen
     return c;
 }
 
+void TextureStore::environmentAt(const TextureHandle& texture, std::size_t count,
+                                 const EnvironmentSpot* spots, Color* out) const {
+    std::size_t i = 0;
+    if (texture.texels)
+        for (; i + 4 <= count; i += 4)
+            if (!magnifiedSpots(*texture.texels, spots + i, out + i))
+                for (std::size_t k = i; k < i + 4; ++k) out[k] = environmentAt(texture, spots[k]);
+    for (; i < count; ++i) out[i] = environmentAt(texture, spots[i]);
+}
+
 Color missingTexture(float s, float t) {
     const double cells = std::floor(8.0 * double(s)) + std::floor(8.0 * double(t));
     const bool even = cells - 2.0 * std::floor(0.5 * cells) == 0.0;

@@ -96,6 +96,9 @@ public:
     /// The environment at a spot environmentSpots found (many directions at once):
     /// environment() is environmentSpots for one direction, then this.
     Color environmentAt(const TextureHandle& texture, const EnvironmentSpot& spot) const;
+    /// environmentAt of `count` spots into out[0, count): most skies' lookups four at a time.
+    void environmentAt(const TextureHandle& texture, std::size_t count,
+                       const EnvironmentSpot* spots, Color* out) const;
 
 private:
     TextureStore();

@@ -1,11 +1,16 @@
 // filteredLookup over an in-memory pyramid: exact texels through both the whole-level and the
-// block path, each fetched once, and footprints elongated along one axis kept sharp across it.
+// block path, each fetched once, and footprints elongated along one axis kept sharp across it;
+// magnifiedSpots, four sky lookups at once, against filteredLookup of each.
 #include "texture/texel_cache.h"
 
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
+#include <cstring>
 #include <functional>
+#include <limits>
+#include <random>
 #include <vector>
 
 namespace rs {
@@ -108,6 +113,62 @@ TEST(TexelCache, AFootprintLongAcrossStripesIsSharpAlongThem) {
     ASSERT_TRUE(
         filteredLookup(stripes, 0.3f, 4.0f / 64.0f, 0.0f, 1.0f, 1.0f / 64.0f, 0.0f, false, c));
     EXPECT_NEAR(c.x, 0.5f, 0.1f);
+}
+
+bool sameBits(const Color& a, const Color& b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+TEST(TexelCache, MagnifiedSpotsAreEachSpotsOwnLookupBitForBit) {
+    // Four environment spots at once (t clamped, derivatives (ds, 0) and (0, dt)) give what
+    // filteredLookup gives each alone, for floats and for 16-bit fractions, over the seam in
+    // s and past the first and last rows in t.
+    FunctionTexels floats(64, 32, code);
+    FunctionTexels fractions(64, 32, [](int level, int x, int y) {
+        return float((x * 37 + y * 11 + level * 5) % 64) / 128.0f;
+    });
+    fractions.unitRange = true;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> coordinate(-0.2f, 1.2f), narrow(0.0f, 1.0f / 160.0f);
+    const TexelSource* sources[] = {&floats, &fractions};
+    for (const TexelSource* source : sources) {
+        for (int round = 0; round < 2000; ++round) {
+            EnvironmentSpot spots[4];
+            for (auto& spot : spots)
+                spot = {coordinate(rng), coordinate(rng), narrow(rng), narrow(rng)};
+            if (round % 7 == 0) spots[round % 4].s = 1.0f;  // wraps to 0
+            Color got[4];
+            ASSERT_TRUE(magnifiedSpots(*source, spots, got)) << "round " << round;
+            for (int k = 0; k < 4; ++k) {
+                Color alone;
+                ASSERT_TRUE(filteredLookup(*source, spots[k].s, spots[k].t, spots[k].ds, 0.0f, 0.0f,
+                                           spots[k].dt, true, alone));
+                ASSERT_TRUE(sameBits(got[k], alone)) << "round " << round << " spot " << k << ": "
+                                                     << got[k].x << " alone " << alone.x;
+            }
+        }
+    }
+}
+
+TEST(TexelCache, MagnifiedSpotsLeaveOtherLookupsToTheFilter) {
+    // One spot wider than half a texel, a coordinate that is not a number, or a level too
+    // large to keep whole: false, and nothing written.
+    FunctionTexels small(64, 32, code);
+    const Color untouched(-7.0f);
+    const auto refused = [&](const TexelSource& source, const EnvironmentSpot(&spots)[4]) {
+        Color out[4] = {untouched, untouched, untouched, untouched};
+        const bool answered = magnifiedSpots(source, spots, out);
+        for (const Color& c : out) EXPECT_EQ(c, untouched);
+        return !answered;
+    };
+    const EnvironmentSpot narrow{0.3f, 0.4f, 0.001f, 0.001f};
+    EXPECT_TRUE(refused(small, {narrow, narrow, {0.3f, 0.4f, 0.05f, 0.001f}, narrow}));
+    EXPECT_TRUE(refused(small, {narrow, {0.3f, 0.4f, 0.001f, 0.05f}, narrow, narrow}));
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_TRUE(refused(small, {narrow, narrow, narrow, {nan, 0.4f, 0.001f, 0.001f}}));
+    EXPECT_TRUE(refused(small, {{0.3f, nan, 0.001f, 0.001f}, narrow, narrow, narrow}));
+    FunctionTexels big(2048, 1024, code);
+    EXPECT_TRUE(refused(big, {narrow, narrow, narrow, {0.3f, 0.4f, 0.0001f, 0.0001f}}));
 }
 
 }  // namespace
