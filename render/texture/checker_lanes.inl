@@ -5,6 +5,7 @@
 
 constexpr int kWidth = 4;
 typedef double D __attribute__((vector_size(kWidth * sizeof(double))));
+typedef float F __attribute__((vector_size(kWidth * sizeof(float))));
 
 inline D splat(double x) {
     return D{} + x;
@@ -65,7 +66,6 @@ inline void oddFractionsOf(std::size_t count, const CheckerPoints& in, float* od
         if (first + kWidth <= count) {
             // A whole group: four floats widened at once (lanes assembled from scalar stores
             // would be read back through memory, a store-forwarding stall each).
-            typedef float F __attribute__((vector_size(kWidth * sizeof(float))));
             for (int a = 0; a < 7; ++a) {
                 F v;
                 std::memcpy(&v, from[a] + first, sizeof v);
@@ -81,7 +81,12 @@ inline void oddFractionsOf(std::size_t count, const CheckerPoints& in, float* od
         const D p[3] = {lanes[0], lanes[1], lanes[2]}, h[3] = {lanes[3], lanes[4], lanes[5]};
         const D scale = lanes[6];
         const D f = oddFractions(p, h, scale);
-        for (int k = 0; k < kWidth && first + std::size_t(k) < count; ++k)
-            odd[first + std::size_t(k)] = float(f[k]);
+        if (first + kWidth <= count) {
+            const F narrowed = __builtin_convertvector(f, F);
+            std::memcpy(odd + first, &narrowed, sizeof narrowed);
+        } else {
+            for (int k = 0; k < kWidth && first + std::size_t(k) < count; ++k)
+                odd[first + std::size_t(k)] = float(f[k]);
+        }
     }
 }
