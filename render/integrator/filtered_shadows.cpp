@@ -1,18 +1,10 @@
 // Shadows through glass (scenes/FORMAT.md "Shadows"): a shadow ray the engine reports
 // blocked walks on by closest hits, keeping transparency x colour at each transparent
-// surface, and what it kept is added to the light's term. Also the one place a surface's colour
-// at a point is decided (its checker or image, else its flat colour); patternLooks gathers a
-// level's checkered points to run their filters together, to the same bits.
+// surface (its colour there from surfaceColor), and what it kept is added to the light's term.
 #include "integrator/trace_kernel.h"
 #include "integrator/trace_workspace.h"
 
 namespace rs {
-
-Color TraceKernel::surfaceColor(const CompiledMaterial& m, uint32_t slot, const Vec3& p,
-                                const Vec3& n, const Footprint& footprint) const {
-    if (m.pattern.kind == MaterialPattern::Kind::None) return m.color;
-    return patternColor(m.pattern, scene_.patterns().at(slot), p, n, footprint);
-}
 
 Color TraceKernel::transmission(const Vec3& origin, const Vec3& dir, float tmax) const {
     // A shadow ray through glass (scenes/FORMAT.md "Shadows"): each transparent surface it
@@ -35,8 +27,7 @@ Color TraceKernel::transmission(const Vec3& origin, const Vec3& dir, float tmax)
         // cone there (a shadow carries no cone of its own, and point samples of a texture
         // alias and read its finest level at random).
         const float width = originWidth_ + spread_ * glm::length(p - scene_.camera().origin());
-        kept *=
-            m.transparency * surfaceColor(m, hit.slot, p, hit.n, footprintAt(dir, hit.n, width));
+        kept *= m.transparency * surfaceColor(m, hit.slot, p, hit.n, dir, width);
         if (kept == Color(0.0f)) return kept;
         o = p + dir * eps_;
         left -= hit.t + eps_;

@@ -303,7 +303,7 @@ template <bool AsDiffuse>
                          m.pattern.checkerScale);
             continue;
         }
-        setLook(j, m, surfaceColor(m, hits.slot[i], p, normal, footprintAt(d, normal, width)));
+        setLook(j, m, surfaceColor(m, hits.slot[i], p, normal, d, width));
     }
     if (checkers.size() == 0) return;
     const float* odd = checkers.evaluate();

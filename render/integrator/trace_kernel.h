@@ -12,6 +12,7 @@
 #include "integrator/light_sampling.h"
 #include "integrator/whitted.h"
 #include "snapshot/footprint.h"
+#include "snapshot/surface_patterns.h"
 
 namespace rs {
 
@@ -233,9 +234,15 @@ private:
     /// Adds what centre-sampled light `li` gives points [first, end) through glass.
     template <bool AsDiffuse>
     void addTransmitted(Workspace& ws, uint32_t li, std::size_t first, std::size_t end) const;
-    /// Material `m`'s colour at world point p (unit normal n) of engine slot `slot`.
+    /// Material `m`'s colour at world point p (unit normal n) of engine slot `slot`, reached
+    /// along `dir` by a cone `width` wide: the one place a surface's colour at a point is
+    /// decided (its checker or image, else its flat colour); patternLooks gathers a level's
+    /// checkered points to run their filters together, to the same bits.
     Color surfaceColor(const CompiledMaterial& m, uint32_t slot, const Vec3& p, const Vec3& n,
-                       const Footprint& footprint) const;
+                       const Vec3& dir, float width) const {
+        if (m.pattern.kind == MaterialPattern::Kind::None) return m.color;
+        return patternColor(m.pattern, scene_.patterns().at(slot), p, n, dir, width);
+    }
     /// A deferred shading record's Lambert + Phong terms.
     SurfaceTerms<float> recordTerms(const ShadingRecord& r) const;
 

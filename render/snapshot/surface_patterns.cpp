@@ -143,14 +143,30 @@ const float* CheckerBatch::evaluate() {
     return odd_.data();
 }
 
-Color patternColor(const MaterialPattern& pattern, const PatternSurface& surface, const Vec3& p,
-                   const Vec3& n, const Footprint& footprint) {
+Color patternColor(const MaterialPattern& pattern, const PatternSurface& surface, Vec3 p, Vec3 n,
+                   Vec3 dir, float width) {
     if (pattern.kind == MaterialPattern::Kind::Checker) {
-        const CheckerBox box = checkerBoxAt(surface, p, footprint);
+        const CheckerBox box = checkerBoxAt(surface, p, footprintAt(dir, n, width));
         return checkerColor(pattern,
                             checkerOddFraction(box.p, box.halfWidth, pattern.checkerScale));
     }
-    const auto [po, a1, a2] = inObject(surface, p, footprint);
+    // inObject's point and half-axes, the axes kept as vector lanes: held as Vec3s through
+    // the calls below, they were spilt and reloaded in pieces that straddled each other, a
+    // store-forwarding stall a lookup.
+    const FootprintAxes<float> f = footprintAxes(dir.x, dir.y, dir.z, n.x, n.y, n.z, width);
+    Vec3 po = p;
+    FloatLanes a1{f.a1x, f.a1y, f.a1z, 0.0f}, a2{f.a2x, f.a2y, f.a2z, 0.0f};
+    if (surface.shape != PatternSurface::Shape::Plane) {
+        const InObject o =
+            inObject(surface, p, {Vec3(f.a1x, f.a1y, f.a1z), Vec3(f.a2x, f.a2y, f.a2z)});
+        po = o.p;
+        a1 = FloatLanes{o.a1.x, o.a1.y, o.a1.z, 0.0f};
+        a2 = FloatLanes{o.a2.x, o.a2.y, o.a2.z, 0.0f};
+    }
+    // glm::dot's order: (x x' + y y') + z z'.
+    const auto dot = [](const Vec3& u, const FloatLanes& a) {
+        return u.x * a[0] + u.y * a[1] + u.z * a[2];
+    };
     ShapeUV uv{0.0f, 0.0f, Vec3(0.0f), Vec3(0.0f)};
     switch (surface.shape) {
         case PatternSurface::Shape::Sphere:
@@ -174,8 +190,8 @@ Color patternColor(const MaterialPattern& pattern, const PatternSurface& surface
     const float su = pattern.scaleU, sv = pattern.scaleV;
     const float s = uv.u * su + pattern.offsetU;
     const float t = 1.0f - (uv.v * sv + pattern.offsetV);
-    const float dsdx = 2.0f * glm::dot(uv.dudp, a1) * su, dtdx = -2.0f * glm::dot(uv.dvdp, a1) * sv;
-    const float dsdy = 2.0f * glm::dot(uv.dudp, a2) * su, dtdy = -2.0f * glm::dot(uv.dvdp, a2) * sv;
+    const float dsdx = 2.0f * dot(uv.dudp, a1) * su, dtdx = -2.0f * dot(uv.dvdp, a1) * sv;
+    const float dsdy = 2.0f * dot(uv.dudp, a2) * su, dtdy = -2.0f * dot(uv.dvdp, a2) * sv;
     if (!pattern.texture) return missingTexture(s, t);
     return TextureStore::shared().lookup(pattern.texture, s, t, dsdx, dtdx, dsdy, dtdy);
 }

@@ -68,11 +68,14 @@ private:
     std::vector<PatternSurface> primitives_, planes_;
 };
 
-/// The colour of `pattern` at world point p with unit world normal n on `surface`, filtered
-/// over `footprint`: the checker by its analytic box filter, an image by the TextureStore's
-/// mip-mapped lookup. A missing image shows the loud "missing" pattern.
-Color patternColor(const MaterialPattern& pattern, const PatternSurface& surface, const Vec3& p,
-                   const Vec3& n, const Footprint& footprint);
+/// The colour of `pattern` at world point p with unit world normal n on `surface`, reached
+/// along unit direction `dir` by a cone `width` wide there, filtered over that cone's
+/// footprint (footprintAt): the checker by its analytic box filter, an image by the
+/// TextureStore's mip-mapped lookup. A missing image shows the loud "missing" pattern. The
+/// arguments come in registers (a footprint built by the caller went through the stack in
+/// pieces the callee read back across, a store-forwarding stall every call).
+Color patternColor(const MaterialPattern& pattern, const PatternSurface& surface, Vec3 p, Vec3 n,
+                   Vec3 dir, float width);
 
 /// A hit point and its footprint's half-axes in the surface's own space.
 struct InObject {

@@ -159,8 +159,7 @@ TEST(CheckerBatch, GivesEachPointTheColourPatternColorGivesItAlone) {
         for (std::size_t i = 0; i < count; ++i) {
             EXPECT_EQ(batch.point(i), uint32_t(count - i));
             const Color batched = checkerColor(checker, odd[i]);
-            const Color alone =
-                patternColor(checker, *on[i], p[i], n[i], footprintAt(dir[i], n[i], width[i]));
+            const Color alone = patternColor(checker, *on[i], p[i], n[i], dir[i], width[i]);
             for (int c = 0; c < 3; ++c)
                 ASSERT_TRUE(sameBits(batched[c], alone[c]))
                     << count << " points, point " << i << " channel " << c << ": " << batched[c]
