@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 namespace rs {
@@ -29,6 +30,17 @@ inline FloatLanes loadLanes(const float* p) {
 }
 inline void storeLanes(float* p, FloatLanes v) {
     __builtin_memcpy(p, &v, sizeof v);
+}
+/// Elements [first, first + 4) of an array of `count` floats as lanes: one load when all
+/// four are there, else one at a time with element `first` in the places past the end.
+/// (Lanes filled one by one through memory and read back as a vector would wait on store
+/// forwarding; a whole group never does.)
+inline FloatLanes gatherLanes(const float* p, std::size_t first, std::size_t count) {
+    if (first + kLaneWidth <= count) return loadLanes(p + first);
+    FloatLanes v{};
+    for (std::size_t k = 0; k < std::size_t(kLaneWidth); ++k)
+        v[k] = p[first + k < count ? first + k : first];
+    return v;
 }
 
 /// float of values below 2^31 (converted as the signed integers they equal): one SSE2

@@ -163,10 +163,6 @@ Color patternColor(const MaterialPattern& pattern, const PatternSurface& surface
         a1 = FloatLanes{o.a1.x, o.a1.y, o.a1.z, 0.0f};
         a2 = FloatLanes{o.a2.x, o.a2.y, o.a2.z, 0.0f};
     }
-    // glm::dot's order: (x x' + y y') + z z'.
-    const auto dot = [](const Vec3& u, const FloatLanes& a) {
-        return u.x * a[0] + u.y * a[1] + u.z * a[2];
-    };
     ShapeUV uv{0.0f, 0.0f, Vec3(0.0f), Vec3(0.0f)};
     switch (surface.shape) {
         case PatternSurface::Shape::Sphere:
@@ -190,8 +186,9 @@ Color patternColor(const MaterialPattern& pattern, const PatternSurface& surface
     const float su = pattern.scaleU, sv = pattern.scaleV;
     const float s = uv.u * su + pattern.offsetU;
     const float t = 1.0f - (uv.v * sv + pattern.offsetV);
-    const float dsdx = 2.0f * dot(uv.dudp, a1) * su, dtdx = -2.0f * dot(uv.dvdp, a1) * sv;
-    const float dsdy = 2.0f * dot(uv.dudp, a2) * su, dtdy = -2.0f * dot(uv.dvdp, a2) * sv;
+    const Vec3 b1(a1[0], a1[1], a1[2]), b2(a2[0], a2[1], a2[2]);
+    const float dsdx = 2.0f * glm::dot(uv.dudp, b1) * su, dtdx = -2.0f * glm::dot(uv.dvdp, b1) * sv;
+    const float dsdy = 2.0f * glm::dot(uv.dudp, b2) * su, dtdy = -2.0f * glm::dot(uv.dvdp, b2) * sv;
     if (!pattern.texture) return missingTexture(s, t);
     return TextureStore::shared().lookup(pattern.texture, s, t, dsdx, dtdx, dsdy, dtdy);
 }

@@ -3,9 +3,9 @@
 #include "texture/checker.h"
 
 #include <cstddef>
-#include <cstring>
 
 #include "core/floor_lanes.h"
+#include "core/lanes.h"
 
 namespace rs {
 

@@ -3,9 +3,8 @@
 // Each operation is the one scalar code would do (doubles, exact floors, the same order), so
 // every lane's answer is bit for bit the one a point alone would get.
 
-constexpr int kWidth = 4;
+constexpr int kWidth = kLaneWidth;  // gatherLanes gives four
 typedef double D __attribute__((vector_size(kWidth * sizeof(double))));
-typedef float F __attribute__((vector_size(kWidth * sizeof(float))));
 
 inline D splat(double x) {
     return D{} + x;
@@ -62,28 +61,14 @@ inline D oddFractions(const D (&p)[3], const D (&h)[3], D scale) {
 inline void oddFractionsOf(std::size_t count, const CheckerPoints& in, float* odd) {
     for (std::size_t first = 0; first < count; first += kWidth) {
         const float* from[7] = {in.px, in.py, in.pz, in.hx, in.hy, in.hz, in.scale};
-        D lanes[7] = {};
-        if (first + kWidth <= count) {
-            // A whole group: four floats widened at once (lanes assembled from scalar stores
-            // would be read back through memory, a store-forwarding stall each).
-            for (int a = 0; a < 7; ++a) {
-                F v;
-                std::memcpy(&v, from[a] + first, sizeof v);
-                lanes[a] = __builtin_convertvector(v, D);
-            }
-        } else {
-            for (int k = 0; k < kWidth; ++k) {
-                const std::size_t i =
-                    first + std::size_t(k) < count ? first + std::size_t(k) : first;
-                for (int a = 0; a < 7; ++a) lanes[a][k] = double(from[a][i]);
-            }
-        }
+        D lanes[7];
+        for (int a = 0; a < 7; ++a)
+            lanes[a] = __builtin_convertvector(gatherLanes(from[a], first, count), D);
         const D p[3] = {lanes[0], lanes[1], lanes[2]}, h[3] = {lanes[3], lanes[4], lanes[5]};
         const D scale = lanes[6];
         const D f = oddFractions(p, h, scale);
         if (first + kWidth <= count) {
-            const F narrowed = __builtin_convertvector(f, F);
-            std::memcpy(odd + first, &narrowed, sizeof narrowed);
+            storeLanes(odd + first, __builtin_convertvector(f, FloatLanes));
         } else {
             for (int k = 0; k < kWidth && first + std::size_t(k) < count; ++k)
                 odd[first + std::size_t(k)] = float(f[k]);

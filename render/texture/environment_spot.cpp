@@ -2,7 +2,6 @@
 #include "texture/environment_spot.h"
 
 #include <algorithm>
-#include <cstring>
 
 #include "core/fast_angles.h"
 #include "core/floor_lanes.h"
@@ -26,18 +25,8 @@ void environmentSpots(std::size_t count, const Directions& d, float rotationDegr
     const float cone = std::max(coneAngle, 0.0f);
     const float dt = cone * kInversePi;
     for (std::size_t first = 0; first < count; first += kWidth) {
-        F x{}, y{}, z{};
-        if (first + kWidth <= count) {
-            // A whole group: one load an axis (lanes assembled from scalar stores would be
-            // read back through memory, a store-forwarding stall each).
-            x = loadLanes(d.x + first), y = loadLanes(d.y + first), z = loadLanes(d.z + first);
-        } else {
-            for (int k = 0; k < kWidth; ++k) {
-                const std::size_t i =
-                    first + std::size_t(k) < count ? first + std::size_t(k) : first;
-                x[k] = d.x[i], y[k] = d.y[i], z[k] = d.z[i];
-            }
-        }
+        F x = gatherLanes(d.x, first, count), y = gatherLanes(d.y, first, count);
+        F z = gatherLanes(d.z, first, count);
         F rho = sqrtLanes(x * x + z * z);
         F length = sqrtLanes(rho * rho + y * y);
         const auto up = !(length > 0.0f);  // zero or NaN: straight up

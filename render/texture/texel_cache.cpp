@@ -535,7 +535,8 @@ void magnifiedWhole(const T* texels, int w, int h, const Float4& s, const Float4
 
 bool magnifiedSpots(const TexelSource& source, const EnvironmentSpot* spots, Color* out) {
     if (source.levels <= 0) return false;
-    // The four spots' fields, lane by lane.
+    // The four spots' fields, lane by lane (each spot is four floats: one row).
+    static_assert(sizeof(EnvironmentSpot) == sizeof(Float4));
     Float4 row[4];
     std::memcpy(row, spots, sizeof row);
     const Float4 st01 = __builtin_shufflevector(row[0], row[1], 0, 1, 4, 5);
