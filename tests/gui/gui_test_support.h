@@ -1,13 +1,16 @@
 // Helpers shared by the GUI tests: isolated settings, waiting for a final frame, finding ids.
 #pragma once
 
+#include <QColor>
 #include <QCoreApplication>
 #include <QFileInfo>
+#include <QImage>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QString>
 #include <QTest>
 #include <chrono>
+#include <filesystem>
 #include <memory>
 
 #include "adapter/session_controller.h"
@@ -48,6 +51,18 @@ inline void isolateSettings() {
 
 inline QString scenePath(const char* name) {
     return QStringLiteral(RAYSTUDIO_SCENES_DIR "/") + QString::fromLatin1(name);
+}
+
+/// A 4 x 4 PNG of one colour, dated `age` seconds from now (each version its own stamp, as a
+/// paint program saving the file again gives it).
+inline bool writeFlat(const QString& path, const QColor& c, int age) {
+    QImage image(4, 4, QImage::Format_RGB888);
+    image.fill(c);
+    if (!image.save(path, "PNG")) return false;
+    namespace fs = std::filesystem;
+    const fs::path file = path.toStdString();
+    fs::last_write_time(file, fs::file_time_type::clock::now() + std::chrono::seconds(age));
+    return true;
 }
 
 /// Sends pending document updates and waits (test-only) until the frame is final, then

@@ -25,7 +25,6 @@
 #include <QUrl>
 #include <QtTest>
 #include <cmath>
-#include <filesystem>
 
 #include "display/display_frame.h"
 #include "gui_test_support.h"
@@ -51,17 +50,6 @@ bool writeRedGreen(const QString& path) {
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 8; ++x) image.setPixelColor(x, y, x < 4 ? Qt::red : Qt::green);
     return image.save(path, "PNG");
-}
-
-/// A 4 x 4 PNG of one colour, dated `age` seconds from now (each version its own stamp).
-bool writeFlat(const QString& path, const QColor& c, int age) {
-    QImage image(4, 4, QImage::Format_RGB888);
-    image.fill(c);
-    if (!image.save(path, "PNG")) return false;
-    namespace fs = std::filesystem;
-    const fs::path file = path.toStdString();
-    fs::last_write_time(file, fs::file_time_type::clock::now() + std::chrono::seconds(age));
-    return true;
 }
 
 }  // namespace

@@ -5,8 +5,10 @@
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLabel>
 #include <QPushButton>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <QtTest>
 #include <cmath>
@@ -59,6 +61,7 @@ private Q_SLOTS:
     void worldPanel_SetImage_UndoRestores_RemoveClears();
     void worldPanel_IntensityAndRotation_OneUndoStepPerDrag();
     void worldPanel_UnreadableImage_ShowsTheErrorInsteadOfTheStrip();
+    void worldPanel_ImageSavedAgain_ReloadImagesRedrawsTheStrip_WithoutAnUndoStep();
     void worldPanel_Choose_StartsInTheLastImageFolder_CancelKeepsTheDocument();
 
 private:
@@ -347,6 +350,35 @@ void WorldAndLightsTest::worldPanel_UnreadableImage_ShowsTheErrorInsteadOfTheStr
     world->setImageFile(skyPath());
     QVERIFY(world->hasPreview());
     QVERIFY(world->previewError().isEmpty());
+}
+
+void WorldAndLightsTest::
+    worldPanel_ImageSavedAgain_ReloadImagesRedrawsTheStrip_WithoutAnUndoStep() {
+    WorldPanel* world = window_->worldPanel();
+    QVERIFY(world);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("sky.png"));
+    QVERIFY(writeFlat(path, Qt::red, -20));
+    world->setImageFile(path);
+    auto* strip = world->findChild<QLabel*>(QStringLiteral("environmentStrip"));
+    QVERIFY(strip);
+    const auto stripColor = [&] {
+        const QImage shown = strip->pixmap().toImage();
+        return shown.isNull() ? QColor() : shown.pixelColor(shown.width() / 2, shown.height() / 2);
+    };
+    QCOMPARE(stripColor(), QColor(Qt::red));
+    const int steps = window_->editor()->undoStack()->count();
+
+    // Saved again in green while the designer is open: the strip shows it after Reload Images.
+    QVERIFY(writeFlat(path, Qt::green, -10));
+    QCOMPARE(stripColor(), QColor(Qt::red));  // Nothing is read until asked.
+    auto* reload = window_->findChild<QAction*>(QStringLiteral("reloadImages"));
+    QVERIFY(reload);
+    reload->trigger();
+    QCOMPARE(stripColor(), QColor(Qt::green));
+    QCOMPARE(window_->editor()->undoStack()->count(), steps);
+    QCOMPARE(QString::fromStdString(doc().environment.image.source()), path);
 }
 
 void WorldAndLightsTest::worldPanel_Choose_StartsInTheLastImageFolder_CancelKeepsTheDocument() {
