@@ -1,8 +1,6 @@
-// The eight-lane loops of FlatSet. Not a header: flat_set.cpp includes it twice, into
-// namespace avx2 under `#pragma GCC target("avx2")` (with RS_FLAT_AVX2 defined) and into
-// namespace baseline, so one source gives both machine codes. It touches raw arrays and its
-// own inline functions only: no template of another header is instantiated inside the AVX2
-// region, so nothing the rest of the program links to is compiled for AVX2.
+// The eight-lane loops of FlatSet. Not a header: flat_set.cpp compiles it twice through
+// core/lane_instances.inl, for AVX2 (RS_LANES_AVX2 defined) and for the baseline. It touches
+// raw arrays and its own inline functions only, as that file requires.
 // Every expression is written in the association order of the scalar test it mirrors
 // (glm's dot is (x + y) + z): that, and -ffp-contract=off, keeps the bits equal.
 // Expects FlatView (raw tables) to be declared.
@@ -25,7 +23,7 @@ inline I8 select(I8 m, I8 a, I8 b) {
 }
 
 inline F8 sqrt8(F8 x) {
-#if defined(RS_FLAT_AVX2)
+#if defined(RS_LANES_AVX2)
     return F8(_mm256_sqrt_ps(__m256(x)));
 #elif defined(__SSE2__)
     __m128 lo, hi;
@@ -46,7 +44,7 @@ inline F8 sqrt8(F8 x) {
 
 /// Bit k set when lane k of `m` is true.
 inline unsigned bits(I8 m) {
-#if defined(RS_FLAT_AVX2)
+#if defined(RS_LANES_AVX2)
     return unsigned(_mm256_movemask_ps(__m256(m)));
 #elif defined(__SSE2__)
     __m128 lo, hi;
@@ -128,14 +126,14 @@ inline I8 sphereHit(const Rays8& r, F8 a, const FlatView& v, int s, F8 tmax, Sph
 
 /// Lane-wise a < b ? a : b and a > b ? a : b (one instruction each where there is one).
 inline F8 min8(F8 a, F8 b) {
-#if defined(RS_FLAT_AVX2)
+#if defined(RS_LANES_AVX2)
     return F8(_mm256_min_ps(__m256(a), __m256(b)));
 #else
     return select(a < b, a, b);
 #endif
 }
 inline F8 max8(F8 a, F8 b) {
-#if defined(RS_FLAT_AVX2)
+#if defined(RS_LANES_AVX2)
     return F8(_mm256_max_ps(__m256(a), __m256(b)));
 #else
     return select(a > b, a, b);

@@ -5,12 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define RS_FLAT_DISPATCH 1
-#include <immintrin.h>
-#elif defined(__SSE2__)
-#include <immintrin.h>
-#endif
+#include "core/avx2_dispatch.h"
 
 namespace rs {
 
@@ -30,38 +25,15 @@ struct FlatView {
 
 }  // namespace
 
-#if defined(RS_FLAT_DISPATCH)
-namespace avx2 {
-namespace {
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#define RS_FLAT_AVX2 1
-#include "accel/flat_lanes.inl"
-#undef RS_FLAT_AVX2
-#pragma GCC pop_options
-}  // namespace
-}  // namespace avx2
-#endif
-
-namespace baseline {
-namespace {
-#include "accel/flat_lanes.inl"
-}  // namespace
-}  // namespace baseline
+#define RS_LANE_SOURCE "accel/flat_lanes.inl"
+#include "core/lane_instances.inl"
 
 namespace {
-
-#if defined(RS_FLAT_DISPATCH)
-bool useAvx2() {
-    static const bool has = __builtin_cpu_supports("avx2");
-    return has;
-}
-#endif
 
 void othersMasks(const FlatView& v, const RayBatch& rays, std::size_t first, const float* tmax,
                  uint8_t* masks, FlatSet::Lanes lanes) {
-#if defined(RS_FLAT_DISPATCH)
-    if (lanes == FlatSet::Lanes::Best && useAvx2()) {
+#if defined(RS_AVX2_DISPATCH)
+    if (lanes == FlatSet::Lanes::Best && avx2Available()) {
         avx2::F8 t;
         std::memcpy(&t, tmax, sizeof t);
         return avx2::boundsMasks(v, rays, first, t, masks);
@@ -151,8 +123,8 @@ FlatView view(const FlatSet::Tables& t) {
 
 void FlatSet::closestHit(const RayBatch& rays, const HitBatch& hits, Lanes lanes) const {
     const FlatView v = view(tables_);
-#if defined(RS_FLAT_DISPATCH)
-    if (lanes == Lanes::Best && useAvx2())
+#if defined(RS_AVX2_DISPATCH)
+    if (lanes == Lanes::Best && avx2Available())
         avx2::closestAll(v, rays, hits);
     else
 #else
@@ -189,8 +161,8 @@ void FlatSet::closestHit(const RayBatch& rays, const HitBatch& hits, Lanes lanes
 
 void FlatSet::anyHit(const RayBatch& rays, uint8_t* occluded, bool skipBlocked, Lanes lanes) const {
     const FlatView v = view(tables_);
-#if defined(RS_FLAT_DISPATCH)
-    if (lanes == Lanes::Best && useAvx2())
+#if defined(RS_AVX2_DISPATCH)
+    if (lanes == Lanes::Best && avx2Available())
         avx2::anyAll(v, rays, occluded, skipBlocked);
     else
 #else

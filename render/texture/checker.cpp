@@ -4,6 +4,7 @@
 
 #include <cstddef>
 
+#include "core/avx2_dispatch.h"
 #include "core/floor_lanes.h"
 #include "core/lanes.h"
 
@@ -19,31 +20,12 @@ constexpr double kFlatHalfWidth = 1e6;
 
 }  // namespace
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define RS_CHECKER_DISPATCH 1
-#include <immintrin.h>
-namespace avx2 {
-namespace {
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#define RS_CHECKER_AVX2 1
-#include "texture/checker_lanes.inl"
-#undef RS_CHECKER_AVX2
-#pragma GCC pop_options
-}  // namespace
-}  // namespace avx2
-#endif
-
-namespace baseline {
-namespace {
-#include "texture/checker_lanes.inl"
-}  // namespace
-}  // namespace baseline
+#define RS_LANE_SOURCE "texture/checker_lanes.inl"
+#include "core/lane_instances.inl"
 
 void checkerOddFractions(std::size_t count, const CheckerPoints& in, float* odd) {
-#if defined(RS_CHECKER_DISPATCH)
-    static const bool avx2 = __builtin_cpu_supports("avx2");
-    if (avx2) return avx2::oddFractionsOf(count, in, odd);
+#if defined(RS_AVX2_DISPATCH)
+    if (avx2Available()) return avx2::oddFractionsOf(count, in, odd);
 #endif
     baseline::oddFractionsOf(count, in, odd);
 }

@@ -1,5 +1,5 @@
-// The checker's box filter on four points at once: included by texture/checker.cpp into
-// namespace avx2 under `#pragma GCC target("avx2")` and into namespace baseline without it.
+// The checker's box filter on four points at once. Not a header: texture/checker.cpp compiles
+// it twice through core/lane_instances.inl, for AVX2 (RS_LANES_AVX2 defined) and the baseline.
 // Each operation is the one scalar code would do (doubles, exact floors, the same order), so
 // every lane's answer is bit for bit the one a point alone would get.
 
@@ -12,7 +12,7 @@ inline D splat(double x) {
 
 /// floor() of each lane, exact: with AVX one instruction, else core/floor_lanes.h.
 inline D floorOf(D x) {
-#if defined(RS_CHECKER_AVX2)
+#if defined(RS_LANES_AVX2)
     return D(_mm256_floor_pd(__m256d(x)));
 #else
     return floorLanes(x);
