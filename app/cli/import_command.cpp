@@ -1,6 +1,7 @@
 // `raystudio-cli import ASSET -o SCENE`: a scene file holding one asset (glTF, OBJ, FBX, ...
 // through assimp) with its materials and textures, its lights (or a key light) and a camera
 // that frames it (or its own), ready for `render`.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,18 +17,36 @@ namespace rs::cli {
 namespace {
 namespace fs = std::filesystem;
 
-/// A camera looking at `box` from the front right and a little above, the whole box in view.
+/// Of each half of the picture, what the framed box may fill (the rest is margin).
+constexpr float kFramedFill = 0.9f;
+
+/// A camera looking at `box` from the front right and a little above, as near as keeps all
+/// eight corners of the box inside the picture (at the render's aspect) with a margin: a flat
+/// or long asset fills the frame, not only the sphere around it.
 Camera framing(const Aabb& box, const RenderSettings& render) {
     Camera c;
     const Vec3 centre = 0.5f * (box.min + box.max);
     const float radius = std::max(0.5f * glm::length(box.max - box.min), 1e-3f);
     const float aspect = float(render.width) / float(render.height);
-    // The narrower of the two fields of view decides the distance.
-    const float halfY = 0.5f * c.fovY * float(M_PI) / 180.0f;
-    const float half = std::min(halfY, std::atan(std::tan(halfY) * aspect));
-    const float distance = 1.1f * radius / std::sin(half);
+    const float tanY = std::tan(0.5f * c.fovY * float(M_PI) / 180.0f) * kFramedFill;
+    const float tanX = tanY * aspect;
+    const Vec3 back = glm::normalize(Vec3(0.6f, 0.45f, 1.0f));
+    const Vec3 forward = -back;
+    const Vec3 right = glm::normalize(glm::cross(forward, c.up));
+    const Vec3 up = glm::cross(right, forward);
+    // A corner at `depth` beyond the centre and (x, y) off the axis is in the picture when
+    // |x| <= tanX * (distance + depth), and likewise y; every corner stays in front.
+    float distance = 0.0f;
+    for (int k = 0; k < 8; ++k) {
+        const Vec3 corner((k & 1) ? box.max.x : box.min.x, (k & 2) ? box.max.y : box.min.y,
+                          (k & 4) ? box.max.z : box.min.z);
+        const Vec3 rel = corner - centre;
+        const float depth = glm::dot(rel, forward);
+        distance = std::max({distance, std::abs(glm::dot(rel, right)) / tanX - depth,
+                             std::abs(glm::dot(rel, up)) / tanY - depth, 0.05f * radius - depth});
+    }
     c.target = centre;
-    c.position = centre + distance * glm::normalize(Vec3(0.6f, 0.45f, 1.0f));
+    c.position = centre + distance * back;
     return c;
 }
 

@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli_run.h"
+#include "image/image_io.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -48,6 +50,46 @@ TEST_F(ImportCli, TwoPartObj_BecomesASceneWithItsMaterials_ThatRenders) {
     const CliRun render = cli("render '" + scene + "' -o '" + image + "'");
     EXPECT_EQ(render.exitCode, 0) << render.err;
     EXPECT_TRUE(fs::exists(image));
+}
+
+// The camera fits the asset's box, not the sphere around it: a long flat slab fills most of
+// the picture's width (the sphere around it would leave it under half), and no part of it is
+// cut off at the edges.
+TEST_F(ImportCli, Framing_FitsAFlatAssetsBoxInsideThePicture) {
+    const fs::path slab = dir_ / "slab.obj";
+    {
+        std::ofstream out(slab);
+        // 20 x 0.5 x 4, one box of 12 triangles.
+        for (int k = 0; k < 8; ++k)
+            out << "v " << ((k & 1) ? 10 : -10) << ' ' << ((k & 2) ? 0.5 : 0) << ' '
+                << ((k & 4) ? 2 : -2) << '\n';
+        out << "f 1 2 4 3\nf 5 7 8 6\nf 1 5 6 2\nf 3 4 8 7\nf 1 3 7 5\nf 2 6 8 4\n";
+    }
+    const std::string scene = (dir_ / "slab.scene.json").string();
+    const CliRun run =
+        cli("import '" + slab.string() + "' -o '" + scene + "' --width 160 --height 90");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::string image = (dir_ / "slab.exr").string();
+    ASSERT_EQ(cli("render '" + scene + "' -o '" + image + "'").exitCode, 0);
+    rs::ImageRgb shown;
+    std::string error;
+    ASSERT_TRUE(rs::readImage(image, shown, error)) << error;
+    ASSERT_EQ(shown.width, 160);
+    // The columns and rows the slab covers (the background is black).
+    int left = shown.width, right = -1, top = shown.height, bottom = -1;
+    for (int y = 0; y < shown.height; ++y)
+        for (int x = 0; x < shown.width; ++x) {
+            const rs::Color& c = shown.at(x, y);
+            if (c.x + c.y + c.z <= 0.0f) continue;
+            left = std::min(left, x), right = std::max(right, x);
+            top = std::min(top, y), bottom = std::max(bottom, y);
+        }
+    ASSERT_GE(right, 0) << "the slab is not in the picture";
+    EXPECT_GT(left, 0);
+    EXPECT_LT(right, shown.width - 1);
+    EXPECT_GT(top, 0);
+    EXPECT_LT(bottom, shown.height - 1);
+    EXPECT_GE(right - left + 1, shown.width * 7 / 10) << left << ".." << right;
 }
 
 TEST_F(ImportCli, BadInput_IsAnErrorNamingIt) {
