@@ -1,4 +1,4 @@
-// makeThumbnail: OpenImageIO's ImageBuf and ImageBufAlgo::resize, then 8-bit sRGB.
+// makeThumbnail: OpenImageIO's ImageBuf and ImageBufAlgo::resize (a box filter), then 8-bit sRGB.
 #include "texture/thumbnail.h"
 
 #include <OpenImageIO/imagebuf.h>
@@ -60,8 +60,11 @@ Thumbnail makeThumbnail(const std::string& path, int maxSide) {
     const int w = std::max(1, int(std::lround(spec.width * fit)));
     const int h = std::max(1, int(std::lround(spec.height * fit)));
     const int channels = std::min(spec.nchannels, 3);
-    OIIO::ImageBuf small =
-        OIIO::ImageBufAlgo::resize(src, "", 0.0f, OIIO::ROI(0, w, 0, h, 0, 1, 0, spec.nchannels));
+    // A box filter: each preview pixel the mean of the texels it covers. (The default,
+    // Lanczos 3, took 1.3 of the 1.8 s a 4096 x 4096 PNG's preview cost, for a picture a few
+    // hundred pixels wide.)
+    OIIO::ImageBuf small = OIIO::ImageBufAlgo::resize(
+        src, "box", 0.0f, OIIO::ROI(0, w, 0, h, 0, 1, 0, spec.nchannels));
     if (small.has_error()) return failure(path, small.geterror());
     std::vector<float> pixels(std::size_t(w) * h * spec.nchannels);
     if (!small.get_pixels(OIIO::ROI(0, w, 0, h, 0, 1, 0, spec.nchannels), OIIO::TypeDesc::FLOAT,

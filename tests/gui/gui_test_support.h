@@ -16,6 +16,7 @@
 #include "adapter/session_controller.h"
 #include "display/display_frame.h"
 #include "document/scene_editor.h"
+#include "panels/image_preview.h"
 #include "session/render_session.h"
 #include "shell/main_window.h"
 #include "viewport/view_projection.h"
@@ -63,6 +64,18 @@ inline bool writeFlat(const QString& path, const QColor& c, int age) {
     const fs::path file = path.toStdString();
     fs::last_write_time(file, fs::file_time_type::clock::now() + std::chrono::seconds(age));
     return true;
+}
+
+/// Waits (test-only) until no image preview under `root` is still reading its file: previews
+/// are made on a thread of their own and arrive through the event loop.
+inline bool previewsRead(QWidget& root) {
+    return QTest::qWaitFor(
+        [&] {
+            for (const ImagePreview* p : root.findChildren<ImagePreview*>())
+                if (p->reading()) return false;
+            return true;
+        },
+        20000);
 }
 
 /// Sends pending document updates and waits (test-only) until the frame is final, then

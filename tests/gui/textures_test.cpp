@@ -66,6 +66,7 @@ private Q_SLOTS:
     void imageMode_ChosenFile_Thumbnail_AndRepeatReachTheDocument();
     void unreadableTexture_ShowsTheErrorInsteadOfAThumbnail();
     void exrThumbnail_IsLinearEncodedToSrgb();
+    void thumbnail_IsReadOffTheGuiThread_ThenShown();
     void imageDroppedOnASharedMaterial_MakesItsOwn_InOneUndoStep();
     void imageDroppedOnAnOwnMaterial_TexturesIt_AndEmptySpaceSaysWhere();
     void textureCachePreference_SetsTheStore_AndIsKept();
@@ -252,6 +253,7 @@ void TexturesTest::imageMode_ChosenFile_Thumbnail_AndRepeatReachTheDocument() {
 
     auto* preview = window_->propertyPanel()->findChild<ImagePreview*>();
     QVERIFY(preview);
+    QVERIFY(previewsRead(*window_));
     QVERIFY2(preview->hasImage(), qPrintable(preview->error()));
     auto* thumb = preview->findChild<QLabel*>(QStringLiteral("textureThumbnail"));
     const QImage shown = thumb->pixmap().toImage();
@@ -291,6 +293,7 @@ void TexturesTest::unreadableTexture_ShowsTheErrorInsteadOfAThumbnail() {
                                                 bad.toStdString()));
     auto* preview = window_->propertyPanel()->findChild<ImagePreview*>();
     QVERIFY(preview);
+    QVERIFY(previewsRead(*window_));
     QVERIFY(!preview->hasImage());
     QVERIFY2(preview->error().contains(QStringLiteral("broken.png")), qPrintable(preview->error()));
     auto* error = preview->findChild<QLabel*>(QStringLiteral("textureError"));
@@ -310,6 +313,36 @@ void TexturesTest::unreadableTexture_ShowsTheErrorInsteadOfAThumbnail() {
     QVERIFY2(!said(), qPrintable(window_->statusBar()->currentMessage()));
 }
 
+void TexturesTest::thumbnail_IsReadOffTheGuiThread_ThenShown() {
+    // Decoding and scaling a large image takes the reader's thread hundreds of milliseconds
+    // (a 4096 x 4096 PNG about half a second): the window must not wait for it.
+    const QString path = dir_.filePath(QStringLiteral("wide.png"));
+    QImage wide(2048, 1024, QImage::Format_RGB888);
+    wide.fill(Qt::blue);
+    QVERIFY(wide.save(path, "PNG"));
+    clickObject("chalk ball");
+    stepMode(Qt::Key_Down);
+    chooseImage(path);
+    QVERIFY(std::holds_alternative<ImageTexture>(material("chalk").pattern));
+    auto* preview = window_->propertyPanel()->findChild<ImagePreview*>();
+    QVERIFY(preview);
+    // Back from the choice before the file is read: the panel says it is reading it.
+    QVERIFY(preview->reading());
+    QVERIFY(!preview->hasImage());
+    QVERIFY(preview->error().isEmpty());
+    auto* note = preview->findChild<QLabel*>(QStringLiteral("textureThumbnailReading"));
+    QVERIFY(note && note->isVisibleTo(preview));
+    QVERIFY2(note->text().contains(QStringLiteral("wide.png")), qPrintable(note->text()));
+    // Then the thumbnail arrives through the event loop, and the note goes.
+    QVERIFY(previewsRead(*window_));
+    QVERIFY2(preview->hasImage(), qPrintable(preview->error()));
+    QVERIFY(!note->isVisibleTo(preview));
+    const QImage shown =
+        preview->findChild<QLabel*>(QStringLiteral("textureThumbnail"))->pixmap().toImage();
+    QCOMPARE(shown.size(), QSize(kTextureThumbnailSide, kTextureThumbnailSide / 2));
+    QCOMPARE(shown.pixelColor(shown.width() / 2, shown.height() / 2), QColor(Qt::blue));
+}
+
 void TexturesTest::exrThumbnail_IsLinearEncodedToSrgb() {
     // Left half linear 0.2140 (sRGB 0.5: 1.055 * 0.214^(1/2.4) - 0.055), right half 4 (HDR,
     // beyond white): QImageReader cannot read EXR, the thumbnail must still show it.
@@ -325,6 +358,7 @@ void TexturesTest::exrThumbnail_IsLinearEncodedToSrgb() {
     chooseImage(path);
     auto* preview = window_->propertyPanel()->findChild<ImagePreview*>();
     QVERIFY(preview);
+    QVERIFY(previewsRead(*window_));
     QVERIFY2(preview->hasImage(), qPrintable(preview->error()));
     const QImage shown =
         preview->findChild<QLabel*>(QStringLiteral("textureThumbnail"))->pixmap().toImage();
@@ -425,6 +459,7 @@ void TexturesTest::imageSavedAgain_ReloadImagesShowsIt_WithoutAnUndoStep() {
     };
     const QColor red = shown();
     QVERIFY2(red.red() > 2 * red.green(), qPrintable(red.name()));
+    QVERIFY(previewsRead(*window_));
     auto* thumb = window_->propertyPanel()->findChild<QLabel*>(QStringLiteral("textureThumbnail"));
     QVERIFY(thumb);
     QCOMPARE(thumb->pixmap().toImage().pixelColor(1, 1), QColor(Qt::red));
@@ -436,6 +471,7 @@ void TexturesTest::imageSavedAgain_ReloadImagesShowsIt_WithoutAnUndoStep() {
     reload->trigger();
     const QColor green = shown();
     QVERIFY2(green.green() > 2 * green.red(), qPrintable(green.name()));
+    QVERIFY(previewsRead(*window_));
     // Only what sees the ball was traced again.
     const DisplayFrame& f = *window_->viewport()->frame();
     const std::size_t marked = renderSession(*window_).stats().lastDirtyPixels;

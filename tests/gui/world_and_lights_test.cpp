@@ -290,6 +290,7 @@ void WorldAndLightsTest::worldPanel_SetImage_UndoRestores_RemoveClears() {
     QCOMPARE(QString::fromStdString(doc().environment.image.file), skyPath());
     QCOMPARE(QString::fromStdString(doc().environment.image.resolvedPath), skyPath());
     QCOMPARE(window_->editor()->undoStack()->count(), steps + 1);
+    QVERIFY(previewsRead(*world));
     QVERIFY2(world->hasPreview(), qPrintable(world->previewError()));
     QVERIFY(world->previewError().isEmpty());
     window_->editor()->undoStack()->undo();
@@ -344,10 +345,12 @@ void WorldAndLightsTest::worldPanel_UnreadableImage_ShowsTheErrorInsteadOfTheStr
     const QString bad = QFileInfo(scenePath("reference-room.scene.json")).absoluteFilePath();
     world->setImageFile(bad);
     QCOMPARE(QString::fromStdString(doc().environment.image.source()), bad);
+    QVERIFY(previewsRead(*world));
     QVERIFY(!world->hasPreview());
     QVERIFY2(world->previewError().contains(QStringLiteral("reference-room.scene.json")),
              qPrintable(world->previewError()));
     world->setImageFile(skyPath());
+    QVERIFY(previewsRead(*world));
     QVERIFY(world->hasPreview());
     QVERIFY(world->previewError().isEmpty());
 }
@@ -364,6 +367,7 @@ void WorldAndLightsTest::
     auto* strip = world->findChild<QLabel*>(QStringLiteral("environmentStrip"));
     QVERIFY(strip);
     const auto stripColor = [&] {
+        if (!previewsRead(*world)) return QColor();
         const QImage shown = strip->pixmap().toImage();
         return shown.isNull() ? QColor() : shown.pixelColor(shown.width() / 2, shown.height() / 2);
     };

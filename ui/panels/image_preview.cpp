@@ -1,54 +1,16 @@
-// A preview of an image file: read through the renderer's TextureStore check and makeThumbnail.
+// A preview of an image file: asked of the PreviewReader, shown when it arrives.
 #include "panels/image_preview.h"
 
+#include <QFileInfo>
 #include <QImage>
 #include <QLabel>
 #include <QPixmap>
 #include <QVBoxLayout>
-#include <map>
-#include <tuple>
+#include <algorithm>
 
-#include "core/input_file.h"
-#include "texture/texture_store.h"
-#include "texture/thumbnail.h"
+#include "panels/preview_reader.h"
 
 namespace rs::ui {
-
-namespace {
-
-/// A preview made, or the reason there is none.
-struct Preview {
-    QImage image;
-    QString error;
-};
-
-/// Previews by path, modification time and size read: panels are rebuilt on every selection
-/// change, and a file is read once while it stays the same.
-Preview previewOf(const std::string& path, const FileStamp& stamp, int readSide) {
-    static std::map<std::tuple<std::string, bool, long long, std::uintmax_t, int>, Preview> cache;
-    const std::tuple key{path, stamp.exists, stamp.modified, stamp.size, readSide};
-    if (auto it = cache.find(key); it != cache.end()) return it->second;
-    Preview p;
-    std::string error;
-    if (!TextureStore::shared().open(path, error)) {
-        p.error = QString::fromStdString(error);
-    } else {
-        const Thumbnail t = makeThumbnail(path, readSide);
-        if (!t.ok()) {
-            p.error = QString::fromStdString(t.error.empty() ? "cannot read " + path : t.error);
-        } else {
-            p.image = QImage(t.width, t.height, QImage::Format_RGB888);
-            for (int y = 0; y < t.height; ++y)
-                std::copy_n(t.rgb.data() + std::size_t(y) * std::size_t(t.width) * 3,
-                            std::size_t(t.width) * 3, p.image.scanLine(y));
-        }
-    }
-    if (cache.size() > 64) cache.clear();  // A bound, not an LRU: previews are cheap to redo.
-    cache.emplace(key, p);
-    return p;
-}
-
-}  // namespace
 
 ImagePreview::ImagePreview(QSize box, int readSide, Qt::Alignment alignment,
                            const QString& imageName, const QString& errorName, QWidget* parent)
@@ -64,10 +26,17 @@ ImagePreview::ImagePreview(QSize box, int readSide, Qt::Alignment alignment,
     error_->setWordWrap(true);
     error_->setStyleSheet(QStringLiteral("color: #d03030;"));
     error_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    note_ = new QLabel(this);
+    note_->setObjectName(imageName + QStringLiteral("Reading"));
+    note_->setFixedHeight(box.height());  // In the image's place: nothing below moves.
+    note_->setAlignment(alignment);
+    note_->setStyleSheet(QStringLiteral("color: palette(mid);"));
     layout->addWidget(image_);
     layout->addWidget(error_);
+    layout->addWidget(note_);
     image_->hide();
     error_->hide();
+    note_->hide();
 }
 
 void ImagePreview::setImage(const std::string& path) {
@@ -75,15 +44,39 @@ void ImagePreview::setImage(const std::string& path) {
     if (path == shown_ && stamp == shownStamp_) return;
     shown_ = path;
     shownStamp_ = stamp;
-    Preview p;
-    if (!path.empty()) p = previewOf(path, stamp, readSide_);
-    QImage shown = p.image;
-    if (!shown.isNull() && (shown.width() > box_.width() || shown.height() > box_.height()))
-        shown = shown.scaled(box_, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+    if (path.empty()) return display(nullptr);
+    PreviewReader& reader = PreviewReader::shared();
+    if (const auto made = reader.find(path, stamp, readSide_)) return display(&*made);
+    // What was shown stays hidden meanwhile: it is another file's.
+    image_->hide();
+    error_->hide();
+    note_->setText(tr("Reading %1...").arg(QFileInfo(QString::fromStdString(path)).fileName()));
+    note_->show();
+    reading_ = true;
+    reader.request(path, stamp, readSide_, mailbox_,
+                   [this, path, stamp](const PreviewPixels& preview) {
+                       // Only if it is still the file (as it was) to show.
+                       if (path == shown_ && stamp == shownStamp_) display(&preview);
+                   });
+}
+
+void ImagePreview::display(const PreviewPixels* preview) {
+    reading_ = false;
+    note_->hide();
+    QImage shown;
+    if (preview && preview->error.empty() && preview->width > 0 && preview->height > 0) {
+        shown = QImage(preview->width, preview->height, QImage::Format_RGB888);
+        const std::size_t row = std::size_t(preview->width) * 3;
+        for (int y = 0; y < preview->height; ++y)
+            std::copy_n(preview->rgb.data() + std::size_t(y) * row, row, shown.scanLine(y));
+        if (shown.width() > box_.width() || shown.height() > box_.height())
+            shown = shown.scaled(box_, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+    }
     image_->setPixmap(shown.isNull() ? QPixmap() : QPixmap::fromImage(shown));
     image_->setVisible(!shown.isNull());
-    error_->setText(p.error);
-    error_->setVisible(!p.error.isEmpty());
+    const QString error = preview ? QString::fromStdString(preview->error) : QString();
+    error_->setText(error);
+    error_->setVisible(!error.isEmpty());
 }
 
 QString ImagePreview::error() const {
