@@ -24,6 +24,7 @@
 #include "shell/autosave.h"
 #include "shell/command_shortcut_filter.h"
 #include "shell/docked_panels.h"
+#include "shell/field_wheel_filter.h"
 #include "shell/pass_status.h"
 #include "shell/render_jobs.h"
 #include "shell/shortcuts_dialog.h"
@@ -93,6 +94,7 @@ MainWindow::MainWindow(QWidget* parent)
     createMenus();
     createStatusBar();
     new CommandShortcutFilter(this);
+    new FieldWheelFilter(this);
     readSettings();
     updateTitle();
     editor_->resetDocument(SceneDocument{}, {});
