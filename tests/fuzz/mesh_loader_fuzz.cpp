@@ -31,7 +31,11 @@ const std::string& scratchDir() {
         std::string pattern = "/tmp/raystudio-mesh-fuzz-XXXXXX";
         if (!mkdtemp(pattern.data())) std::abort();
         static std::string removeAtExit = pattern;
-        std::atexit([] { rmdir(removeAtExit.c_str()); });
+        // The folder holds the last input's "mesh.mtl" (each input's mesh file goes with it).
+        std::atexit([] {
+            std::remove((removeAtExit + "/mesh.mtl").c_str());
+            rmdir(removeAtExit.c_str());
+        });
         return pattern;
     }();
     return dir;
