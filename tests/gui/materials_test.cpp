@@ -65,6 +65,7 @@ private Q_SLOTS:
     void renameMaterial_InPlace_RenamesItsUsers_AndRefusesTakenOrEmptyNames();
     void deleteMaterial_UsedIsRefusedWithTheReason_UnusedIsOneUndoStep();
     void assignToSelection_IsOneUndoStep_AndReachesTheFrame();
+    void list_FollowsTheActiveObjectGivenANewMaterial_NotAPickedOne();
     void hdrValueBeyondOne_ReachesTheDocumentAndTheFrame();
     void colourDialog_PreviewsLive_OkIsOneUndoStep();
     void colourDialog_Cancel_RestoresAndLeavesNoUndoStep();
@@ -255,6 +256,36 @@ void MaterialsTest::assignToSelection_IsOneUndoStep_AndReachesTheFrame() {
              qPrintable(str(chalk) + str(red)));
     window_->editor()->undoStack()->undo();
     QCOMPARE(doc().findObject(id)->material, std::string("chalk"));
+}
+
+void MaterialsTest::list_FollowsTheActiveObjectGivenANewMaterial_NotAPickedOne() {
+    MaterialList* list = window_->materialList();
+    clickObject("chalk ball");
+    QCOMPARE(list->current(), std::string("chalk"));
+    // A new sphere has the built-in grey, which the list does not hold: "chalk" stays.
+    QAction* add = window_->findChild<QAction*>(QStringLiteral("add Sphere"));
+    QVERIFY(add);
+    add->trigger();
+    const ObjectId id = window_->editor()->selection();
+    QVERIFY(doc().findObject(id) && doc().findObject(id)->material.empty());
+    QCOMPARE(list->current(), std::string("chalk"));
+    // "New material" gives it a material of its own: the list shows that one, as it shows
+    // the material of an object picked.
+    auto* unique = window_->propertyPanel()->findChild<QPushButton*>(QStringLiteral("makeUnique"));
+    QVERIFY(unique);
+    QTest::mouseClick(unique, Qt::LeftButton);
+    const std::string own = doc().findObject(id)->material;
+    QVERIFY(!own.empty() && doc().findMaterial(own));
+    QCOMPARE(list->current(), own);
+    // A material picked in the list stays picked through edits that leave the sphere's alone.
+    QVERIFY(list->setCurrent("red wall"));
+    QVERIFY(window_->propertyPanel()->applyEdit(QStringLiteral("material"), "diffuse", 0.25f));
+    QCOMPARE(list->current(), std::string("red wall"));
+    // Undone back to the built-in grey, the list keeps what was picked.
+    window_->editor()->undoStack()->undo();
+    window_->editor()->undoStack()->undo();
+    QVERIFY(doc().findObject(id)->material.empty());
+    QCOMPARE(list->current(), std::string("red wall"));
 }
 
 void MaterialsTest::hdrValueBeyondOne_ReachesTheDocumentAndTheFrame() {

@@ -94,9 +94,8 @@ MaterialList::MaterialList(SceneEditor* editor, QWidget* parent)
         Qt::QueuedConnection);
     // The list follows the active object's material, as Blender's material slots do: pick an
     // object, then (to give it another) a material, then Assign to Selection.
-    connect(editor_, &SceneEditor::selectionChanged, this, [this](ObjectId id) {
-        const Object* o = editor_->document().findObject(id);
-        if (o && !o->material.empty()) setCurrent(o->material);
+    connect(editor_, &SceneEditor::selectionChanged, this, [this] {
+        followActiveMaterial();
         updateButtons();
     });
     rebuild();
@@ -125,12 +124,24 @@ void MaterialList::showMessage(const QString& text) {
     message_->setVisible(!text.isEmpty());
 }
 
+void MaterialList::followActiveMaterial() {
+    const ObjectId id = editor_->selection();
+    const Object* o = editor_->document().findObject(id);
+    const std::string material = o ? o->material : std::string();
+    if (id == followedObject_ && material == followedMaterial_) return;
+    followedObject_ = id;
+    followedMaterial_ = material;
+    if (!material.empty()) setCurrent(material);
+}
+
 void MaterialList::onDocumentChanged() {
     const DocumentChange& change = editor_->lastChange();
     const uint8_t users = DocumentChange::kMaterial | DocumentChange::kName;
     if (change.materials || change.environment || change.objectsRestructured ||
         (change.objectFields() & users)) {
         rebuild();
+        followActiveMaterial();  // "New material", Make Unique, another one picked for it
+        updateButtons();
         return;
     }
     if (!refused_.isEmpty()) {  // Any change ends a refused rename's message.

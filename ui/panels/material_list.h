@@ -69,6 +69,10 @@ private:
     void onItemChanged(QListWidgetItem* item);
     void applyRename(const std::string& from, const std::string& to);
     void showMessage(const QString& text);
+    /// Makes the active object's material the current item when it is not the one last
+    /// followed (another object selected, or the active object given another material), and
+    /// leaves a material the user picked in the list alone otherwise.
+    void followActiveMaterial();
 
     SceneEditor* editor_;
     QListWidget* list_;
@@ -80,6 +84,9 @@ private:
     QLabel* message_;
     QString refused_;    ///< A refused rename's error, shown until the next change.
     QStringList shown_;  ///< "name/users" of each material listed.
+    /// The active object and its material when the list last followed them.
+    ObjectId followedObject_ = kNoObject;
+    std::string followedMaterial_;
     /// updateButtons()'s delete refusal for the material named first, valid while the second
     /// is true (rebuild() clears it: users may have changed).
     std::pair<std::string, std::string> deleteError_;
