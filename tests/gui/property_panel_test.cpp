@@ -4,8 +4,10 @@
 // mouse wheel over a field not clicked into scrolls the panel instead of editing.
 #include "panels/property_panel.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
+#include <QScrollBar>
 #include <QSpinBox>
 #include <QWheelEvent>
 #include <QtTest>
@@ -32,6 +34,7 @@ private Q_SLOTS:
     void onFirstRun_EveryValueOfASelectedObjectFitsItsField();
     void anEdit_RefreshesOnlyTheFieldsOfWhatItChanged();
     void wheelOverAFieldNotClickedInto_ScrollsThePanel_NotTheValue();
+    void rebuiltForTheSameSelection_KeepsWhereThePanelWasScrolled();
 
 private:
     std::unique_ptr<MainWindow> window_;
@@ -282,6 +285,31 @@ void PropertyPanelTest::wheelOverAFieldNotClickedInto_ScrollsThePanel_NotTheValu
     QVERIFY(wheel());
     QVERIFY(x->value() != before);
     QCOMPARE(editor->undoStack()->count(), steps + 1);
+}
+
+void PropertyPanelTest::rebuiltForTheSameSelection_KeepsWhereThePanelWasScrolled() {
+    SceneEditor* editor = window_->editor();
+    editor->setSelection(idOf(*window_, "chalk ball"));
+    QScrollBar* bar = window_->propertyPanel()->verticalScrollBar();
+    QVERIFY2(bar->maximum() > 0, "the panel must be taller than its dock for this test");
+    // Scrolled down to the material, whose colour mode is switched to Checker: new fields,
+    // so the panel is built again, and stays where it was.
+    bar->setValue(bar->maximum());
+    const int scrolled = bar->value();
+    auto* mode = qobject_cast<QComboBox*>(
+        panelField(*window_, QStringLiteral("Material \""), QStringLiteral("Colour mode")));
+    QVERIFY(mode);
+    mode->setFocus();
+    QTest::keyClick(mode, Qt::Key_Down);  // Colour -> Checker, as a user steps it
+    QVERIFY(
+        std::holds_alternative<CheckerPattern>(editor->document().findMaterial("chalk")->pattern));
+    QVERIFY(mode != qobject_cast<QComboBox*>(panelField(*window_, QStringLiteral("Material \""),
+                                                        QStringLiteral("Colour mode"))));
+    QCOMPARE(bar->value(), std::min(scrolled, bar->maximum()));
+    QVERIFY(bar->value() > 0);
+    // Another selection starts at the top.
+    editor->setSelection(idOf(*window_, "blue ball"));
+    QCOMPARE(bar->value(), 0);
 }
 
 #include "property_panel_test.moc"

@@ -344,6 +344,12 @@ void PropertyPanel::addColorForm(const std::string& name, QFormLayout* form) {
 }
 
 void PropertyPanel::rebuild() {
+    // Rebuilt for the same selection (its material's colour mode switched, a part given a
+    // material, an undo): the fields stay where the user scrolled to. Another selection
+    // starts at the top.
+    const ObjectId selection = editor_->selection();
+    const int scrolled = selection == builtFor_ ? verticalScrollBar()->value() : 0;
+    builtFor_ = selection;
     refreshers_.clear();
     appliers_.clear();
     if (QWidget* old = takeWidget()) {
@@ -412,6 +418,7 @@ void PropertyPanel::rebuild() {
                                                 2 * frameWidth()));
     signature_ = signature();
     refresh();
+    verticalScrollBar()->setValue(scrolled);  // setWidget measured the new content: in range
 }
 
 }  // namespace rs::ui

@@ -63,6 +63,7 @@ private:
     QVBoxLayout* layout_ = nullptr;
     QLabel* errorLabel_ = nullptr;
     QString signature_;
+    ObjectId builtFor_ = kNoObject;  ///< The selection the fields were last built for.
     QString lastError_;
     struct Refresher {
         Part part;
