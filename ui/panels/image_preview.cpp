@@ -6,7 +6,6 @@
 #include <QLabel>
 #include <QPixmap>
 #include <QVBoxLayout>
-#include <algorithm>
 
 #include "panels/preview_reader.h"
 
@@ -63,15 +62,9 @@ void ImagePreview::setImage(const std::string& path) {
 void ImagePreview::display(const PreviewPixels* preview) {
     reading_ = false;
     note_->hide();
-    QImage shown;
-    if (preview && preview->error.empty() && preview->width > 0 && preview->height > 0) {
-        shown = QImage(preview->width, preview->height, QImage::Format_RGB888);
-        const std::size_t row = std::size_t(preview->width) * 3;
-        for (int y = 0; y < preview->height; ++y)
-            std::copy_n(preview->rgb.data() + std::size_t(y) * row, row, shown.scanLine(y));
-        if (shown.width() > box_.width() || shown.height() > box_.height())
-            shown = shown.scaled(box_, Qt::KeepAspectRatio, Qt::SmoothTransformation);
-    }
+    QImage shown = preview ? preview->image : QImage();
+    if (!shown.isNull() && (shown.width() > box_.width() || shown.height() > box_.height()))
+        shown = shown.scaled(box_, Qt::KeepAspectRatio, Qt::SmoothTransformation);
     image_->setPixmap(shown.isNull() ? QPixmap() : QPixmap::fromImage(shown));
     image_->setVisible(!shown.isNull());
     const QString error = preview ? QString::fromStdString(preview->error) : QString();

@@ -141,7 +141,6 @@ void MaterialList::onDocumentChanged() {
         (change.objectFields() & users)) {
         rebuild();
         followActiveMaterial();  // "New material", Make Unique, another one picked for it
-        updateButtons();
         return;
     }
     if (!refused_.isEmpty()) {  // Any change ends a refused rename's message.

@@ -1,6 +1,8 @@
 // PreviewReader: a queue of files to preview, one thread that reads them, and the previews kept.
 #include "panels/preview_reader.h"
 
+#include <algorithm>
+
 #include "texture/texture_store.h"
 #include "texture/thumbnail.h"
 
@@ -24,9 +26,10 @@ PreviewPixels makePreview(const std::string& path, int readSide) {
         p.error = t.error.empty() ? "cannot read " + path : t.error;
         return p;
     }
-    p.width = t.width;
-    p.height = t.height;
-    p.rgb = std::move(t.rgb);
+    p.image = QImage(t.width, t.height, QImage::Format_RGB888);
+    const std::size_t row = std::size_t(t.width) * 3;
+    for (int y = 0; y < t.height; ++y)
+        std::copy_n(t.rgb.data() + std::size_t(y) * row, row, p.image.scanLine(y));
     return p;
 }
 

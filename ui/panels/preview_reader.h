@@ -2,6 +2,7 @@
 // 4096 x 4096 PNG takes about a second, which the GUI thread must not spend.
 #pragma once
 
+#include <QImage>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -19,11 +20,11 @@
 
 namespace rs::ui {
 
-/// An image file's preview: 8-bit sRGB pixels, or the sentence why there is none (the
-/// renderer's own check first, so it is the error a render would report).
+/// An image file's preview: 8-bit sRGB pixels (made on the reader's thread, as QImage allows;
+/// copies share them), or the sentence why there is none (the renderer's own check first, so
+/// it is the error a render would report).
 struct PreviewPixels {
-    int width = 0, height = 0;
-    std::vector<std::uint8_t> rgb;  ///< Rows top first, three bytes a pixel.
+    QImage image;
     std::string error;
 };
 
